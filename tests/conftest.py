@@ -1,0 +1,1 @@
+"""Shared pytest setup. Each test folder (runtime/, rules/, cli/, typing/, integrations/) owns its own conftest."""
