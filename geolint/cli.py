@@ -1,0 +1,58 @@
+"""The `geolint` command line: a thin adapter that dispatches to one module per subcommand.
+
+Each subcommand lives in `geolint/commands/<name>.py` and exposes
+`add_arguments(parser)` and `run(args) -> int`. Modules are imported only when their
+subcommand runs, so `geolint check` never pays for the language server's imports.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from typing import Sequence
+
+from geolint._version import __version__
+
+# subcommand -> one-line help; the module is geolint.commands.<subcommand with - as _>
+SUBCOMMANDS = {
+    "check": "lint files for geometric type errors",
+    "rule": "print one rule's documentation",
+    "rules": "list every rule",
+    "lsp": "run the language server over stdio",
+    "frames": "draw the frames and transforms found in code",
+}
+
+EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="geolint", description="Catch geometric type errors in Python code.")
+    parser.add_argument("--version", action="version", version=f"geolint {__version__}")
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name, help_text in SUBCOMMANDS.items():
+        sub = subparsers.add_parser(name, help=help_text, description=help_text)
+        sub.set_defaults(command_module=f"geolint.commands.{name.replace('-', '_')}")
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser()
+    # Parse the subcommand first, then let its module add its own arguments.
+    known, _ = parser.parse_known_args(argv[:1] if argv and not argv[0].startswith("-") else argv)
+    if getattr(known, "command", None) is None:
+        parser.print_help(sys.stderr)
+        return EXIT_ERROR
+    module = importlib.import_module(known.command_module)
+    sub = argparse.ArgumentParser(prog=f"geolint {known.command}", description=SUBCOMMANDS[known.command])
+    module.add_arguments(sub)
+    try:
+        args = sub.parse_args(argv[1:])
+    except SystemExit as exit_:  # argparse exits 2 on usage errors, as we want
+        return int(exit_.code or 0)
+    return int(module.run(args))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
