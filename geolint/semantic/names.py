@@ -1,0 +1,294 @@
+"""What a variable's NAME says about its value: its geometric kind and its coordinate frames.
+
+Pure functions of a name and the config, shared by the lint rules, the frames-graph command,
+the mypy plugin and the editor server. Names are split into whole tokens (`_`-separated), so
+`n` (a count), `normalize`, `pointer` or `np.random.normal` never read as geometry. When a
+name could be read two ways, the answer is None: a wrong guess costs more than silence.
+
+Conventions understood (each one switchable in `[tool.geolint.naming]`):
+
+- dst_first:  `T_world_cam`, `R_world_cam`   (maps cam into world)
+- prefix_t:   `world_T_cam`, `world_R_cam`
+- monogram:   Drake `X_WB`, `R_WB` (pose of B in W), `p_BQ` (position of Q measured in B)
+- from_style: `world_from_cam`; values `point_in_cam`, `normals_in_world`
+- to_style:   `cam_to_world`, pytransform3d `cam2world` (src first)
+- suffix:     `p_world`, `v_cam`, `points_cam`, `normals_world`
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from enum import Enum
+from functools import lru_cache
+from typing import Literal
+
+from geolint.lint_types import Config
+
+
+class Kind(str, Enum):
+    """The geometric kind a value has, as far as the linter can tell."""
+
+    POINT = "point"  # a location: rotates AND translates (homogeneous w = 1)
+    DIRECTION = "direction"  # a free vector, normal, axis, velocity: rotates only (w = 0)
+    TRANSFORM = "transform"  # a rigid transform / pose (maps points between frames)
+    ROTATION = "rotation"  # a rotation only
+
+
+Operator = Literal["transform", "rotation", "unknown"]
+
+
+@dataclass(frozen=True)
+class NameFrames:
+    """The frames a name states.
+
+    For an operator (a transform or rotation) `dst` and `src` are set: it maps values
+    expressed in `src` into `dst`. For a value (point, vector) only `frame` is set.
+    `operator` says which kind of operator the name denotes ("unknown" when the
+    convention does not say, e.g. `cam2world` may be a 3x3 or a 4x4).
+    """
+
+    dst: str | None = None
+    src: str | None = None
+    frame: str | None = None
+    operator: Operator | None = None
+
+    @property
+    def is_operator(self) -> bool:
+        return self.dst is not None and self.src is not None
+
+    def inverted(self) -> NameFrames:
+        """The frames of the inverse operator (what `.T` of a rotation or `inv(T)` gives)."""
+        return NameFrames(dst=self.src, src=self.dst, operator=self.operator)
+
+
+# --- vocabulary -------------------------------------------------------------------------
+
+DIRECTION_WORDS = frozenset(
+    {
+        "normal", "normals", "binormal", "binormals", "nrm", "nrms", "dir", "dirs", "direction",
+        "directions", "axis", "approach", "heading", "velocity", "velocities", "vel", "vels",
+        "accel", "acceleration", "gravity", "force", "forces", "torque", "torques", "omega",
+        "tangent", "tangents",
+    }
+)  # fmt: skip
+POINT_WORDS = frozenset(
+    {
+        "point", "points", "pts", "pt", "position", "positions", "pos", "centroid", "centroids",
+        "vertex", "vertices", "verts", "origin", "landmark", "landmarks",
+    }
+)  # fmt: skip
+# One-letter kind prefixes that need a frame after them to mean anything (`p_world`, `v_cam`):
+# `p` alone is a probability or a polynomial as often as a point.
+POINT_PREFIXES = frozenset({"p"})
+DIRECTION_PREFIXES = frozenset({"v"})
+
+# Tokens that turn a geometric word into something else: `n_points` is a count,
+# `normal_idx` an index, `point_size` a scalar. Any of them in a name means "not geometry".
+NON_GEOMETRIC_TOKENS = frozenset(
+    {
+        "n", "num", "nb", "count", "counts", "cnt", "idx", "index", "indices", "ids", "id", "len",
+        "length", "lengths", "size", "sizes", "shape", "dim", "dims", "ndim", "mask", "masks",
+        "norm", "norms", "magnitude", "mag", "scale", "name", "names", "str", "label", "labels",
+        "key", "keys", "type", "types", "dtype", "err", "error", "errors", "tol", "std", "var",
+        "sigma", "noise", "weight", "weights", "sign", "signs", "flag", "flags", "valid", "is",
+        "has", "use", "threshold", "thresh", "limit", "limits", "angle", "angles", "dist",
+        "distance", "distances", "radius", "color", "colors", "colour", "file", "path", "fmt",
+        "format", "msg", "topic", "frame", "frames", "field", "fields", "offset", "offsets", "step",
+        "steps", "cov", "covariance", "matrix", "mat", "kw", "kwargs", "args", "arg", "func", "fn",
+        "cb", "callback", "map", "dict", "list", "set", "tuple", "str", "text", "order",
+        "random", "sample", "samples", "dist", "pdf", "cdf", "test", "expected",
+    }
+)  # fmt: skip
+
+# Qualifiers that look like a frame after a kind word but are not one (`pos_des`, `p_h`).
+NOT_A_FRAME = frozenset(
+    {
+        "new", "old", "prev", "previous", "next", "cur", "curr", "current", "des", "desired", "cmd",
+        "ref", "err", "min", "max", "tmp", "temp", "est", "hat", "init", "initial", "start", "end",
+        "first", "last", "mean", "avg", "sum", "list", "arr", "array", "np", "vec", "vector", "h",
+        "hom", "homog", "homogeneous", "norm", "normalized", "unit", "scaled", "sorted", "filtered",
+        "local", "global", "all", "other", "a", "b", "i", "j", "k", "x", "y", "z", "w", "out", "in",
+        "res", "result", "copy", "orig", "original", "raw", "flat", "t", "true", "pred", "gt",
+        "target", "goal", "offset", "delta", "diff", "rel", "abs", "3d", "2d", "xyz", "uv",
+        "px", "mm", "m", "cm", "rad", "deg", "left", "right", "up", "down", "value", "values", "val",
+        "vals", "iter", "adj", "corrected", "pred", "obs", "sq", "squared", "dot", "cross", "inv",
+    }
+)  # fmt: skip
+
+# Representations, not frames: `deg2rad`, `quat2mat`, `euler_to_matrix` are conversions.
+NOT_A_FRAME_IN_CONVERSION = frozenset(
+    {
+        "deg", "rad", "degrees", "radians", "str", "string", "int", "float", "bytes", "hex", "bin",
+        "dec", "quat", "quaternion", "mat", "matrix", "euler", "axangle", "axis", "angle", "rotvec",
+        "rpy", "ypr", "list", "dict", "tuple", "array", "np", "numpy", "torch", "tensor", "json",
+        "yaml", "pose", "transform", "tf", "se3", "so3", "homogeneous", "rot", "rotation", "trans",
+        "vec", "vector", "pq", "dual", "mrp", "compact", "exp", "log", "screw", "twist", "id",
+        "idx", "index", "name", "unicode", "ascii", "utf8", "camel", "snake", "py", "c", "cpp",
+        "xyz", "xyzw", "wxyz", "ros", "msg", "points", "point", "pts", "url", "path", "file",
+    }
+)  # fmt: skip
+
+TRANSFORM_LETTERS = frozenset({"T", "X", "H"})
+ROTATION_LETTERS = frozenset({"R"})
+_MONOGRAM_FRAME = r"[A-Z][0-9]*"
+_MONOGRAM_OPERATOR = re.compile(rf"^([TXHR])_({_MONOGRAM_FRAME})({_MONOGRAM_FRAME})$")
+_MONOGRAM_VALUE = re.compile(rf"^([pv])_({_MONOGRAM_FRAME})({_MONOGRAM_FRAME})$")
+_FRAME_WORD = re.compile(r"^[a-z][a-z0-9]*$")
+_TO_STYLE_COMPACT = re.compile(r"^([A-Za-z][A-Za-z0-9]*?)2([A-Za-z][A-Za-z0-9]*)$")
+
+
+def tokens(name: str) -> tuple[str, ...]:
+    """The whole `_`-separated tokens of a name, lower-cased, without leading/trailing underscores."""
+    return tuple(token.lower() for token in name.strip("_").split("_") if token)
+
+
+# --- kind --------------------------------------------------------------------------------
+
+
+def kind_of_name(name: str, config: Config = Config()) -> Kind | None:
+    """The geometric kind a name states, or None when it states none (or two).
+
+    `normals`, `surface_normal`, `ray_dir`, `points_cam`, `p_world`, `T_world_cam` have a kind;
+    `n`, `n_points`, `normal_idx`, `direction_name`, `p` do not.
+    """
+    return _kind_of_name(name, config.extra_direction_names, config.extra_point_names, config.naming)
+
+
+@lru_cache(maxsize=4096)
+def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None:  # type: ignore[no-untyped-def]
+    frames = _frames_of_name(name, naming)
+    if frames is not None and frames.is_operator:
+        return Kind.ROTATION if frames.operator == "rotation" else Kind.TRANSFORM
+    parts = tokens(name)
+    if not parts or any(part in NON_GEOMETRIC_TOKENS for part in parts):
+        return None
+    directions = DIRECTION_WORDS | {word.lower() for word in extra_directions}
+    points = POINT_WORDS | {word.lower() for word in extra_points}
+    kinds = set()
+    # The head noun of a compound is usually its last token (`surface_normal`, `ray_dir`),
+    # but a frame suffix comes after it (`normals_world`, `points_in_cam`).
+    candidates = [parts[-1]]
+    if (frames is not None and frames.frame is not None) or all(part in NOT_A_FRAME for part in parts[1:]):
+        candidates.append(parts[0])
+    for part in candidates:
+        if part in directions:
+            kinds.add(Kind.DIRECTION)
+        elif part in points:
+            kinds.add(Kind.POINT)
+    if frames is not None and frames.frame is not None and len(parts) >= 2:
+        if parts[0] in POINT_PREFIXES:
+            kinds.add(Kind.POINT)
+        elif parts[0] in DIRECTION_PREFIXES:
+            kinds.add(Kind.DIRECTION)
+    if len(kinds) != 1:
+        return None
+    return kinds.pop()
+
+
+# --- frames ------------------------------------------------------------------------------
+
+
+def frames_of_name(name: str, config: Config = Config()) -> NameFrames | None:
+    """The frames a name states, or None when it states none or could be read two ways.
+
+    Frame words go through `config.frame_aliases` (e.g. cam -> camera) so that
+    `T_world_camera` and `p_cam` agree when the user says they do.
+    """
+    frames = _frames_of_name(name, config.naming)
+    if frames is None or not config.frame_aliases:
+        return frames
+    aliases = {key.lower(): value.lower() for key, value in config.frame_aliases.items()}
+
+    def canon(frame: str | None) -> str | None:
+        return None if frame is None else aliases.get(frame, frame)
+
+    return NameFrames(canon(frames.dst), canon(frames.src), canon(frames.frame), frames.operator)
+
+
+@lru_cache(maxsize=4096)
+def _frames_of_name(name: str, naming) -> NameFrames | None:  # type: ignore[no-untyped-def]
+    readings = {reading for reading in _readings(name.strip("_"), naming) if reading is not None}
+    return readings.pop() if len(readings) == 1 else None
+
+
+def _readings(name: str, naming):  # type: ignore[no-untyped-def]
+    """Every reading of `name` under the enabled conventions (more than one means ambiguous)."""
+    raw = name.split("_")
+    if any(not part for part in raw):
+        return
+    if naming.monogram:
+        match = _MONOGRAM_OPERATOR.match(name)
+        if match:
+            letter, dst, src = match.groups()
+            yield NameFrames(dst=dst.lower(), src=src.lower(), operator=_operator(letter))
+            return  # `X_WB` is never also `X_<W>_<B>`
+        match = _MONOGRAM_VALUE.match(name)
+        if match:
+            yield NameFrames(frame=match.group(2).lower())
+            return
+    if len(raw) == 3:
+        first, middle, last = raw
+        if naming.dst_first and first in TRANSFORM_LETTERS | ROTATION_LETTERS:
+            if _is_frame(middle) and _is_frame(last):
+                yield NameFrames(dst=middle.lower(), src=last.lower(), operator=_operator(first))
+        if naming.prefix_t and middle in TRANSFORM_LETTERS | ROTATION_LETTERS:
+            if _is_frame(first) and _is_frame(last):
+                yield NameFrames(dst=first.lower(), src=last.lower(), operator=_operator(middle))
+        lowered = [part.lower() for part in raw]
+        if naming.from_style and lowered[1] == "from" and _is_conversion_frame(first) and _is_conversion_frame(last):
+            yield NameFrames(dst=lowered[0], src=lowered[2], operator="unknown")
+        if naming.to_style and lowered[1] == "to" and _is_conversion_frame(first) and _is_conversion_frame(last):
+            yield NameFrames(dst=lowered[2], src=lowered[0], operator="unknown")
+        if naming.from_style and lowered[1] == "in" and lowered[0] in _VALUE_HEADS and _is_frame(last):
+            yield NameFrames(frame=lowered[2])
+    if len(raw) == 1 and naming.to_style:
+        match = _TO_STYLE_COMPACT.match(name)
+        if match and _is_conversion_frame(match.group(1)) and _is_conversion_frame(match.group(2)):
+            yield NameFrames(dst=match.group(2).lower(), src=match.group(1).lower(), operator="unknown")
+    if len(raw) == 2 and naming.suffix:
+        head, frame = raw[0].lower(), raw[1]
+        if head in _VALUE_HEADS and _is_frame(frame) and frame.lower() not in _VALUE_HEADS:
+            yield NameFrames(frame=frame.lower())
+
+
+_VALUE_HEADS = DIRECTION_WORDS | POINT_WORDS | POINT_PREFIXES | DIRECTION_PREFIXES
+
+
+def _operator(letter: str) -> Operator:
+    return "rotation" if letter in ROTATION_LETTERS else "transform"
+
+
+def _is_frame(word: str) -> bool:
+    """A token that can name a frame: a lower-case word or a one-letter upper-case frame."""
+    if re.fullmatch(_MONOGRAM_FRAME, word):
+        return True
+    lowered = word.lower()
+    return bool(_FRAME_WORD.match(word)) and lowered not in NOT_A_FRAME and lowered not in NON_GEOMETRIC_TOKENS
+
+
+def _is_conversion_frame(word: str) -> bool:
+    """A frame in `a2b` / `a_to_b` / `a_from_b`, where a representation name means a conversion."""
+    if re.fullmatch(_MONOGRAM_FRAME, word):
+        return True  # pytransform3d's `A2B`
+    lowered = word.lower()
+    if lowered in NOT_A_FRAME_IN_CONVERSION or lowered in NOT_A_FRAME or lowered in NON_GEOMETRIC_TOKENS:
+        return False
+    return bool(re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", word))
+
+
+def same_frame(first: str | None, second: str | None) -> bool | None:
+    """Whether two frame names are the same frame; None when they cannot be compared.
+
+    A one-letter monogram frame (`W`) and a word (`world`) are never compared: they
+    come from different conventions and `W` may well mean `world`.
+    """
+    if first is None or second is None:
+        return None
+    if _is_letter_frame(first) != _is_letter_frame(second):
+        return None
+    return first.lower() == second.lower()
+
+
+def _is_letter_frame(frame: str) -> bool:
+    return bool(re.fullmatch(r"[A-Za-z][0-9]*", frame))
