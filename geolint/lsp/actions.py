@@ -1,0 +1,72 @@
+"""Code actions: the fix of a finding (QuickFix), "ignore GEOxxx for this line", and fix-all.
+
+Everything here works on geolint positions and plain text; `server.py` turns the results
+into LSP edits in the client's position encoding.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+import tokenize
+from dataclasses import dataclass
+
+from geolint.lint_types import Edit
+
+FIX_ALL_KIND = "source.fixAll.geolint"
+
+# The suppression comment `geolint check` honours: `# geolint: ignore[GEO101, GEO203]`.
+_IGNORE_COMMENT = re.compile(r"#\s*geolint:\s*ignore\[(?P<codes>[^\]]*)\]")
+
+
+@dataclass(frozen=True)
+class _LineComments:
+    comments: tuple[tuple[int, str], ...]  # (0-based column, text) of each comment on the line
+    ends_in_string: bool  # the line break is inside a (triple-quoted) string: no comment can go there
+
+
+def _comments_on_line(source: str, line: int) -> _LineComments:
+    """Comments on 1-based `line`, from the tokenizer; a regex guess when the code does not tokenize."""
+    try:
+        comments = []
+        ends_in_string = False
+        for token in tokenize.generate_tokens(io.StringIO(source).readline):
+            if token.type == tokenize.COMMENT and token.start[0] == line:
+                comments.append((token.start[1], token.string))
+            elif token.type == tokenize.STRING and token.start[0] <= line < token.end[0]:
+                ends_in_string = True
+            elif token.start[0] > line:
+                break
+        return _LineComments(tuple(comments), ends_in_string)
+    except (tokenize.TokenError, SyntaxError, IndentationError):
+        text = source.splitlines()[line - 1] if line - 1 < len(source.splitlines()) else ""
+        hash_at = text.find("#")
+        return _LineComments(((hash_at, text[hash_at:]),) if hash_at >= 0 else (), False)
+
+
+def ignore_edit(source: str, line: int, code: str) -> Edit | None:
+    """The edit that makes `geolint` ignore `code` on 1-based `line`; None if there is nothing to do.
+
+    Extends an existing `# geolint: ignore[...]` comment, or appends one at the end of the line
+    (after any other comment, so `# type: ignore` and `# noqa` keep working).
+    """
+    lines = source.splitlines()
+    if not 1 <= line <= len(lines):
+        return None
+    text = lines[line - 1]
+    found = _comments_on_line(source, line)
+    if found.ends_in_string:
+        return None
+    for column, comment in found.comments:
+        match = _IGNORE_COMMENT.search(comment)
+        if match is None:
+            continue
+        codes = [c.strip() for c in match.group("codes").split(",") if c.strip()]
+        if code in codes:
+            return None
+        start = column + match.start("codes")
+        end = column + match.end("codes")
+        new_codes = ", ".join([*codes, code])
+        return Edit(line, start + 1, line, end + 1, new_codes)
+    content_end = len(text.rstrip())
+    return Edit(line, content_end + 1, line, len(text) + 1, f"  # geolint: ignore[{code}]")
