@@ -1,0 +1,365 @@
+"""Read the frames and transforms out of Python code, for `geolint frames`.
+
+Where a frame graph comes from, in one file:
+
+- names in the naming conventions the linter knows (`T_world_cam`, `world_T_cam`, `X_WB`,
+  `cam_to_world`, ...: `geolint.semantic.names.frames_of_name`) give an edge dst -> src, and
+  value names (`p_world`, `normals_cam`) give a frame;
+- typed annotations `Transform[Dst, Src]` (and `Transform[...]` used as a constructor) give an
+  edge; frame classes (`class World(Frame)`, `class BaseLink(Frame, name="base_link")`) are read
+  by the name the runtime gives them;
+- `FrameTree.add(T)` calls give an edge labelled with the call, as the runtime tree would hold it;
+- the linter's GEO2xx findings (frame mismatches) give red edges between the two frames that
+  disagree, labelled with the code and the file:line.
+
+Frame names are lower-cased, as `frames_of_name` gives them, so `Transform[World, Cam]` and
+`T_world_cam` draw one edge between the same two frames.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterable, Sequence
+
+from geolint.lint_types import Config, Finding
+from geolint.render import FrameEdge, FrameGraph
+from geolint.semantic.names import NameFrames, frames_of_name, same_frame
+
+MISMATCH_PREFIX = "GEO2"
+_LABEL_WIDTH = 48
+_INVERSE_CALLS = frozenset({"inv", "inverse", "pinv"})
+_PRODUCT_CALLS = frozenset({"dot", "matmul"})
+
+
+@dataclass
+class _FileReader(ast.NodeVisitor):
+    """One pass over one module's AST, collecting edges and frames."""
+
+    source: str
+    path: str
+    config: Config
+    frame_classes: dict[str, str] = field(default_factory=dict)
+    typed: dict[str, NameFrames] = field(default_factory=dict)  # variable -> frames from its annotation
+    trees: set[str] = field(default_factory=set)  # variables holding a FrameTree
+    edges: dict[tuple[str, str, str], FrameEdge] = field(default_factory=dict)
+    frames: set[str] = field(default_factory=set)
+    claimed: set[int] = field(default_factory=set)  # Transform[...] nodes already drawn under a better label
+
+    # ---- frames of names, types and expressions ------------------------------------------------
+
+    def _canon(self, frame: str) -> str:
+        frame = frame.lower()
+        aliases = {key.lower(): value.lower() for key, value in self.config.frame_aliases.items()}
+        return aliases.get(frame, frame)
+
+    def _type_frame(self, node: ast.expr) -> str | None:
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value:
+            return self._canon(node.value)
+        if isinstance(node, ast.Name):
+            return self._canon(self.frame_classes.get(node.id, node.id))
+        if isinstance(node, ast.Attribute):
+            return self._canon(self.frame_classes.get(node.attr, node.attr))
+        if isinstance(node, ast.Subscript) and _name_of(node.value) == "Literal":
+            return self._type_frame(node.slice)
+        return None
+
+    def transform_type(self, node: ast.AST | None) -> NameFrames | None:
+        """Frames of `Transform[Dst, Src]` (or `geolint.Transform[...]`); None for anything else."""
+        if not isinstance(node, ast.Subscript) or _name_of(node.value) != "Transform":
+            return None
+        if not isinstance(node.slice, ast.Tuple) or len(node.slice.elts) != 2:
+            return None
+        dst, src = (self._type_frame(element) for element in node.slice.elts)
+        if dst is None or src is None:
+            return None
+        return NameFrames(dst=dst, src=src, operator="transform")
+
+    def frames_of(self, node: ast.AST | None) -> NameFrames | None:
+        """What frames an expression is in, from its names, types and the algebra around them."""
+        if isinstance(node, (ast.Name, ast.Attribute)):
+            name = node.id if isinstance(node, ast.Name) else node.attr
+            if isinstance(node, ast.Attribute) and node.attr == "T":  # transpose: meant as the inverse
+                inner = self.frames_of(node.value)
+                return inner.inverted() if inner is not None and inner.is_operator else None
+            if name in self.typed:
+                return self.typed[name]
+            return frames_of_name(name, self.config)
+        if isinstance(node, ast.Subscript):
+            return self.transform_type(node)
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.MatMult, ast.Mult)):
+            return _product(self.frames_of(node.left), self.frames_of(node.right))
+        if isinstance(node, ast.Call):
+            callee = _name_of(node.func)
+            if callee in _INVERSE_CALLS:
+                operand = node.func.value if isinstance(node.func, ast.Attribute) and not node.args else None
+                inner = self.frames_of(operand if operand is not None else (node.args[0] if node.args else None))
+                return inner.inverted() if inner is not None and inner.is_operator else None
+            pair = _product_operands(node)
+            if pair is not None:
+                return _product(self.frames_of(pair[0]), self.frames_of(pair[1]))
+            if isinstance(node.func, ast.Attribute):  # Transform[A, B].from_matrix(...)
+                return self.transform_type(node.func.value)
+        return None
+
+    def mismatch(self, node: ast.AST) -> tuple[str, str] | None:
+        """The two frames a node wrongly takes to be the same, if it does."""
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.MatMult, ast.Mult)):
+            return _inner_mismatch(self.frames_of(node.left), self.frames_of(node.right))
+        if isinstance(node, ast.Call):
+            pair = _product_operands(node)
+            if pair is not None:
+                return _inner_mismatch(self.frames_of(pair[0]), self.frames_of(pair[1]))
+        if isinstance(node, ast.Attribute) and node.attr == "T":
+            inner = self.frames_of(node.value)
+            if inner is not None and inner.operator == "transform" and inner.dst and inner.src:
+                return inner.src, inner.dst  # the drawn "inverse" that a transpose is not
+        if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None:
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            value = self.frames_of(node.value)
+            for target in targets:
+                found = _assign_mismatch(self.frames_of(target), value)
+                if found is not None:
+                    return found
+        return None
+
+    # ---- collecting ------------------------------------------------------------------------------
+
+    def location(self, node: ast.AST) -> str:
+        return f"{self.path}:{getattr(node, 'lineno', 0)}"
+
+    def add_edge(self, frames: NameFrames | None, label: str, node: ast.AST) -> None:
+        if frames is None:
+            return
+        if frames.is_operator:
+            assert frames.dst is not None and frames.src is not None
+            key = (frames.dst, frames.src, label)
+            self.edges.setdefault(key, FrameEdge(frames.dst, frames.src, label, location=self.location(node)))
+        elif frames.frame is not None:
+            self.frames.add(frames.frame)
+
+    def collect_frame_classes(self, module: ast.Module) -> None:
+        for node in ast.walk(module):
+            if isinstance(node, ast.ClassDef) and any(_name_of(base) == "Frame" for base in node.bases):
+                declared = next(
+                    (
+                        keyword.value.value
+                        for keyword in node.keywords
+                        if keyword.arg == "name"
+                        and isinstance(keyword.value, ast.Constant)
+                        and isinstance(keyword.value.value, str)
+                    ),
+                    None,
+                )
+                self.frame_classes[node.name] = declared or node.name
+
+    def claim_types(self, node: ast.AST) -> None:
+        self.claimed.update(id(inner) for inner in ast.walk(node) if isinstance(inner, ast.Subscript))
+
+    def visit_Name(self, node: ast.Name) -> None:
+        self.add_edge(frames_of_name(node.id, self.config), node.id, node)
+
+    def visit_Attribute(self, node: ast.Attribute) -> None:
+        self.add_edge(frames_of_name(node.attr, self.config), node.attr, node)
+        self.generic_visit(node)
+
+    def visit_arg(self, node: ast.arg) -> None:
+        typed = self.transform_type(node.annotation)
+        if typed is not None:
+            self.typed[node.arg] = typed
+            self.add_edge(typed, node.arg, node)
+        else:
+            self.add_edge(frames_of_name(node.arg, self.config), node.arg, node)
+
+    def visit_AnnAssign(self, node: ast.AnnAssign) -> None:
+        typed = self.transform_type(node.annotation)
+        if typed is not None and isinstance(node.target, ast.Name):
+            self.typed[node.target.id] = typed
+            self.add_edge(typed, node.target.id, node)
+            if node.value is not None:
+                self.claim_types(node.value)
+        if _name_of(node.annotation) == "FrameTree" and isinstance(node.target, ast.Name):
+            self.trees.add(node.target.id)
+        # Not the annotation itself: its Transform[...] is this variable's edge, drawn above.
+        self.visit(node.target)
+        if node.value is not None:
+            self.visit(node.value)
+
+    def visit_Assign(self, node: ast.Assign) -> None:
+        if isinstance(node.value, ast.Call) and _name_of(node.value.func) == "FrameTree":
+            self.trees.update(target.id for target in node.targets if isinstance(target, ast.Name))
+        typed = self._constructed_type(node.value)
+        if typed is not None:  # `T = Transform[World, Cam].from_matrix(M)`: the edge is called T
+            for target in node.targets:
+                if isinstance(target, ast.Name):
+                    self.typed[target.id] = typed
+                    self.add_edge(typed, target.id, node)
+            self.claim_types(node.value)
+        self.generic_visit(node)
+
+    def _constructed_type(self, node: ast.AST) -> NameFrames | None:
+        while isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+            node = node.func.value
+        if isinstance(node, ast.Call):
+            node = node.func
+        return self.transform_type(node)
+
+    def visit_Subscript(self, node: ast.Subscript) -> None:
+        typed = self.transform_type(node)
+        if typed is not None and id(node) not in self.claimed:
+            self.add_edge(typed, _segment(self.source, node), node)
+        self.generic_visit(node)
+
+    def visit_Call(self, node: ast.Call) -> None:
+        func = node.func
+        if (
+            isinstance(func, ast.Attribute)
+            and func.attr == "add"
+            and node.args
+            and (_name_of(func.value) in self.trees or "tree" in (_name_of(func.value) or "").lower())
+        ):
+            frames = self.frames_of(node.args[0])
+            if frames is not None and frames.is_operator:
+                self.add_edge(frames, _segment(self.source, node), node)
+                self.claim_types(node.args[0])
+        self.generic_visit(node)
+
+    # ---- findings ------------------------------------------------------------------------------
+
+    def add_mismatches(self, module: ast.Module, findings: Iterable[Finding]) -> None:
+        nodes = [node for node in ast.walk(module) if hasattr(node, "lineno")]
+        for finding in findings:
+            if not finding.code.startswith(MISMATCH_PREFIX):
+                continue
+            inside = [
+                node
+                for node in nodes
+                if node.lineno >= finding.line and (node.end_lineno or node.lineno) <= finding.end_line
+            ]
+            enclosing = [
+                node
+                for node in nodes
+                if isinstance(node, ast.stmt) and node.lineno <= finding.line <= (node.end_lineno or node.lineno)
+            ]
+            # Smallest candidates first: the flagged expression, then the statement around it.
+            ordered = sorted(inside, key=_extent) + sorted(enclosing, key=_extent)
+            for node in ordered:
+                pair = self.mismatch(node)
+                if pair is None:
+                    continue
+                label = f"{finding.code}: {_segment(self.source, node)}"
+                edge = FrameEdge(pair[0], pair[1], label, mismatch=True, location=f"{self.path}:{finding.line}")
+                self.edges.setdefault((pair[0], pair[1], label), edge)
+                break
+
+
+def _name_of(node: ast.AST | None) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    return None
+
+
+def _product_operands(call: ast.Call) -> tuple[ast.expr, ast.expr] | None:
+    """`np.dot(a, b)`, `np.matmul(a, b)` -> (a, b); `a.dot(b)` -> (a, b)."""
+    callee = _name_of(call.func)
+    if callee not in _PRODUCT_CALLS:
+        return None
+    if len(call.args) == 2:
+        return call.args[0], call.args[1]
+    if len(call.args) == 1 and isinstance(call.func, ast.Attribute) and _name_of(call.func.value) not in {"np", "numpy"}:
+        return call.func.value, call.args[0]
+    return None
+
+
+def _product(left: NameFrames | None, right: NameFrames | None) -> NameFrames | None:
+    if left is None or right is None or not left.is_operator:
+        return None
+    if right.is_operator:
+        return NameFrames(dst=left.dst, src=right.src, operator=left.operator)
+    return NameFrames(frame=left.dst) if right.frame is not None else None
+
+
+def _inner_mismatch(left: NameFrames | None, right: NameFrames | None) -> tuple[str, str] | None:
+    if left is None or right is None or not left.is_operator or left.src is None:
+        return None
+    other = right.dst if right.is_operator else right.frame
+    if same_frame(left.src, other) is False:
+        assert other is not None
+        return left.src, other
+    return None
+
+
+def _assign_mismatch(target: NameFrames | None, value: NameFrames | None) -> tuple[str, str] | None:
+    if target is None or value is None:
+        return None
+    if target.frame is not None and value.frame is not None and same_frame(target.frame, value.frame) is False:
+        return target.frame, value.frame
+    if target.is_operator and value.is_operator:
+        for wanted, got in ((target.dst, value.dst), (target.src, value.src)):
+            if same_frame(wanted, got) is False:
+                assert wanted is not None and got is not None
+                return wanted, got
+    return None
+
+
+def _extent(node: ast.AST) -> tuple[int, int, int]:
+    lines = (getattr(node, "end_lineno", 0) or 0) - getattr(node, "lineno", 0)
+    width = (getattr(node, "end_col_offset", 0) or 0) - getattr(node, "col_offset", 0)
+    return lines, width if lines == 0 else 0, getattr(node, "col_offset", 0)
+
+
+def _segment(source: str, node: ast.AST) -> str:
+    text = " ".join((ast.get_source_segment(source, node) or "").split())
+    return text if len(text) <= _LABEL_WIDTH else text[: _LABEL_WIDTH - 1] + "…"
+
+
+def graph_of_source(
+    source: str, path: str, config: Config = Config(), findings: Sequence[Finding] = ()
+) -> FrameGraph:
+    """The frame graph of one module's text; `findings` (its lint findings) add the red edges.
+
+    Code that does not parse gives an empty graph (the linter reports it as GEO000).
+    """
+    try:
+        module = ast.parse(source)
+    except (SyntaxError, ValueError):
+        return FrameGraph()
+    reader = _FileReader(source, path, config)
+    reader.collect_frame_classes(module)
+    reader.visit(module)
+    reader.add_mismatches(module, findings)
+    return FrameGraph(edges=tuple(reader.edges.values()), frames=tuple(sorted(reader.frames)))
+
+
+def merge(graphs: Iterable[FrameGraph], name: str = "frames") -> FrameGraph:
+    """One graph with every frame and edge of `graphs`."""
+    edges: list[FrameEdge] = []
+    frames: set[str] = set()
+    for graph in graphs:
+        edges.extend(graph.edges)
+        frames.update(graph.frames)
+    return FrameGraph(edges=tuple(edges), frames=tuple(sorted(frames)), name=name)
+
+
+def graph_of_paths(paths: Sequence[Path], config: Config | None = None) -> FrameGraph:
+    """The frame graph of files and folders, with the linter's GEO2xx findings as red edges.
+
+    Files are found and linted through `geolint.api.lint_paths`, exactly as `geolint check` finds
+    them; the config is the one `geolint check` would use (the nearest `[tool.geolint]`).
+    """
+    from geolint import api
+
+    if config is None:
+        config = api.find_config(Path(paths[0]) if paths else Path.cwd())
+    graphs = []
+    for result in api.lint_paths(paths, config):
+        location = getattr(result, "location", None) or Path(result.path)
+        try:
+            source = Path(location).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            continue  # the linter has already said what is wrong with it
+        graphs.append(graph_of_source(source, result.path, config, result.findings))
+    return merge(graphs)
