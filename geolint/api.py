@@ -1,17 +1,41 @@
 """The one public entry point to the linter. The CLI, the language server and the pre-commit
 hook are thin adapters over these functions, so they always agree.
 
-(Skeleton by the lead: the engine/CLI owner completes it; the signatures are the contract.)
+- `find_config(start)`: the `[tool.geolint]` config that applies at `start` (raises `ConfigError`).
+- `lint_text(source, path, config)`: findings for one module's text.
+- `fix_text(source, path, config, unsafe=..., only=...)`: the fixed text and what remains.
+- `lint_paths(paths, config, jobs=..., use_cache=...)`: files and folders, in parallel, cached.
+- `rule_url(code)`: where a rule's documentation lives.
 """
 
 from __future__ import annotations
 
+import os
+import traceback
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Collection, Iterator, Sequence
+from typing import Callable, Collection, Iterator, Sequence
 
+from geolint import config as config_module
 from geolint import engine
+from geolint.cache import FindingsCache, content_hash, default_cache_dir
+from geolint.config import ConfigError, config_root
+from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
+
+__all__ = [
+    "ConfigError",
+    "DiscoveryError",
+    "FileResult",
+    "find_config",
+    "fix_text",
+    "lint_paths",
+    "lint_text",
+    "rule_url",
+]
+
+# Below this many files to lint, starting worker processes costs more than it saves.
+MIN_FILES_PER_WORKER = 4
 
 
 @dataclass(frozen=True)
@@ -21,11 +45,17 @@ class FileResult:
     path: str
     findings: tuple[Finding, ...]
     error: str | None = None
+    cached: bool = False
+    # The file on disk (the `path` above is for display: as given or relative to the cwd).
+    location: Path | None = None
 
 
 def find_config(start: Path) -> Config:
-    """The config of the nearest pyproject.toml with a [tool.geolint] table at or above `start`."""
-    return Config()
+    """The config of the nearest pyproject.toml with a [tool.geolint] table at or above `start`.
+
+    Defaults when there is none; raises `ConfigError` (naming the file and the key) for a bad one.
+    """
+    return config_module.find_config(Path(start))
 
 
 def lint_text(source: str, path: str | Path = "<string>", config: Config | None = None) -> list[Finding]:
@@ -41,15 +71,132 @@ def fix_text(
     unsafe: bool = False,
     only: Collection[str] | None = None,
 ) -> tuple[str, list[Finding]]:
-    """Apply the available fixes; return the new text and the findings that remain."""
-    raise NotImplementedError
+    """Apply the available fixes; return the new text and the findings that remain.
+
+    `unsafe` also applies fixes marked unsafe; `only` restricts fixing to these code prefixes.
+    The new text always parses, and fixing it again changes nothing.
+    """
+    from geolint.fixes import fix_source
+
+    outcome = fix_source(source, str(path), config or Config(), unsafe=unsafe, only=only)
+    return outcome.source, list(outcome.remaining)
 
 
 def lint_paths(
-    paths: Sequence[Path], config: Config | None = None, *, jobs: int | None = None, use_cache: bool = True
+    paths: Sequence[Path],
+    config: Config | None = None,
+    *,
+    jobs: int | None = None,
+    use_cache: bool = True,
+    force_exclude: bool = False,
+    cache_dir: Path | None = None,
+    progress: Callable[[int, int], None] | None = None,
+    stats: dict[str, int] | None = None,
 ) -> Iterator[FileResult]:
-    """Lint files and folders (honouring excludes), in parallel, with a content-keyed cache."""
-    raise NotImplementedError
+    """Lint files and folders (honouring excludes), in parallel, with a content-keyed cache.
+
+    Results come sorted by display path whatever `jobs` is, so output is deterministic.
+    `progress(done, total)` is called as files finish; `stats` (if given) receives the counts
+    `files`, `cache_hits`, `linted`, `errors`. Raises `DiscoveryError` for a path that does not exist.
+    """
+    config = config or Config()
+    sources = discover([Path(p) for p in paths], config, force_exclude=force_exclude)
+    cache = FindingsCache(cache_dir or default_cache_dir(config_root(config)), config) if use_cache else None
+    results: dict[str, FileResult] = {}
+    pending: list[tuple[SourceFile, bytes, str]] = []
+    total = len(sources)
+    for source in sources:
+        try:
+            data = source.path.read_bytes()
+        except OSError as error:
+            results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
+            continue
+        digest = content_hash(data)
+        cached = cache.get(source.path.resolve(), digest, source.display) if cache else None
+        if cached is not None:
+            results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
+        else:
+            pending.append((source, data, digest))
+    if progress:
+        progress(len(results), total)
+
+    for (source, _, digest), result in zip(pending, _lint_all(pending, config, jobs, progress, len(results), total)):
+        results[source.display] = result
+        if cache is not None and result.error is None:
+            cache.put(source.path.resolve(), digest, list(result.findings))
+    if cache is not None:
+        cache.save()
+    if stats is not None:
+        stats.update(
+            files=total,
+            cache_hits=sum(1 for r in results.values() if r.cached),
+            linted=len(pending),
+            errors=sum(1 for r in results.values() if r.error),
+        )
+    for display in sorted(results):
+        yield results[display]
+
+
+def _lint_all(
+    pending: list[tuple[SourceFile, bytes, str]],
+    config: Config,
+    jobs: int | None,
+    progress: Callable[[int, int], None] | None,
+    done: int,
+    total: int,
+) -> list[FileResult]:
+    """Lint the files the cache could not answer, in this process or across worker processes."""
+    jobs = jobs or os.cpu_count() or 1
+    work = [(source.display, str(source.path), data, config) for source, data, _ in pending]
+    if jobs <= 1 or len(work) < MIN_FILES_PER_WORKER * 2:
+        results = []
+        for item in work:
+            results.append(_lint_one(item))
+            done += 1
+            if progress:
+                progress(done, total)
+        return results
+
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    engine.registered_rules()  # import libcst and the rules once, so forked workers inherit them
+    methods = multiprocessing.get_all_start_methods()
+    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    # Big files first, so one large file does not finish alone at the end.
+    order = sorted(range(len(work)), key=lambda index: -len(work[index][2]))
+    results_by_index: dict[int, FileResult] = {}
+    with ProcessPoolExecutor(max_workers=min(jobs, len(work)), mp_context=context) as pool:
+        futures = {pool.submit(_lint_batch, [work[i] for i in batch]): batch for batch in _batches(order, jobs)}
+        from concurrent.futures import as_completed
+
+        for future in as_completed(futures):
+            batch = futures[future]
+            for index, result in zip(batch, future.result()):
+                results_by_index[index] = result
+            done += len(batch)
+            if progress:
+                progress(done, total)
+    return [results_by_index[index] for index in range(len(work))]
+
+
+def _batches(order: list[int], jobs: int) -> list[list[int]]:
+    """Round-robin the (size-sorted) files into a few batches per worker, for balance and low overhead."""
+    count = max(1, min(len(order), jobs * 8))
+    return [order[start::count] for start in range(count)]
+
+
+def _lint_batch(items: list[tuple[str, str, bytes, Config]]) -> list[FileResult]:
+    return [_lint_one(item) for item in items]
+
+
+def _lint_one(item: tuple[str, str, bytes, Config]) -> FileResult:
+    """Lint one file's bytes; an exception inside geolint becomes the result's error, not a crash."""
+    display, location, data, config = item
+    try:
+        return FileResult(display, tuple(engine.lint_bytes(data, display, config)), location=Path(location))
+    except Exception:  # an internal error in one file must not stop the run
+        return FileResult(display, (), traceback.format_exc(), location=Path(location))
 
 
 def rule_url(code: str) -> str:

@@ -2,18 +2,90 @@
 
 This is the only place that turns rule `Report`s into `Finding`s. The API, the CLI and
 the language server all come through here, so the editor and CI always agree.
+
+The pipeline for one file: decode (PEP 263 cookie, BOM) -> syntax check (GEO000) -> prefilter
+(each rule's `triggers` regex; a file no enabled rule can fire on is never parsed by libcst) ->
+one libcst traversal -> configured severities -> suppression comments -> GEO900.
+
+libcst and the rule registry are imported on first use, so a run served from the cache
+never pays for them.
 """
 
 from __future__ import annotations
 
-from typing import Iterable, Mapping, Sequence
+import ast
+import re
+import io
+import tokenize
+from dataclasses import replace
+from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
-import libcst as cst
-from libcst.metadata import MetadataWrapper, PositionProvider
+from geolint import suppression
+from geolint.config import enabled_codes
+from geolint.lint_types import Config, Edit, Finding, Fix, Severity
 
-from geolint.lint_types import Config, Edit, Finding, Fix
-from geolint.rules import Rule, RuleContext, all_rules
-from geolint.rules.base import Report
+if TYPE_CHECKING:
+    import libcst as cst
+
+    from geolint.rules import Rule
+    from geolint.rules.base import Report
+
+SYNTAX_ERROR = "GEO000"
+SYNTAX_ERROR_NAME = "syntax-error"
+# Pseudo-rules: documented like rules, but detected here rather than by visiting the tree.
+ENGINE_RULE_CODES = frozenset({SYNTAX_ERROR, suppression.UNUSED_SUPPRESSION})
+
+
+def registered_rules() -> tuple[type[Rule], ...]:
+    from geolint.rules import all_rules
+
+    return all_rules()
+
+
+def lint_bytes(
+    data: bytes,
+    path: str = "<string>",
+    config: Config = Config(),
+    rules: Sequence[type[Rule]] | None = None,
+) -> list[Finding]:
+    """Lint a file's raw bytes: honours a PEP 263 coding cookie or a BOM (UTF-8 otherwise).
+
+    Bytes that cannot be decoded give one GEO000 finding at the offending byte, never an exception.
+    """
+    try:
+        source, _ = decode_source(data)
+    except (SyntaxError, UnicodeDecodeError, LookupError) as error:
+        line, column, message = _decode_problem(data, error)
+        return _only_syntax_error(path, config, rules, line, column, message)
+    return lint_source(source, path, config, rules)
+
+
+def _decode_problem(data: bytes, error: Exception) -> tuple[int, int, str]:
+    """Where and why the bytes could not be decoded, in words a person can act on."""
+    if isinstance(error, SyntaxError) and "unknown encoding" not in str(error):
+        try:  # tokenize says only "invalid or missing encoding declaration": find the bad byte
+            data.decode("utf-8")
+        except UnicodeDecodeError as utf8_error:
+            error = utf8_error
+    if isinstance(error, UnicodeDecodeError):
+        line, column = _byte_position(data, error.start)
+        bad = data[error.start : error.start + 1].hex()
+        return line, column, (
+            f"cannot decode byte 0x{bad} as {error.encoding}; "
+            "declare the file's encoding with a comment such as `# -*- coding: latin-1 -*-`"
+        )
+    return 1, 1, f"cannot decode the file: {error}"
+
+
+def decode_source(data: bytes) -> tuple[str, str]:
+    """The text of a Python file and the encoding it was read with (newlines kept as they are)."""
+    encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)  # "utf-8-sig" when there is a BOM
+    return data.decode(encoding), encoding
+
+
+def encode_source(text: str, encoding: str) -> bytes:
+    """The bytes to write back for text read by `decode_source` ("utf-8-sig" keeps the BOM)."""
+    return text.encode(encoding)
 
 
 def lint_source(
@@ -22,20 +94,69 @@ def lint_source(
     config: Config = Config(),
     rules: Sequence[type[Rule]] | None = None,
 ) -> list[Finding]:
-    """Lint one module's text and return its findings, sorted by position."""
-    rule_classes = all_rules() if rules is None else rules
-    module = cst.parse_module(source)
+    """Lint one module's text and return its findings, sorted by position.
+
+    `rules` defaults to every registered rule; the config's select/ignore/per-file-ignores
+    then decide which of them run. Never raises for bad code (a syntax error is GEO000);
+    an exception from a rule propagates, so callers can report it as an internal error.
+    """
+    candidates = registered_rules() if rules is None else tuple(rules)
+    on = set(enabled_codes(config, path, tuple(rule.code for rule in candidates)))
+    visitors = [rule for rule in candidates if rule.code in on and rule.code not in ENGINE_RULE_CODES]
+
+    module = None
+    if SYNTAX_ERROR in on or visitors:
+        syntax_error = _syntax_error(source)
+        if syntax_error is not None:
+            module, parse_error = _libcst_parse(source)
+            if module is None:  # neither CPython nor libcst can read it
+                line, column, message = syntax_error
+                return _only_syntax_error(path, config, rules, line, column, f"syntax error: {message}")
+
+    active = [rule for rule in visitors if rule.triggers is None or rule.triggers.search(source)]
+    findings: list[Finding] = []
+    if active:
+        if module is None:
+            module, parse_error = _libcst_parse(source)
+            if module is None:  # CPython accepts it but libcst does not (rare, new syntax)
+                line, column, message = parse_error
+                return _only_syntax_error(path, config, rules, line, column, f"libcst cannot parse this file: {message}")
+        findings = _run_rules(module, path, config, active)
+
+    if suppression.may_have_directives(source):
+        directives = suppression.parse_directives(source)
+        findings = suppression.apply_suppressions(findings, directives)
+        if suppression.UNUSED_SUPPRESSION in on and directives:
+            known = {rule.code for rule in registered_rules()}
+            findings += suppression.unused_suppression_findings(
+                directives,
+                path,
+                known_codes=known,
+                enabled_codes=on,
+                severity=_severity_of(suppression.UNUSED_SUPPRESSION, config, Severity.WARNING),
+            )
+    return sorted(findings, key=finding_order)
+
+
+def finding_order(finding: Finding) -> tuple[int, int, str, int, int, str]:
+    return (finding.line, finding.column, finding.code, finding.end_line, finding.end_column, finding.message)
+
+
+def _run_rules(module: cst.Module, path: str, config: Config, rule_classes: Sequence[type[Rule]]) -> list[Finding]:
+    from libcst.metadata import MetadataWrapper, PositionProvider
+
+    from geolint.rules import RuleContext
+
     wrapper = MetadataWrapper(module, unsafe_skip_copy=True)
     context = RuleContext(path=path, config=config)
     instances = [rule_cls(context) for rule_cls in rule_classes]
     wrapper.visit_batched(instances)
     positions = wrapper.resolve(PositionProvider)
-    findings = [
+    return [
         _finding(rule, report, positions, wrapper.module, path, config)
         for rule in instances
         for report in rule.reports
     ]
-    return sorted(findings, key=lambda f: (f.line, f.column, f.code))
 
 
 def _finding(
@@ -46,6 +167,8 @@ def _finding(
     path: str,
     config: Config,
 ) -> Finding:
+    import libcst as cst
+
     where = positions[report.node]
     start, end = where.start, where.end  # type: ignore[attr-defined]
     fix = None
@@ -62,19 +185,87 @@ def _finding(
         code=rule.code,
         name=rule.name,
         message=report.message,
-        severity=config.severity.get(rule.code, rule.default_severity),
+        severity=_severity_of(rule.code, config, rule.default_severity),
         fix=fix,
     )
 
 
+def _severity_of(code: str, config: Config, default: Severity) -> Severity:
+    return config.severity.get(code, default)
+
+
+def _syntax_error(source: str) -> tuple[int, int, str] | None:
+    """(line, column, message) of CPython's first syntax error, or None when the module compiles."""
+    try:
+        ast.parse(source)
+    except SyntaxError as error:
+        return (error.lineno or 1, max(error.offset or 1, 1), error.msg or "invalid syntax")
+    except (ValueError, MemoryError, RecursionError) as error:  # null bytes, absurd nesting
+        return (1, 1, str(error) or type(error).__name__)
+    return None
+
+
+def _libcst_parse(source: str) -> tuple[cst.Module | None, tuple[int, int, str]]:
+    import libcst as cst
+
+    try:
+        return cst.parse_module(source), (0, 0, "")
+    except cst.ParserSyntaxError as error:
+        return None, (error.raw_line, error.raw_column + 1, error.message)
+    except (RecursionError, ValueError) as error:
+        return None, (1, 1, str(error) or type(error).__name__)
+
+
+def _only_syntax_error(
+    path: str, config: Config, rules: Sequence[type[Rule]] | None, line: int, column: int, message: str
+) -> list[Finding]:
+    candidates = (SYNTAX_ERROR,) if rules is None else tuple(rule.code for rule in rules)
+    if SYNTAX_ERROR not in candidates or not enabled_codes(config, path, (SYNTAX_ERROR,)):
+        return []
+    return [
+        Finding(
+            path=path,
+            line=line,
+            column=column,
+            end_line=line,
+            end_column=column + 1,
+            code=SYNTAX_ERROR,
+            name=SYNTAX_ERROR_NAME,
+            message=message,
+            severity=_severity_of(SYNTAX_ERROR, config, Severity.ERROR),
+        )
+    ]
+
+
+def _byte_position(data: bytes, offset: int) -> tuple[int, int]:
+    line_start = data.rfind(b"\n", 0, offset) + 1
+    return data.count(b"\n", 0, offset) + 1, offset - line_start + 1
+
+
+def with_path(findings: Iterable[Finding], path: str) -> list[Finding]:
+    """The same findings reported against another path (cache hits, display paths)."""
+    return [finding if finding.path == path else replace(finding, path=path) for finding in findings]
+
+
+LINE_BREAK = re.compile(r"(?<=\n)|(?<=\r)(?!\n)")
+
+
+def split_lines(source: str) -> list[str]:
+    """The lines of `source` with their endings, split only at \\n, \\r\\n and \\r (as libcst and
+    tokenize count lines; `str.splitlines` also splits at form feeds and would shift positions)."""
+    return [line for line in LINE_BREAK.split(source) if line]
+
+
 def apply_edits(source: str, edits: Iterable[Edit]) -> str:
     """Apply non-overlapping edits to `source` (positions as in `Finding`)."""
-    lines = source.splitlines(keepends=True)
+    lines = split_lines(source)
     offsets = [0]
     for line in lines:
         offsets.append(offsets[-1] + len(line))
 
     def offset(line: int, column: int) -> int:
+        if line > len(lines):  # an edit at the very end of a file without a final newline
+            return offsets[-1] + column - 1
         return offsets[line - 1] + column - 1
 
     result = source
@@ -82,4 +273,3 @@ def apply_edits(source: str, edits: Iterable[Edit]) -> str:
         start, end = offset(edit.line, edit.column), offset(edit.end_line, edit.end_column)
         result = result[:start] + edit.content + result[end:]
     return result
-

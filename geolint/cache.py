@@ -1,0 +1,145 @@
+"""A content-keyed cache of findings, so a re-run over an unchanged tree costs only reading files.
+
+One JSON file per settings key holds `path -> (content hash, findings)`. The settings key
+covers everything besides the file's bytes that can change its findings: the geolint version,
+the source of the installed geolint package (so editing a rule invalidates the cache during
+development), and the whole config (select/ignore included). The file lives in
+`<project root>/.geolint_cache/` (override with `GEOLINT_CACHE_DIR`), which carries its own
+`.gitignore` so it never gets committed. Writes are atomic (temp file + rename), so parallel
+runs never see a torn file; concurrent runs at worst lose each other's new entries.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+from geolint._version import __version__
+from geolint.lint_types import Config, Edit, Finding, Fix, Severity
+
+CACHE_DIR_ENV = "GEOLINT_CACHE_DIR"
+CACHE_FOLDER = ".geolint_cache"
+FORMAT_VERSION = 1
+
+
+def content_hash(data: bytes) -> str:
+    return hashlib.blake2b(data, digest_size=16).hexdigest()
+
+
+@lru_cache(maxsize=1)
+def package_fingerprint() -> str:
+    """A hash of the installed geolint sources' names, sizes and mtimes (cheap: stats only)."""
+    package_dir = Path(__file__).resolve().parent
+    digest = hashlib.blake2b(digest_size=16)
+    for folder, dirnames, filenames in os.walk(package_dir):
+        dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
+        for name in sorted(filenames):
+            if name.endswith((".py", ".pyi")):
+                stat = os.stat(os.path.join(folder, name))
+                digest.update(f"{os.path.relpath(folder, package_dir)}/{name}:{stat.st_size}:{stat.st_mtime_ns}\n".encode())
+    return digest.hexdigest()
+
+
+def settings_key(config: Config) -> str:
+    """What, besides a file's bytes, its findings depend on."""
+    text = f"{FORMAT_VERSION}|{__version__}|{package_fingerprint()}|{config!r}"
+    return hashlib.blake2b(text.encode(), digest_size=12).hexdigest()
+
+
+def default_cache_dir(root: Path) -> Path:
+    override = os.environ.get(CACHE_DIR_ENV)
+    return Path(override) if override else root / CACHE_FOLDER
+
+
+class FindingsCache:
+    """Findings of previously linted files, valid while their content hash is unchanged."""
+
+    def __init__(self, directory: Path, config: Config) -> None:
+        self.directory = directory
+        self.file = directory / f"findings-{settings_key(config)}.json"
+        self._entries: dict[str, list[Any]] = self._load()
+        self._dirty = False
+        self.hits = 0
+        self.misses = 0
+
+    def _load(self) -> dict[str, list[Any]]:
+        try:
+            with open(self.file, encoding="utf-8") as stream:
+                entries = json.load(stream)
+        except (OSError, ValueError):
+            return {}  # no cache yet, or a damaged one: start over
+        return entries if isinstance(entries, dict) else {}
+
+    def get(self, path: Path, digest: str, display: str) -> list[Finding] | None:
+        entry = self._entries.get(str(path))
+        if entry is None or entry[0] != digest:
+            self.misses += 1
+            return None
+        self.hits += 1
+        return [finding_from_dict(item, display) for item in entry[1]]
+
+    def put(self, path: Path, digest: str, findings: list[Finding]) -> None:
+        self._entries[str(path)] = [digest, [finding_to_dict(finding) for finding in findings]]
+        self._dirty = True
+
+    def save(self) -> None:
+        """Write the cache if anything changed, merged with entries other runs wrote meanwhile."""
+        if not self._dirty:
+            return
+        try:
+            self.directory.mkdir(parents=True, exist_ok=True)
+            gitignore = self.directory / ".gitignore"
+            if not gitignore.exists():
+                gitignore.write_text("# Created by geolint: the cache never belongs in git.\n*\n", encoding="utf-8")
+            merged = {**self._load(), **self._entries}
+            handle, temporary = tempfile.mkstemp(dir=self.directory, prefix=".tmp-", suffix=".json")
+            with os.fdopen(handle, "w", encoding="utf-8") as stream:
+                json.dump(merged, stream, separators=(",", ":"))
+            os.replace(temporary, self.file)
+        except OSError:
+            pass  # a read-only tree still lints; it just does not get faster next time
+        self._dirty = False
+
+
+def finding_to_dict(finding: Finding) -> dict[str, Any]:
+    fix = finding.fix
+    return {
+        "line": finding.line,
+        "column": finding.column,
+        "end_line": finding.end_line,
+        "end_column": finding.end_column,
+        "code": finding.code,
+        "name": finding.name,
+        "message": finding.message,
+        "severity": finding.severity.value,
+        "fix": None
+        if fix is None
+        else {
+            "applicability": fix.applicability,
+            "description": fix.description,
+            "edits": [[e.line, e.column, e.end_line, e.end_column, e.content] for e in fix.edits],
+        },
+    }
+
+
+def finding_from_dict(item: dict[str, Any], path: str) -> Finding:
+    fix = item["fix"]
+    return Finding(
+        path=path,
+        line=item["line"],
+        column=item["column"],
+        end_line=item["end_line"],
+        end_column=item["end_column"],
+        code=item["code"],
+        name=item["name"],
+        message=item["message"],
+        severity=Severity(item["severity"]),
+        fix=None
+        if fix is None
+        else Fix(fix["applicability"], tuple(Edit(*edit) for edit in fix["edits"]), fix["description"]),
+    )

@@ -1,0 +1,149 @@
+"""Find the Python files to lint under the paths given on the command line.
+
+Folders are walked with `.gitignore`-style excludes: the config's `exclude` (which replaces the
+defaults below) and `extend-exclude` (which adds to them), plus every `.gitignore` file met on the
+way. Patterns are anchored at the config root (the folder of pyproject.toml, else the cwd). A file
+named explicitly is always linted, unless `force_exclude` is set (what pre-commit hooks want, since
+pre-commit passes every staged file by name).
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+from typing import Iterable, Sequence
+
+from geolint.config import config_root
+from geolint.lint_types import Config
+
+# Folders nobody wants linted (tools' caches, virtualenvs, build output).
+DEFAULT_EXCLUDES = (
+    ".bzr", ".direnv", ".eggs", ".git", ".hg", ".svn", ".mypy_cache", ".nox", ".pytest_cache",
+    ".ruff_cache", ".geolint_cache", ".tox", ".venv", "venv", "__pypackages__", "__pycache__",
+    "_build", "buck-out", "build", "dist", "node_modules", "*.egg-info",
+)  # fmt: skip
+PYTHON_SUFFIXES = (".py", ".pyi")
+
+
+class DiscoveryError(Exception):
+    """A path given on the command line that does not exist or cannot be read."""
+
+
+@dataclass(frozen=True)
+class SourceFile:
+    """A file to lint: where it is on disk, and how to show it (as given or relative to the cwd)."""
+
+    path: Path
+    display: str
+
+
+@lru_cache(maxsize=64)
+def _spec(patterns: tuple[str, ...]):  # -> pathspec.GitIgnoreSpec
+    import pathspec
+
+    return pathspec.GitIgnoreSpec.from_lines(patterns)
+
+
+def exclude_patterns(config: Config) -> tuple[str, ...]:
+    """The effective exclude patterns: `exclude` (or the defaults) plus `extend-exclude`."""
+    base = config.exclude if config.exclude else DEFAULT_EXCLUDES
+    return tuple(base) + tuple(config.extend_exclude)
+
+
+def discover(paths: Sequence[Path], config: Config, *, force_exclude: bool = False) -> list[SourceFile]:
+    """Every file to lint under `paths`, without duplicates, sorted by display path."""
+    root = config_root(config).resolve()
+    excluder = _Excluder(root, exclude_patterns(config))
+    found: dict[Path, SourceFile] = {}
+    for given in paths:
+        if not given.exists():
+            raise DiscoveryError(f"{given}: no such file or directory")
+        if given.is_dir():
+            for file in _walk(given, excluder):
+                found.setdefault(file.resolve(), SourceFile(file, _display(file)))
+        elif not (force_exclude and excluder.excluded(given.resolve(), is_dir=False)):
+            found.setdefault(given.resolve(), SourceFile(given, _display(given)))
+    return sorted(found.values(), key=lambda source: source.display)
+
+
+def _display(path: Path) -> str:
+    """The path as given (normalised); absolute paths under the cwd are shown relative to it."""
+    text = os.path.normpath(str(path))
+    if os.path.isabs(text):
+        cwd = os.getcwd()
+        if text.startswith(cwd + os.sep):
+            return os.path.relpath(text, cwd)
+    return text
+
+
+def _walk(top: Path, excluder: _Excluder) -> Iterable[Path]:
+    top_resolved = top.resolve()
+    gitignores: list[tuple[str, object]] = list(excluder.gitignores_above(top_resolved))
+    for dirpath, dirnames, filenames in os.walk(top):
+        resolved_dir = os.path.normpath(os.path.join(str(top_resolved), os.path.relpath(dirpath, top)))
+        if ".gitignore" in filenames:
+            spec = _read_gitignore(os.path.join(dirpath, ".gitignore"))
+            if spec is not None:
+                gitignores.append((resolved_dir, spec))
+        active = [(base, spec) for base, spec in gitignores if resolved_dir == base or resolved_dir.startswith(base + os.sep)]
+        kept = []
+        for name in sorted(dirnames):
+            candidate = os.path.join(resolved_dir, name)
+            if not excluder.excluded(Path(candidate), is_dir=True) and not _gitignored(active, candidate, True):
+                kept.append(name)
+        dirnames[:] = kept
+        for name in sorted(filenames):
+            if not name.endswith(PYTHON_SUFFIXES):
+                continue
+            candidate = os.path.join(resolved_dir, name)
+            if excluder.excluded(Path(candidate), is_dir=False) or _gitignored(active, candidate, False):
+                continue
+            yield Path(dirpath, name)
+
+
+def _read_gitignore(path: str):  # -> pathspec.GitIgnoreSpec | None
+    try:
+        with open(path, encoding="utf-8", errors="replace") as stream:
+            lines = tuple(stream.read().splitlines())
+    except OSError:
+        return None
+    return _spec(lines) if lines else None
+
+
+def _gitignored(active: list[tuple[str, object]], candidate: str, is_dir: bool) -> bool:
+    for base, spec in active:
+        relative = os.path.relpath(candidate, base).replace(os.sep, "/") + ("/" if is_dir else "")
+        if spec.match_file(relative):  # type: ignore[attr-defined]
+            return True
+    return False
+
+
+class _Excluder:
+    """Matches resolved paths against the exclude patterns, anchored at the config root."""
+
+    def __init__(self, root: Path, patterns: tuple[str, ...]) -> None:
+        self.root = str(root)
+        self.spec = _spec(patterns)
+
+    def excluded(self, path: Path, *, is_dir: bool) -> bool:
+        text = str(path)
+        if text.startswith(self.root + os.sep):
+            relative = os.path.relpath(text, self.root)
+        else:  # outside the project: match on the name only (e.g. "build", "*.egg-info")
+            relative = os.path.basename(text)
+        relative = relative.replace(os.sep, "/") + ("/" if is_dir else "")
+        return bool(self.spec.match_file(relative))
+
+    def gitignores_above(self, top: Path) -> Iterable[tuple[str, object]]:
+        """`.gitignore` files between the config root and `top` (exclusive), which also apply inside it."""
+        if not (str(top) + os.sep).startswith(self.root + os.sep):
+            return
+        folder = Path(self.root)
+        parts = top.relative_to(folder).parts
+        for depth in range(len(parts)):
+            current = folder.joinpath(*parts[:depth])
+            spec = _read_gitignore(str(current / ".gitignore")) if (current / ".gitignore").is_file() else None
+            if spec is not None:
+                yield str(current), spec

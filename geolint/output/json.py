@@ -1,0 +1,47 @@
+"""`--format json`: one JSON array, one object per finding with exactly the keys
+`path`, `line`, `column`, `end_line`, `end_column` (1-based; end exclusive), `code`, `name`,
+`message`, `severity`, `fix` (null, or `{"applicability": "safe"|"unsafe", "edits": [...]}` where
+each edit is `{"line", "column", "end_line", "end_column", "content"}`). `[]` when clean.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, Sequence
+
+from geolint.lint_types import Finding, Severity
+
+
+def finding_as_json(finding: Finding) -> dict[str, Any]:
+    fix = finding.fix
+    return {
+        "path": finding.path,
+        "line": finding.line,
+        "column": finding.column,
+        "end_line": finding.end_line,
+        "end_column": finding.end_column,
+        "code": finding.code,
+        "name": finding.name,
+        "message": finding.message,
+        "severity": Severity(finding.severity).value,
+        "fix": None
+        if fix is None
+        else {
+            "applicability": fix.applicability,
+            "edits": [
+                {
+                    "line": edit.line,
+                    "column": edit.column,
+                    "end_line": edit.end_line,
+                    "end_column": edit.end_column,
+                    "content": edit.content,
+                }
+                for edit in fix.edits
+            ],
+        },
+    }
+
+
+def render(findings: Sequence[Finding], *, color: bool = False) -> str:
+    """The findings as one JSON array (colour never applies)."""
+    return json.dumps([finding_as_json(finding) for finding in findings], indent=2, ensure_ascii=False) + "\n"

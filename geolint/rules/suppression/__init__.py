@@ -1,0 +1,1 @@
+"""GEO9xx: problems with geolint's own suppression comments (detected by the engine, documented here)."""
