@@ -1,0 +1,42 @@
+"""The base class of the semantic rules: a `Rule` that sees the module's shared `SemanticModel`.
+
+Rules declare `SemanticFactsProvider` as metadata, so the facts are computed once per file by
+libcst's metadata machinery, and read `self.model` (memoised per config) in their visitors.
+"""
+
+from __future__ import annotations
+
+import re
+
+import libcst as cst
+from libcst.metadata import PositionProvider
+
+from geolint.rules.base import Rule
+from geolint.semantic.facts import SemanticFactsProvider
+from geolint.semantic.model import SemanticModel, model_for
+
+
+class SemanticRule(Rule):
+    """A rule that reasons with the semantic model (set up when the module is entered)."""
+
+    METADATA_DEPENDENCIES = (PositionProvider, SemanticFactsProvider)
+
+    model: SemanticModel
+
+    def visit_Module(self, node: cst.Module) -> None:
+        facts = self.get_metadata(SemanticFactsProvider, node)
+        self.model = model_for(facts, self.context.config)
+
+    def code_of(self, node: cst.CSTNode) -> str:
+        """The source text of a node, for messages."""
+        return self.model.facts.module.code_for_node(node).strip()
+
+
+def all_of(*patterns: str) -> re.Pattern[str]:
+    """A trigger regex that matches a file only when EVERY pattern occurs somewhere in it."""
+    lookaheads = "".join(f"(?=[\\s\\S]*?(?:{pattern}))" for pattern in patterns)
+    return re.compile(f"\\A{lookaheads}")
+
+
+def any_of(*patterns: str) -> str:
+    return "|".join(f"(?:{pattern})" for pattern in patterns)
