@@ -51,7 +51,7 @@ class FramedKind:
     __slots__ = ()
 
     # Set on each kind class by __init_subclass__; the framed subclasses share their kind's cache.
-    _kind: ClassVar[type]
+    _kind: ClassVar[Any]
     _framed_classes: ClassVar[dict[Any, type]]
     _by_argument: ClassVar[dict[Any, type]]
     # How many frames the kind is subscripted with: 1 for Point[F], 2 for Transform[Dst, Src].
@@ -121,7 +121,7 @@ def new_framed(cls: type, **slots: Any) -> Any:
 
     Only for values the runtime computed itself from values that were validated when they were built.
     """
-    obj = object.__new__(cls)
+    obj: Any = object.__new__(cls)
     for name, value in slots.items():
         object.__setattr__(obj, name, value)
     return obj
@@ -177,7 +177,7 @@ def format_array(array: np.ndarray) -> str:
         np.round(array, 9) + 0.0,  # no "-0.0" for rounding noise
         separator=", ",
         threshold=24,
-        formatter={"float_kind": _format_float},
+        formatter={"float_kind": _format_float},  # type: ignore[arg-type]
     ).replace("\n", "")
 
 

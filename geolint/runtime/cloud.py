@@ -62,7 +62,7 @@ class PointCloud(FramedKind, Generic[F]):
             framed = PointCloud._framed_classes[(frame,)]
         except KeyError:
             framed = PointCloud.framed_class(frame)
-        obj = object.__new__(framed)
+        obj: Any = object.__new__(framed)
         obj._points = points
         obj._normals = normals
         return obj
@@ -94,10 +94,11 @@ class PointCloud(FramedKind, Generic[F]):
         with_normals = "with" if self._normals is not None else "without"
         return f"{self._describe()}(<{len(self)} points {with_normals} normals>)"
 
-    def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
-        if dtype is None and not copy:
-            return self._points
-        return np.array(self._points, dtype=dtype, copy=True)
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
+            if dtype is None and not copy:
+                return self._points
+            return np.array(self._points, dtype=dtype, copy=True)
 
     def __reduce__(self) -> tuple[Any, ...]:
         from geolint.runtime.primitives import _rebuild
@@ -123,14 +124,16 @@ class PointCloud(FramedKind, Generic[F]):
             raise GeometryValueError(f"{self._describe()} has no normals")
         return np.linalg.norm(self._normals, axis=1)  # type: ignore[no-any-return]
 
-    def __matmul__(self, other: object) -> Any:
-        raise GeometryTypeError(f"{self._describe()} @ {describe(other)}: a transform goes on the left")
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __matmul__(self, other: object) -> Any:
+            raise GeometryTypeError(f"{self._describe()} @ {describe(other)}: a transform goes on the left")
 
-    def __rmatmul__(self, other: object) -> Any:
-        raise GeometryTypeError(
-            f"{describe(other)} @ {self._describe()}: use a Transform[Dst, {self._frame}] so that normals get "
-            f"the rotation only"
-        )
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __rmatmul__(self, other: object) -> Any:
+            raise GeometryTypeError(
+                f"{describe(other)} @ {self._describe()}: use a Transform[Dst, {self._frame}] so that normals get "
+                f"the rotation only"
+            )
 
 
 register_kind(PointCloud)

@@ -10,6 +10,11 @@ Coordinates are float64, shape (3,) for one value or (N, 3) for a batch; they ar
 read-only on construction. ``np.asarray(value)`` gives them back. Operators between a value and a raw
 ndarray are refused (``__array_ufunc__ = None`` stops numpy from treating a value as a plain array), so a
 wrapped value never silently loses its kind or frame.
+
+Hidden from type checkers: the dunders that only exist to refuse an operation with a helpful message
+(``__rmatmul__``, ``Point.__mul__``, ``__array__``...) are defined under ``if not TYPE_CHECKING``, so mypy and
+pyright see no such operator and reject ``R @ p``, ``2 * p`` or ``T @ p_wrong_frame`` statically instead of
+falling back to a permissive reflected operator.
 """
 
 from __future__ import annotations
@@ -118,7 +123,7 @@ class _Coordinates(FramedKind):
     @property
     def shape(self) -> tuple[int, ...]:
         """(3,) for one value, (N, 3) for a batch."""
-        return self._xyz.shape  # type: ignore[no-any-return]
+        return self._xyz.shape
 
     @property
     def is_batch(self) -> bool:
@@ -137,10 +142,11 @@ class _Coordinates(FramedKind):
             )
         return type(self)._wrap(self._frame, self._xyz[index])
 
-    def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
-        if dtype is None and not copy:
-            return self._xyz
-        return np.array(self._xyz, dtype=dtype, copy=True)
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
+            if dtype is None and not copy:
+                return self._xyz
+            return np.array(self._xyz, dtype=dtype, copy=True)
 
     def _describe(self) -> str:
         return f"{self._kind.__name__}[{self._frame}]"
@@ -153,17 +159,19 @@ class _Coordinates(FramedKind):
 
     # ---- refused operations, with the reason ---------------------------------------------------------------
 
-    def __rmatmul__(self, other: object) -> Any:
-        raise GeometryTypeError(
-            f"{describe(other)} @ {describe(self)}: a raw matrix does not know the kind or frame of the value; "
-            f"use a Transform[Dst, {self._frame}] (it applies the translation only to points), or "
-            f"np.asarray(value) if you mean plain array math"
-        )
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __rmatmul__(self, other: object) -> Any:
+            raise GeometryTypeError(
+                f"{describe(other)} @ {describe(self)}: a raw matrix does not know the kind or frame of the value; "
+                f"use a Transform[Dst, {self._frame}] (it applies the translation only to points), or "
+                f"np.asarray(value) if you mean plain array math"
+            )
 
-    def __matmul__(self, other: object) -> Any:
-        raise GeometryTypeError(
-            f"{describe(self)} @ {describe(other)}: a transform goes on the left (T_dst_src @ value)"
-        )
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __matmul__(self, other: object) -> Any:
+            raise GeometryTypeError(
+                f"{describe(self)} @ {describe(other)}: a transform goes on the left (T_dst_src @ value)"
+            )
 
     def __bool__(self) -> bool:
         raise GeometryTypeError(f"the truth value of {describe(self)} is ambiguous; compare np.asarray(value)")
@@ -223,21 +231,25 @@ class Point(_Coordinates, Generic[F]):
             raise _refuse_with_ndarray(self, other, "+", "Vector")
         return NotImplemented
 
-    def __radd__(self, other: object) -> Any:
-        if isinstance(other, np.ndarray):
-            raise _refuse_with_ndarray(self, other, "+", "Vector")
-        return NotImplemented
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __radd__(self, other: object) -> Any:
+            if isinstance(other, np.ndarray):
+                raise _refuse_with_ndarray(self, other, "+", "Vector")
+            return NotImplemented
 
-    def __mul__(self, other: object) -> Any:
-        raise GeometryTypeError(
-            f"{describe(self)} * {describe(other)}: scaling a point depends on where the origin is; "
-            f"scale the vector from a reference point instead: ref + (p - ref) * s"
-        )
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __mul__(self, other: object) -> Any:
+            raise GeometryTypeError(
+                f"{describe(self)} * {describe(other)}: scaling a point depends on where the origin is; "
+                f"scale the vector from a reference point instead: ref + (p - ref) * s"
+            )
 
-    __rmul__ = __mul__
+    if not TYPE_CHECKING:
+        __rmul__ = __mul__
 
-    def __neg__(self) -> Any:
-        raise GeometryTypeError(f"-{describe(self)}: negating a point is not defined; negate a Vector")
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __neg__(self) -> Any:
+            raise GeometryTypeError(f"-{describe(self)}: negating a point is not defined; negate a Vector")
 
     def distance_to(self, other: Point[F]) -> Any:
         """Euclidean distance to another point of the same frame: float, or (N,) for batches."""
@@ -283,12 +295,14 @@ class Vector(_Coordinates, Generic[F]):
             raise _refuse_with_ndarray(self, other, "-", "Vector")
         return NotImplemented
 
-    def __radd__(self, other: object) -> Any:
-        if isinstance(other, np.ndarray):
-            raise _refuse_with_ndarray(self, other, "+", "Vector")
-        return NotImplemented
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __radd__(self, other: object) -> Any:
+            if isinstance(other, np.ndarray):
+                raise _refuse_with_ndarray(self, other, "+", "Vector")
+            return NotImplemented
 
-    __rsub__ = __radd__
+    if not TYPE_CHECKING:
+        __rsub__ = __radd__
 
     def __neg__(self) -> Vector[F]:
         return Vector._wrap(self._frame, -self._xyz)  # type: ignore[no-any-return]
@@ -337,7 +351,7 @@ def _unit(xyz: np.ndarray, owner: str) -> np.ndarray:
         raise GeometryValueError(f"{owner}: a zero-length vector has no direction{where}")
     unit = xyz / lengths
     unit.flags.writeable = False
-    return unit
+    return unit  # type: ignore[no-any-return]
 
 
 class Direction(Vector[F]):
@@ -361,7 +375,7 @@ class Direction(Vector[F]):
         return Direction._wrap(transform._dst, _unit(transform.rotate(self._xyz), "Direction"))
 
 
-_KINDS: dict[str, type] = {"Point": Point, "Vector": Vector, "Direction": Direction}
+_KINDS: dict[str, Any] = {"Point": Point, "Vector": Vector, "Direction": Direction}
 
 
 def register_kind(kind: type) -> None:

@@ -106,7 +106,7 @@ def _check_order(order: object) -> str:
         raise GeometryValueError(
             f"quaternion order must be 'xyzw' (scipy, ROS) or 'wxyz' (pytransform3d, Eigen), got {order!r}"
         )
-    return order  # type: ignore[return-value]
+    return order
 
 
 def quat_to_matrix(

@@ -94,15 +94,16 @@ class _SixVector(FramedKind):
         return type(self)._wrap(transform._dst, first, second)
 
     def __add__(self, other: Any) -> Any:
-        if not isinstance(other, self._kind):
+        if not isinstance(other, _SixVector) or other._kind is not self._kind:
             raise GeometryTypeError(f"{self._describe()} + {describe(other)}: only values of the same kind add")
         check_same_frame(self, other, "+")
         return type(self)._wrap(self._frame, self._first + other._first, self._second + other._second)
 
-    def __rmatmul__(self, other: object) -> Any:
-        raise GeometryTypeError(
-            f"{describe(other)} @ {self._describe()}: use a Transform[Dst, {self._frame}], which applies the adjoint"
-        )
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __rmatmul__(self, other: object) -> Any:
+            raise GeometryTypeError(
+                f"{describe(other)} @ {self._describe()}: use a Transform[Dst, {self._frame}], which applies the adjoint"
+            )
 
 
 class Twist(_SixVector, Generic[F]):
@@ -205,7 +206,7 @@ class Covariance(FramedKind, Generic[F]):
             framed = Covariance._framed_classes[(frame,)]
         except KeyError:
             framed = Covariance.framed_class(frame)
-        obj = object.__new__(framed)
+        obj: Any = object.__new__(framed)
         obj._s = s
         return obj
 
@@ -219,10 +220,11 @@ class Covariance(FramedKind, Generic[F]):
         """S, read-only, shape (3, 3) or (N, 3, 3)."""
         return self._s
 
-    def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
-        if dtype is None and not copy:
-            return self._s
-        return np.array(self._s, dtype=dtype, copy=True)
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
+            if dtype is None and not copy:
+                return self._s
+            return np.array(self._s, dtype=dtype, copy=True)
 
     def _describe(self) -> str:
         return f"Covariance[{self._frame}]"
@@ -246,10 +248,11 @@ class Covariance(FramedKind, Generic[F]):
         moved = 0.5 * (moved + np.swapaxes(moved, -1, -2))
         return Covariance._wrap(transform._dst, moved)
 
-    def __rmatmul__(self, other: object) -> Any:
-        raise GeometryTypeError(
-            f"{describe(other)} @ {self._describe()}: use a Transform[Dst, {self._frame}] (it applies R S R^T)"
-        )
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __rmatmul__(self, other: object) -> Any:
+            raise GeometryTypeError(
+                f"{describe(other)} @ {self._describe()}: use a Transform[Dst, {self._frame}] (it applies R S R^T)"
+            )
 
 
 for _kind in (Twist, Wrench, Covariance):

@@ -99,7 +99,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
                     f"{owner}: {n_r} rotations but {n_t} translations; a batch needs one of each per pose"
                 )
             n = n_r if n_r is not None else n_t
-            matrix = np.zeros((n, 4, 4))  # type: ignore[arg-type]
+            matrix: np.ndarray = np.zeros((n or 0, 4, 4))
         else:
             matrix = np.zeros((4, 4))
         matrix[..., :3, :3] = self._checked_rotation(r, tolerance, orthonormalize, owner)
@@ -134,7 +134,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
             framed = Transform._framed_classes[(dst, src)]
         except KeyError:
             framed = Transform.framed_class(dst, src)
-        obj = object.__new__(framed)
+        obj: Any = object.__new__(framed)
         obj._m = matrix
         obj._r = obj._t = obj._rt = None
         return obj
@@ -197,7 +197,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
         q = checked_array(quat, ((4,), (-1, 4)), "quat", owner)
         tol = _rotation.DEFAULT_TOLERANCE if tolerance is None else tolerance
         r = _rotation.quat_to_matrix(q, order, tol, normalize)
-        return cls(rotation=r, translation=translation)  # type: ignore[return-value]
+        return cls(rotation=r, translation=translation)
 
     @classmethod
     def from_scipy(cls, rotation: Any, translation: ArrayLike | None = None) -> Transform[Dst, Src]:
@@ -208,7 +208,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
             return cls.from_matrix(rotation.as_matrix())
         if type(rotation).__name__ != "Rotation":
             raise GeometryTypeError(f"from_scipy expects a scipy Rotation or RigidTransform, got {describe(rotation)}")
-        return cls(rotation=rotation.as_matrix(), translation=translation)  # type: ignore[return-value]
+        return cls(rotation=rotation.as_matrix(), translation=translation)
 
     @overload
     @staticmethod
@@ -288,10 +288,11 @@ class Transform(FramedKind, Generic[Dst, Src]):
     def _from_state(cls, frames: tuple[str, str], matrix: np.ndarray) -> Any:
         return cls._wrap(frames[0], frames[1], matrix)
 
-    def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
-        if dtype is None and not copy:
-            return self._m
-        return np.array(self._m, dtype=dtype, copy=True)
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
+            if dtype is None and not copy:
+                return self._m
+            return np.array(self._m, dtype=dtype, copy=True)
 
     # ---- conversions --------------------------------------------------------------------------------------
 
@@ -302,7 +303,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
     def as_scipy(self) -> Any:
         """A ``scipy.spatial.transform.RigidTransform`` (scipy >= 1.16) of the same pose(s)."""
         try:
-            from scipy.spatial.transform import RigidTransform
+            from scipy.spatial.transform import RigidTransform  # type: ignore[import-untyped, unused-ignore]
         except ImportError as error:  # pragma: no cover - depends on the installed scipy
             raise ImportError(
                 "as_scipy() needs scipy >= 1.16 (RigidTransform); use as_scipy_rotation() and .translation"
@@ -311,7 +312,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
 
     def as_scipy_rotation(self) -> Any:
         """The rotation part as a ``scipy.spatial.transform.Rotation``."""
-        from scipy.spatial.transform import Rotation
+        from scipy.spatial.transform import Rotation  # type: ignore[import-untyped, unused-ignore]
 
         return Rotation.from_matrix(self.rotation)
 
@@ -393,7 +394,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
         out = (m[:, :3, :3] @ np.broadcast_to(xyz, (n, 3))[:, :, None])[:, :, 0]
         if translate:
             out += m[:, :3, 3]
-        return out
+        return out  # type: ignore[no-any-return]
 
     def _compose(self, other: Transform[Any, Any]) -> Transform[Any, Any]:
         if other._dst is not self._src and other._dst != self._src:
@@ -418,10 +419,11 @@ class Transform(FramedKind, Generic[Dst, Src]):
             )
         return GeometryTypeError(f"{self._describe()} @ {describe(other)}: not a geometric value of geolint")
 
-    def __rmatmul__(self, other: object) -> Any:
-        raise GeometryTypeError(
-            f"{describe(other)} @ {self._describe()}: write T.matrix for plain array math, or compose Transforms"
-        )
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __rmatmul__(self, other: object) -> Any:
+            raise GeometryTypeError(
+                f"{describe(other)} @ {self._describe()}: write T.matrix for plain array math, or compose Transforms"
+            )
 
     def __bool__(self) -> bool:
         raise GeometryTypeError(f"the truth value of {self._describe()} is ambiguous")
