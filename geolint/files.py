@@ -63,7 +63,7 @@ def discover(paths: Sequence[Path], config: Config, *, force_exclude: bool = Fal
         if given.is_dir():
             for file in _walk(given, excluder):
                 found.setdefault(file.resolve(), SourceFile(file, _display(file)))
-        elif not (force_exclude and excluder.excluded(given.resolve(), is_dir=False)):
+        elif not (force_exclude and _excluded_file(given.resolve(), excluder)):
             found.setdefault(given.resolve(), SourceFile(given, _display(given)))
     return sorted(found.values(), key=lambda source: source.display)
 
@@ -101,6 +101,24 @@ def _walk(top: Path, excluder: _Excluder) -> Iterable[Path]:
             if excluder.excluded(Path(candidate), is_dir=False) or _gitignored(active, candidate, False):
                 continue
             yield Path(dirpath, name)
+
+
+def _excluded_file(file: Path, excluder: _Excluder) -> bool:
+    """Whether excludes or a `.gitignore` (between the root and the file) exclude this file or a folder above it."""
+    root = Path(excluder.root)
+    if file.parent != root and root not in file.parents:
+        return excluder.excluded(file, is_dir=False)
+    folders = [folder for folder in reversed(file.parents) if folder == root or root in folder.parents]
+    gitignores: list[tuple[str, object]] = []
+    for folder in folders:
+        if folder != root and excluder.excluded(folder, is_dir=True):
+            return True
+        spec = _read_gitignore(str(folder / ".gitignore")) if (folder / ".gitignore").is_file() else None
+        if spec is not None:
+            gitignores.append((str(folder), spec))
+        if folder != root and _gitignored(gitignores[:-1] if spec is not None else gitignores, str(folder), True):
+            return True
+    return excluder.excluded(file, is_dir=False) or _gitignored(gitignores, str(file), False)
 
 
 def _read_gitignore(path: str):  # -> pathspec.GitIgnoreSpec | None

@@ -94,7 +94,9 @@ def run(args: argparse.Namespace) -> int:
     for result in results:
         if result.error is not None:
             internal_errors += 1
-            _error(f"internal error while checking {result.path} (please report it):\n{result.error.rstrip()}")
+            detail = result.error.rstrip() if args.verbose else result.error.rstrip().splitlines()[-1]
+            hint = "" if args.verbose else " (--verbose shows the traceback)"
+            _error(f"internal error while checking {result.path}{hint}; please report it:\n  {detail}")
 
     fixed_total = 0
     if args.fix or args.diff:
@@ -220,8 +222,12 @@ def _fix(
 
 
 def _unified_diff(path: str, before: str, after: str) -> str:
+    absolute = os.path.isabs(path)
     lines = difflib.unified_diff(
-        before.splitlines(keepends=True), after.splitlines(keepends=True), fromfile=f"a/{path}", tofile=f"b/{path}"
+        before.splitlines(keepends=True),
+        after.splitlines(keepends=True),
+        fromfile=path if absolute else f"a/{path}",
+        tofile=path if absolute else f"b/{path}",
     )
     return "".join(line if line.endswith("\n") else line + "\n\\ No newline at end of file\n" for line in lines)
 
@@ -267,11 +273,13 @@ def _summary(findings: Sequence[Finding], fixed: int, known: int) -> str:
     if fixed:
         parts.append(f"Fixed {fixed} finding{'s' * (fixed != 1)}.")
     if findings:
-        fixable = sum(1 for f in findings if f.fix is not None)
+        safe = sum(1 for f in findings if f.fix is not None and f.fix.applicability == "safe")
+        unsafe = sum(1 for f in findings if f.fix is not None and f.fix.applicability != "safe")
         line = f"Found {len(findings)} finding{'s' * (len(findings) != 1)}"
-        if fixable:
-            line += f" ({fixable} fixable with --fix or --unsafe-fixes)"
-        parts.append(line + ".")
+        hints = [f"{safe} fixable with --fix"] if safe else []
+        if unsafe:
+            hints.append(f"{unsafe} more with --fix --unsafe-fixes")
+        parts.append(line + (f" ({', '.join(hints)})" if hints else "") + ".")
     else:
         parts.append("All checks passed.")
     if known:
