@@ -53,6 +53,8 @@ class FramedKind:
     # Set on each kind class by __init_subclass__; the framed subclasses share their kind's cache.
     _kind: ClassVar[Any]
     _framed_classes: ClassVar[dict[Any, type]]
+    # For one-frame kinds, the same classes keyed by the bare name (a hot-path lookup without a tuple).
+    _by_frame_name: ClassVar[dict[str, type]]
     _by_argument: ClassVar[dict[Any, type]]
     # How many frames the kind is subscripted with: 1 for Point[F], 2 for Transform[Dst, Src].
     _frame_arity: ClassVar[int] = 1
@@ -62,6 +64,7 @@ class FramedKind:
         if "_frames" not in cls.__dict__:  # a kind class, not one of its framed subclasses
             cls._kind = cls
             cls._framed_classes = {}
+            cls._by_frame_name = {}
             cls._by_argument = {}
 
     def __class_getitem__(cls, item: Any) -> Any:  # implicitly a classmethod
@@ -105,6 +108,8 @@ class FramedKind:
         namespace.update(kind._frame_attributes(*frames))
         framed = type(kind)(label, (kind,), namespace)
         kind._framed_classes[frames] = framed
+        if len(frames) == 1:
+            kind._by_frame_name[frames[0]] = framed
         return framed
 
     @classmethod

@@ -59,7 +59,7 @@ class PointCloud(FramedKind, Generic[F]):
     @classmethod
     def _wrap(cls, frame: str, points: np.ndarray, normals: np.ndarray | None) -> Any:
         try:
-            framed = PointCloud._framed_classes[(frame,)]
+            framed = PointCloud._by_frame_name[frame]
         except KeyError:
             framed = PointCloud.framed_class(frame)
         obj: Any = object.__new__(framed)

@@ -101,9 +101,9 @@ class _Coordinates(FramedKind):
     def _wrap(cls, frame: str, xyz: np.ndarray) -> Any:
         """A value of this kind in ``frame`` around computed coordinates (no validation, no copy)."""
         try:
-            framed = cls._kind._framed_classes[(frame,)]
+            framed = cls._by_frame_name[frame]
         except KeyError:
-            framed = cls._kind.framed_class(frame)
+            framed = cls.framed_class(frame)
         obj = object.__new__(framed)
         obj._xyz = xyz
         return obj

@@ -58,7 +58,7 @@ class _SixVector(FramedKind):
     def _wrap(cls, frame: str, first: np.ndarray, second: np.ndarray) -> Any:
         kind = cls._kind
         try:
-            framed = kind._framed_classes[(frame,)]
+            framed = kind._by_frame_name[frame]
         except KeyError:
             framed = kind.framed_class(frame)
         obj = object.__new__(framed)
@@ -203,7 +203,7 @@ class Covariance(FramedKind, Generic[F]):
     @classmethod
     def _wrap(cls, frame: str, s: np.ndarray) -> Any:
         try:
-            framed = Covariance._framed_classes[(frame,)]
+            framed = Covariance._by_frame_name[frame]
         except KeyError:
             framed = Covariance.framed_class(frame)
         obj: Any = object.__new__(framed)

@@ -61,15 +61,17 @@ class Transform(FramedKind, Generic[Dst, Src]):
     >>> T_world_cam.inverse()                           # Transform[Camera, World]
     """
 
-    __slots__ = ("_m", "_r", "_t", "_rt")
+    # _r and _t are views of _m made on first use (left unset until then: a fresh composition pays nothing).
+    __slots__ = ("_m", "_r", "_t")
     __array_ufunc__ = None  # `ndarray @ T` must reach __rmatmul__, which explains what to do
     _frame_arity: ClassVar[int] = 2
     _dst: ClassVar[str]
     _src: ClassVar[str]
     _m: np.ndarray
-    _r: np.ndarray | None
-    _t: np.ndarray | None
-    _rt: np.ndarray | None
+    _r: np.ndarray
+    _t: np.ndarray
+    # Transform is not a framed value: `getattr(T, "_frame", None)` in dispatch must find None quickly.
+    _frame: ClassVar[None] = None
 
     @classmethod
     def _label(cls, *frames: str) -> str:
@@ -125,7 +127,6 @@ class Transform(FramedKind, Generic[Dst, Src]):
     def _set_matrix(self, matrix: np.ndarray) -> None:
         matrix.flags.writeable = False
         self._m = matrix
-        self._r = self._t = self._rt = None
 
     @classmethod
     def _wrap(cls, dst: str, src: str, matrix: np.ndarray) -> Any:
@@ -136,7 +137,6 @@ class Transform(FramedKind, Generic[Dst, Src]):
             framed = Transform.framed_class(dst, src)
         obj: Any = object.__new__(framed)
         obj._m = matrix
-        obj._r = obj._t = obj._rt = None
         return obj
 
     # ---- constructors -----------------------------------------------------------------------------------
@@ -242,18 +242,20 @@ class Transform(FramedKind, Generic[Dst, Src]):
     @property
     def rotation(self) -> NDArray[np.float64]:
         """R_dst_src, read-only, shape (3, 3) or (N, 3, 3)."""
-        r = self._r
-        if r is None:
+        try:
+            return self._r
+        except AttributeError:
             r = self._r = self._m[..., :3, :3]
-        return r
+            return r
 
     @property
     def translation(self) -> NDArray[np.float64]:
         """t_dst_src (the origin of Src in Dst), read-only, shape (3,) or (N, 3)."""
-        t = self._t
-        if t is None:
+        try:
+            return self._t
+        except AttributeError:
             t = self._t = self._m[..., :3, 3]
-        return t
+            return t
 
     @property
     def is_batch(self) -> bool:
@@ -349,26 +351,46 @@ class Transform(FramedKind, Generic[Dst, Src]):
         frame = getattr(other, "_frame", None)
         if frame is None:
             if isinstance(other, Transform):
-                return self._compose(other)
+                # Composition, inlined like the point path below.
+                if other._dst is not self._src and other._dst != self._src:
+                    raise self._composition_mismatch(other)
+                a, b = self._m, other._m
+                if a.ndim == 3 and b.ndim == 3 and a.shape[0] != b.shape[0]:
+                    raise self._batch_mismatch(other)
+                try:
+                    cls = Transform._framed_classes[(self._dst, other._src)]
+                except KeyError:
+                    cls = Transform.framed_class(self._dst, other._src)
+                composed = object.__new__(cls)
+                composed._m = a @ b
+                return composed
             raise self._refusal(other)
         if frame is not self._src and frame != self._src:
             raise FrameMismatchError(
                 f"{self._describe()} applied to {describe(other)}: expected a {other._kind.__name__}[{self._src}]"
             )
         if isinstance(other, Point):
+            # The hot path: inlined (no helper calls) because one point costs only ~1 us in plain numpy.
             xyz = other._xyz
             if self._m.ndim == 2:
-                rt = self._rt
-                if rt is None:
-                    rt = self._rt = self._m[:3, :3].T
-                t = self._t
-                if t is None:
-                    t = self._t = self._m[:3, 3]
-                out = xyz @ rt
+                try:
+                    r = self._r
+                    t = self._t
+                except AttributeError:
+                    r = self.rotation
+                    t = self.translation
+                # (R @ X.T).T is numpy's fastest kernel for (N, 3) input (see benchmarks/bench_runtime.py).
+                out = r @ xyz if xyz.ndim == 1 else (r @ xyz.T).T
                 out += t
             else:
                 out = self._apply_batch(xyz, translate=True)
-            return Point._wrap(self._dst, out)
+            try:
+                cls = _POINT_CLASSES[self._dst]
+            except KeyError:
+                cls = Point.framed_class(self._dst)
+            result = object.__new__(cls)
+            result._xyz = out
+            return result
         moved_by = getattr(other, "_moved_by", None)
         if moved_by is None:
             raise self._refusal(other)
@@ -377,10 +399,8 @@ class Transform(FramedKind, Generic[Dst, Src]):
     def rotate(self, xyz: np.ndarray) -> np.ndarray:
         """R x for coordinates of shape (3,) or (N, 3) (pose i to row i for a batch); no frame checks."""
         if self._m.ndim == 2:
-            rt = self._rt
-            if rt is None:
-                rt = self._rt = self._m[:3, :3].T
-            return xyz @ rt  # type: ignore[no-any-return]
+            r = self.rotation
+            return r @ xyz if xyz.ndim == 1 else (r @ xyz.T).T  # type: ignore[no-any-return]
         return self._apply_batch(xyz, translate=False)
 
     def _apply_batch(self, xyz: np.ndarray, translate: bool) -> np.ndarray:
@@ -396,19 +416,17 @@ class Transform(FramedKind, Generic[Dst, Src]):
             out += m[:, :3, 3]
         return out  # type: ignore[no-any-return]
 
-    def _compose(self, other: Transform[Any, Any]) -> Transform[Any, Any]:
-        if other._dst is not self._src and other._dst != self._src:
-            raise FrameMismatchError(
-                f"{self._describe()} @ {other._describe()}: composing needs the inner frames to match; "
-                f"expected a Transform[{self._src} <- ...]"
-            )
-        a, b = self._m, other._m
-        if a.ndim == 3 and b.ndim == 3 and a.shape[0] != b.shape[0]:
-            raise GeometryValueError(
-                f"{self._describe()} @ {other._describe()}: batches of {a.shape[0]} and {b.shape[0]} poses; "
-                f"composition pairs pose i with pose i, so the counts must match"
-            )
-        return Transform._wrap(self._dst, other._src, a @ b)  # type: ignore[no-any-return]
+    def _composition_mismatch(self, other: Transform[Any, Any]) -> FrameMismatchError:
+        return FrameMismatchError(
+            f"{self._describe()} @ {other._describe()}: composing needs the inner frames to match; "
+            f"expected a Transform[{self._src} <- ...]"
+        )
+
+    def _batch_mismatch(self, other: Transform[Any, Any]) -> GeometryValueError:
+        return GeometryValueError(
+            f"{self._describe()} @ {other._describe()}: batches of {self._m.shape[0]} and {other._m.shape[0]} "
+            f"poses; composition pairs pose i with pose i, so the counts must match"
+        )
 
     def _refusal(self, other: object) -> GeometryTypeError:
         if isinstance(other, np.ndarray):
@@ -436,6 +454,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
 
 
 register_kind(Transform)
+_POINT_CLASSES = Point._by_frame_name
 
 # Silence "imported but unused" for names kept for the public surface of this module.
 _ = (Frame, InvalidRotationError, new_framed)
