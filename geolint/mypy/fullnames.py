@@ -1,0 +1,68 @@
+"""Every fully qualified name the plugin hooks or builds, in one place.
+
+mypy names a method call after the class of the receiver (``geolint.typing.PointArray.__add__`` even though
+the method is inherited from ``numpy.ndarray``), and a function after the module that defines it (not the one
+that re-exports it), which is why the numpy and third-party names below point at private modules.
+"""
+
+from __future__ import annotations
+
+# --- runtime kinds (geolint.runtime; helper H1's fixed module layout) ---
+FRAME = "geolint.runtime.frames.Frame"
+POINT = "geolint.runtime.primitives.Point"
+VECTOR = "geolint.runtime.primitives.Vector"
+DIRECTION = "geolint.runtime.primitives.Direction"
+TRANSFORM = "geolint.runtime.transform.Transform"
+POINT_CLOUD = "geolint.runtime.cloud.PointCloud"
+TWIST = "geolint.runtime.spatial.Twist"
+WRENCH = "geolint.runtime.spatial.Wrench"
+
+# --- annotations for plain ndarrays (geolint.typing) ---
+TYPING_MODULE = "geolint.typing"
+POINT_ARRAY = "geolint.typing.PointArray"
+VECTOR_ARRAY = "geolint.typing.VectorArray"
+DIRECTION_ARRAY = "geolint.typing.DirectionArray"
+ROTATION_MATRIX = "geolint.typing.RotationMatrix"
+TRANSFORM_MATRIX = "geolint.typing.TransformMatrix"
+TRANSLATION = "geolint.typing.Translation"
+HOMOGENEOUS_POINTS = "geolint.typing.HomogeneousPoints"
+HOMOGENEOUS_VECTORS = "geolint.typing.HomogeneousVectors"
+VECTOR_WITH_W1 = "geolint.typing.VectorWithW1"
+AS_POINTS = "geolint.typing.as_points"
+AS_VECTORS = "geolint.typing.as_vectors"
+AS_DIRECTIONS = "geolint.typing.as_directions"
+AS_ROTATION = "geolint.typing.as_rotation"
+AS_TRANSFORM = "geolint.typing.as_transform"
+AS_TRANSLATION = "geolint.typing.as_translation"
+
+# --- numpy ---
+NDARRAY = "numpy.ndarray"
+NP_DOT = "numpy._core.multiarray.dot"
+NP_ASARRAY = "numpy._core.multiarray.asarray"
+NP_APPEND = "numpy.lib._function_base_impl.append"
+NP_LINALG_INV = "numpy.linalg._linalg.inv"
+# np.matmul is a ufunc object: the call is a method call on its class, told apart by the callee's name.
+NP_GUFUNC_CALL = "numpy._typing._ufunc._GUFunc_Nin2_Nout1.__call__"
+NP_MATMUL_NAMES = frozenset({"numpy.matmul", "numpy._core.umath.matmul"})
+
+# --- third-party calls that move points and vectors ---
+TRIMESH_TRANSFORM_POINTS = "trimesh.transformations.transform_points"
+PT3D_VECTOR_TO_POINT = "pytransform3d.transformations._transform_operations.vector_to_point"
+PT3D_VECTOR_TO_DIRECTION = "pytransform3d.transformations._transform_operations.vector_to_direction"
+PT3D_TRANSFORM = "pytransform3d.transformations._transform_operations.transform"
+
+# Binary operators the plugin gives frame-aware results.
+# The reflected ones matter too: when ``a.__matmul__`` reports a problem, mypy tries ``b.__rmatmul__`` and
+# would keep numpy's silent answer unless the plugin reports there as well.
+OPERATORS = (
+    "__matmul__",
+    "__rmatmul__",
+    "__add__",
+    "__radd__",
+    "__sub__",
+    "__rsub__",
+    "__mul__",
+    "__rmul__",
+    "__truediv__",
+    "__neg__",
+)

@@ -1,0 +1,138 @@
+"""The plugin's view of a mypy type: which geometric kind it is and in which frames it lives.
+
+The typing trick: a frame is just a type argument. ``Point[World]`` carries the instance type ``World``;
+a string frame ``Point["camera"]`` carries ``Literal["camera"]`` (see `string_frames`). Comparing frames is
+therefore comparing types, and a frame that is a TypeVar (``Point[F]`` in a generic function) compares equal
+only to the same TypeVar, which keeps frame-generic functions checkable. A frame we cannot read (Any, a
+union) is "unknown" and silences every check that would need it: precision first.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from mypy.nodes import TypeInfo
+from mypy.plugin import CheckerPluginInterface
+from mypy.subtypes import is_same_type
+from mypy.types import AnyType, Instance, ProperType, Type, TypeOfAny, get_proper_type
+
+from geolint.mypy import fullnames as names
+
+RUNTIME = "runtime"
+ARRAY = "array"
+
+# kind names shared by both families; the algebra (`algebra`) is written once in these terms
+POINT = "point"
+VECTOR = "vector"
+DIRECTION = "direction"
+TRANSFORM = "transform"
+ROTATION = "rotation"
+TRANSLATION = "translation"
+HOMOGENEOUS_POINT = "homogeneous point"
+HOMOGENEOUS_VECTOR = "homogeneous vector"
+VECTOR_WITH_W1 = "vector with w=1"
+
+KIND_OF_FULLNAME: dict[str, tuple[str, str]] = {
+    names.POINT: (RUNTIME, POINT),
+    names.VECTOR: (RUNTIME, VECTOR),
+    names.DIRECTION: (RUNTIME, DIRECTION),
+    names.TRANSFORM: (RUNTIME, TRANSFORM),
+    names.POINT_ARRAY: (ARRAY, POINT),
+    names.VECTOR_ARRAY: (ARRAY, VECTOR),
+    names.DIRECTION_ARRAY: (ARRAY, DIRECTION),
+    names.ROTATION_MATRIX: (ARRAY, ROTATION),
+    names.TRANSFORM_MATRIX: (ARRAY, TRANSFORM),
+    names.TRANSLATION: (ARRAY, TRANSLATION),
+    names.HOMOGENEOUS_POINTS: (ARRAY, HOMOGENEOUS_POINT),
+    names.HOMOGENEOUS_VECTORS: (ARRAY, HOMOGENEOUS_VECTOR),
+    names.VECTOR_WITH_W1: (ARRAY, VECTOR_WITH_W1),
+}
+FULLNAME_OF_KIND = {value: key for key, value in KIND_OF_FULLNAME.items()}
+
+# How users read each kind in messages.
+DISPLAY_NAME = {fullname: fullname.rsplit(".", 1)[1] for fullname in KIND_OF_FULLNAME}
+
+# Generic classes whose frame arguments may be strings (the string-frame hook is registered for these).
+FRAMED_CLASSES = tuple(KIND_OF_FULLNAME) + (names.POINT_CLOUD, names.TWIST, names.WRENCH)
+
+
+@dataclass(frozen=True)
+class Geo:
+    """A geometric value's kind and frames (one frame, or ``(dst, src)`` for transforms and rotations)."""
+
+    family: str
+    kind: str
+    frames: tuple[ProperType, ...]
+
+    @property
+    def frame(self) -> ProperType:
+        return self.frames[0]
+
+    @property
+    def dst(self) -> ProperType:
+        return self.frames[0]
+
+    @property
+    def src(self) -> ProperType:
+        return self.frames[-1]
+
+    def with_frames(self, *frames: ProperType, kind: str | None = None) -> Geo:
+        return Geo(self.family, kind or self.kind, tuple(frames))
+
+
+def read(typ: Type) -> Geo | None:
+    """The `Geo` of a type, or None when it is not one of geolint's framed kinds."""
+    proper = get_proper_type(typ)
+    if not isinstance(proper, Instance):
+        return None
+    family_kind = KIND_OF_FULLNAME.get(proper.type.fullname)
+    if family_kind is None or not proper.args:
+        return None
+    family, kind = family_kind
+    return Geo(family, kind, tuple(get_proper_type(arg) for arg in proper.args))
+
+
+def build(api: CheckerPluginInterface, geo: Geo) -> Type | None:
+    """The mypy type for a `Geo`, or None when its class is not loaded in this build."""
+    fullname = FULLNAME_OF_KIND.get((geo.family, geo.kind))
+    if fullname is None:
+        return None
+    info = lookup_class(api, fullname)
+    if info is None:
+        return None
+    return Instance(info, list(geo.frames))
+
+
+def lookup_class(api: CheckerPluginInterface, fullname: str) -> TypeInfo | None:
+    """A top-level class by full name, or None when its module is not in this build.
+
+    (mypy's ``named_generic_type`` walks the package's symbol tables, where a submodule such as
+    ``geolint.typing`` only appears once the package imports it; the module table always has it.)
+    """
+    module_name, _, class_name = fullname.rpartition(".")
+    module = getattr(api, "modules", {}).get(module_name)
+    symbol = module.names.get(class_name) if module is not None else None
+    node = symbol.node if symbol is not None else None
+    return node if isinstance(node, TypeInfo) else None
+
+
+def is_known(frame: ProperType) -> bool:
+    """Whether a frame is precise enough to compare (not Any, not a union of frames)."""
+    return not isinstance(frame, AnyType) and not _is_union(frame)
+
+
+def same_frame(first: ProperType, second: ProperType) -> bool | None:
+    """True/False when both frames are known, None when either is unknown (then nobody reports)."""
+    if not (is_known(first) and is_known(second)):
+        return None
+    return is_same_type(first, second)
+
+
+def unknown_frame() -> ProperType:
+    return AnyType(TypeOfAny.special_form)
+
+
+def _is_union(frame: ProperType) -> bool:
+    from mypy.types import UnionType
+
+    return isinstance(frame, UnionType)

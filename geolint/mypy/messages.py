@@ -1,0 +1,96 @@
+"""How the plugin's messages spell geometric types: ``Transform[World <- Camera]``, ``Point["camera"]``.
+
+Two-frame kinds read like Drake's monogram ``X_WC``: the destination first, an arrow, then the source, so a
+message shows at a glance which inner frames disagree.
+"""
+
+from __future__ import annotations
+
+from mypy.types import Instance, LiteralType, ProperType, TypeVarType
+
+from geolint.mypy.geometry import DISPLAY_NAME, FULLNAME_OF_KIND, Geo
+
+TWO_FRAME_KINDS = frozenset({"transform", "rotation", "translation"})
+
+
+def frame_text(frame: ProperType) -> str:
+    """A frame as the user wrote it: a class name, a quoted string frame, or a TypeVar's name."""
+    if isinstance(frame, Instance):
+        return frame.type.name
+    if isinstance(frame, LiteralType) and isinstance(frame.value, str):
+        return f'"{frame.value}"'
+    if isinstance(frame, TypeVarType):
+        return frame.name
+    return "?"
+
+
+def kind_text(geo: Geo) -> str:
+    fullname = FULLNAME_OF_KIND[(geo.family, geo.kind)]
+    return DISPLAY_NAME[fullname]
+
+
+def geo_text(geo: Geo) -> str:
+    """``Point[World]`` or ``Transform[World <- Camera]``."""
+    if geo.kind in TWO_FRAME_KINDS:
+        return f"{kind_text(geo)}[{frame_text(geo.dst)} <- {frame_text(geo.src)}]"
+    return f"{kind_text(geo)}[{frame_text(geo.frame)}]"
+
+
+def applied_to_wrong_frame(transform: Geo, value: Geo) -> str:
+    expected = value.with_frames(transform.src, *value.frames[1:])
+    return f"{geo_text(transform)} applied to {geo_text(value)}: expected a {geo_text(expected)}"
+
+
+def rows_in_wrong_frame(value: Geo, rotation: Geo) -> str:
+    return (
+        f"{geo_text(value)} @ {geo_text(rotation)} (row vectors): expected rows in "
+        f"{frame_text(rotation.dst)}; to map rows from {frame_text(rotation.src)}, multiply by R.T"
+    )
+
+
+def composed_across_frames(left: Geo, right: Geo) -> str:
+    expected = right.with_frames(left.src, right.src)
+    return f"{geo_text(left)} composed with {geo_text(right)}: expected a {geo_text(expected)}"
+
+
+def mixed_frames(operator: str, left: Geo, right: Geo) -> str:
+    return f"{geo_text(left)} {operator} {geo_text(right)}: the operands live in different frames"
+
+
+def points_added(left: Geo, right: Geo) -> str:
+    return (
+        f"{geo_text(left)} + {geo_text(right)}: adding two points has no geometric meaning; "
+        "subtract them for a vector, or add a vector to a point"
+    )
+
+
+def point_subtracted_from_vector(left: Geo, right: Geo) -> str:
+    return f"{geo_text(left)} - {geo_text(right)}: a vector minus a point has no geometric meaning"
+
+
+def translation_added_to_vector(vector: Geo, translation: Geo) -> str:
+    return (
+        f"{geo_text(vector)} + {geo_text(translation)}: a translation added to a "
+        f"{vector.kind}; vectors and directions take the rotation only (R @ v)"
+    )
+
+
+def translation_through_matrix(transform: Geo, value: Geo) -> str:
+    return (
+        f"{geo_text(transform)} applied to {geo_text(value)}: the vector was homogenized with w=1, so the "
+        "full matrix adds its translation; use w=0 or the rotation block"
+    )
+
+
+def translating_call(call: str, value: Geo) -> str:
+    return (
+        f"{call} translates its input, but {geo_text(value)} is a {value.kind}: "
+        "vectors and directions take the rotation only"
+    )
+
+
+def vector_made_point(call: str, value: Geo) -> str:
+    return (
+        f"{call} gives {geo_text(value)} w=1, so a 4x4 transform will add its translation to it; "
+        "use vector_to_direction (w=0)"
+    )

@@ -1,0 +1,115 @@
+"""Binary operators on framed values: ``T @ p``, ``p - q``, ``R @ v + t``, ``2.0 * v``.
+
+The typing trick is a pair of hooks per operator method:
+
+1. a *method signature hook* reads the operand types. When both are framed kinds and `algebra` has an
+   answer, it rewrites every overload item to ``(other: <the operand's type>) -> <the inferred result>``, so
+   mypy accepts the call without its generic "Unsupported operand types" error (which names no frame);
+2. the *method hook* then reports the precise problem under a geolint error code (``geo-frame``,
+   ``geo-kind``, ``geo-translation``) and returns the inferred result type.
+
+When either operand is not framed (a raw ndarray, a float), both hooks leave mypy's own behaviour alone.
+mypy names the method after the receiver's class, so the hooks fire for ``PointArray.__add__`` even
+though the method is numpy's.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from mypy.nodes import Expression
+from mypy.plugin import CheckerPluginInterface, MethodContext, MethodSigContext
+from mypy.types import CallableType, FunctionLike, Type
+
+from geolint.mypy import algebra, geometry
+from geolint.mypy.algebra import Outcome
+from geolint.mypy.geometry import Geo
+
+BinaryRule = Callable[[Geo, Geo], "Outcome | None"]
+
+# operator method -> (rule, whether the receiver is the left operand)
+BINARY_RULES: dict[str, tuple[BinaryRule, bool]] = {
+    "__matmul__": (algebra.matmul, True),
+    "__add__": (algebra.add, True),
+    "__rmatmul__": (algebra.matmul, False),
+    "__radd__": (algebra.add, False),
+    "__sub__": (algebra.subtract, True),
+    "__rsub__": (algebra.subtract, False),
+}
+SCALING_OPERATORS = frozenset({"__mul__", "__rmul__", "__truediv__", "__neg__"})
+
+
+def outcome(operator: str, receiver: Type, operand: Type | None) -> Outcome | None:
+    """What `algebra` says about ``receiver <operator> operand`` (None: not a framed operation)."""
+    receiver_geo = geometry.read(receiver)
+    if receiver_geo is None:
+        return None
+    if operator in SCALING_OPERATORS:
+        if operand is not None and geometry.read(operand) is not None:
+            return None  # vector * vector is numpy's elementwise product; no frame meaning to add
+        if operator == "__neg__" and receiver_geo.kind in algebra.FREE_KINDS:
+            return Outcome(receiver_geo)  # -d is still a unit direction
+        return algebra.scale(receiver_geo)
+    operand_geo = geometry.read(operand) if operand is not None else None
+    if operand_geo is None:
+        return None
+    rule, receiver_is_left = BINARY_RULES[operator]
+    if receiver_is_left:
+        return rule(receiver_geo, operand_geo)
+    return rule(operand_geo, receiver_geo)
+
+
+def signature_hook(operator: str) -> Callable[[MethodSigContext], FunctionLike]:
+    def hook(ctx: MethodSigContext) -> FunctionLike:
+        operand_expr = _single_operand(ctx.args)
+        if operand_expr is None and operator != "__neg__":
+            return ctx.default_signature
+        operand = _operand_type(ctx.api, operand_expr) if operand_expr is not None else None
+        result = outcome(operator, ctx.type, operand)
+        if result is None or result.result is None and result.problem is None:
+            return ctx.default_signature
+        # Only rewrite when both operands are framed: then the plugin owns the answer (and its error).
+        if operator not in SCALING_OPERATORS or result.problem is not None:
+            return _accepting(ctx.default_signature, operand, _built(ctx.api, result, ctx.default_signature))
+        return ctx.default_signature
+
+    return hook
+
+
+def method_hook(operator: str) -> Callable[[MethodContext], Type]:
+    def hook(ctx: MethodContext) -> Type:
+        operand = ctx.arg_types[0][0] if ctx.arg_types and ctx.arg_types[0] else None
+        result = outcome(operator, ctx.type, operand)
+        if result is None:
+            return ctx.default_return_type
+        if result.problem is not None:
+            ctx.api.fail(result.problem.message, ctx.context, code=result.problem.code)
+        return _built(ctx.api, result, ctx.default_return_type)
+
+    return hook
+
+
+def _built(api: CheckerPluginInterface, result: Outcome, default: Type) -> Type:
+    if result.result is None:
+        return default.ret_type if isinstance(default, CallableType) else default
+    return geometry.build(api, result.result) or (
+        default.ret_type if isinstance(default, CallableType) else default
+    )
+
+
+def _single_operand(args: list[list[Expression]]) -> Expression | None:
+    if len(args) >= 1 and len(args[0]) == 1:
+        return args[0][0]
+    return None
+
+
+def _operand_type(api: CheckerPluginInterface, expr: Expression) -> Type:
+    # The operand was already inferred by mypy for the operator; asking again reads the same expression.
+    return api.get_expression_type(expr)
+
+
+def _accepting(signature: CallableType, operand: Type | None, result: Type) -> CallableType:
+    arg_types = list(signature.arg_types)
+    if operand is not None and arg_types:
+        arg_types[0] = operand
+    return signature.copy_modified(arg_types=arg_types, ret_type=result, variables=[])

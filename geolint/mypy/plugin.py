@@ -1,0 +1,124 @@
+"""The plugin class: dispatch tables only. Each ``get_*_hook`` is a dictionary lookup by fully qualified name;
+the typing tricks live in the feature modules named in the tables.
+"""
+
+from __future__ import annotations
+
+from functools import partial
+from typing import Any, Callable
+
+from mypy.nodes import Import, MypyFile
+from mypy.options import Options
+from mypy.plugin import (
+    AnalyzeTypeContext,
+    FunctionContext,
+    MethodContext,
+    MethodSigContext,
+    Plugin,
+    ReportConfigContext,
+)
+from mypy.types import FunctionLike, Type
+
+from geolint.mypy import config, fullnames as names, markers, numpy_calls, operators, string_frames, third_party
+from geolint.mypy.geometry import FRAMED_CLASSES
+
+ARITY = {names.TRANSFORM: 2, names.ROTATION_MATRIX: 2, names.TRANSFORM_MATRIX: 2, names.TRANSLATION: 2}
+
+FUNCTION_HOOKS: dict[str, Callable[[FunctionContext], Type]] = {
+    names.NP_DOT: numpy_calls.dot,
+    names.NP_ASARRAY: numpy_calls.asarray,
+    names.NP_APPEND: numpy_calls.append,
+    names.NP_LINALG_INV: numpy_calls.inverse,
+    names.AS_POINTS: markers.mark,
+    names.AS_VECTORS: markers.mark,
+    names.AS_DIRECTIONS: markers.mark,
+    names.AS_ROTATION: markers.mark,
+    names.AS_TRANSFORM: markers.mark,
+    names.AS_TRANSLATION: markers.mark,
+    names.TRIMESH_TRANSFORM_POINTS: third_party.trimesh_transform_points,
+    names.PT3D_VECTOR_TO_POINT: third_party.pytransform3d_vector_to_point,
+    names.PT3D_VECTOR_TO_DIRECTION: third_party.pytransform3d_vector_to_direction,
+    names.PT3D_TRANSFORM: third_party.pytransform3d_transform,
+}
+
+_OPERATOR_RECEIVERS = [
+    names.POINT,
+    names.VECTOR,
+    names.DIRECTION,
+    names.TRANSFORM,
+    names.POINT_ARRAY,
+    names.VECTOR_ARRAY,
+    names.DIRECTION_ARRAY,
+    names.ROTATION_MATRIX,
+    names.TRANSFORM_MATRIX,
+    names.TRANSLATION,
+    names.HOMOGENEOUS_POINTS,
+    names.HOMOGENEOUS_VECTORS,
+    names.VECTOR_WITH_W1,
+]
+
+METHOD_HOOKS: dict[str, Callable[[MethodContext], Type]] = {
+    f"{receiver}.{operator}": operators.method_hook(operator)
+    for receiver in _OPERATOR_RECEIVERS
+    for operator in names.OPERATORS
+}
+METHOD_HOOKS[f"{names.TRANSFORM_MATRIX}.__getitem__"] = numpy_calls.transform_matrix_item
+METHOD_HOOKS[names.NP_GUFUNC_CALL] = numpy_calls.matmul_ufunc_call
+
+METHOD_SIGNATURE_HOOKS: dict[str, Callable[[MethodSigContext], FunctionLike]] = {
+    f"{receiver}.{operator}": operators.signature_hook(operator)
+    for receiver in _OPERATOR_RECEIVERS
+    for operator in names.OPERATORS
+}
+
+
+class GeolintPlugin(Plugin):
+    def __init__(self, options: Options) -> None:
+        super().__init__(options)
+        self.settings = config.load(options.config_file)
+        self.type_analyze_hooks: dict[str, Callable[[AnalyzeTypeContext], Type]] = {
+            fullname: partial(
+                string_frames.analyze_framed_subscript,
+                fullname=fullname,
+                arity=ARITY.get(fullname, 1),
+                settings=self.settings,
+            )
+            for fullname in FRAMED_CLASSES
+        }
+
+    def report_config_data(self, ctx: ReportConfigContext) -> Any:
+        return self.settings.cache_key()
+
+    def get_additional_deps(self, file: MypyFile) -> list[tuple[int, str, int]]:
+        # Hooks build geolint.typing types (np.asarray(Point[F]) -> PointArray[F]) in modules that import
+        # only the runtime: make sure that module is part of the build whenever geolint is.
+        # The same moment (parsed, not yet analyzed) is the one chance to protect string frames.
+        if file.fullname.startswith("geolint") or not _imports_geolint(file):
+            return []
+        string_frames.protect_string_frames(file)
+        return [(10, names.TYPING_MODULE, -1)]
+
+    def get_type_analyze_hook(self, fullname: str) -> Callable[[AnalyzeTypeContext], Type] | None:
+        return self.type_analyze_hooks.get(fullname)
+
+    def get_function_hook(self, fullname: str) -> Callable[[FunctionContext], Type] | None:
+        return FUNCTION_HOOKS.get(fullname)
+
+    def get_method_signature_hook(self, fullname: str) -> Callable[[MethodSigContext], FunctionLike] | None:
+        return METHOD_SIGNATURE_HOOKS.get(fullname)
+
+    def get_method_hook(self, fullname: str) -> Callable[[MethodContext], Type] | None:
+        return METHOD_HOOKS.get(fullname)
+
+
+def _imports_geolint(file: MypyFile) -> bool:
+    for node in file.imports:
+        ids = [name for name, _ in node.ids] if isinstance(node, Import) else [getattr(node, "id", "")]
+        if any(name == "geolint" or name.startswith("geolint.") for name in ids):
+            return True
+    return False
+
+
+def plugin(version: str) -> type[Plugin]:
+    """mypy's entry point (``plugins = geolint.mypy``); `version` is mypy's, see docs/typing.md."""
+    return GeolintPlugin
