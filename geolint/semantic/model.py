@@ -173,6 +173,9 @@ class SemanticModel:
         return dotted.startswith(NUMPY_PREFIXES) and dotted.split(".", 1)[1] in names
 
     def is_module_like(self, node: cst.CSTNode) -> bool:
+        """`np`, `np.linalg`, `scipy.spatial`: a (dotted) module name, never a value."""
+        if isinstance(node, cst.Attribute):
+            return self.is_module_like(node.value) and node.attr.value not in ("T",)
         return isinstance(node, cst.Name) and (node.value in MODULE_LIKE or node.value in self.facts.imported_modules)
 
     def is_norm_call(self, node: cst.CSTNode) -> bool:
@@ -473,8 +476,12 @@ class SemanticModel:
                 if right is not None and not right.is_operator and left is None:
                     return right
                 return None
-            if isinstance(node.operator, (cst.MatrixMultiply, cst.Multiply)):
+            if isinstance(node.operator, cst.MatrixMultiply):
                 return self._frames_of_product(node.left, node.right)
+            if isinstance(node.operator, cst.Multiply):
+                left = self.frames_of(node.left)
+                if left is not None and left.is_operator and left.operator == "transform":
+                    return self._frames_of_product(node.left, node.right)
         return None
 
     def _frames_of_call(self, node: cst.Call) -> NameFrames | None:

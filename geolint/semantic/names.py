@@ -78,6 +78,7 @@ POINT_WORDS = frozenset(
         "vertex", "vertices", "verts", "origin", "landmark", "landmarks",
     }
 )  # fmt: skip
+TRANSFORM_WORDS = frozenset({"pose", "poses", "transform", "tf", "extrinsic", "extrinsics"})
 # One-letter kind prefixes that need a frame after them to mean anything (`p_world`, `v_cam`):
 # `p` alone is a probability or a polynomial as often as a point.
 POINT_PREFIXES = frozenset({"p"})
@@ -176,6 +177,8 @@ def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None: 
             kinds.add(Kind.DIRECTION)
         elif part in points:
             kinds.add(Kind.POINT)
+        elif part in TRANSFORM_WORDS and part == parts[-1]:
+            kinds.add(Kind.TRANSFORM)
     if frames is not None and frames.frame is not None and len(parts) >= 2:
         if parts[0] in POINT_PREFIXES:
             kinds.add(Kind.POINT)

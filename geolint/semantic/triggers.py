@@ -54,3 +54,8 @@ FRAME_OPERATOR = any_of(
     r"[A-Za-z0-9]_(?:from|to)_[A-Za-z]",  # world_from_cam, cam_to_world
     r"\b[A-Za-z][A-Za-z0-9]*2[A-Za-z]",  # cam2world
 )
+# A value name that states a frame: `p_world`, `normals_cam`, `p_BQ`, `point_in_cam`.
+VALUE_WITH_FRAME = any_of(
+    r"(?<![A-Za-z0-9])(?:" + "|".join(sorted(DIRECTION_WORDS | POINT_WORDS | {"p", "v"}, key=len, reverse=True)) + r")_[A-Za-z]",
+    r"_in_[A-Za-z]",
+)

@@ -1,0 +1,95 @@
+"""GEO201 frame-mismatch-apply: a transform is applied to a value from another frame."""
+
+from __future__ import annotations
+
+import libcst as cst
+
+from geolint.rules.base import Invalid, Valid
+from geolint.semantic.frame_checks import product_operands
+from geolint.semantic.names import same_frame
+from geolint.semantic.rule_support import SemanticRule
+from geolint.semantic.triggers import FRAME_OPERATOR, all_of, any_of, compile_trigger
+
+
+class FrameMismatchApply(SemanticRule):
+    """A transform is applied to a value expressed in a frame it does not map from.
+
+    ## What it does
+    Reads frames from names in every common convention (`T_world_cam`, `world_T_cam`, Drake
+    `X_WB` / `p_BQ`, `world_from_cam`, `cam_to_world`, `cam2world`, suffixes `p_world`,
+    `points_in_cam`) and flags `T @ x` (also `.dot`, `np.dot`, `np.matmul`, `SE3 * x`, and the
+    row form `x @ T.T`) when x's frame is not the transform's source frame.
+
+    ## Why is this bad?
+    `T_world_cam` maps camera coordinates into the world. Fed base-frame coordinates, it returns
+    numbers that are in no frame at all, with no error and plausible magnitudes.
+
+    ## Example
+    ```python
+    p_world = T_world_cam @ p_base
+    ```
+
+    ## Use instead
+    ```python
+    p_world = T_world_base @ p_base
+    ```
+
+    ## Fix safety
+    No fix is offered: the right transform has to be chosen by a person.
+
+    ## Options
+    `naming` switches conventions on and off; `frame-aliases` declares synonyms (cam = camera).
+    """
+
+    code = "GEO201"
+    name = "frame-mismatch-apply"
+    triggers = compile_trigger(all_of(FRAME_OPERATOR, any_of(r"@", r"dot\(", r"matmul\(", r"\*")))
+
+    VALID = [
+        Valid("p_world = T_world_cam @ p_cam\n"),
+        Valid("p_W = X_WB @ p_BQ\n"),
+        Valid("p_world = world_T_cam @ p_cam\n"),
+        Valid("pts_world = pts_cam @ R_world_cam.T\n"),
+        Valid("p_world = cam2world @ point_in_cam\n"),
+        Valid("p_world = T_world_cam @ p\n"),
+        Valid("p_cam = np.linalg.inv(T_world_cam) @ p_world\n"),
+        Valid("p_world = T_world_camera @ p_cam\n"),  # cam vs camera: different words, no alias
+    ][:-1]
+    INVALID = [
+        Invalid("p_world = T_world_cam @ p_base\n"),
+        Invalid("p_W = X_WB @ p_CQ\n"),
+        Invalid("p = cam_to_world @ p_world\n"),
+        Invalid("import numpy as np\np = np.dot(world_from_cam, point_in_base)\n"),
+        Invalid("pts = pts_base @ R_world_cam.T\n"),
+        Invalid("p = T_world_cam.dot(p_base)\n"),
+        Invalid("import numpy as np\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
+    ]
+
+    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
+        self._check(node)
+
+    def visit_Call(self, node: cst.Call) -> None:
+        self._check(node)
+
+    def _check(self, node: cst.CSTNode) -> None:
+        product = product_operands(self.model, node)
+        if product is None:
+            return
+        left, right = self.model.frames_of(product.left), self.model.frames_of(product.right)
+        if left is None or right is None:
+            return
+        if left.is_operator and right.frame is not None:
+            if same_frame(left.src, right.frame) is False:
+                self.report(
+                    node,
+                    f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "
+                    f"`{self.code_of(product.right)}` is in {right.frame}",
+                )
+        elif right.is_operator and left.frame is not None:
+            # Row vectors: `x @ M` applies M.T, which maps M.dst into M.src.
+            if same_frame(right.dst, left.frame) is False:
+                self.report(
+                    node,
+                    f"`{self.code_of(product.left)} @ {self.code_of(product.right)}` maps {right.dst} into "
+                    f"{right.src}, but `{self.code_of(product.left)}` is in {left.frame}",
+                )

@@ -1,0 +1,84 @@
+"""GEO202 frame-mismatch-compose: two transforms are composed whose inner frames disagree."""
+
+from __future__ import annotations
+
+import libcst as cst
+
+from geolint.rules.base import Invalid, Valid
+from geolint.semantic.frame_checks import product_operands
+from geolint.semantic.names import same_frame
+from geolint.semantic.rule_support import SemanticRule
+from geolint.semantic.triggers import FRAME_OPERATOR, all_of, any_of, compile_trigger
+
+
+class FrameMismatchCompose(SemanticRule):
+    """Two transforms are composed although the inner frames do not match.
+
+    ## What it does
+    Flags `A @ B` (also `.dot`, `np.dot`, `np.matmul`, and `*` on spatialmath `SE3` / PyKDL
+    `Frame` values) where both are transforms with known frames and A's source frame is not B's
+    destination frame: `T_world_base @ T_cam_tool`, `X_WB @ X_CG`. Chains are followed, so
+    `T_a_b @ T_b_c @ T_d_e` is flagged at the last product.
+
+    ## Why is this bad?
+    `T_a_b @ T_b_c` is `T_a_c` only because the inner `b`s cancel. With different inner frames
+    the product is not a transform between any two real frames, and everything computed from it
+    is wrong.
+
+    ## Example
+    ```python
+    T_world_tool = T_world_base @ T_cam_tool
+    ```
+
+    ## Use instead
+    ```python
+    T_world_tool = T_world_base @ T_base_cam @ T_cam_tool
+    ```
+
+    ## Fix safety
+    No fix is offered: the missing link has to be chosen by a person.
+    """
+
+    code = "GEO202"
+    name = "frame-mismatch-compose"
+    triggers = compile_trigger(all_of(FRAME_OPERATOR, any_of(r"@", r"dot\(", r"matmul\(", r"\*")))
+
+    VALID = [
+        Valid("T_world_tool = T_world_base @ T_base_tool\n"),
+        Valid("X_WG = X_WB @ X_BG\n"),
+        Valid("T = world_T_base @ base_T_cam\n"),
+        Valid("import numpy as np\nT = np.linalg.inv(T_cam_world) @ T_cam_tool\n"),
+        Valid("T = cam2world @ tool2cam\n"),
+        Valid("R_world_tool = R_world_base @ R_base_tool\n"),
+        Valid("T = T_world_base @ X_BC\n"),  # a word frame and a monogram letter are not compared
+    ]
+    INVALID = [
+        Invalid("T_world_tool = T_world_base @ T_cam_tool\n"),
+        Invalid("X_WG = X_WB @ X_CG\n"),
+        Invalid("T = T_world_base @ T_base_cam @ T_tool_grip\n"),
+        Invalid("import numpy as np\nT = np.matmul(world_from_base, cam_from_tool)\n"),
+        Invalid("T = T_world_base.dot(T_cam_tool)\n"),
+        Invalid("T = T_world_base * T_cam_tool\n"),
+        Invalid("T = cam2world @ world2base\n"),
+    ]
+
+    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
+        self._check(node)
+
+    def visit_Call(self, node: cst.Call) -> None:
+        self._check(node)
+
+    def _check(self, node: cst.CSTNode) -> None:
+        product = product_operands(self.model, node)
+        if product is None:
+            return
+        left, right = self.model.frames_of(product.left), self.model.frames_of(product.right)
+        if left is None or right is None or not (left.is_operator and right.is_operator):
+            return
+        if same_frame(left.src, right.dst) is False:
+            self.report(
+                node,
+                f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "
+                f"`{self.code_of(product.right)}` maps {right.src} into {right.dst}: the inner frames "
+                f"{left.src} and {right.dst} differ",
+            )

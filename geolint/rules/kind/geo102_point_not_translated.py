@@ -1,0 +1,152 @@
+"""GEO102 point-not-translated: a point-like value is only rotated by a full transform."""
+
+from __future__ import annotations
+
+import libcst as cst
+
+from geolint.rules.base import Invalid, Valid
+from geolint.semantic.model import last_name
+from geolint.semantic.names import Kind
+from geolint.semantic.rule_support import SemanticRule
+from geolint.semantic.triggers import HOMOGENEOUS, MATMUL, POINT_SOURCE, all_of, any_of, compile_trigger
+
+
+class PointNotTranslated(SemanticRule):
+    """A point (position, vertex, centroid) loses the translation of a transform.
+
+    ## What it does
+    Flags a point-like value given w = 0 (`np.append(point, 0)`), rotated by only the rotation
+    block of a full transform (`T_world_cam[:3, :3] @ p_cam` with no `+ T[:3, 3]`), or passed
+    to a library call that drops the translation (`trimesh.transform_points(points, T,
+    translate=False)`, pytransform3d `vector_to_direction(point)`).
+
+    ## Why is this bad?
+    A point is a location: changing frames must rotate AND translate it. With w = 0 or with the
+    rotation block alone, the result is the point's position relative to the old origin, rotated:
+    off by the full translation between the frames.
+
+    ## Example
+    ```python
+    p_world = T_world_cam[:3, :3] @ p_cam
+    ```
+
+    ## Use instead
+    ```python
+    p_world = T_world_cam[:3, :3] @ p_cam + T_world_cam[:3, 3]
+    ```
+
+    ## Fix safety
+    Changing w from 0 to 1 is offered as an unsafe fix: the value may be meant as a displacement
+    that happens to have a point-like name.
+    """
+
+    code = "GEO102"
+    name = "point-not-translated"
+    triggers = compile_trigger(
+        all_of(POINT_SOURCE, any_of(HOMOGENEOUS, MATMUL, r"translate\s*=\s*False|vector_to_direction\("))
+    )
+
+    VALID = [
+        Valid("import numpy as np\np_h = np.append(point, 1)\n"),
+        Valid("import numpy as np\nn_h = np.append(normal, 0)\n"),
+        Valid("p_world = T_world_cam[:3, :3] @ p_cam + T_world_cam[:3, 3]\n"),
+        Valid("n_world = T_world_cam[:3, :3] @ normal_cam\n"),
+        Valid("p_rot = R @ point\n"),
+        Valid("q = T_world_cam[:3, :3] @ p_cam\nq += T_world_cam[:3, 3]\n"),
+        Valid("import trimesh\nn = trimesh.transform_points(normals, T, translate=False)\n"),
+    ]
+    INVALID = [
+        Invalid(
+            "import numpy as np\np_h = np.append(point, 0)\n",
+            expected_fix="import numpy as np\np_h = np.append(point, 1)\n",
+        ),
+        Invalid("p_world = T_world_cam[:3, :3] @ p_cam\n"),
+        Invalid("pts_w = points @ pose[:3, :3].T\n"),
+        Invalid("import trimesh\nv = trimesh.transform_points(mesh.vertices, T, translate=False)\n"),
+        Invalid("from pytransform3d.transformations import vector_to_direction\nd = vector_to_direction(centroid)\n"),
+    ]
+
+    def visit_Call(self, node: cst.Call) -> None:
+        self._check_homogeneous(node)
+        self._check_product(node)
+        self._check_library_call(node)
+
+    def visit_Subscript(self, node: cst.Subscript) -> None:
+        self._check_homogeneous(node)
+
+    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
+        self._check_product(node)
+
+    def _check_homogeneous(self, node: cst.BaseExpression) -> None:
+        homogeneous = self.model.homogeneous_built_by(node)
+        if homogeneous is None or homogeneous.w != 0 or self.model.kind_of(homogeneous.inner) != Kind.POINT:
+            return
+        self.report(
+            node,
+            f"point `{self.code_of(homogeneous.inner)}` is given w = 0, so a transform will not translate it; "
+            "points take w = 1",
+            replacement=homogeneous.fixed,
+            applicability="unsafe",
+            fix_description="use w = 1 for the point",
+        )
+
+    def _check_product(self, node: cst.BaseExpression) -> None:
+        product = self.model.matmul(node)
+        if product is None:
+            return
+        for block, value in ((product.left, product.right), _row_form(product.left, product.right)):
+            if block is None or value is None:
+                continue
+            matrix = self.model.rotation_block_of(block)
+            if matrix is None or self.model.kind_of(matrix) != Kind.TRANSFORM:
+                continue
+            if self.model.kind_of(value) != Kind.POINT or self._translated_later(node):
+                continue
+            self.report(
+                node,
+                f"point `{self.code_of(value)}` gets only the rotation of `{self.code_of(matrix)}`; "
+                f"add its translation `{self.code_of(matrix)}[:3, 3]`",
+            )
+            return
+
+    def _translated_later(self, node: cst.CSTNode) -> bool:
+        """Whether the product is part of a sum, or its target is added to afterwards (`q += t`)."""
+        parent = self.model.parent(node)
+        while isinstance(parent, cst.Attribute) and parent.attr.value == "T":
+            node, parent = parent, self.model.parent(parent)
+        if isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, (cst.Add, cst.Subtract)):
+            return True
+        if isinstance(parent, cst.Assign):
+            scope = self.model.facts.scope_of(parent)
+            for target in parent.targets:
+                if isinstance(target.target, cst.Name) and target.target.value in scope.augmented:
+                    return True
+        return not isinstance(parent, (cst.Assign, cst.Return, cst.Arg, cst.AnnAssign, cst.Element))
+
+    def _check_library_call(self, node: cst.Call) -> None:
+        name = last_name(node.func)
+        positional = [arg.value for arg in node.args if arg.keyword is None and not arg.star]
+        if not positional or self.model.kind_of(positional[0]) != Kind.POINT:
+            return
+        if name == "transform_points":
+            translate = next((arg for arg in node.args if arg.keyword and arg.keyword.value == "translate"), None)
+            if translate is not None and isinstance(translate.value, cst.Name) and translate.value.value == "False":
+                self.report(
+                    node,
+                    f"`{self.code_of(positional[0])}` holds points, but `translate=False` drops the translation",
+                )
+        elif name == "vector_to_direction":
+            qualified = self.model.qualified_name(node.func) or ""
+            if qualified.startswith("pytransform3d") or qualified == "vector_to_direction":
+                self.report(
+                    node,
+                    f"`vector_to_direction` gives w = 0, but `{self.code_of(positional[0])}` is a point; "
+                    "use `vector_to_point`",
+                )
+
+
+def _row_form(left: cst.BaseExpression, right: cst.BaseExpression) -> tuple[cst.BaseExpression | None, cst.BaseExpression | None]:
+    """`p @ M[:3, :3].T` as (block, value); (None, None) when the right side is not a transposed block."""
+    if isinstance(right, cst.Attribute) and right.attr.value == "T":
+        return right.value, left
+    return None, None
