@@ -7,8 +7,11 @@ only refines the returned ndarray into a framed one (and reports frame problems 
 
 from __future__ import annotations
 
+from typing import Callable
+
 from mypy.nodes import CallExpr, Expression, FloatExpr, IntExpr, RefExpr, SliceExpr, TupleExpr, UnaryExpr
-from mypy.plugin import FunctionContext, MethodContext
+
+from mypy.plugin import AttributeContext, FunctionContext, MethodContext
 from mypy.types import Type
 
 from geolint.mypy import algebra, fullnames as names, geometry
@@ -100,6 +103,24 @@ def transform_matrix_item(ctx: MethodContext) -> Type:
     return geometry.build(ctx.api, transform.with_frames(transform.dst, transform.src, kind=kind)) or (
         ctx.default_return_type
     )
+
+
+_TRANSFORM_PARTS = {"matrix": TRANSFORM, "rotation": ROTATION, "translation": TRANSLATION}
+
+
+def transform_part(attribute: str) -> Callable[[AttributeContext], Type]:
+    """``T.matrix`` / ``T.rotation`` / ``T.translation`` of a ``Transform[Dst, Src]`` are the framed ndarrays
+    ``TransformMatrix[Dst, Src]`` / ``RotationMatrix[Dst, Src]`` / ``Translation[Dst, Src]``, so the raw
+    matrix keeps its frames (``T.matrix @ np.append(v, 1)`` is then a ``geo-translation``)."""
+
+    def hook(ctx: AttributeContext) -> Type:
+        transform = geometry.read(ctx.type)
+        if transform is None or transform.kind != TRANSFORM or ctx.is_lvalue:
+            return ctx.default_attr_type
+        part = geometry.Geo(ARRAY, _TRANSFORM_PARTS[attribute], transform.frames)
+        return geometry.build(ctx.api, part) or ctx.default_attr_type
+
+    return hook
 
 
 def _matmul_call(ctx: FunctionContext | MethodContext, arg_types: list[list[Type]]) -> Type:

@@ -11,6 +11,7 @@ from mypy.nodes import Import, MypyFile
 from mypy.options import Options
 from mypy.plugin import (
     AnalyzeTypeContext,
+    AttributeContext,
     FunctionContext,
     MethodContext,
     MethodSigContext,
@@ -72,6 +73,12 @@ METHOD_SIGNATURE_HOOKS: dict[str, Callable[[MethodSigContext], FunctionLike]] = 
 }
 
 
+ATTRIBUTE_HOOKS: dict[str, Callable[[AttributeContext], Type]] = {
+    f"{names.TRANSFORM}.{attribute}": numpy_calls.transform_part(attribute)
+    for attribute in ("matrix", "rotation", "translation")
+}
+
+
 class GeolintPlugin(Plugin):
     def __init__(self, options: Options) -> None:
         super().__init__(options)
@@ -109,6 +116,9 @@ class GeolintPlugin(Plugin):
 
     def get_method_hook(self, fullname: str) -> Callable[[MethodContext], Type] | None:
         return METHOD_HOOKS.get(fullname)
+
+    def get_attribute_hook(self, fullname: str) -> Callable[[AttributeContext], Type] | None:
+        return ATTRIBUTE_HOOKS.get(fullname)
 
 
 def _imports_geolint(file: MypyFile) -> bool:
