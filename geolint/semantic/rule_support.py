@@ -40,3 +40,13 @@ def all_of(*patterns: str) -> re.Pattern[str]:
 
 def any_of(*patterns: str) -> str:
     return "|".join(f"(?:{pattern})" for pattern in patterns)
+
+
+def keyword_arg(keyword: str, value: str) -> cst.Arg:
+    """`keyword=value` formatted the PEP 8 way (libcst's default puts spaces around `=`)."""
+    no_space = cst.SimpleWhitespace("")
+    return cst.Arg(
+        keyword=cst.Name(keyword),
+        value=cst.parse_expression(value),
+        equal=cst.AssignEqual(whitespace_before=no_space, whitespace_after=no_space),
+    )

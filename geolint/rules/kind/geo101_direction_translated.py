@@ -7,7 +7,7 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.names import Kind
 from geolint.semantic.model import last_name
-from geolint.semantic.rule_support import SemanticRule
+from geolint.semantic.rule_support import SemanticRule, keyword_arg
 from geolint.semantic.triggers import (
     DIRECTION_SOURCE,
     HOMOGENEOUS,
@@ -133,7 +133,7 @@ class DirectionTranslated(SemanticRule):
                         node,
                         f"direction `{self.code_of(direction)}` is rotated and then translated by "
                         f"`{self.code_of(other)}`; a direction only rotates",
-                        replacement=rotated.with_changes(lpar=node.lpar, rpar=node.rpar) if node.lpar else rotated,
+                        replacement=rotated,
                         fix_description="drop the translation",
                     )
                     return
@@ -175,7 +175,7 @@ class DirectionTranslated(SemanticRule):
                 f"`transform_points` translates its input, but `{self.code_of(positional[0])}` holds directions; "
                 "pass `translate=False`",
                 replacement=node.with_changes(
-                    args=(*node.args, cst.Arg(keyword=cst.Name("translate"), value=cst.Name("False")))
+                    args=(*node.args, keyword_arg("translate", "False"))
                 ),
                 applicability="unsafe",
                 fix_description="pass translate=False",

@@ -9,7 +9,7 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.conventions import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.semantic.model import int_literal, last_name
-from geolint.semantic.rule_support import SemanticRule
+from geolint.semantic.rule_support import SemanticRule, keyword_arg
 from geolint.semantic.triggers import compile_trigger
 
 _TWO_PI = 2 * math.pi
@@ -89,7 +89,7 @@ class DegreesAsRadians(SemanticRule):
         shown = _format(too_big[0])
         fix = None
         if is_scipy_rotation_method(self.model, node.func, "from_euler", "from_rotvec") and _keyword(node, "degrees") is None:
-            fix = node.with_changes(args=(*node.args, cst.Arg(keyword=cst.Name("degrees"), value=cst.Name("True"))))
+            fix = node.with_changes(args=(*node.args, keyword_arg("degrees", "True")))
         self.report(
             node,
             f"`{self.code_of(node.func)}` takes radians, but the literal angle {shown} is above 2 pi: "
