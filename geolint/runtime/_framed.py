@@ -68,12 +68,12 @@ class FramedKind:
             cls._by_argument = {}
 
     def __class_getitem__(cls, item: Any) -> Any:  # implicitly a classmethod
+        if "_frames" in cls.__dict__:
+            raise GeometryTypeError(f"{cls.__name__} already has its frames; it cannot be subscripted again")
         try:
             return cls._by_argument[item]
         except (KeyError, TypeError):
             pass
-        if "_frames" in cls.__dict__:
-            raise GeometryTypeError(f"{cls.__name__} already has its frames; it cannot be subscripted again")
         items = item if isinstance(item, tuple) else (item,)
         if not all(is_frame_argument(one) for one in items):
             if any(isinstance(one, (typing.TypeVar, typing.ForwardRef)) or one is typing.Any for one in items):
