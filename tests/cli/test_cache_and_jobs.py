@@ -1,0 +1,68 @@
+"""The findings cache and parallel runs, through the real CLI (hits counted via --verbose, not timing)."""
+
+from __future__ import annotations
+
+import json
+import re
+
+
+def counts(stderr: str) -> tuple[int, int]:
+    match = re.search(r"files: (\d+), from cache: (\d+), linted: (\d+)", stderr)
+    assert match, stderr
+    return int(match.group(2)), int(match.group(3))
+
+
+def test_second_run_is_served_from_the_cache_until_a_file_or_the_config_changes(cli):
+    for index in range(3):
+        cli.write(f"m{index}.py", f"x{index} = bad_thing\n")
+    first = cli("check", "--verbose", "--format", "json")
+    assert counts(first.stderr) == (0, 3)
+    second = cli("check", "--verbose", "--format", "json")
+    assert counts(second.stderr) == (3, 0)
+    assert second.stdout == first.stdout and second.returncode == first.returncode == 1
+    assert (cli.cache_dir / ".gitignore").read_text().strip().endswith("*")
+
+    cli.write("m1.py", "x1 = risky_thing\n")
+    third = cli("check", "--verbose", "--format", "json")
+    assert counts(third.stderr) == (2, 1)
+    assert [f["code"] for f in json.loads(third.stdout)] == ["GEO190", "GEO191", "GEO190"]
+
+    # another selection is another cache key: nothing stale leaks through
+    selected = cli("check", "--verbose", "--format", "json", "--select", "GEO191")
+    assert counts(selected.stderr) == (0, 3)
+    assert [f["code"] for f in json.loads(selected.stdout)] == ["GEO191"]
+    cli.write("pyproject.toml", '[tool.geolint]\nignore = ["GEO190"]\n')
+    configured = cli("check", "--verbose", "--format", "json")
+    assert counts(configured.stderr) == (0, 3)
+
+
+def test_no_cache_neither_reads_nor_writes(cli):
+    cli.write("m.py", "x = bad_thing\n")
+    first = cli("check", "--verbose", "--no-cache")
+    assert counts(first.stderr) == (0, 1)
+    assert not cli.cache_dir.exists()
+    cli("check")
+    assert counts(cli("check", "--verbose", "--no-cache").stderr) == (0, 1)
+
+
+def test_default_cache_lives_in_the_project_root_and_ignores_itself(cli, tmp_path):
+    cli.write("pyproject.toml", "[tool.geolint]\n")
+    cli.write("src/m.py", "x = bad_thing\n")
+    env = {"GEOLINT_CACHE_DIR": ""}
+    cli("check", "src", env=env)
+    cache = cli.project / ".geolint_cache"
+    assert any(cache.glob("findings-*.json")) and (cache / ".gitignore").is_file()
+    assert counts(cli("check", "src", "--verbose", env=env).stderr) == (1, 0)
+
+
+def test_jobs_2_gives_the_same_output_as_jobs_1(cli):
+    for index in range(24):
+        body = "\n".join(f"v{j} = {'bad_thing' if (index + j) % 3 == 0 else 'risky_thing'}" for j in range(index % 5 + 1))
+        cli.write(f"pkg/sub{index % 4}/mod{index}.py", body + "\n")
+    cli.write("pkg/broken.py", "def f(:\n")
+    serial = cli("check", "--no-cache", "--jobs", "1", "--format", "json")
+    parallel = cli("check", "--no-cache", "--jobs", "2", "--format", "json")
+    assert serial.returncode == parallel.returncode == 1
+    assert parallel.stdout == serial.stdout
+    paths = [f["path"] for f in json.loads(serial.stdout)]
+    assert paths == sorted(paths) and len(set(paths)) == 25
