@@ -200,10 +200,16 @@ class FrameTree:
             raise UnknownFrameError(f"unknown frame {name!r} (known frames: {known}){hint}")
         return name
 
+    # Frame classes give typed results; a frame given by name is Any on that side. No catch-all overload:
+    # it would let a checker pick it whenever the typed one fails in context, hiding frame errors.
     @overload
     def lookup(self, dst: type[_A], src: type[_B], at: float | None = None) -> Transform[_A, _B]: ...
     @overload
-    def lookup(self, dst: Any, src: Any, at: float | None = None) -> Transform[Any, Any]: ...
+    def lookup(self, dst: type[_A], src: str, at: float | None = None) -> Transform[_A, Any]: ...
+    @overload
+    def lookup(self, dst: str, src: type[_B], at: float | None = None) -> Transform[Any, _B]: ...
+    @overload
+    def lookup(self, dst: str, src: str, at: float | None = None) -> Transform[Any, Any]: ...
     def lookup(self, dst: Any, src: Any, at: float | None = None) -> Transform[Any, Any]:
         """The pose of ``src`` in ``dst`` (a ``Transform[dst, src]``), at time ``at`` for stamped edges.
 
