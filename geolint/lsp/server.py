@@ -36,6 +36,7 @@ from geolint.lsp.actions import FIX_ALL_KIND, ignore_edit
 from geolint.lsp.configs import ConfigCache
 from geolint.lsp.diagnostics import SOURCE, to_diagnostic
 from geolint.lsp.positions import from_lsp_position, split_lines, to_lsp_range
+from geolint.lsp.protocol import TolerantLanguageServerProtocol
 
 logger = logging.getLogger(__name__)
 
@@ -54,13 +55,27 @@ class LintResult:
 
 class GeolintLanguageServer(LanguageServer):
     def __init__(self) -> None:
-        super().__init__("geolint", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        super().__init__(
+            "geolint",
+            __version__,
+            text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
+            protocol_cls=TolerantLanguageServerProtocol,
+        )
         self.configs = ConfigCache()
         self.lint_pool = ThreadPoolExecutor(max_workers=2, thread_name_prefix="geolint-lint")
         self.debounce = DEFAULT_DEBOUNCE_SECONDS
         self.pending: dict[str, asyncio.Task[None]] = {}
         self.results: dict[str, LintResult] = {}
         self.reported_config_errors: set[str] = set()
+
+    def report_server_error(self, error: Exception, source: Any) -> None:
+        # pygls pops up "Error in server" for anything unexpected; a person typing should never see
+        # that for a message their editor garbled, so it goes to the client's log instead.
+        logger.error("server error (%s): %s", getattr(source, "__name__", source), error)
+        try:
+            self.window_log_message(types.LogMessageParams(type=types.MessageType.Error, message=f"geolint: {error}"))
+        except Exception:  # the connection itself is gone
+            pass
 
     # ---- what the client can do -----------------------------------------------------------------
 

@@ -1,0 +1,43 @@
+"""A pygls protocol that answers malformed requests instead of dropping them.
+
+pygls turns the JSON of each message into typed objects as it parses it; when a request's
+parameters have the wrong shape, that fails before any handler runs and pygls sends no response,
+so the client waits forever. Here such a request gets the JSON-RPC error it deserves
+(-32602 invalid params) and the message is then ignored; malformed notifications are just logged.
+"""
+
+from __future__ import annotations
+
+import logging
+from typing import Any
+
+from pygls.exceptions import JsonRpcInvalidParams
+from pygls.protocol import LanguageServerProtocol
+
+logger = logging.getLogger(__name__)
+
+
+class _Rejected:
+    """Stands in for a message that could not be read; `handle_message` drops it."""
+
+    jsonrpc = "rejected"
+
+
+class TolerantLanguageServerProtocol(LanguageServerProtocol):
+    def structure_message(self, data: dict[str, Any]) -> Any:
+        try:
+            return super().structure_message(data)
+        except Exception as error:
+            if not isinstance(data, dict) or "method" not in data:
+                raise
+            if "id" in data and isinstance(data["id"], (int, str)):
+                problem = JsonRpcInvalidParams(message=f"invalid params for {data['method']!r}: {error.__cause__ or error}")
+                self._send_response(data["id"], error=problem.to_response_error())
+            else:
+                logger.warning("ignored a malformed %r notification: %s", data.get("method"), error.__cause__ or error)
+            return _Rejected()
+
+    def handle_message(self, message: Any) -> None:
+        if isinstance(message, _Rejected):
+            return
+        super().handle_message(message)
