@@ -115,7 +115,8 @@ def transform_part(attribute: str) -> Callable[[AttributeContext], Type]:
 
     def hook(ctx: AttributeContext) -> Type:
         transform = geometry.read(ctx.type)
-        if transform is None or transform.kind != TRANSFORM or ctx.is_lvalue:
+        # (AttributeContext.is_lvalue arrived after mypy 1.10)
+        if transform is None or transform.kind != TRANSFORM or getattr(ctx, "is_lvalue", False):
             return ctx.default_attr_type
         part = geometry.Geo(ARRAY, _TRANSFORM_PARTS[attribute], transform.frames)
         return geometry.build(ctx.api, part) or ctx.default_attr_type

@@ -41,7 +41,7 @@ def parse_mypy_output(stdout: str) -> dict[str, list[Reported]]:
         match = MYPY_LINE.match(text)
         if not match:
             continue
-        message = match["message"]
+        message = match["message"].replace("builtins.tuple[", "tuple[")  # older mypy spells it out
         code_match = ERROR_CODE.search(message)
         code = code_match["code"] if code_match else None
         if code_match:
