@@ -106,10 +106,11 @@ class FramedKind:
             "_frames": frames,
         }
         namespace.update(kind._frame_attributes(*frames))
-        framed = type(kind)(label, (kind,), namespace)
-        kind._framed_classes[frames] = framed
+        created = type(kind)(label, (kind,), namespace)
+        # setdefault: if two threads race here, both get the first class, so `type(p) is Point[World]` holds.
+        framed = kind._framed_classes.setdefault(frames, created)
         if len(frames) == 1:
-            kind._by_frame_name[frames[0]] = framed
+            kind._by_frame_name.setdefault(frames[0], framed)
         return framed
 
     @classmethod

@@ -148,6 +148,15 @@ class _Coordinates(FramedKind):
                 return self._xyz
             return np.array(self._xyz, dtype=dtype, copy=True)
 
+    def is_close(self, other: object, atol: float = 1e-9) -> bool:
+        """True when ``other`` is the same kind in the same frame with coordinates within ``atol``.
+
+        (``==`` is identity, as for any object: coordinates are floats, compare them with a tolerance.)
+        """
+        if not isinstance(other, _Coordinates) or other._kind is not self._kind or other._frame != self._frame:
+            return False
+        return self._xyz.shape == other._xyz.shape and bool(np.allclose(self._xyz, other._xyz, rtol=0.0, atol=atol))
+
     def _describe(self) -> str:
         return f"{self._kind.__name__}[{self._frame}]"
 

@@ -244,3 +244,12 @@ def test_scalars_must_be_finite_and_division_by_zero_is_refused() -> None:
         v * float("nan")
     with pytest.raises(GeometryValueError, match="division by zero"):
         v / 0
+
+
+def test_is_close_compares_kind_frame_and_coordinates() -> None:
+    p = Point[World]([1, 2, 3])
+    assert p.is_close(Point["World"]([1, 2, 3 + 1e-12]))
+    assert not p.is_close(Point[World]([1, 2, 3.1]))
+    assert not p.is_close(Point[Camera]([1, 2, 3]))
+    assert not p.is_close(Vector[World]([1, 2, 3]))
+    assert not p.is_close(Point[World]([[1, 2, 3]]))
