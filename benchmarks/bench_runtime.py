@@ -37,10 +37,20 @@ def _cpu_name() -> str:
     return platform.processor() or "unknown CPU"
 
 
-def median_seconds(func: Callable[[], object], number: int, repeat: int) -> float:
-    """Median over ``repeat`` runs of the mean time of one call (each run makes ``number`` calls)."""
-    timer = timeit.Timer(func)
-    return statistics.median(t / number for t in timer.repeat(repeat=repeat, number=number))
+def median_seconds(funcs: dict[str, Callable[[], object]], number: int, repeat: int) -> dict[str, float]:
+    """Median time of one call of each function, measured round-robin (side by side).
+
+    Each of ``repeat`` rounds times ``number`` calls of every function in turn, so a change of machine load
+    during the run hits all candidates alike instead of skewing one of them.
+    """
+    timers = {name: timeit.Timer(func) for name, func in funcs.items()}
+    for timer in timers.values():
+        timer.timeit(number=1)  # warm-up: caches, lazily built views
+    samples: dict[str, list[float]] = {name: [] for name in funcs}
+    for _ in range(repeat):
+        for name, timer in timers.items():
+            samples[name].append(timer.timeit(number=number) / number)
+    return {name: statistics.median(times) for name, times in samples.items()}
 
 
 def random_poses(rng: np.random.Generator, n: int) -> np.ndarray:
@@ -99,8 +109,8 @@ def main() -> None:
         "(R @ pts.T).T, then += t": transposed_matmul_then_add_inplace,
     }
     assert np.allclose(np.asarray(T @ batch), pts @ R.T + t)
-    timings = {name: median_seconds(k, 3, repeat) for name, k in kernels.items()}
-    ours = median_seconds(lambda: T @ batch, 3, repeat)
+    timings = median_seconds({**kernels, "geolint": lambda: T @ batch}, 3, repeat)
+    ours = timings.pop("geolint")
     fastest = min(timings, key=timings.__getitem__)
     rows.append(("T @ Point batch (1,000,000 points)", fastest, timings[fastest], ours, 1.2))
     kernel_lines = [f"    {name:<38} {sec * 1e3:8.2f} ms" for name, sec in timings.items()]
@@ -109,26 +119,23 @@ def main() -> None:
     p = rng.normal(size=3)
     point = Point["camera"](p)
     number = 20_000
-    plain = median_seconds(lambda: R @ p + t, number, repeat)
-    ours = median_seconds(lambda: T @ point, number, repeat)
-    rows.append(("T @ Point (one point)", "R @ p + t", plain, ours, 2.0))
+    timed = median_seconds({"numpy": lambda: R @ p + t, "geolint": lambda: T @ point}, number, repeat)
+    rows.append(("T @ Point (one point)", "R @ p + t", timed["numpy"], timed["geolint"], 2.0))
 
     # 3. Composing two transforms.
-    plain = median_seconds(lambda: pose @ pose2, number, repeat)
-    ours = median_seconds(lambda: T @ T2, number, repeat)
-    rows.append(("T_ab @ T_bc (one pair)", "A @ B (4x4)", plain, ours, 2.0))
+    timed = median_seconds({"numpy": lambda: pose @ pose2, "geolint": lambda: T @ T2}, number, repeat)
+    rows.append(("T_ab @ T_bc (one pair)", "A @ B (4x4)", timed["numpy"], timed["geolint"], 2.0))
 
     # 4. Composing 100,000 pose pairs.
     a, b = random_poses(rng, 100_000), random_poses(rng, 100_000)
     Ta = Transform["world", "camera"].from_matrix(a)
     Tb = Transform["camera", "tool"].from_matrix(b)
     assert np.allclose(np.asarray(Ta @ Tb), a @ b)
-    plain = median_seconds(lambda: a @ b, 3, repeat)
-    ours = median_seconds(lambda: Ta @ Tb, 3, repeat)
-    rows.append(("T_ab @ T_bc (batch of 100,000)", "np.matmul (N,4,4)", plain, ours, 1.5))
+    timed = median_seconds({"numpy": lambda: a @ b, "geolint": lambda: Ta @ Tb}, 3, repeat)
+    rows.append(("T_ab @ T_bc (batch of 100,000)", "np.matmul (N,4,4)", timed["numpy"], timed["geolint"], 1.5))
 
     print(f"geolint runtime benchmark, {datetime.date.today().isoformat()}, {platform.machine()}, {_cpu_name()}")
-    print(f"numpy {np.__version__}, single-threaded BLAS, median of {repeat} repeats\n")
+    print(f"numpy {np.__version__}, single-threaded BLAS, median of {repeat} round-robin repeats\n")
     print("plain-numpy kernels for 1,000,000 points:")
     print("\n".join(kernel_lines))
     print()

@@ -354,15 +354,16 @@ class Transform(FramedKind, Generic[Dst, Src]):
                 # Composition, inlined like the point path below.
                 if other._dst is not self._src and other._dst != self._src:
                     raise self._composition_mismatch(other)
-                a, b = self._m, other._m
-                if a.ndim == 3 and b.ndim == 3 and a.shape[0] != b.shape[0]:
-                    raise self._batch_mismatch(other)
                 try:
-                    cls = Transform._framed_classes[(self._dst, other._src)]
+                    matrix = self._m @ other._m
+                except ValueError:  # only batches of different sizes get here
+                    raise self._batch_mismatch(other) from None
+                try:
+                    cls = _TRANSFORM_CLASSES[(self._dst, other._src)]
                 except KeyError:
                     cls = Transform.framed_class(self._dst, other._src)
-                composed = object.__new__(cls)
-                composed._m = a @ b
+                composed = _new(cls)
+                composed._m = matrix
                 return composed
             raise self._refusal(other)
         if frame is not self._src and frame != self._src:
@@ -388,7 +389,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
                 cls = _POINT_CLASSES[self._dst]
             except KeyError:
                 cls = Point.framed_class(self._dst)
-            result = object.__new__(cls)
+            result = _new(cls)
             result._xyz = out
             return result
         moved_by = getattr(other, "_moved_by", None)
@@ -454,7 +455,10 @@ class Transform(FramedKind, Generic[Dst, Src]):
 
 
 register_kind(Transform)
+# Module-level aliases for the hot paths in Transform.__matmul__ (saves attribute lookups per call).
 _POINT_CLASSES = Point._by_frame_name
+_TRANSFORM_CLASSES = Transform._framed_classes
+_new = object.__new__
 
 # Silence "imported but unused" for names kept for the public surface of this module.
 _ = (Frame, InvalidRotationError, new_framed)
