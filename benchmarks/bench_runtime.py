@@ -69,7 +69,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer repeats (for a smoke run)")
     args = parser.parse_args()
-    repeat = 5 if args.quick else 15
+    repeat = 5 if args.quick else 31
 
     rng = np.random.default_rng(0)
     pose = random_poses(rng, 1)[0]
