@@ -19,7 +19,7 @@ import numpy as np
 from geolint.runtime.errors import GeometryTypeError, GeometryValueError
 from geolint.runtime.frames import Frame, frame_name
 
-__all__ = ["FramedKind", "is_frame_argument", "checked_array", "new_framed"]
+__all__ = ["FramedKind", "is_frame_argument", "resolve_frame", "checked_array", "frozen", "format_array"]
 
 
 def is_frame_argument(item: object) -> bool:
@@ -122,15 +122,16 @@ class FramedKind:
         return {"_frame": frames[0]}
 
 
-def new_framed(cls: type, **slots: Any) -> Any:
-    """An instance of ``cls`` with its slots set, skipping ``__init__`` (and so all validation).
+def frozen(array: np.ndarray) -> np.ndarray:
+    """``array`` made read-only (in place) before it is handed to the user.
 
-    Only for values the runtime computed itself from values that were validated when they were built.
+    Values the runtime computes keep a writeable array on the hot paths (setting the flag costs about as
+    much as moving one point); every accessor that returns the coordinates freezes them first, so no
+    caller can change a value after the fact.
     """
-    obj: Any = object.__new__(cls)
-    for name, value in slots.items():
-        object.__setattr__(obj, name, value)
-    return obj
+    if array.flags.writeable:
+        array.flags.writeable = False
+    return array
 
 
 def checked_array(value: Any, shapes: tuple[tuple[int, ...], ...], what: str, owner: str) -> np.ndarray:

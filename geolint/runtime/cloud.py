@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 
 import numpy as np
 
-from geolint.runtime._framed import FramedKind, checked_array
+from geolint.runtime._framed import FramedKind, checked_array, frozen
 from geolint.runtime.errors import GeometryTypeError, GeometryValueError
 from geolint.runtime.primitives import Direction, Point, _unit, describe, register_kind
 
@@ -97,7 +97,7 @@ class PointCloud(FramedKind, Generic[F]):
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
         def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
             if dtype is None and not copy:
-                return self._points
+                return frozen(self._points)
             return np.array(self._points, dtype=dtype, copy=True)
 
     def __reduce__(self) -> tuple[Any, ...]:

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar, overload
 
 import numpy as np
 
-from geolint.runtime._framed import FramedKind, checked_array, format_array, new_framed
+from geolint.runtime._framed import FramedKind, checked_array, format_array, frozen
 from geolint.runtime.errors import FrameMismatchError, GeometryTypeError, GeometryValueError
 
 if TYPE_CHECKING:
@@ -118,7 +118,7 @@ class _Coordinates(FramedKind):
     @property
     def xyz(self) -> NDArray[np.float64]:
         """The coordinates, read-only, shape (3,) or (N, 3)."""
-        return self._xyz
+        return frozen(self._xyz)
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -145,7 +145,7 @@ class _Coordinates(FramedKind):
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
         def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
             if dtype is None and not copy:
-                return self._xyz
+                return frozen(self._xyz)
             return np.array(self._xyz, dtype=dtype, copy=True)
 
     def is_close(self, other: object, atol: float = 1e-9) -> bool:

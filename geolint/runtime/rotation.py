@@ -56,6 +56,8 @@ def validate_rotation(rotation: np.ndarray, tolerance: float = DEFAULT_TOLERANCE
     tolerance : float
         Largest accepted max |R^T R - I|.
     """
+    if rotation.size == 0:  # an empty batch has nothing to check
+        return
     batch = rotation.ndim == 3
     errors = np.atleast_1d(orthonormality_error(rotation))
     worst = int(np.argmax(errors))
@@ -80,6 +82,8 @@ def orthonormalize(matrix: np.ndarray, owner: str = "rotation") -> np.ndarray:
     Raises `InvalidRotationError` for a reflection (det < 0) or a matrix further than `ORTHONORMALIZE_LIMIT`
     from orthonormal: projecting those would silently invent a rotation.
     """
+    if matrix.size == 0:
+        return matrix.copy()
     batch = matrix.ndim == 3
     errors = np.atleast_1d(orthonormality_error(matrix))
     worst = int(np.argmax(errors))
@@ -134,7 +138,7 @@ def quat_to_matrix(
     if np.any(norms < 1e-12):
         raise InvalidRotationError("a zero quaternion is not a rotation")
     off = np.atleast_1d(np.abs(norms - 1.0))
-    if not normalize and off.max() > tolerance:
+    if not normalize and off.size and off.max() > tolerance:
         worst = int(np.argmax(off))
         raise InvalidRotationError(
             f"the quaternion is not unit length{_where(worst, quat.ndim == 2)}: | |q| - 1 | = {off[worst]:.3g}, "

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 
 import numpy as np
 
-from geolint.runtime._framed import FramedKind, checked_array, format_array
+from geolint.runtime._framed import FramedKind, checked_array, format_array, frozen
 from geolint.runtime.errors import GeometryTypeError, GeometryValueError
 from geolint.runtime.primitives import Vector, check_same_frame, describe, register_kind
 
@@ -218,12 +218,12 @@ class Covariance(FramedKind, Generic[F]):
     @property
     def matrix(self) -> NDArray[np.float64]:
         """S, read-only, shape (3, 3) or (N, 3, 3)."""
-        return self._s
+        return frozen(self._s)
 
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
         def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
             if dtype is None and not copy:
-                return self._s
+                return frozen(self._s)
             return np.array(self._s, dtype=dtype, copy=True)
 
     def _describe(self) -> str:

@@ -17,9 +17,9 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar, overload
 import numpy as np
 
 from geolint.runtime import rotation as _rotation
-from geolint.runtime._framed import FramedKind, checked_array, format_array, new_framed
-from geolint.runtime.errors import FrameMismatchError, GeometryTypeError, GeometryValueError, InvalidRotationError
-from geolint.runtime.frames import Frame, frame_name
+from geolint.runtime._framed import FramedKind, checked_array, format_array, frozen
+from geolint.runtime.errors import FrameMismatchError, GeometryTypeError, GeometryValueError
+from geolint.runtime.frames import frame_name
 from geolint.runtime.primitives import Direction, Point, Vector, describe, register_kind
 
 if TYPE_CHECKING:
@@ -237,25 +237,25 @@ class Transform(FramedKind, Generic[Dst, Src]):
     @property
     def matrix(self) -> NDArray[np.float64]:
         """The homogeneous matrix, read-only, shape (4, 4) or (N, 4, 4)."""
-        return self._m
+        return frozen(self._m)
 
     @property
     def rotation(self) -> NDArray[np.float64]:
         """R_dst_src, read-only, shape (3, 3) or (N, 3, 3)."""
         try:
-            return self._r
+            return frozen(self._r)
         except AttributeError:
             r = self._r = self._m[..., :3, :3]
-            return r
+            return frozen(r)
 
     @property
     def translation(self) -> NDArray[np.float64]:
         """t_dst_src (the origin of Src in Dst), read-only, shape (3,) or (N, 3)."""
         try:
-            return self._t
+            return frozen(self._t)
         except AttributeError:
             t = self._t = self._m[..., :3, 3]
-            return t
+            return frozen(t)
 
     @property
     def is_batch(self) -> bool:
@@ -293,7 +293,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
         def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
             if dtype is None and not copy:
-                return self._m
+                return frozen(self._m)
             return np.array(self._m, dtype=dtype, copy=True)
 
     # ---- conversions --------------------------------------------------------------------------------------
@@ -460,5 +460,3 @@ _POINT_CLASSES = Point._by_frame_name
 _TRANSFORM_CLASSES = Transform._framed_classes
 _new = object.__new__
 
-# Silence "imported but unused" for names kept for the public surface of this module.
-_ = (Frame, InvalidRotationError, new_framed)

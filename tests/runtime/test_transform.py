@@ -288,3 +288,21 @@ def test_transform_pickles() -> None:
     assert type(again) is type(T)
     np.testing.assert_array_equal(again.matrix, T.matrix)
     assert T.is_close(again) and not T.is_close(Transform[World, Camera]())
+
+
+def test_computed_values_are_read_only_to_callers() -> None:
+    T = Transform[World, Camera](rotation=rot_z(30), translation=[1, 2, 3])
+    composed = T @ Transform[Camera, Base](translation=[0, 0, 1])
+    moved = T @ Point[Camera]([[1, 0, 0], [0, 1, 0]])
+    for array in (composed.matrix, composed.rotation, composed.translation, np.asarray(moved), moved.xyz, T.inverse().matrix):
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 7.0
+    np.testing.assert_allclose(np.asarray(moved), np.asarray(T @ Point[Camera]([[1, 0, 0], [0, 1, 0]])))
+
+
+def test_empty_batches_are_fine() -> None:
+    T = Transform[World, Camera](rotation=np.zeros((0, 3, 3)), translation=np.zeros((0, 3)))
+    assert len(T) == 0
+    assert len(T @ Point[Camera](np.zeros((0, 3)))) == 0
+    assert len(Transform[World, Camera]() @ Point[Camera](np.zeros((0, 3)))) == 0
+    assert Transform[World, Camera].from_quat(np.zeros((0, 4)), np.zeros((0, 3)), order="xyzw").is_batch
