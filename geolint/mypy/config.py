@@ -12,7 +12,9 @@ or these settings invalidates every cached module, so a cache never holds types 
 from __future__ import annotations
 
 import configparser
+import hashlib
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -38,8 +40,18 @@ class PluginConfig:
         return {
             "geolint": __version__,
             "plugin": PLUGIN_VERSION,
+            "plugin_source": plugin_source_digest(),
             "frame_aliases": sorted(self.frame_aliases.items()),
         }
+
+
+@lru_cache(maxsize=1)
+def plugin_source_digest() -> str:
+    """A digest of the plugin's own source: an edited plugin (an editable install) also invalidates the cache."""
+    digest = hashlib.sha256()
+    for path in sorted(Path(__file__).parent.glob("*.py")):
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
 
 
 def load(config_file: str | None) -> PluginConfig:

@@ -17,8 +17,9 @@ from __future__ import annotations
 
 from typing import Callable
 
-from mypy.nodes import Expression
+from mypy.nodes import Context, Expression, OpExpr
 from mypy.plugin import CheckerPluginInterface, MethodContext, MethodSigContext
+from mypy.subtypes import is_same_type
 from mypy.types import CallableType, FunctionLike, Type
 
 from geolint.mypy import algebra, geometry
@@ -39,7 +40,9 @@ BINARY_RULES: dict[str, tuple[BinaryRule, bool]] = {
 SCALING_OPERATORS = frozenset({"__mul__", "__rmul__", "__truediv__", "__neg__"})
 
 
-def outcome(operator: str, receiver: Type, operand: Type | None) -> Outcome | None:
+def outcome(
+    operator: str, receiver: Type, operand: Type | None, receiver_is_left: bool | None = None
+) -> Outcome | None:
     """What `algebra` says about ``receiver <operator> operand`` (None: not a framed operation)."""
     receiver_geo = geometry.read(receiver)
     if receiver_geo is None:
@@ -53,7 +56,9 @@ def outcome(operator: str, receiver: Type, operand: Type | None) -> Outcome | No
     operand_geo = geometry.read(operand) if operand is not None else None
     if operand_geo is None:
         return None
-    rule, receiver_is_left = BINARY_RULES[operator]
+    rule, receiver_is_left_by_name = BINARY_RULES[operator]
+    if receiver_is_left is None:
+        receiver_is_left = receiver_is_left_by_name
     if receiver_is_left:
         return rule(receiver_geo, operand_geo)
     return rule(operand_geo, receiver_geo)
@@ -65,7 +70,8 @@ def signature_hook(operator: str) -> Callable[[MethodSigContext], FunctionLike]:
         if operand_expr is None and operator != "__neg__":
             return ctx.default_signature
         operand = _operand_type(ctx.api, operand_expr) if operand_expr is not None else None
-        result = outcome(operator, ctx.type, operand)
+        receiver_is_left = _receiver_is_left(ctx.api, ctx.context, operand_expr, ctx.type)
+        result = outcome(operator, ctx.type, operand, receiver_is_left)
         if result is None or result.result is None and result.problem is None:
             return ctx.default_signature
         # Only rewrite when both operands are framed: then the plugin owns the answer (and its error).
@@ -79,7 +85,9 @@ def signature_hook(operator: str) -> Callable[[MethodSigContext], FunctionLike]:
 def method_hook(operator: str) -> Callable[[MethodContext], Type]:
     def hook(ctx: MethodContext) -> Type:
         operand = ctx.arg_types[0][0] if ctx.arg_types and ctx.arg_types[0] else None
-        result = outcome(operator, ctx.type, operand)
+        operand_expr = _single_operand(ctx.args)
+        receiver_is_left = _receiver_is_left(ctx.api, ctx.context, operand_expr, ctx.type)
+        result = outcome(operator, ctx.type, operand, receiver_is_left)
         if result is None:
             return ctx.default_return_type
         if result.problem is not None:
@@ -95,6 +103,32 @@ def _built(api: CheckerPluginInterface, result: Outcome, default: Type) -> Type:
     return geometry.build(api, result.result) or (
         default.ret_type if isinstance(default, CallableType) else default
     )
+
+
+def _receiver_is_left(
+    api: CheckerPluginInterface, context: Context, operand_expr: Expression | None, receiver: Type
+) -> bool | None:
+    """Which side of ``a <op> b`` the receiver is, read from the expression itself (None: go by the name).
+
+    mypy before 2.0 checks the reflected variant under the *forward* method name (``b.__matmul__(a)`` for
+    ``a @ b``), and passes the left operand as a stand-in node, so neither the name nor the node identity
+    always tells; the operand types mypy already recorded for ``a`` and ``b`` do.
+    """
+    if not isinstance(context, OpExpr) or operand_expr is None:
+        return None
+    if operand_expr is context.right:
+        return True
+    if operand_expr is context.left:
+        return False
+    lookup = getattr(api, "lookup_type_or_none", None)
+    if lookup is None:
+        return None
+    left, right = lookup(context.left), lookup(context.right)
+    if left is not None and is_same_type(left, receiver):
+        return True
+    if right is not None and is_same_type(right, receiver):
+        return False
+    return None
 
 
 def _single_operand(args: list[list[Expression]]) -> Expression | None:
