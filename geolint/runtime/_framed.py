@@ -78,7 +78,7 @@ class FramedKind:
         if not all(is_frame_argument(one) for one in items):
             if any(isinstance(one, (typing.TypeVar, typing.ForwardRef)) or one is typing.Any for one in items):
                 # A generic signature evaluated at runtime: let typing build the usual alias.
-                return super(FramedKind, cls).__class_getitem__(item)  # type: ignore[misc]  # typing.Generic's
+                return super(FramedKind, cls).__class_getitem__(item)  # type: ignore[misc]  # pyright: ignore  # Generic's
         if len(items) != cls._frame_arity:
             want = "one frame" if cls._frame_arity == 1 else f"{cls._frame_arity} frames"
             example = f"{cls.__name__}[World]" if cls._frame_arity == 1 else f"{cls.__name__}[World, Camera]"
@@ -184,7 +184,7 @@ def format_array(array: np.ndarray) -> str:
         np.round(array, 9) + 0.0,  # no "-0.0" for rounding noise
         separator=", ",
         threshold=24,
-        formatter={"float_kind": _format_float},  # type: ignore[arg-type]
+        formatter={"float_kind": _format_float},  # type: ignore[arg-type]  # pyright: ignore[reportArgumentType]
     ).replace("\n", "")
 
 

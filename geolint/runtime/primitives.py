@@ -160,6 +160,10 @@ class _Coordinates(FramedKind):
     def _describe(self) -> str:
         return f"{self._kind.__name__}[{self._frame}]"
 
+    @classmethod
+    def _from_state(cls, frames: tuple[str, ...], xyz: np.ndarray) -> Any:
+        return cls._wrap(frames[0], xyz)
+
     def __repr__(self) -> str:
         return f"{self._describe()}({format_array(self._xyz)})"
 
@@ -316,13 +320,14 @@ class Vector(_Coordinates, Generic[F]):
     def __neg__(self) -> Vector[F]:
         return Vector._wrap(self._frame, -self._xyz)  # type: ignore[no-any-return]
 
-    def __mul__(self, factor: float) -> Vector[F]:
+    # A factor is a real scalar, or for a batch an (N,) array of per-row factors.
+    def __mul__(self, factor: float | NDArray[Any]) -> Vector[F]:
         return Vector._wrap(self._frame, self._xyz * _scalar_factor(factor, self, "*"))  # type: ignore[no-any-return]
 
-    def __rmul__(self, factor: float) -> Vector[F]:
+    def __rmul__(self, factor: float | NDArray[Any]) -> Vector[F]:
         return Vector._wrap(self._frame, self._xyz * _scalar_factor(factor, self, "*"))  # type: ignore[no-any-return]
 
-    def __truediv__(self, divisor: float) -> Vector[F]:
+    def __truediv__(self, divisor: float | NDArray[Any]) -> Vector[F]:
         factor = _scalar_factor(divisor, self, "/")
         if np.any(factor == 0):
             raise GeometryValueError(f"{describe(self)} / 0: division by zero")
@@ -398,9 +403,3 @@ def _rebuild(kind_name: str, frames: Any, *state: Any) -> Any:
         frames = (frames,)
     return kind._from_state(frames, *state)
 
-
-def _coordinates_from_state(cls: Any, frames: tuple[str, ...], xyz: np.ndarray) -> Any:
-    return cls._wrap(frames[0], xyz)
-
-
-_Coordinates._from_state = classmethod(_coordinates_from_state)  # type: ignore[attr-defined]

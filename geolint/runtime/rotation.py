@@ -105,12 +105,12 @@ def orthonormalize(matrix: np.ndarray, owner: str = "rotation") -> np.ndarray:
     return projected  # type: ignore[no-any-return]
 
 
-def _check_order(order: object) -> str:
+def _check_order(order: object) -> QuatOrder:
     if order not in _ORDERS:
         raise GeometryValueError(
             f"quaternion order must be 'xyzw' (scipy, ROS) or 'wxyz' (pytransform3d, Eigen), got {order!r}"
         )
-    return order
+    return "xyzw" if order == "xyzw" else "wxyz"
 
 
 def quat_to_matrix(
@@ -133,7 +133,7 @@ def quat_to_matrix(
     -------
     ndarray, shape (3, 3) or (N, 3, 3)
     """
-    order = _check_order(order)  # type: ignore[assignment]
+    order = _check_order(order)
     norms = np.linalg.norm(quat, axis=-1)
     if np.any(norms < 1e-12):
         raise InvalidRotationError("a zero quaternion is not a rotation")
@@ -167,7 +167,7 @@ def matrix_to_quat(rotation: np.ndarray, order: QuatOrder) -> np.ndarray:
 
     Uses the largest of the four candidate denominators (Shepperd's method) for stability.
     """
-    order = _check_order(order)  # type: ignore[assignment]
+    order = _check_order(order)
     m = rotation.reshape(-1, 3, 3)
     trace = np.trace(m, axis1=1, axis2=2)
     candidates = np.stack([m[:, 0, 0], m[:, 1, 1], m[:, 2, 2], trace], axis=1)

@@ -116,3 +116,28 @@ def test_every_binary_operation_across_frames_is_refused(left: str, right: str) 
             operation()
     with pytest.raises(GeometryTypeError):
         p + q  # type: ignore[operator]
+
+
+@given(poses("odom", "base"), poses("odom", "base"), st.floats(0.0, 1.0), st.floats(-100, 100), st.floats(0.01, 50))
+@PROPERTY
+def test_stamped_lookups_hit_samples_and_interpolate_symmetrically(T0, T1, fraction, start, span) -> None:  # type: ignore[no-untyped-def]
+    from geolint import FrameTree
+
+    tree = FrameTree()
+    tree.add(T0, stamp=start)
+    tree.add(T1, stamp=start + span)
+    np.testing.assert_allclose(tree.lookup("odom", "base", at=start).matrix, T0.matrix, atol=ATOL)
+    np.testing.assert_allclose(tree.lookup("odom", "base", at=start + span).matrix, T1.matrix, atol=ATOL)
+    between = tree.lookup("odom", "base", at=start + fraction * span)
+    np.testing.assert_allclose(between.rotation.T @ between.rotation, np.eye(3), atol=1e-9)
+    np.testing.assert_allclose(
+        between.translation, (1 - fraction) * T0.translation + fraction * T1.translation, atol=1e-6
+    )
+
+    def angle(a: np.ndarray, b: np.ndarray) -> float:
+        return float(np.arccos(np.clip((np.trace(a.T @ b) - 1) / 2, -1, 1)))
+
+    # slerp moves along the shortest arc at constant rate: the angles to both ends split in fraction : 1 - fraction.
+    total = angle(T0.rotation, T1.rotation)
+    assert angle(T0.rotation, between.rotation) == pytest.approx(fraction * total, abs=1e-6)
+    assert angle(between.rotation, T1.rotation) == pytest.approx((1 - fraction) * total, abs=1e-6)
