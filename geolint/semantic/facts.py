@@ -55,6 +55,8 @@ class Scope:
     # `obj.attr = value`: (target attribute, value, the statement)
     attribute_stores: list[tuple[cst.Attribute, cst.BaseExpression]] = field(default_factory=list)
     augmented: set[str] = field(default_factory=set)
+    # Names used as an operand of a matrix product (`T @ x`, `x.dot(M)`, `np.dot(T, x.T)`).
+    matmul_operands: set[str] = field(default_factory=set)
     returns: list[cst.BaseExpression] = field(default_factory=list)
 
     def bind(self, name: str, binding: Binding) -> None:
@@ -217,6 +219,22 @@ class _Collector(cst.CSTVisitor):
     def visit_ExceptHandler(self, node: cst.ExceptHandler) -> None:
         if node.name is not None:
             self._bind_target(node.name.name, OpaqueBinding())
+
+    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
+        if isinstance(node.operator, cst.MatrixMultiply):
+            self._matmul_operands(node.left, node.right)
+
+    def visit_Call(self, node: cst.Call) -> None:
+        func = node.func
+        if isinstance(func, cst.Attribute) and func.attr.value in ("dot", "matmul"):
+            self._matmul_operands(func.value, *(arg.value for arg in node.args))
+
+    def _matmul_operands(self, *operands: cst.BaseExpression) -> None:
+        for operand in operands:
+            while isinstance(operand, cst.Attribute) and operand.attr.value == "T":
+                operand = operand.value
+            if isinstance(operand, cst.Name):
+                self.scope.matmul_operands.add(operand.value)
 
     def visit_Return(self, node: cst.Return) -> None:
         if node.value is not None:

@@ -58,6 +58,9 @@ class Homogeneous:
     w: int
     construction: cst.BaseExpression
     fixed: cst.BaseExpression
+    # False when only the use can tell a homogeneous w from a padded coordinate
+    # (`np.column_stack((xy, np.zeros(n)))` lifts 2D points to z = 0).
+    explicit: bool = True
 
 
 @dataclass(frozen=True)
@@ -183,6 +186,18 @@ class SemanticModel:
         if isinstance(node, cst.Subscript):
             node = node.value
         return isinstance(node, cst.Call) and last_name(node.func) in {"norm", "vector_norm"}
+
+    def expects_failure(self, node: cst.CSTNode) -> bool:
+        """Whether `node` is inside `with pytest.raises(...)` / `self.assertRaises(...)`."""
+        current = self.parent(node)
+        while current is not None:
+            if isinstance(current, cst.With):
+                for item in current.items:
+                    call = item.item
+                    if isinstance(call, cst.Call) and last_name(call.func) in ("raises", "assertRaises", "assertRaisesRegex"):
+                        return True
+            current = self.parent(current)
+        return False
 
     # -- matrix products -----------------------------------------------------------------
     def matmul(self, node: cst.CSTNode) -> MatMul | None:
@@ -547,19 +562,19 @@ class SemanticModel:
             elements = [element.slice for element in node.slice]
             if len(elements) == 2 and all(isinstance(part, cst.Index) for part in elements):
                 inner, w_node = elements[0].value, elements[1].value  # type: ignore[union-attr]
-                return self._with_w(node, inner, w_node)
+                return self._with_w(node, inner, w_node, explicit=False)
         return None
 
     def _homogeneous_call(self, node: cst.Call) -> Homogeneous | None:
         positional = [arg.value for arg in node.args if arg.keyword is None and not arg.star]
         if self.is_numpy(node.func, "append") and len(positional) == 2 and len(node.args) == 2:
-            return self._with_w(node, positional[0], positional[1])
+            return self._with_w(node, positional[0], positional[1], explicit=False)
         if self.is_numpy(node.func, "hstack", "column_stack", "concatenate") and positional:
             sequence = positional[0]
             if isinstance(sequence, (cst.List, cst.Tuple)) and len(sequence.elements) == 2:
                 first, second = (element.value for element in sequence.elements)
                 if not isinstance(first, cst.StarredElement):
-                    return self._with_w(node, first, second)
+                    return self._with_w(node, first, second, explicit=False)
         if self.is_numpy(node.func, "array", "asarray") and positional and isinstance(positional[0], cst.List):
             elements = [element.value for element in positional[0].elements]
             if len(elements) == 4:
@@ -568,12 +583,37 @@ class SemanticModel:
                     return self._with_w(node, base, elements[3])
         return None
 
-    def _with_w(self, construction: cst.BaseExpression, inner: cst.BaseExpression, w_node: cst.BaseExpression) -> Homogeneous | None:
+    def _with_w(
+        self, construction: cst.BaseExpression, inner: cst.BaseExpression, w_node: cst.BaseExpression, explicit: bool = True
+    ) -> Homogeneous | None:
         w, fixed_w = _w_value(self, w_node)
         if w is None or fixed_w is None:
             return None
         fixed = construction.deep_replace(w_node, fixed_w)
-        return Homogeneous(inner=inner, w=w, construction=construction, fixed=fixed)  # type: ignore[arg-type]
+        return Homogeneous(inner=inner, w=w, construction=construction, fixed=fixed, explicit=explicit)  # type: ignore[arg-type]
+
+    def used_as_homogeneous(self, homogeneous: Homogeneous) -> bool:
+        """Whether a homogeneous construction is visibly used as one: built explicitly as a
+        4-vector, multiplied by a matrix (directly or through the variable holding it), or
+        stored under a homogeneous name (`p_h`, `points_hom`)."""
+        if homogeneous.explicit:
+            return True
+        node: cst.CSTNode = homogeneous.construction
+        parent = self.parent(node)
+        while isinstance(parent, cst.Attribute) and parent.attr.value == "T":
+            node, parent = parent, self.parent(parent)
+        if isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, cst.MatrixMultiply):
+            return True
+        if isinstance(parent, cst.Arg):
+            call = self.parent(parent)
+            if call is not None and self.matmul(call) is not None:
+                return True
+        if isinstance(parent, cst.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0].target, cst.Name):
+            target = parent.targets[0].target.value
+            if set(target.lower().split("_")) & {"h", "hom", "homog", "homogeneous", "homo"}:
+                return True
+            return target in self.facts.scope_of(parent).matmul_operands
+        return False
 
     def _filled_buffer(self, name: cst.Name, value: cst.BaseExpression) -> Homogeneous | None:
         """`h = np.ones(4); h[:3] = x` (or `np.ones((n, 4)); h[:, :3] = x`): homogeneous x with w = 1."""
@@ -585,7 +625,8 @@ class SemanticModel:
         if len(fills) != 1 or len(stores) != 1:
             return None
         w = 1 if last_name(value.func) == "ones" else 0
-        assert isinstance(value.func, (cst.Attribute, cst.Name))
+        if not isinstance(value.func, (cst.Attribute, cst.Name)):
+            return None
         fixed_func = _swap_ones_zeros(value.func)
         return Homogeneous(inner=fills[0], w=w, construction=value, fixed=value.with_changes(func=fixed_func))
 

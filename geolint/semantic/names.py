@@ -186,7 +186,13 @@ def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None: 
             kinds.add(Kind.DIRECTION)
     if len(kinds) != 1:
         return None
-    return kinds.pop()
+    kind = kinds.pop()
+    # `vertex_normals` and `point_velocity` are a modifier and a head noun; in a longer name
+    # (`origin_projected_on_screw_axis`) a word of the other kind means we cannot tell.
+    other = points if kind == Kind.DIRECTION else directions
+    if len(parts) > 2 and any(part in other for part in parts):
+        return None
+    return kind
 
 
 # --- frames ------------------------------------------------------------------------------

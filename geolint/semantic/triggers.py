@@ -22,12 +22,17 @@ def any_of(*patterns: str) -> str:
     return "(?:" + "|".join(f"(?:{pattern})" for pattern in patterns) + ")"
 
 
-def all_of(*patterns: str) -> str:
-    return "".join(f"(?=[\\s\\S]*?{pattern})" for pattern in patterns)
+def compile_trigger(*conjunctions: str | tuple[str, ...]) -> re.Pattern[str]:
+    """A file matches when, for at least one conjunction, EVERY pattern of it occurs in the file.
 
-
-def compile_trigger(pattern: str) -> re.Pattern[str]:
-    return re.compile(f"\\A{pattern}")
+    Each lookahead is anchored at the start of the file (never nested inside another scan),
+    so a search costs a few linear passes, not a quadratic one.
+    """
+    branches = []
+    for conjunction in conjunctions:
+        parts = (conjunction,) if isinstance(conjunction, str) else conjunction
+        branches.append("".join(f"(?=[\\s\\S]*?(?:{part}))" for part in parts))
+    return re.compile("\\A(?:" + "|".join(branches) + ")")
 
 
 # A matrix product in any spelling (decorators start a line, so `@` must follow an operand).

@@ -7,7 +7,7 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.names import frames_of_name, same_frame
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import FRAME_OPERATOR, VALUE_WITH_FRAME, all_of, any_of, compile_trigger
+from geolint.semantic.triggers import FRAME_OPERATOR, VALUE_WITH_FRAME, any_of, compile_trigger
 
 
 class FrameMismatchAssign(SemanticRule):
@@ -38,7 +38,7 @@ class FrameMismatchAssign(SemanticRule):
 
     code = "GEO203"
     name = "frame-mismatch-assign"
-    triggers = compile_trigger(all_of(any_of(FRAME_OPERATOR, VALUE_WITH_FRAME)))
+    triggers = compile_trigger(any_of(FRAME_OPERATOR, VALUE_WITH_FRAME))
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),

@@ -40,7 +40,7 @@ class TransposeAsInverse(SemanticRule):
 
     code = "GEO204"
     name = "transpose-as-inverse"
-    triggers = compile_trigger(r"(?=[\s\S]*?(?:\b[TXH]_\w+|[a-z0-9]_[TXH]_[A-Za-z]\w*)\s*\.\s*T\b)")
+    triggers = compile_trigger(r"(?:\b[TXH]_\w+|[a-z0-9]_[TXH]_[A-Za-z]\w*)\s*\.\s*T\b")
 
     VALID = [
         Valid("R_cam_world = R_world_cam.T\n"),

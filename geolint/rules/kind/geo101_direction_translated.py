@@ -13,8 +13,6 @@ from geolint.semantic.triggers import (
     HOMOGENEOUS,
     MATMUL,
     TRANSLATION,
-    all_of,
-    any_of,
     compile_trigger,
 )
 
@@ -55,14 +53,9 @@ class DirectionTranslated(SemanticRule):
     code = "GEO101"
     name = "direction-translated"
     triggers = compile_trigger(
-        all_of(
-            DIRECTION_SOURCE,
-            any_of(
-                HOMOGENEOUS,
-                all_of(MATMUL, TRANSLATION),
-                r"transform_points\(|vector_to_point\(|matrix_world",
-            ),
-        )
+        (DIRECTION_SOURCE, HOMOGENEOUS),
+        (DIRECTION_SOURCE, MATMUL, TRANSLATION),
+        (DIRECTION_SOURCE, r"transform_points\(|vector_to_point\(|matrix_world"),
     )
 
     VALID = [
@@ -104,7 +97,7 @@ class DirectionTranslated(SemanticRule):
     # homogeneous w = 1 -----------------------------------------------------------------
     def _check_homogeneous(self, node: cst.BaseExpression) -> None:
         homogeneous = self.model.homogeneous_built_by(node)
-        if homogeneous is None or homogeneous.w != 1:
+        if homogeneous is None or homogeneous.w != 1 or not self.model.used_as_homogeneous(homogeneous):
             return
         if self.model.kind_of(homogeneous.inner) != Kind.DIRECTION:
             return

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import re
+
 import libcst as cst
 
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.model import last_name
 from geolint.semantic.names import Kind
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import HOMOGENEOUS, MATMUL, POINT_SOURCE, all_of, any_of, compile_trigger
+from geolint.semantic.triggers import HOMOGENEOUS, MATMUL, POINT_SOURCE, any_of, compile_trigger
 
 
 class PointNotTranslated(SemanticRule):
@@ -43,7 +45,7 @@ class PointNotTranslated(SemanticRule):
     code = "GEO102"
     name = "point-not-translated"
     triggers = compile_trigger(
-        all_of(POINT_SOURCE, any_of(HOMOGENEOUS, MATMUL, r"translate\s*=\s*False|vector_to_direction\("))
+        (POINT_SOURCE, any_of(HOMOGENEOUS, MATMUL, r"translate\s*=\s*False|vector_to_direction\("))
     )
 
     VALID = [
@@ -54,6 +56,8 @@ class PointNotTranslated(SemanticRule):
         Valid("p_rot = R @ point\n"),
         Valid("q = T_world_cam[:3, :3] @ p_cam\nq += T_world_cam[:3, 3]\n"),
         Valid("import trimesh\nn = trimesh.transform_points(normals, T, translate=False)\n"),
+        Valid("rotated = np.dot(pose[:3, :3], points.T)\nbox = rotated.max(axis=1) + pose[:3, 3]\n"),
+        Valid("import numpy as np\nxyz = np.column_stack((points_2d, np.zeros(len(points_2d))))\n"),
     ]
     INVALID = [
         Invalid(
@@ -79,7 +83,7 @@ class PointNotTranslated(SemanticRule):
 
     def _check_homogeneous(self, node: cst.BaseExpression) -> None:
         homogeneous = self.model.homogeneous_built_by(node)
-        if homogeneous is None or homogeneous.w != 0 or self.model.kind_of(homogeneous.inner) != Kind.POINT:
+        if homogeneous is None or homogeneous.w != 0 or not self.model.used_as_homogeneous(homogeneous) or self.model.kind_of(homogeneous.inner) != Kind.POINT:
             return
         self.report(
             node,
@@ -100,7 +104,7 @@ class PointNotTranslated(SemanticRule):
             matrix = self.model.rotation_block_of(block)
             if matrix is None or self.model.kind_of(matrix) != Kind.TRANSFORM:
                 continue
-            if self.model.kind_of(value) != Kind.POINT or self._translated_later(node):
+            if self.model.kind_of(value) != Kind.POINT or self._translated_later(node, matrix):
                 continue
             self.report(
                 node,
@@ -109,8 +113,14 @@ class PointNotTranslated(SemanticRule):
             )
             return
 
-    def _translated_later(self, node: cst.CSTNode) -> bool:
-        """Whether the product is part of a sum, or its target is added to afterwards (`q += t`)."""
+    def _translated_later(self, node: cst.CSTNode, matrix: cst.BaseExpression) -> bool:
+        """Whether the product is part of a sum, its target is added to afterwards (`q += t`),
+        or the same scope reads the matrix's translation column (added after a reduction)."""
+        scope = self.model.facts.scope_of(node)
+        scope_code = self.model.facts.module.code_for_node(scope.node)
+        column = rf"{re.escape(self.code_of(matrix))}\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]"
+        if re.search(column, scope_code):
+            return True
         parent = self.model.parent(node)
         while isinstance(parent, cst.Attribute) and parent.attr.value == "T":
             node, parent = parent, self.model.parent(parent)

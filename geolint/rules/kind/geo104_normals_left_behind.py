@@ -11,7 +11,7 @@ from geolint.semantic.facts import ParamBinding
 from geolint.semantic.model import last_name
 from geolint.semantic.names import Kind, tokens
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import MATMUL, all_of, any_of, compile_trigger, word
+from geolint.semantic.triggers import MATMUL, any_of, compile_trigger, word
 
 _NORMAL_TOKENS = frozenset({"normal", "normals", "nrm", "nrms"})
 _MENTIONS_NORMAL_FIELDS = re.compile(r"normal_x")
@@ -54,7 +54,8 @@ class NormalsLeftBehind(SemanticRule):
     code = "GEO104"
     name = "normals-left-behind"
     triggers = compile_trigger(
-        all_of(word(*_NORMAL_TOKENS), any_of(r"do_transform_cloud", all_of(word("points", "pts", "point_cloud"), any_of(MATMUL, r"transform_points\("))))
+        (word(*_NORMAL_TOKENS), r"do_transform_cloud"),
+        (word(*_NORMAL_TOKENS), word("points", "pts"), any_of(MATMUL, r"transform_points\(")),
     )
 
     VALID = [

@@ -45,7 +45,7 @@ class QuaternionOrder(SemanticRule):
 
     code = "GEO301"
     name = "quaternion-order"
-    triggers = compile_trigger(r"(?=[\s\S]*?(?:from_quat|quat2|_from_quaternion|check_quaternion|Quaternion|quaternion_))")
+    triggers = compile_trigger(r"from_quat|quat2|_from_quaternion|check_quaternion|Quaternion|quaternion_")
 
     VALID = [
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.x, q.y, q.z, q.w])\n"),

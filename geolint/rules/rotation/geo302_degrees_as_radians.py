@@ -50,9 +50,9 @@ class DegreesAsRadians(SemanticRule):
     code = "GEO302"
     name = "degrees-as-radians"
     triggers = compile_trigger(
-        r"(?=[\s\S]*?(?:from_euler|from_rotvec|euler2|axangle2|_from_angle|_from_euler|"
+        r"(?:from_euler|from_rotvec|euler2|axangle2|_from_angle|_from_euler|"
         r"\bR[xyz]\(|RPY\(|Eul\(|\brot[xyz]\(|\btrot[xyz]\(|2r\(|2tr\(|quaternion_from_euler|"
-        r"\b(?:sin|cos|tan)\(\s*-?\d))"
+        r"\b(?:sin|cos|tan)\(\s*-?\d)"
     )
 
     VALID = [
