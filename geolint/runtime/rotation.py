@@ -114,7 +114,11 @@ def _check_order(order: object) -> QuatOrder:
 
 
 def quat_to_matrix(
-    quat: np.ndarray, order: QuatOrder, tolerance: float = DEFAULT_TOLERANCE, normalize: bool = False
+    quat: np.ndarray,
+    order: QuatOrder,
+    tolerance: float = DEFAULT_TOLERANCE,
+    normalize: bool = False,
+    owner: str = "quaternion",
 ) -> np.ndarray:
     """Rotation matrices from unit quaternions.
 
@@ -128,6 +132,8 @@ def quat_to_matrix(
         Largest accepted | |q| - 1 | unless ``normalize``.
     normalize : bool
         Scale the quaternions to unit length instead of rejecting non-unit ones (zero is still rejected).
+    owner : str
+        What the quaternion is for, at the start of error messages (e.g. ``"Transform[World <- Camera]"``).
 
     Returns
     -------
@@ -136,12 +142,12 @@ def quat_to_matrix(
     order = _check_order(order)
     norms = np.linalg.norm(quat, axis=-1)
     if np.any(norms < 1e-12):
-        raise InvalidRotationError("a zero quaternion is not a rotation")
+        raise InvalidRotationError(f"{owner}: a zero quaternion is not a rotation")
     off = np.atleast_1d(np.abs(norms - 1.0))
     if not normalize and off.size and off.max() > tolerance:
         worst = int(np.argmax(off))
         raise InvalidRotationError(
-            f"the quaternion is not unit length{_where(worst, quat.ndim == 2)}: | |q| - 1 | = {off[worst]:.3g}, "
+            f"{owner}: the quaternion is not unit length{_where(worst, quat.ndim == 2)}: | |q| - 1 | = {off[worst]:.3g}, "
             f"above the tolerance {tolerance:g}; pass normalize=True to scale it"
         )
     q = quat / norms[..., None]

@@ -157,11 +157,13 @@ class Transform(FramedKind, Generic[Dst, Src]):
         self = object.__new__(cls)
         owner = self._owner_name()
         m = checked_array(matrix, ((4, 4), (-1, 4, 4)), "matrix", owner)
-        bottom = m[..., 3, :]
-        if np.abs(bottom - (0.0, 0.0, 0.0, 1.0)).max() > 0:
+        bottoms = m[..., 3, :].reshape(-1, 4)
+        wrong = np.flatnonzero((bottoms != (0.0, 0.0, 0.0, 1.0)).any(axis=1))
+        if wrong.size:
+            where = f" (matrix {wrong[0]} of the batch)" if m.ndim == 3 else ""
             raise GeometryValueError(
                 f"{owner}: the bottom row of a homogeneous transform must be [0, 0, 0, 1], got "
-                f"{format_array(bottom.reshape(-1, 4)[np.argmax(np.abs(bottom - (0, 0, 0, 1)).reshape(-1, 4).max(axis=1))])}"
+                f"{format_array(bottoms[wrong[0]])}{where}"
             )
         out = np.array(m)
         out[..., :3, :3] = self._checked_rotation(m[..., :3, :3], tolerance, orthonormalize, owner)
@@ -193,10 +195,10 @@ class Transform(FramedKind, Generic[Dst, Src]):
         normalize : bool, default False
             Scale non-unit quaternions instead of rejecting them.
         """
-        owner = cls._label(*cls.__dict__["_frames"]) if "_frames" in cls.__dict__ else "Transform"
+        owner = object.__new__(cls)._owner_name()
         q = checked_array(quat, ((4,), (-1, 4)), "quat", owner)
         tol = _rotation.DEFAULT_TOLERANCE if tolerance is None else tolerance
-        r = _rotation.quat_to_matrix(q, order, tol, normalize)
+        r = _rotation.quat_to_matrix(q, order, tol, normalize, owner)
         return cls(rotation=r, translation=translation)
 
     @classmethod
