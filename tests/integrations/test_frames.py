@@ -1,0 +1,123 @@
+"""`geolint frames`: the graph read from code, through the real CLI, against a golden DOT file,
+plus the graph builder on small sources for each way a frame edge can be spelled.
+
+To regenerate the golden file after an intended change:
+`cd fixtures/frames && geolint frames . > expected.dot` (then review the diff).
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from geolint import api
+from geolint.frames_graph import graph_of_source
+from geolint.lint_types import Config
+
+FIXTURES = Path(__file__).resolve().parents[2] / "fixtures" / "frames"
+
+
+def frames_cli(*args: str, cwd: Path = FIXTURES) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "geolint", "frames", *args], cwd=cwd, capture_output=True, text=True, timeout=120
+    )
+
+
+def edges(source: str, findings: bool = False) -> set[tuple[str, str, str, bool]]:
+    found = api.lint_text(source, "m.py") if findings else []
+    graph = graph_of_source(source, "m.py", Config(), found)
+    return {(e.parent, e.child, e.label, e.mismatch) for e in graph.edges}
+
+
+def test_golden_dot() -> None:
+    completed = frames_cli(".")
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout == (FIXTURES / "expected.dot").read_text(encoding="utf-8")
+
+
+def test_golden_has_red_edges_for_each_frame_finding() -> None:
+    dot = (FIXTURES / "expected.dot").read_text(encoding="utf-8")
+    red = [line for line in dot.splitlines() if "color=red" in line]
+    findings = [
+        (path.name, f.line, f.code)
+        for path in sorted(FIXTURES.glob("*.py"))
+        for f in api.lint_text(path.read_text(encoding="utf-8"), path.name)
+        if f.code.startswith("GEO2")
+    ]
+    assert findings, "the fixture must contain frame mismatches"
+    assert len(red) == len(findings)
+    for name, line, code in findings:
+        assert any(f"{code}: " in edge and f"{name}:{line}" in edge for edge in red), (name, line, code)
+
+
+def test_mermaid_and_output_file(tmp_path: Path) -> None:
+    target = tmp_path / "frames.mmd"
+    completed = frames_cli(".", "--format", "mermaid", "--output", str(target))
+    assert completed.returncode == 0 and completed.stdout == ""
+    text = target.read_text(encoding="utf-8")
+    assert text.startswith("flowchart TD\n") and "linkStyle" in text and '["lidar_link"]' in text
+
+
+def test_svg_or_a_clear_message_how_to_get_graphviz() -> None:
+    completed = frames_cli(".", "--format", "svg")
+    if shutil.which("dot") is None:
+        assert completed.returncode == 2 and "apt-get install graphviz" in completed.stderr
+    else:
+        assert completed.returncode == 0, completed.stderr
+        assert "<svg" in completed.stdout and "lidar_link" in completed.stdout
+
+
+def test_missing_path_is_an_error() -> None:
+    completed = frames_cli("no/such/dir")
+    assert completed.returncode == 2 and "no/such/dir" in completed.stderr
+
+
+def test_each_naming_convention_gives_the_same_edge() -> None:
+    for name in ("T_world_cam", "world_T_cam", "world_from_cam", "cam_to_world", "cam2world"):
+        assert edges(f"{name} = load()\n") == {("world", "cam", name, False)}, name
+    assert edges("X_WB = load()\n") == {("w", "b", "X_WB", False)}
+
+
+def test_value_names_add_frames_not_edges() -> None:
+    graph = graph_of_source("p_world = get()\nnormals_cam = get()\n", "m.py")
+    assert graph.edges == () and set(graph.frames) == {"world", "cam"}
+
+
+def test_typed_transforms_use_the_runtime_frame_names() -> None:
+    source = """\
+class Base(Frame): pass
+class Lidar(Frame, name="lidar_link"): pass
+def mount(pose: Transform[Base, Lidar]) -> Transform["world", Base]: ...
+"""
+    assert edges(source) == {
+        ("base", "lidar_link", "pose", False),
+        ("world", "base", 'Transform["world", Base]', False),
+    }
+
+
+def test_frame_tree_add_calls_are_edges() -> None:
+    source = """\
+tree = FrameTree()
+T = Transform[Map, Odom].identity()
+tree.add(T)
+"""
+    assert ("map", "odom", "tree.add(T)", False) in edges(source)
+
+
+def test_frame_findings_become_red_edges_between_the_disagreeing_frames() -> None:
+    source = """\
+def f(T_world_cam, p_base, T_world_base, T_cam_tool):
+    p = T_world_cam @ p_base
+    T = T_world_base @ T_cam_tool
+"""
+    red = {(parent, child) for parent, child, _, mismatch in edges(source, findings=True) if mismatch}
+    assert red == {("cam", "base"), ("base", "cam")}
+
+
+def test_code_that_does_not_parse_gives_an_empty_graph() -> None:
+    graph = graph_of_source("def f(:\n", "m.py")
+    assert graph.edges == () and graph.frames == ()
