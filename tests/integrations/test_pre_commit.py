@@ -65,18 +65,23 @@ def test_hooks_fail_on_the_buggy_file_fix_it_and_pass_on_the_clean_one(tmp_path:
     git("init", "-q", cwd=project)
     (project / "buggy.py").write_text(BUGGY, encoding="utf-8")
     (project / "clean.py").write_text(CLEAN, encoding="utf-8")
-    git("add", "buggy.py", "clean.py", cwd=project)
+    # An excluded folder stays excluded even though pre-commit names its files.
+    (project / "pyproject.toml").write_text('[tool.geolint]\nexclude = ["generated/"]\n', encoding="utf-8")
+    (project / "generated").mkdir()
+    (project / "generated" / "made.py").write_text(BUGGY, encoding="utf-8")
+    git("add", "buggy.py", "clean.py", "pyproject.toml", "generated/made.py", cwd=project)
 
-    both = try_repo(project, head, "buggy.py", "clean.py")
+    both = try_repo(project, head, "buggy.py", "clean.py", "generated/made.py")
     output = both.stdout + both.stderr
     assert both.returncode == 1, output
     check_section = output.split("- hook id: geolint\n", 1)[1].split("- hook id: geolint-fix", 1)[0]
     assert re.search(r"buggy\.py:2:\d+: GEO101 ", check_section), output
-    assert "clean.py" not in check_section
+    assert "clean.py" not in check_section and "made.py" not in check_section
     assert "files were modified by this hook" in output  # geolint-fix fixed buggy.py
     fixed = (project / "buggy.py").read_text(encoding="utf-8")
     assert fixed != BUGGY and [f.code for f in api.lint_text(fixed, "buggy.py")] == []
     assert (project / "clean.py").read_text(encoding="utf-8") == CLEAN
+    assert (project / "generated" / "made.py").read_text(encoding="utf-8") == BUGGY
 
     clean = try_repo(project, head, "clean.py")
     assert clean.returncode == 0, clean.stdout + clean.stderr
