@@ -14,8 +14,9 @@ never pays for them.
 from __future__ import annotations
 
 import ast
-import re
 import io
+import re
+import threading
 import tokenize
 from dataclasses import replace
 from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
@@ -113,7 +114,7 @@ def lint_source(
                 line, column, message = syntax_error
                 return _only_syntax_error(path, config, rules, line, column, f"syntax error: {message}")
 
-    active = [rule for rule in visitors if rule.triggers is None or rule.triggers.search(source)]
+    active = [rule for rule in visitors if _may_fire(rule, source, config)]
     findings: list[Finding] = []
     if active:
         if module is None:
@@ -136,6 +137,15 @@ def lint_source(
                 severity=_severity_of(suppression.UNUSED_SUPPRESSION, config, Severity.WARNING),
             )
     return sorted(findings, key=finding_order)
+
+
+def _may_fire(rule: type[Rule], source: str, config: Config) -> bool:
+    """The prefilter: whether the rule's trigger matches (a trigger that can read the config is given it)."""
+    trigger = rule.triggers
+    if trigger is None:
+        return True
+    search_with = getattr(trigger, "search_with", None)
+    return bool(search_with(source, config) if search_with is not None else trigger.search(source))
 
 
 def finding_order(finding: Finding) -> tuple[int, int, str, int, int, str]:
@@ -194,10 +204,28 @@ def _severity_of(code: str, config: Config, default: Severity) -> Severity:
     return config.severity.get(code, default)
 
 
+_last_tree = threading.local()
+
+
+def cached_ast(source: str) -> ast.Module:
+    """`ast.parse(source)`, remembered for the last text parsed in this thread.
+
+    The engine's syntax check, the suppression scanner and the rules' prefilter all need the
+    `ast` of the same text in a row; parsing it once saves a full parse per file.
+    Raises what `ast.parse` raises.
+    """
+    cached = getattr(_last_tree, "value", None)
+    if cached is not None and cached[0] is source:
+        return cached[1]
+    tree = ast.parse(source)
+    _last_tree.value = (source, tree)
+    return tree
+
+
 def _syntax_error(source: str) -> tuple[int, int, str] | None:
     """(line, column, message) of CPython's first syntax error, or None when the module compiles."""
     try:
-        ast.parse(source)
+        cached_ast(source)
     except SyntaxError as error:
         return (error.lineno or 1, max(error.offset or 1, 1), error.msg or "invalid syntax")
     except (ValueError, MemoryError, RecursionError) as error:  # null bytes, absurd nesting

@@ -53,14 +53,95 @@ class Directive:
         return self.codes is None or finding.code in self.codes
 
 
+# A line that may hold a directive: a `#` followed later by one of the two keywords.
+CANDIDATE_LINE = re.compile(r"#[^\r\n]*?(?:geolint|noqa)", re.IGNORECASE)
+
+
 def may_have_directives(source: str) -> bool:
-    """A cheap test that lets the engine skip tokenizing most files."""
-    lowered = source.lower()
-    return "geolint" in lowered or "noqa" in lowered
+    """A cheap test that lets the engine skip looking for directives in most files."""
+    return CANDIDATE_LINE.search(source) is not None
 
 
 def parse_directives(source: str) -> list[Directive]:
-    """Every suppression directive in real comments (never inside strings)."""
+    """Every suppression directive in real comments (never inside strings).
+
+    Tokenizing a whole file in pure Python is slow, so only the lines that may hold a directive
+    are tokenized, each on its own; the module's `ast` says which of them lie inside a
+    multi-line string. Without an `ast` (a file CPython cannot parse) the whole file is tokenized.
+    """
+    from geolint.engine import cached_ast, split_lines
+
+    if not may_have_directives(source):
+        return []
+    try:
+        tree = cached_ast(source)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        directives = _directives_by_tokenizing_everything(source)
+    else:
+        directives = _directives_on_candidate_lines(split_lines(source), tree)
+    if any(d.own_line for d in directives):
+        _assign_own_line_spans(source, directives)
+    for directive in directives:
+        if not directive.own_line:
+            directive.first_line = directive.last_line = directive.line
+    return directives
+
+
+def _directives_on_candidate_lines(lines: Sequence[str], tree: ast.AST) -> list[Directive]:
+    rows = [index + 1 for index, line in enumerate(lines) if "#" in line and CANDIDATE_LINE.search(line)]
+    if not rows:
+        return []
+    # Multi-line strings, as (first row, first byte column, last row, end byte column).
+    spans = [
+        (node.lineno, node.col_offset, node.end_lineno, node.end_col_offset)
+        for node in ast.walk(tree)
+        if isinstance(node, (ast.Constant, ast.JoinedStr))
+        and node.end_lineno is not None
+        and node.end_lineno > node.lineno
+        and (isinstance(node, ast.JoinedStr) or isinstance(node.value, (str, bytes)))
+    ]
+    directives: list[Directive] = []
+    for row in rows:
+        line = lines[row - 1].rstrip("\r\n")
+        encoded = line.encode("utf-8")
+        start_byte, end_byte = 0, len(encoded)
+        inside = False
+        for first, first_col, last, last_col in spans:
+            if first < row < last:
+                inside = True
+                break
+            if row == last and last_col is not None:
+                start_byte = max(start_byte, last_col)
+            if row == first:
+                end_byte = min(end_byte, first_col)
+        if inside or start_byte >= end_byte:
+            continue
+        prefix = encoded[:start_byte].decode("utf-8", "replace")
+        segment = encoded[start_byte:end_byte].decode("utf-8", "replace")
+        code_before = start_byte > 0 and bool(prefix.strip())
+        for token in _tokens(segment):
+            if token.type == tokenize.COMMENT:
+                directive = _directive(token.string, row, len(prefix) + token.start[1], code_before)
+                if directive is not None:
+                    directives.append(directive)
+                break  # a comment runs to the end of the line
+            if token.type not in (tokenize.NL, tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT, tokenize.ENDMARKER):
+                code_before = True
+    return directives
+
+
+def _tokens(segment: str) -> list[tokenize.TokenInfo]:
+    """The tokens of one line on its own (an unclosed bracket ends it early, which is fine here)."""
+    found: list[tokenize.TokenInfo] = []
+    try:
+        for token in tokenize.generate_tokens(io.StringIO(segment.lstrip(" \t") + "\n").readline):
+            found.append(token._replace(start=(token.start[0], token.start[1] + len(segment) - len(segment.lstrip(" \t")))))
+    except (tokenize.TokenError, SyntaxError, IndentationError):
+        pass
+    return found
+
+
+def _directives_by_tokenizing_everything(source: str) -> list[Directive]:
     directives: list[Directive] = []
     lines_with_code: set[int] = set()
     try:
@@ -74,11 +155,6 @@ def parse_directives(source: str) -> list[Directive]:
                     lines_with_code.add(row)
     except (tokenize.TokenError, SyntaxError, IndentationError):
         pass  # keep what was found before the error; the engine reports the syntax error itself
-    if any(d.own_line for d in directives):
-        _assign_own_line_spans(source, directives)
-    for directive in directives:
-        if not directive.own_line:
-            directive.first_line = directive.last_line = directive.line
     return directives
 
 
@@ -130,9 +206,11 @@ def _next_code_line(lines: Sequence[str], after: int) -> int:
 
 def _statement_spans(source: str) -> dict[int, int]:
     """Start line -> last line covered, for every statement (compound statements: their header)."""
+    from geolint.engine import cached_ast
+
     try:
-        tree = ast.parse(source)
-    except (SyntaxError, ValueError):
+        tree = cached_ast(source)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
         return {}
     spans: dict[int, int] = {}
     for node in ast.walk(tree):

@@ -1,0 +1,117 @@
+"""Linter throughput on a real source tree, side by side in one run (medians of repeats).
+
+Prints lines/s for: the `ast.parse` floor (read + decode + parse every file, one process),
+geolint cold with 1 job and with all cores (`--no-cache`), geolint warm (an unchanged tree,
+served from the cache), and `fixit lint` with its built-in rules. Every geolint and fixit
+figure is a real CLI run in a subprocess, start-up included.
+
+    python benchmarks/bench_lint.py                      # the installed numpy source tree
+    python benchmarks/bench_lint.py PATH --repeats 3 --fixit-repeats 1
+    python benchmarks/bench_lint.py --skip-fixit         # fixit takes minutes on numpy
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+
+def default_tree() -> Path:
+    import numpy
+
+    return Path(numpy.__file__).resolve().parent
+
+
+def python_files(tree: Path) -> list[Path]:
+    """The files geolint itself lints there (same discovery, same excludes)."""
+    from geolint.files import discover
+    from geolint.lint_types import Config
+
+    return [source.path for source in discover([tree], Config())]
+
+
+def count_lines(files: list[Path]) -> int:
+    return sum(path.read_bytes().count(b"\n") for path in files)
+
+
+def time_ast_floor(files: list[Path]) -> float:
+    from geolint.engine import decode_source
+
+    start = time.perf_counter()
+    for path in files:
+        try:
+            ast.parse(decode_source(path.read_bytes())[0])
+        except (SyntaxError, ValueError, UnicodeDecodeError):
+            pass
+    return time.perf_counter() - start
+
+
+def time_command(command: list[str], cwd: Path, env: dict[str, str]) -> float:
+    start = time.perf_counter()
+    result = subprocess.run(command, cwd=cwd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    elapsed = time.perf_counter() - start
+    if result.returncode not in (0, 1):
+        raise SystemExit(f"{' '.join(command)} failed ({result.returncode}):\n{result.stderr[-2000:]}")
+    return elapsed
+
+
+def median_of(repeats: int, measure) -> float:
+    return statistics.median(measure() for _ in range(repeats))
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("tree", nargs="?", type=Path, default=None, help="source tree (default: installed numpy)")
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--fixit-repeats", type=int, default=1)
+    parser.add_argument("--skip-fixit", action="store_true")
+    args = parser.parse_args()
+
+    tree = (args.tree or default_tree()).resolve()
+    files = python_files(tree)
+    lines = count_lines(files)
+    jobs = os.cpu_count() or 1
+    workdir = Path(tempfile.mkdtemp(prefix="geolint-bench-"))  # no pyproject: default config
+    env = {key: value for key, value in os.environ.items() if key not in ("NO_COLOR", "CI")}
+    env["GEOLINT_CACHE_DIR"] = str(workdir / "cache")
+    geolint = [sys.executable, "-m", "geolint", "check", str(tree), "--exit-zero", "--quiet", "--format", "json"]
+
+    print(f"tree: {tree}")
+    print(f"files: {len(files)}, lines: {lines}, cores: {jobs}, repeats: {args.repeats} (fixit: {args.fixit_repeats})")
+    rows: list[tuple[str, float]] = []
+
+    rows.append(("ast.parse floor (1 process)", median_of(args.repeats, lambda: time_ast_floor(files))))
+    rows.append(("geolint cold, --jobs 1", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", "1"], workdir, env))))
+    rows.append((f"geolint cold, --jobs {jobs}", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", str(jobs)], workdir, env))))
+    shutil.rmtree(workdir / "cache", ignore_errors=True)
+    time_command(geolint, workdir, env)  # fill the cache
+    rows.append(("geolint warm (cache)", median_of(args.repeats, lambda: time_command(geolint, workdir, env))))
+    if not args.skip_fixit:
+        fixit = shutil.which("fixit", path=str(Path(sys.executable).parent)) or shutil.which("fixit")
+        if fixit is None:
+            print("fixit: not installed, skipped")
+        else:
+            rows.append(("fixit lint (built-in rules)", median_of(args.fixit_repeats, lambda: time_command([fixit, "lint", str(tree)], workdir, env))))
+
+    print(f"{'':32} {'seconds':>9} {'lines/s':>10}")
+    for label, seconds in rows:
+        print(f"{label:32} {seconds:9.2f} {lines / seconds:10.0f}")
+    by_label = dict(rows)
+    cold = by_label["geolint cold, --jobs 1"]
+    print(f"warm / cold(jobs 1): {by_label['geolint warm (cache)'] / cold:.1%}")
+    if "fixit lint (built-in rules)" in by_label:
+        print(f"geolint cold (jobs 1) vs fixit: {by_label['fixit lint (built-in rules)'] / cold:.1f}x faster")
+    shutil.rmtree(workdir, ignore_errors=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
