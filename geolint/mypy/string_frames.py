@@ -18,8 +18,41 @@ also works in pyright) is the very same type. The runtime accepts all three spel
 
 from __future__ import annotations
 
+from typing import Iterable
+
 from mypy.nodes import (
+    AssertStmt,
+    AssignmentExpr,
+    AssignmentStmt,
+    AwaitExpr,
+    Block,
+    CallExpr,
     ClassDef,
+    ComparisonExpr,
+    ConditionalExpr,
+    DictExpr,
+    Expression,
+    ExpressionStmt,
+    ForStmt,
+    GeneratorExpr,
+    IndexExpr,
+    LambdaExpr,
+    ListComprehension,
+    ListExpr,
+    MemberExpr,
+    NameExpr,
+    OperatorAssignmentStmt,
+    OpExpr,
+    ReturnStmt,
+    SetComprehension,
+    SetExpr,
+    StarExpr,
+    StrExpr,
+    TryStmt,
+    TupleExpr,
+    UnaryExpr,
+    WhileStmt,
+    WithStmt,
     Decorator,
     FuncDef,
     IfStmt,
@@ -40,8 +73,10 @@ from mypy.types import (
     LiteralType,
     RawExpressionType,
     Type,
+    TypeList,
     TypeOfAny,
     UnboundType,
+    UnionType,
 )
 
 from geolint.mypy.config import PluginConfig
@@ -55,6 +90,9 @@ def analyze_framed_subscript(
 ) -> Type:
     """``Kind[frame, ...]`` with string frames turned into Literal types (the type-analyze hook)."""
     unbound = ctx.type
+    marked = _marked_literal(unbound)
+    if marked is not None:  # the stand-in made by `_marked_frame`: just the frame
+        return LiteralType(settings.canonical_frame(marked), ctx.api.named_type("builtins.str", []))
     if not unbound.args:
         omitted = AnyType(TypeOfAny.from_omitted_generics)
         return ctx.api.named_type(fullname, [omitted] * (arity or 0))
@@ -81,6 +119,16 @@ def string_frame_name(ctx: AnalyzeTypeContext, arg: Type) -> str | None:
     return None
 
 
+def _marked_literal(unbound: UnboundType) -> str | None:
+    if len(unbound.args) != 1:
+        return None
+    arg = unbound.args[0]
+    text = arg.literal_value if isinstance(arg, RawExpressionType) else None
+    if isinstance(text, str) and text.startswith(LITERAL_MARKER):
+        return text[len(LITERAL_MARKER) :]
+    return None
+
+
 def _frame_argument(ctx: AnalyzeTypeContext, arg: Type, settings: PluginConfig) -> Type:
     name = string_frame_name(ctx, arg)
     if name is None:
@@ -96,7 +144,10 @@ def _names_a_type(ctx: AnalyzeTypeContext, name: str) -> bool:
     if lookup is None:
         return False
     symbol = lookup(name, ctx.context, suppress_errors=True)
-    return symbol is not None and isinstance(symbol.node, TYPE_NODES)
+    if symbol is None or not isinstance(symbol.node, TYPE_NODES):
+        return False
+    # "map", "filter", "range" are common frame names (ROS's map frame) and builtin classes: a frame there.
+    return not (symbol.fullname or "").startswith("builtins.")
 
 
 def protect_string_frames(file: MypyFile) -> None:
@@ -126,15 +177,16 @@ def _is_geolint(module: str) -> bool:
     return module == "geolint" or module.startswith("geolint.")
 
 
-def _protect_statements(statements: list[Statement], framed_names: frozenset[str]) -> None:
+def _protect_statements(statements: Iterable[Statement | None], framed_names: frozenset[str]) -> None:
     # A plain walk: mypy's compiled visitor classes cannot be subclassed from interpreted code.
     for statement in statements:
+        if statement is None:
+            continue
         if isinstance(statement, Decorator):
+            _protect_expressions(statement.decorators, framed_names)
             statement = statement.func
         if isinstance(statement, OverloadedFuncDef):
-            _protect_statements(list(statement.items), framed_names)
-            if statement.impl is not None:
-                _protect_statements([statement.impl], framed_names)
+            _protect_statements([*statement.items, statement.impl], framed_names)
         elif isinstance(statement, FuncDef):
             if isinstance(statement.type, CallableType):
                 for typ in [*statement.type.arg_types, statement.type.ret_type]:
@@ -142,19 +194,104 @@ def _protect_statements(statements: list[Statement], framed_names: frozenset[str
             _protect_statements(statement.body.body, framed_names)
         elif isinstance(statement, ClassDef):
             _protect_statements(statement.defs.body, framed_names)
-        elif isinstance(statement, IfStmt):
-            for block in [*statement.body, statement.else_body]:
-                if block is not None:
-                    _protect_statements(block.body, framed_names)
+        elif isinstance(statement, Block):
+            _protect_statements(statement.body, framed_names)
+        else:
+            _protect_expressions(_statement_expressions(statement), framed_names)
+            _protect_statements(_statement_blocks(statement), framed_names)
+
+
+def _statement_expressions(statement: Statement) -> list[Expression | None]:
+    if isinstance(statement, (AssignmentStmt, OperatorAssignmentStmt)):
+        return [statement.rvalue]
+    if isinstance(statement, (ExpressionStmt, ReturnStmt, IfStmt, WhileStmt, ForStmt, AssertStmt)):
+        return list(statement.expr) if isinstance(statement.expr, list) else [statement.expr]
+    if isinstance(statement, WithStmt):
+        return list(statement.expr)
+    return []
+
+
+def _statement_blocks(statement: Statement) -> list[Statement | None]:
+    if isinstance(statement, IfStmt):
+        return [*statement.body, statement.else_body]
+    if isinstance(statement, (WhileStmt, ForStmt)):
+        return [statement.body, statement.else_body]
+    if isinstance(statement, WithStmt):
+        return [statement.body]
+    if isinstance(statement, TryStmt):
+        return [statement.body, *statement.handlers, statement.else_body, statement.finally_body]
+    return []
+
+
+def _protect_expressions(expressions: Iterable[Expression | None], framed_names: frozenset[str]) -> None:
+    for expr in expressions:
+        if expr is None:
+            continue
+        if isinstance(expr, IndexExpr):
+            _protect_type_application(expr, framed_names)
+            _protect_expressions([expr.base, expr.index], framed_names)
+        elif isinstance(expr, CallExpr):
+            _protect_expressions([expr.callee, *expr.args], framed_names)
+        elif isinstance(expr, (MemberExpr, UnaryExpr, StarExpr, AwaitExpr)):
+            _protect_expressions([expr.expr], framed_names)
+        elif isinstance(expr, OpExpr):
+            _protect_expressions([expr.left, expr.right], framed_names)
+        elif isinstance(expr, ComparisonExpr):
+            _protect_expressions(expr.operands, framed_names)
+        elif isinstance(expr, (TupleExpr, ListExpr, SetExpr)):
+            _protect_expressions(expr.items, framed_names)
+        elif isinstance(expr, DictExpr):
+            _protect_expressions([item for pair in expr.items for item in pair], framed_names)
+        elif isinstance(expr, ConditionalExpr):
+            _protect_expressions([expr.cond, expr.if_expr, expr.else_expr], framed_names)
+        elif isinstance(expr, AssignmentExpr):
+            _protect_expressions([expr.value], framed_names)
+        elif isinstance(expr, (ListComprehension, SetComprehension)):
+            _protect_expressions([expr.generator], framed_names)
+        elif isinstance(expr, GeneratorExpr):
+            _protect_expressions([expr.left_expr, *expr.sequences], framed_names)
+        elif isinstance(expr, LambdaExpr):
+            _protect_statements(expr.body.body, framed_names)
+
+
+# A type application (``Point["camera"](xyz)``, ``CamPoint = Point["camera"]``) has each argument analyzed on
+# its own, where no hook can see it. The pre-pass rewrites the argument "camera" into the *string*
+# ``"Point['\x01geolint-frame:camera']"``: a string argument is parsed into a type by mypy without any
+# per-argument lookup, the parse gives ``Point[<raw text>]`` (the control character stops the inner parse),
+# and the framed class's hook answers a bare ``Literal["camera"]`` for that stand-in.
+LITERAL_MARKER = "\x01geolint-frame:"
+
+
+def _protect_type_application(expr: IndexExpr, framed_names: frozenset[str]) -> None:
+    base_name = _expression_name(expr.base)
+    if base_name not in framed_names:
+        return
+    items = expr.index.items if isinstance(expr.index, TupleExpr) else [expr.index]
+    for item in items:
+        if isinstance(item, StrExpr) and LITERAL_MARKER not in item.value:
+            item.value = f"{base_name}[{LITERAL_MARKER + item.value!r}]"
 
 
 def _protect(typ: Type, framed_names: frozenset[str]) -> None:
+    if isinstance(typ, (UnionType, TypeList)):  # X | None, Callable[[X], Y]
+        for item in typ.items:
+            _protect(item, framed_names)
+        return
     if not isinstance(typ, UnboundType):
         return
     if typ.name in framed_names:
         typ.args = tuple(_as_literal_node(arg) for arg in typ.args)
     for arg in typ.args:
         _protect(arg, framed_names)
+
+
+def _expression_name(expr: Expression) -> str | None:
+    if isinstance(expr, NameExpr):
+        return expr.name
+    if isinstance(expr, MemberExpr):
+        owner = _expression_name(expr.expr)
+        return f"{owner}.{expr.name}" if owner else None
+    return None
 
 
 def _as_literal_node(arg: Type) -> Type:

@@ -41,7 +41,7 @@ def parse_mypy_output(stdout: str) -> dict[str, list[Reported]]:
         match = MYPY_LINE.match(text)
         if not match:
             continue
-        message = match["message"].replace("builtins.tuple[", "tuple[")  # older mypy spells it out
+        message = _normalized(match["message"])
         code_match = ERROR_CODE.search(message)
         code = code_match["code"] if code_match else None
         if code_match:
@@ -72,7 +72,7 @@ def mismatches(path: Path, reported: list[Reported]) -> list[str]:
                 for hit in hits[:1]:
                     errors.remove(hit)
             else:
-                want = f'Revealed type is "{body}"'
+                want = _normalized(f'Revealed type is "{body}"')
                 hits = [r for r in reveals if r.message == want]
                 if not hits:
                     problems.append(f"{path.name}:{line}: expected {want}, got {_show(got)}")
@@ -81,6 +81,11 @@ def mismatches(path: Path, reported: list[Reported]) -> list[str]:
         for extra in errors:
             problems.append(f"{path.name}:{line}: unexpected error: {extra.message} [{extra.code}]")
     return problems
+
+
+def _normalized(text: str) -> str:
+    """mypy before 1.11 spells builtin generics out (``builtins.list[...]``); compare without the prefix."""
+    return text.replace("builtins.", "")
 
 
 def _show(entries: list[Reported]) -> str:
