@@ -70,3 +70,31 @@ def ignore_edit(source: str, line: int, code: str) -> Edit | None:
         return Edit(line, start + 1, line, end + 1, new_codes)
     content_end = len(text.rstrip())
     return Edit(line, content_end + 1, line, len(text) + 1, f"  # geolint: ignore[{code}]")
+
+
+def _position(text: str, offset: int) -> tuple[int, int]:
+    """The 1-based (line, column) of a character offset, with LSP's line breaks."""
+    before = text[:offset]
+    line_start = max(before.rfind("\n"), before.rfind("\r")) + 1
+    line = before.count("\n") + before.count("\r") - before.count("\r\n") + 1
+    return line, offset - line_start + 1
+
+
+def changed_region_edit(old: str, new: str) -> Edit:
+    """The single edit that turns `old` into `new`, spanning only the changed middle."""
+    prefix = 0
+    limit = min(len(old), len(new))
+    while prefix < limit and old[prefix] == new[prefix]:
+        prefix += 1
+    suffix = 0
+    while suffix < limit - prefix and old[len(old) - 1 - suffix] == new[len(new) - 1 - suffix]:
+        suffix += 1
+    # Never split a \r\n pair: an edit ending between them would leave a stray \r.
+    if 0 < prefix < len(old) and old[prefix - 1] == "\r" and old[prefix] == "\n":
+        prefix -= 1
+    end = len(old) - suffix
+    if 0 < end < len(old) and old[end - 1] == "\r" and old[end] == "\n":
+        suffix -= 1
+    line, column = _position(old, prefix)
+    end_line, end_column = _position(old, len(old) - suffix)
+    return Edit(line, column, end_line, end_column, new[prefix : len(new) - suffix])

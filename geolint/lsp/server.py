@@ -32,7 +32,7 @@ from pygls.workspace import TextDocument
 from geolint import api
 from geolint._version import __version__
 from geolint.lint_types import Config, Edit, Finding
-from geolint.lsp.actions import FIX_ALL_KIND, ignore_edit
+from geolint.lsp.actions import FIX_ALL_KIND, changed_region_edit, ignore_edit
 from geolint.lsp.configs import ConfigCache
 from geolint.lsp.diagnostics import SOURCE, to_diagnostic
 from geolint.lsp.positions import from_lsp_position, split_lines, to_lsp_range
@@ -66,6 +66,8 @@ class GeolintLanguageServer(LanguageServer):
         self.debounce = DEFAULT_DEBOUNCE_SECONDS
         self.pending: dict[str, asyncio.Task[None]] = {}
         self.results: dict[str, LintResult] = {}
+        # uri -> (text, fixed text): editors ask for code actions on every cursor move.
+        self.fixed: dict[str, tuple[str, str]] = {}
         self.reported_config_errors: set[str] = set()
 
     def report_server_error(self, error: Exception, source: Any) -> None:
@@ -193,6 +195,7 @@ class GeolintLanguageServer(LanguageServer):
         """A pyproject.toml changed: forget configs and results, lint open documents again."""
         self.configs.clear()
         self.results.clear()
+        self.fixed.clear()
         self.reported_config_errors.clear()
         if self.client_pulls_diagnostics():
             if self.client_refreshes_diagnostics():
@@ -215,10 +218,9 @@ class GeolintLanguageServer(LanguageServer):
         ]
         return types.WorkspaceEdit(changes={uri: text_edits})
 
-    def whole_document_edit(self, uri: str, old: str, new: str) -> types.WorkspaceEdit:
-        lines = split_lines(old)
-        end = Edit(1, 1, len(lines), len(lines[-1]) + 1, new)
-        return self.workspace_edit(uri, old, [end])
+    def replace_text_edit(self, uri: str, old: str, new: str) -> types.WorkspaceEdit:
+        """One edit turning `old` into `new`, covering only the part that changed (the cursor stays put)."""
+        return self.workspace_edit(uri, old, [changed_region_edit(old, new)])
 
 
 server = GeolintLanguageServer()
@@ -277,6 +279,7 @@ def did_close(ls: GeolintLanguageServer, params: types.DidCloseTextDocumentParam
     if waiting is not None:
         waiting.cancel()
     ls.results.pop(uri, None)
+    ls.fixed.pop(uri, None)
     if not ls.client_pulls_diagnostics():
         ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
 
@@ -367,13 +370,16 @@ async def code_actions(ls: GeolintLanguageServer, params: types.CodeActionParams
                 types.CodeAction(
                     title="geolint: fix all safe fixes",
                     kind=FIX_ALL_KIND,
-                    edit=ls.whole_document_edit(uri, result.source, fixed),
+                    edit=ls.replace_text_edit(uri, result.source, fixed),
                 )
             )
     return actions
 
 
 async def _fix_all(ls: GeolintLanguageServer, uri: str, result: LintResult) -> str | None:
+    cached = ls.fixed.get(uri)
+    if cached is not None and cached[0] == result.source:
+        return cached[1]
     path = ls.document_path(uri)
     config = ls.config_for(path)
     loop = asyncio.get_running_loop()
@@ -386,9 +392,6 @@ async def _fix_all(ls: GeolintLanguageServer, uri: str, result: LintResult) -> s
             types.LogMessageParams(type=types.MessageType.Error, message=f"geolint fix failed:\n{traceback.format_exc()}")
         )
         return None
+    if uri in ls.workspace.text_documents:
+        ls.fixed[uri] = (result.source, fixed)
     return fixed
-
-
-def start(argv: Any = None) -> None:
-    """Serve over stdin/stdout until the client says exit."""
-    server.start_io()
