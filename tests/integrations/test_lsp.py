@@ -402,3 +402,22 @@ async def test_a_large_file_is_linted_off_the_main_loop(client: RecordingClient,
     assert list(small_report.items) == []
     assert len([d for d in big_report.items if d.code == "GEO101"]) >= 1200
     assert small_done < big_done / 2
+
+
+@needs_rules
+@pytest.mark.asyncio
+async def test_a_pulling_client_is_asked_to_refresh_when_the_config_changes(client: RecordingClient, tmp_path: Path) -> None:
+    await start(client, PULL)
+    pyproject = tmp_path / "pyproject.toml"
+    pyproject.write_text("[tool.geolint]\n", encoding="utf-8")
+    uri = open_doc(client, tmp_path / "pulled.py", BUGGY)
+    params = types.DocumentDiagnosticParams(text_document=types.TextDocumentIdentifier(uri=uri))
+    before = await client.text_document_diagnostic_async(params)
+    assert "GEO101" in [d.code for d in before.items]
+    pyproject.write_text('[tool.geolint]\nignore = ["GEO101"]\n', encoding="utf-8")
+    client.workspace_did_change_watched_files(
+        types.DidChangeWatchedFilesParams(changes=[types.FileEvent(uri=pyproject.as_uri(), type=types.FileChangeType.Changed)])
+    )
+    await eventually(lambda: client.diagnostic_refresh_count == 1)
+    after = await client.text_document_diagnostic_async(params)
+    assert "GEO101" not in [d.code for d in after.items] and "GEO201" in [d.code for d in after.items]
