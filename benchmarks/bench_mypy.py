@@ -113,8 +113,8 @@ def crash_check(folder: Path) -> None:
         start = time.perf_counter()
         result = subprocess.run(
             [sys.executable, "-m", "mypy", "--config-file", str(config), "--cache-dir", str(folder / "cc"),
-             "--ignore-missing-imports", "--no-error-summary", "-p", package.__name__],
-            capture_output=True, text=True, cwd=source.parent,
+             "--ignore-missing-imports", "-p", package.__name__],
+            capture_output=True, text=True, cwd=folder,  # not site-packages: it would shadow mypy's modules
         )
         crashed = "INTERNAL ERROR" in result.stdout + result.stderr or "Traceback" in result.stderr
         print(f"mypy + plugin over {package.__name__} ({source}): "
