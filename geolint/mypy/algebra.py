@@ -26,8 +26,12 @@ from geolint.mypy.geometry import (
     HOMOGENEOUS_POINT,
     HOMOGENEOUS_VECTOR,
     POINT,
+    CLOUD,
+    COVARIANCE,
     ROTATION,
     TRANSFORM,
+    TWIST,
+    WRENCH,
     TRANSLATION,
     VECTOR,
     VECTOR_WITH_W1,
@@ -38,6 +42,7 @@ from geolint.mypy.geometry import (
 FREE_KINDS = frozenset({VECTOR, DIRECTION})
 LOCATED_KINDS = frozenset({POINT}) | FREE_KINDS
 OPERATORS = frozenset({TRANSFORM, ROTATION})
+SPATIAL_KINDS = frozenset({TWIST, WRENCH})  # six-vectors: summed only with their own kind, in one frame
 
 
 @dataclass(frozen=True)
@@ -75,6 +80,8 @@ def add(left: Geo, right: Geo) -> Outcome | None:
         return _add_translation(left, right)
     if left.kind == TRANSLATION and right.kind in LOCATED_KINDS:
         return _add_translation(right, left)
+    if left.kind == right.kind and left.kind in SPATIAL_KINDS:
+        return _same_frame_result("+", left, right, left)
     if left.kind not in LOCATED_KINDS or right.kind not in LOCATED_KINDS:
         return None
     if left.kind == POINT and right.kind == POINT:
@@ -85,6 +92,8 @@ def add(left: Geo, right: Geo) -> Outcome | None:
 
 def subtract(left: Geo, right: Geo) -> Outcome | None:
     """``left - right``."""
+    if left.family == right.family and left.kind == right.kind and left.kind in SPATIAL_KINDS:
+        return _same_frame_result("-", left, right, left)
     if left.family != right.family or left.kind not in LOCATED_KINDS or right.kind not in LOCATED_KINDS:
         return None
     if left.kind in FREE_KINDS and right.kind == POINT:
@@ -104,7 +113,7 @@ def scale(value: Geo) -> Outcome | None:
 
 # Which kinds each operator applies to by ``@`` (column vectors).
 _APPLIES_TO = {
-    ("runtime", TRANSFORM): frozenset({POINT, VECTOR, DIRECTION}),
+    ("runtime", TRANSFORM): frozenset({POINT, VECTOR, DIRECTION, CLOUD, TWIST, WRENCH, COVARIANCE}),
     ("array", ROTATION): frozenset({POINT, VECTOR, DIRECTION}),
     ("array", TRANSFORM): frozenset({HOMOGENEOUS_POINT, HOMOGENEOUS_VECTOR, VECTOR_WITH_W1}),
 }

@@ -16,6 +16,7 @@ TRANSFORM = "geolint.runtime.transform.Transform"
 POINT_CLOUD = "geolint.runtime.cloud.PointCloud"
 TWIST = "geolint.runtime.spatial.Twist"
 WRENCH = "geolint.runtime.spatial.Wrench"
+COVARIANCE = "geolint.runtime.spatial.Covariance"
 
 # --- annotations for plain ndarrays (geolint.typing) ---
 TYPING_MODULE = "geolint.typing"

@@ -31,12 +31,20 @@ TRANSLATION = "translation"
 HOMOGENEOUS_POINT = "homogeneous point"
 HOMOGENEOUS_VECTOR = "homogeneous vector"
 VECTOR_WITH_W1 = "vector with w=1"
+CLOUD = "point cloud"
+TWIST = "twist"
+WRENCH = "wrench"
+COVARIANCE = "covariance"
 
 KIND_OF_FULLNAME: dict[str, tuple[str, str]] = {
     names.POINT: (RUNTIME, POINT),
     names.VECTOR: (RUNTIME, VECTOR),
     names.DIRECTION: (RUNTIME, DIRECTION),
     names.TRANSFORM: (RUNTIME, TRANSFORM),
+    names.POINT_CLOUD: (RUNTIME, CLOUD),
+    names.TWIST: (RUNTIME, TWIST),
+    names.WRENCH: (RUNTIME, WRENCH),
+    names.COVARIANCE: (RUNTIME, COVARIANCE),
     names.POINT_ARRAY: (ARRAY, POINT),
     names.VECTOR_ARRAY: (ARRAY, VECTOR),
     names.DIRECTION_ARRAY: (ARRAY, DIRECTION),
@@ -53,7 +61,7 @@ FULLNAME_OF_KIND = {value: key for key, value in KIND_OF_FULLNAME.items()}
 DISPLAY_NAME = {fullname: fullname.rsplit(".", 1)[1] for fullname in KIND_OF_FULLNAME}
 
 # Generic classes whose frame arguments may be strings (the string-frame hook is registered for these).
-FRAMED_CLASSES = tuple(KIND_OF_FULLNAME) + (names.POINT_CLOUD, names.TWIST, names.WRENCH)
+FRAMED_CLASSES = tuple(KIND_OF_FULLNAME)
 
 
 @dataclass(frozen=True)
