@@ -130,6 +130,25 @@ NOT_A_FRAME_IN_CONVERSION = frozenset(
     }
 )  # fmt: skip
 
+# Frame words the conventions WITHOUT an explicit transform letter need (`cam2world`,
+# `world_from_cam`, `p_world`): without them `herm2poly`, `module_from_spec` and `p_neg`
+# would read as frames. Trailing digits are ignored (`cam0`, `link3`); `frame-aliases`
+# entries count as known too.
+KNOWN_FRAMES = frozenset(
+    {
+        "world", "map", "odom", "base", "body", "cam", "camera", "optical", "color", "depth", "rgb",
+        "ir", "lidar", "laser", "velodyne", "radar", "imu", "gps", "sensor", "tool", "tcp", "ee",
+        "eef", "effector", "flange", "wrist", "hand", "gripper", "finger", "grasp", "object", "obj",
+        "table", "marker", "tag", "board", "robot", "link", "joint", "head", "torso", "pelvis", "foot",
+        "arm", "shoulder", "elbow", "mount", "platform", "vehicle", "car", "ego", "ned", "enu", "ecef",
+        "mocap", "vicon", "scene", "mesh", "model", "part", "bin", "tray", "shelf", "workspace",
+        "ground", "floor", "cube", "box", "plane", "screen", "image", "img", "pixel", "ndc", "clip",
+        "view", "eye", "light", "parent", "child", "src", "dst", "source", "dest", "fixed", "moving",
+        "anchor", "hip", "knee", "ankle", "chassis", "drone", "uav", "ship", "boat",
+        "stereo", "projector", "kinect", "realsense", "zed", "lens",
+    }
+)  # fmt: skip
+
 TRANSFORM_LETTERS = frozenset({"T", "X", "H"})
 ROTATION_LETTERS = frozenset({"R"})
 _MONOGRAM_FRAME = r"[A-Z][0-9]*"
@@ -156,7 +175,7 @@ def kind_of_name(name: str, config: Config = Config()) -> Kind | None:
     return _kind_of_name(name, config.extra_direction_names, config.extra_point_names, config.naming)
 
 
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=8192)
 def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None:  # type: ignore[no-untyped-def]
     frames = _frames_of_name(name, naming)
     if frames is not None and frames.is_operator:
@@ -204,7 +223,7 @@ def frames_of_name(name: str, config: Config = Config()) -> NameFrames | None:
     Frame words go through `config.frame_aliases` (e.g. cam -> camera) so that
     `T_world_camera` and `p_cam` agree when the user says they do.
     """
-    frames = _frames_of_name(name, config.naming)
+    frames = _frames_of_name(name, config.naming, _alias_words(config))
     if frames is None or not config.frame_aliases:
         return frames
     aliases = {key.lower(): value.lower() for key, value in config.frame_aliases.items()}
@@ -215,13 +234,26 @@ def frames_of_name(name: str, config: Config = Config()) -> NameFrames | None:
     return NameFrames(canon(frames.dst), canon(frames.src), canon(frames.frame), frames.operator)
 
 
-@lru_cache(maxsize=4096)
-def _frames_of_name(name: str, naming) -> NameFrames | None:  # type: ignore[no-untyped-def]
-    readings = {reading for reading in _readings(name.strip("_"), naming) if reading is not None}
+def _alias_words(config: Config) -> frozenset[str]:
+    if not config.frame_aliases:
+        return frozenset()
+    return frozenset(word.lower() for pair in config.frame_aliases.items() for word in pair)
+
+
+@lru_cache(maxsize=8192)
+def _frames_of_name(name: str, naming, known: frozenset[str] = frozenset()) -> NameFrames | None:  # type: ignore[no-untyped-def]
+    readings = {reading for reading in _readings(name.strip("_"), naming, known) if reading is not None}
     return readings.pop() if len(readings) == 1 else None
 
 
-def _readings(name: str, naming):  # type: ignore[no-untyped-def]
+def _is_known_frame(word: str, known: frozenset[str]) -> bool:
+    if re.fullmatch(_MONOGRAM_FRAME, word):
+        return True  # `A2B`, `p_W`: one capital letter is a frame by convention
+    stem = word.lower().rstrip("0123456789") or word.lower()
+    return stem in KNOWN_FRAMES or stem in known or word.lower() in known
+
+
+def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: ignore[no-untyped-def]
     """Every reading of `name` under the enabled conventions (more than one means ambiguous)."""
     raw = name.split("_")
     if any(not part for part in raw):
@@ -245,19 +277,20 @@ def _readings(name: str, naming):  # type: ignore[no-untyped-def]
             if _is_frame(first) and _is_frame(last):
                 yield NameFrames(dst=first.lower(), src=last.lower(), operator=_operator(middle))
         lowered = [part.lower() for part in raw]
-        if naming.from_style and lowered[1] == "from" and _is_conversion_frame(first) and _is_conversion_frame(last):
+        both_known = _is_known_frame(first, known) and _is_known_frame(last, known)
+        if naming.from_style and lowered[1] == "from" and both_known:
             yield NameFrames(dst=lowered[0], src=lowered[2], operator="unknown")
-        if naming.to_style and lowered[1] == "to" and _is_conversion_frame(first) and _is_conversion_frame(last):
+        if naming.to_style and lowered[1] == "to" and both_known:
             yield NameFrames(dst=lowered[2], src=lowered[0], operator="unknown")
-        if naming.from_style and lowered[1] == "in" and lowered[0] in _VALUE_HEADS and _is_frame(last):
+        if naming.from_style and lowered[1] == "in" and lowered[0] in _VALUE_HEADS and _is_known_frame(last, known):
             yield NameFrames(frame=lowered[2])
     if len(raw) == 1 and naming.to_style:
         match = _TO_STYLE_COMPACT.match(name)
-        if match and _is_conversion_frame(match.group(1)) and _is_conversion_frame(match.group(2)):
+        if match and _is_known_frame(match.group(1), known) and _is_known_frame(match.group(2), known):
             yield NameFrames(dst=match.group(2).lower(), src=match.group(1).lower(), operator="unknown")
     if len(raw) == 2 and naming.suffix:
         head, frame = raw[0].lower(), raw[1]
-        if head in _VALUE_HEADS and _is_frame(frame) and frame.lower() not in _VALUE_HEADS:
+        if head in _VALUE_HEADS and frame.lower() not in _VALUE_HEADS and _is_known_frame(frame, known):
             yield NameFrames(frame=frame.lower())
 
 

@@ -7,8 +7,8 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.frame_checks import product_operands
 from geolint.semantic.names import same_frame
+from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import FRAME_OPERATOR, any_of, compile_trigger
 
 
 class FrameMismatchApply(SemanticRule):
@@ -43,7 +43,7 @@ class FrameMismatchApply(SemanticRule):
 
     code = "GEO201"
     name = "frame-mismatch-apply"
-    triggers = compile_trigger((FRAME_OPERATOR, any_of(r"@", r"dot\(", r"matmul\(", r"\*")))
+    triggers = Trigger("a product and a transform name in a frame convention", may_mix_frames_in_product)
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),

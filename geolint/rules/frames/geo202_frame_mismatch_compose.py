@@ -7,8 +7,8 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.frame_checks import product_operands
 from geolint.semantic.names import same_frame
+from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import FRAME_OPERATOR, any_of, compile_trigger
 
 
 class FrameMismatchCompose(SemanticRule):
@@ -41,7 +41,7 @@ class FrameMismatchCompose(SemanticRule):
 
     code = "GEO202"
     name = "frame-mismatch-compose"
-    triggers = compile_trigger((FRAME_OPERATOR, any_of(r"@", r"dot\(", r"matmul\(", r"\*")))
+    triggers = Trigger("a product and a transform name in a frame convention", may_mix_frames_in_product)
 
     VALID = [
         Valid("T_world_tool = T_world_base @ T_base_tool\n"),

@@ -6,8 +6,8 @@ import libcst as cst
 
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.names import frames_of_name, same_frame
+from geolint.semantic.prefilter import Trigger, may_mislabel_frames
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import FRAME_OPERATOR, VALUE_WITH_FRAME, any_of, compile_trigger
 
 
 class FrameMismatchAssign(SemanticRule):
@@ -38,7 +38,7 @@ class FrameMismatchAssign(SemanticRule):
 
     code = "GEO203"
     name = "frame-mismatch-assign"
-    triggers = compile_trigger(any_of(FRAME_OPERATOR, VALUE_WITH_FRAME))
+    triggers = Trigger("an assignment to a name that states frames", may_mislabel_frames)
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),

@@ -5,8 +5,8 @@ from __future__ import annotations
 import libcst as cst
 
 from geolint.rules.base import Invalid, Valid
+from geolint.semantic.prefilter import Trigger, may_transpose_transform
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import compile_trigger
 
 
 class TransposeAsInverse(SemanticRule):
@@ -40,7 +40,7 @@ class TransposeAsInverse(SemanticRule):
 
     code = "GEO204"
     name = "transpose-as-inverse"
-    triggers = compile_trigger(r"(?:\b[TXH]_\w+|[a-z0-9]_[TXH]_[A-Za-z]\w*)\s*\.\s*T\b")
+    triggers = Trigger("`.T` of a transform name", may_transpose_transform)
 
     VALID = [
         Valid("R_cam_world = R_world_cam.T\n"),

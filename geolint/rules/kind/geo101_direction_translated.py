@@ -7,14 +7,8 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.names import Kind
 from geolint.semantic.model import last_name
+from geolint.semantic.prefilter import Trigger, may_translate_direction
 from geolint.semantic.rule_support import SemanticRule, keyword_arg
-from geolint.semantic.triggers import (
-    DIRECTION_SOURCE,
-    HOMOGENEOUS,
-    MATMUL,
-    TRANSLATION,
-    compile_trigger,
-)
 
 
 class DirectionTranslated(SemanticRule):
@@ -52,11 +46,7 @@ class DirectionTranslated(SemanticRule):
 
     code = "GEO101"
     name = "direction-translated"
-    triggers = compile_trigger(
-        (DIRECTION_SOURCE, HOMOGENEOUS),
-        (DIRECTION_SOURCE, MATMUL, TRANSLATION),
-        (DIRECTION_SOURCE, r"transform_points\(|vector_to_point\(|matrix_world"),
-    )
+    triggers = Trigger("a direction-like value and a homogeneous construction, `<product> + t`, or a translating call", may_translate_direction)
 
     VALID = [
         Valid("import numpy as np\nnormal_h = np.append(normal, 0)\n"),

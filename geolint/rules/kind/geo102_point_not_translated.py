@@ -9,8 +9,8 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.model import last_name
 from geolint.semantic.names import Kind
+from geolint.semantic.prefilter import Trigger, may_drop_point_translation
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import HOMOGENEOUS, MATMUL, POINT_SOURCE, any_of, compile_trigger
 
 
 class PointNotTranslated(SemanticRule):
@@ -44,9 +44,7 @@ class PointNotTranslated(SemanticRule):
 
     code = "GEO102"
     name = "point-not-translated"
-    triggers = compile_trigger(
-        (POINT_SOURCE, any_of(HOMOGENEOUS, MATMUL, r"translate\s*=\s*False|vector_to_direction\("))
-    )
+    triggers = Trigger("a point-like value and a w = 0 construction, a rotation-block product, or translate=False", may_drop_point_translation)
 
     VALID = [
         Valid("import numpy as np\np_h = np.append(point, 1)\n"),

@@ -7,8 +7,8 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.model import int_literal, last_name
 from geolint.semantic.names import Kind
+from geolint.semantic.prefilter import Trigger, may_add_points
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import POINT_SOURCE, compile_trigger
 
 # Reductions that turn a sum of points into an affine combination.
 _AVERAGING_CALLS = frozenset({"mean", "average", "sum", "nanmean", "median"})
@@ -43,7 +43,7 @@ class PointPlusPoint(SemanticRule):
 
     code = "GEO103"
     name = "point-plus-point"
-    triggers = compile_trigger((POINT_SOURCE, r"\+"))
+    triggers = Trigger("a `+` whose operands both mention point-like names", may_add_points)
 
     VALID = [
         Valid("midpoint = (p_start + p_end) / 2\n"),

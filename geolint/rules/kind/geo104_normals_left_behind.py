@@ -10,8 +10,8 @@ from geolint.rules.base import Invalid, Valid
 from geolint.semantic.facts import ParamBinding
 from geolint.semantic.model import last_name
 from geolint.semantic.names import Kind, tokens
+from geolint.semantic.prefilter import Trigger, may_leave_normals
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import MATMUL, any_of, compile_trigger, word
 
 _NORMAL_TOKENS = frozenset({"normal", "normals", "nrm", "nrms"})
 _MENTIONS_NORMAL_FIELDS = re.compile(r"normal_x")
@@ -53,10 +53,7 @@ class NormalsLeftBehind(SemanticRule):
 
     code = "GEO104"
     name = "normals-left-behind"
-    triggers = compile_trigger(
-        (word(*_NORMAL_TOKENS), r"do_transform_cloud"),
-        (word(*_NORMAL_TOKENS), word("points", "pts"), any_of(MATMUL, r"transform_points\(")),
-    )
+    triggers = Trigger("normals and transformed points, or do_transform_cloud", may_leave_normals)
 
     VALID = [
         Valid(

@@ -7,8 +7,8 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.conventions import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_order
 from geolint.semantic.model import last_name
+from geolint.semantic.prefilter import Trigger, may_pass_quaternion
 from geolint.semantic.rule_support import SemanticRule
-from geolint.semantic.triggers import compile_trigger
 
 _COMPONENTS = "wxyz"
 
@@ -45,7 +45,7 @@ class QuaternionOrder(SemanticRule):
 
     code = "GEO301"
     name = "quaternion-order"
-    triggers = compile_trigger(r"from_quat|quat2|_from_quaternion|check_quaternion|Quaternion|quaternion_")
+    triggers = Trigger("a call to a quaternion API", may_pass_quaternion)
 
     VALID = [
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.x, q.y, q.z, q.w])\n"),

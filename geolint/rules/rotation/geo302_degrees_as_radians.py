@@ -9,8 +9,8 @@ import libcst as cst
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.conventions import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.semantic.model import int_literal, last_name
+from geolint.semantic.prefilter import Trigger, may_pass_degrees
 from geolint.semantic.rule_support import SemanticRule, keyword_arg
-from geolint.semantic.triggers import compile_trigger
 
 _TWO_PI = 2 * math.pi
 _SPATIALMATH_ANGLE_CALLS = frozenset(
@@ -49,11 +49,7 @@ class DegreesAsRadians(SemanticRule):
 
     code = "GEO302"
     name = "degrees-as-radians"
-    triggers = compile_trigger(
-        r"(?:from_euler|from_rotvec|euler2|axangle2|_from_angle|_from_euler|"
-        r"\bR[xyz]\(|RPY\(|Eul\(|\brot[xyz]\(|\btrot[xyz]\(|2r\(|2tr\(|quaternion_from_euler|"
-        r"\b(?:sin|cos|tan)\(\s*-?\d)"
-    )
+    triggers = Trigger("a call to an angle API or trig of a literal", may_pass_degrees)
 
     VALID = [
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 90], degrees=True)\n'),
