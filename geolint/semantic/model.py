@@ -500,6 +500,10 @@ class SemanticModel:
         return None
 
     def _frames_of_call(self, node: cst.Call) -> NameFrames | None:
+        homogeneous = self.homogeneous(node)
+        if homogeneous is not None:  # [x, 1] lives where x lives
+            inner = self.frames_of(homogeneous.inner)
+            return inner if inner is not None and not inner.is_operator else None
         func = node.func
         positional = [arg.value for arg in node.args if arg.keyword is None and not arg.star]
         product = self.matmul(node)

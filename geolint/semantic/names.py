@@ -189,6 +189,8 @@ def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None: 
     # The head noun of a compound is usually its last token (`surface_normal`, `ray_dir`),
     # but a frame suffix comes after it (`normals_world`, `points_in_cam`).
     candidates = [parts[-1]]
+    if len(parts) >= 3 and (parts[-1] in KNOWN_FRAMES or parts[-1] in NOT_A_FRAME):
+        candidates.append(parts[-2])  # `grasp_point_cam`, `contact_normal_world`
     if (frames is not None and frames.frame is not None) or all(part in NOT_A_FRAME for part in parts[1:]):
         candidates.append(parts[0])
     for part in candidates:
