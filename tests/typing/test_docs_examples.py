@@ -1,0 +1,61 @@
+"""The examples of docs/typing.md (the README's "Static checking, three ways") run, and mypy with the plugin
+reports exactly the errors their comments announce (``# error: ...  [code]``) and nothing else."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from mypy import api
+
+REPO = Path(__file__).resolve().parents[2]
+DOC = REPO / "docs" / "typing.md"
+CONFIG = Path(__file__).parent / "mypy.ini"
+ANNOUNCED = re.compile(r"#\s*error: .*\[(?P<code>[a-z-]+)\]\s*$")
+
+
+def python_blocks() -> list[str]:
+    return re.findall(r"```python\n(.*?)```", DOC.read_text(), flags=re.S)
+
+
+def _announced_codes(block: str) -> dict[int, str]:
+    """line (1-based) -> code, for an ``# error:`` comment on that line or on the comment line right after it."""
+    lines = block.splitlines()
+    announced: dict[int, str] = {}
+    for number, text in enumerate(lines, start=1):
+        match = ANNOUNCED.search(text)
+        if match:
+            target = number - 1 if text.lstrip().startswith("#") else number
+            announced[target] = match["code"]
+    return announced
+
+
+def test_docs_have_the_three_ways() -> None:
+    assert len(python_blocks()) >= 3
+
+
+@pytest.mark.parametrize("index", range(len(python_blocks())))
+def test_example_runs(index: int, tmp_path: Path) -> None:
+    script = tmp_path / f"example_{index}.py"
+    script.write_text(python_blocks()[index])
+    result = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=REPO, timeout=120)
+    assert result.returncode == 0, result.stderr
+
+
+def test_examples_report_what_they_announce(tmp_path: Path) -> None:
+    files = []
+    for index, block in enumerate(python_blocks()):
+        path = tmp_path / f"doc_example_{index}.py"
+        path.write_text(block)
+        files.append(path)
+    stdout, stderr, _ = api.run(["--config-file", str(CONFIG), "--cache-dir", str(tmp_path / "cache"), *map(str, files)])
+    for path, block in zip(files, python_blocks()):
+        reported = {
+            (int(m["line"]), m["code"])
+            for m in re.finditer(rf"{re.escape(path.name)}:(?P<line>\d+): error: .*\[(?P<code>[a-z-]+)\]", stdout)
+        }
+        expected = set(_announced_codes(block).items())
+        assert reported == expected, f"{path.name}\n{stdout}{stderr}"
