@@ -1,0 +1,67 @@
+"""Every registered rule's VALID and INVALID examples, run through the real engine.
+
+Adding a rule adds its cases here automatically (fixit's generic test builder): VALID code
+must give no finding of the rule; INVALID code exactly one; a fix must reproduce
+`expected_fix`, parse, and be idempotent; the rule's prefilter must let every INVALID through.
+"""
+
+from __future__ import annotations
+
+import ast
+
+import pytest
+
+from geolint.engine import ENGINE_RULE_CODES, apply_edits, lint_source
+from geolint.rules import Invalid, Rule, Valid, all_rules
+
+CASES = [
+    pytest.param(rule, example, id=f"{rule.code}-{kind}-{index}")
+    for rule in all_rules()
+    for kind, examples in (("valid", rule.VALID), ("invalid", rule.INVALID))
+    for index, example in enumerate(examples)
+]
+
+
+def findings_of(rule: type[Rule], source: str):
+    return [finding for finding in lint_source(source, "example.py", rules=[rule]) if finding.code == rule.code]
+
+
+@pytest.mark.parametrize(("rule", "example"), CASES)
+def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
+    found = findings_of(rule, example.code)
+    if isinstance(example, Valid):
+        assert found == [], f"{rule.code} flagged VALID code:\n{example.code}\n{found}"
+        return
+    assert len(found) == 1, f"{rule.code} should flag exactly once:\n{example.code}\n{found}"
+    finding = found[0]
+    assert finding.name == rule.name
+    assert 1 <= finding.line <= finding.end_line
+    if rule.triggers is not None and rule.code not in ENGINE_RULE_CODES:  # GEO000/GEO900 run in the engine
+        assert rule.triggers.search(example.code), f"{rule.code}'s prefilter would skip its own INVALID example"
+    if example.expected_fix is not None:
+        assert finding.fix is not None, f"{rule.code} offers no fix for:\n{example.code}"
+        fixed = apply_edits(example.code, finding.fix.edits)
+        assert fixed == example.expected_fix
+    if finding.fix is not None:
+        fixed = apply_edits(example.code, finding.fix.edits)
+        ast.parse(fixed)  # a fix always produces code that parses
+        again = [f for f in findings_of(rule, fixed) if f.fix is not None]
+        refixed = apply_edits(fixed, [edit for f in again for edit in f.fix.edits])
+        assert refixed == fixed, f"{rule.code}'s fix is not idempotent:\n{fixed}\n->\n{refixed}"
+
+
+@pytest.mark.parametrize("rule", all_rules(), ids=lambda rule: rule.code)
+def test_rule_has_examples_both_ways(rule: type[Rule]) -> None:
+    assert rule.VALID, f"{rule.code} has no VALID examples"
+    assert rule.INVALID, f"{rule.code} has no INVALID examples"
+
+
+SAFE_FIXES = {"GEO101", "GEO301", "GEO302"}  # the fixes issue 3 lists as safe
+
+
+@pytest.mark.parametrize("rule", [r for r in all_rules() if r.code[3] in "123"], ids=lambda rule: rule.code)
+def test_only_listed_fixes_are_safe(rule: type[Rule]) -> None:
+    for example in rule.INVALID:
+        for finding in findings_of(rule, example.code):
+            if finding.fix is not None and finding.fix.applicability == "safe":
+                assert rule.code in SAFE_FIXES, f"{rule.code} marks a fix safe that issue 3 does not list"

@@ -1,0 +1,190 @@
+"""Unit tests of the shared semantic model: names, kinds, frames, flow, homogeneous forms, prefilter."""
+
+from __future__ import annotations
+
+import libcst as cst
+import pytest
+from libcst.metadata import MetadataWrapper
+
+from geolint.lint_types import Config, NamingConventions
+from geolint.semantic.facts import SemanticFactsProvider
+from geolint.semantic.model import SemanticModel, model_for
+from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_name, same_frame
+from geolint.semantic.prefilter import summarize
+
+
+@pytest.mark.parametrize(
+    ("name", "kind"),
+    [
+        ("normal", Kind.DIRECTION),
+        ("normals", Kind.DIRECTION),
+        ("surface_normal", Kind.DIRECTION),
+        ("ray_dir", Kind.DIRECTION),
+        ("vertex_normals", Kind.DIRECTION),
+        ("v_cam", Kind.DIRECTION),
+        ("points", Kind.POINT),
+        ("p_world", Kind.POINT),
+        ("p_BQ", Kind.POINT),
+        ("grasp_point_cam", Kind.POINT),
+        ("T_world_cam", Kind.TRANSFORM),
+        ("R_world_cam", Kind.ROTATION),
+        ("n", None),  # a count
+        ("n_points", None),
+        ("normal_idx", None),
+        ("p", None),  # a probability or a polynomial as often as a point
+        ("p_value", None),
+        ("pointer", None),
+        ("origin_projected_on_screw_axis", None),  # two kinds in one long name: cannot tell
+    ],
+)
+def test_kind_of_name(name: str, kind: Kind | None) -> None:
+    assert kind_of_name(name) == kind
+
+
+def test_extra_names_from_config() -> None:
+    config = Config(extra_direction_names=("spin",), extra_point_names=("waypoint",))
+    assert kind_of_name("spin", config) == Kind.DIRECTION
+    assert kind_of_name("waypoint", config) == Kind.POINT
+    assert kind_of_name("spin") is None
+
+
+@pytest.mark.parametrize(
+    ("name", "frames"),
+    [
+        ("T_world_cam", NameFrames(dst="world", src="cam", operator="transform")),
+        ("R_world_cam", NameFrames(dst="world", src="cam", operator="rotation")),
+        ("world_T_cam", NameFrames(dst="world", src="cam", operator="transform")),
+        ("X_WB", NameFrames(dst="w", src="b", operator="transform")),
+        ("world_from_cam", NameFrames(dst="world", src="cam", operator="unknown")),
+        ("cam_to_world", NameFrames(dst="world", src="cam", operator="unknown")),
+        ("cam2world", NameFrames(dst="world", src="cam", operator="unknown")),
+        ("A2B", NameFrames(dst="b", src="a", operator="unknown")),
+        ("p_world", NameFrames(frame="world")),
+        ("p_BQ", NameFrames(frame="b")),
+        ("point_in_cam", NameFrames(frame="cam")),
+        ("v_cam", NameFrames(frame="cam")),
+        # conversions and qualifiers are not frames
+        ("deg2rad", None),
+        ("herm2poly", None),
+        ("coef2d", None),
+        ("module_from_spec", None),
+        ("pos_des", None),
+        ("p_h", None),
+        ("T_world_base_link", None),  # ambiguous split
+    ],
+)
+def test_frames_of_name(name: str, frames: NameFrames | None) -> None:
+    assert frames_of_name(name) == frames
+
+
+def test_naming_switches_and_aliases() -> None:
+    no_monogram = Config(naming=NamingConventions(monogram=False))
+    assert frames_of_name("X_WB", no_monogram) is None
+    assert frames_of_name("T_world_cam", no_monogram) is not None
+    no_suffix = Config(naming=NamingConventions(suffix=False))
+    assert frames_of_name("p_world", no_suffix) is None
+    aliased = Config(frame_aliases={"cam": "camera"})
+    assert frames_of_name("T_world_cam", aliased) == NameFrames(dst="world", src="camera", operator="transform")
+    assert frames_of_name("p_camera", aliased) == NameFrames(frame="camera")
+
+
+def test_same_frame_never_compares_a_letter_with_a_word() -> None:
+    assert same_frame("world", "world") is True
+    assert same_frame("world", "cam") is False
+    assert same_frame("w", "world") is None
+    assert same_frame(None, "cam") is None
+
+
+def model_of(source: str) -> tuple[SemanticModel, cst.Module]:
+    wrapper = MetadataWrapper(cst.parse_module(source), unsafe_skip_copy=True)
+    facts = wrapper.resolve(SemanticFactsProvider)[wrapper.module]
+    return model_for(facts, Config()), wrapper.module
+
+
+def last_value(module: cst.Module) -> cst.BaseExpression:
+    statement = module.body[-1].body[0]  # type: ignore[attr-defined]
+    return statement.value
+
+
+@pytest.mark.parametrize(
+    ("source", "kind"),
+    [
+        ("import numpy as np\nx = np.cross(a, b)\nx\n", Kind.DIRECTION),
+        ("import numpy as np\nd = offset / np.linalg.norm(offset)\nd\n", Kind.DIRECTION),
+        ("delta = tip_position - base_position\ndelta\n", Kind.DIRECTION),
+        ("for item in normals:\n    pass\nitem\n", Kind.DIRECTION),
+        ("for i, item in enumerate(points):\n    pass\nitem\n", Kind.POINT),
+        ("alias = mesh.vertices\nalias\n", Kind.POINT),
+        ("row = normals[3]\nrow\n", Kind.DIRECTION),
+        ("def helper():\n    return mesh.face_normals\nhelper()\n", Kind.DIRECTION),
+        ('direction = "left"\ndirection\n', None),
+        ("velocity = distance / dt\nvelocity\n", None),
+        ("import numpy as np\nnormal = np.random.normal(size=3)\nnormal\n", None),
+        ("def f(axis=0):\n    return axis\nf\n", None),
+    ],
+)
+def test_kind_flow(source: str, kind: Kind | None) -> None:
+    model, module = model_of(source)
+    value = last_value(module)
+    if isinstance(value, cst.Name) and value.value == "f":
+        function = module.body[0]
+        returned = function.body.body[0].body[0].value  # type: ignore[attr-defined]
+        assert model.kind_of(returned) == kind
+        return
+    assert model.kind_of(value) == kind
+
+
+@pytest.mark.parametrize(
+    ("expression", "frames"),
+    [
+        ("np.linalg.inv(T_world_cam)", NameFrames(dst="cam", src="world", operator="transform")),
+        ("R_world_cam.T", NameFrames(dst="cam", src="world", operator="rotation")),
+        ("T_world_cam[:3, :3]", NameFrames(dst="world", src="cam", operator="rotation")),
+        ("T_world_cam[:3, 3]", NameFrames(frame="world")),
+        ("T_world_base @ T_base_cam", NameFrames(dst="world", src="cam", operator="transform")),
+        ("T_world_cam @ p_cam", NameFrames(frame="world")),
+        ("pts_cam @ R_world_cam.T", NameFrames(frame="world")),
+        ("T_world_base @ T_cam_tool", None),  # mismatched: no frame, never a guess
+    ],
+)
+def test_frames_of_expressions(expression: str, frames: NameFrames | None) -> None:
+    model, module = model_of(f"import numpy as np\nresult = {expression}\n")
+    assert model.frames_of(last_value(module)) == frames
+
+
+@pytest.mark.parametrize(
+    ("construction", "w"),
+    [
+        ("np.append(x, 1)", 1),
+        ("np.append(x, [0])", 0),
+        ("np.r_[x, 1.0]", 1),
+        ("np.hstack([x, np.ones((len(x), 1))])", 1),
+        ("np.column_stack((x, np.zeros(len(x))))", 0),
+        ("np.concatenate([x, [1]])", 1),
+        ("np.array([x[0], x[1], x[2], 1])", 1),
+    ],
+)
+def test_homogeneous_forms(construction: str, w: int) -> None:
+    model, module = model_of(f"import numpy as np\nh = {construction}\n")
+    found = model.homogeneous(last_value(module))
+    assert found is not None and found.w == w
+    assert cst.Module([]).code_for_node(found.inner).startswith("x")
+
+
+def test_ones_buffer_filled_with_xyz() -> None:
+    model, module = model_of("import numpy as np\nh = np.ones(4)\nh[:3] = x\nh\n")
+    found = model.homogeneous(last_value(module))
+    assert found is not None and found.w == 1 and cst.Module([]).code_for_node(found.fixed) == "np.zeros(4)"
+
+
+def test_facts_are_computed_once_per_module_and_config() -> None:
+    model, module = model_of("x = 1\n")
+    assert model_for(model.facts, Config()) is model
+
+
+def test_prefilter_reads_code_not_docstrings() -> None:
+    prose = '"""Rotate the normal by T_world_cam and add p_world @ t."""\nimport numpy as np\nx = np.sum(a, axis=0)\n'
+    summary = summarize(prose)
+    assert "normal" not in summary.names and not summary.has_matmul
+    code = "y = T_world_cam @ p_base\n"
+    assert summarize(code).has_matmul
