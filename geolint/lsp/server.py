@@ -126,7 +126,7 @@ class GeolintLanguageServer(LanguageServer):
             return None
         try:
             source = document.source
-        except OSError as error:
+        except (OSError, ValueError) as error:  # unreadable, or not text (UnicodeDecodeError)
             logger.warning("cannot read %s: %s", uri, error)
             return None
         version = document.version

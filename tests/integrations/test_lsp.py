@@ -421,3 +421,16 @@ async def test_a_pulling_client_is_asked_to_refresh_when_the_config_changes(clie
     await eventually(lambda: client.diagnostic_refresh_count == 1)
     after = await client.text_document_diagnostic_async(params)
     assert "GEO101" not in [d.code for d in after.items] and "GEO201" in [d.code for d in after.items]
+
+
+@needs_rules
+@pytest.mark.asyncio
+async def test_a_broken_config_is_reported_once_and_linting_goes_on(client: RecordingClient, tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text('[tool.geolint]\nselectt = ["GEO1"]\n', encoding="utf-8")
+    await start(client)
+    first = open_doc(client, tmp_path / "one.py", BUGGY)
+    second = open_doc(client, tmp_path / "two.py", BUGGY)
+    await eventually(lambda: first in client.diagnostics and second in client.diagnostics)
+    assert "GEO101" in [d.code for d in client.diagnostics[first]]
+    errors = [m for m in client.messages if m.type == types.MessageType.Error]
+    assert len(errors) == 1 and "pyproject.toml" in errors[0].message and "selectt" in errors[0].message
