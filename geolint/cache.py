@@ -31,17 +31,31 @@ def content_hash(data: bytes) -> str:
     return hashlib.blake2b(data, digest_size=16).hexdigest()
 
 
+# The parts of the package whose code decides what a file's findings are.
+FINDINGS_SOURCES = ("rules", "semantic", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py")
+
+
 @lru_cache(maxsize=1)
 def package_fingerprint() -> str:
-    """A hash of the installed geolint sources' names, sizes and mtimes (cheap: stats only)."""
+    """A hash of the names, sizes and mtimes of the geolint sources that decide findings (stats only).
+
+    Editing a rule invalidates the cache during development; editing the language server does not.
+    """
     package_dir = Path(__file__).resolve().parent
     digest = hashlib.blake2b(digest_size=16)
-    for folder, dirnames, filenames in os.walk(package_dir):
-        dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
-        for name in sorted(filenames):
-            if name.endswith((".py", ".pyi")):
-                stat = os.stat(os.path.join(folder, name))
-                digest.update(f"{os.path.relpath(folder, package_dir)}/{name}:{stat.st_size}:{stat.st_mtime_ns}\n".encode())
+    for entry in FINDINGS_SOURCES:
+        top = package_dir / entry
+        walked = os.walk(top) if top.is_dir() else [(str(package_dir), [], [entry])]
+        for folder, dirnames, filenames in walked:
+            dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
+            for name in sorted(filenames):
+                if name.endswith((".py", ".pyi")):
+                    try:
+                        stat = os.stat(os.path.join(folder, name))
+                    except OSError:
+                        continue
+                    relative = os.path.relpath(os.path.join(folder, name), package_dir)
+                    digest.update(f"{relative}:{stat.st_size}:{stat.st_mtime_ns}\n".encode())
     return digest.hexdigest()
 
 
