@@ -335,13 +335,19 @@ def graph_of_source(
 
 
 def merge(graphs: Iterable[FrameGraph], name: str = "frames") -> FrameGraph:
-    """One graph with every frame and edge of `graphs`."""
-    edges: list[FrameEdge] = []
+    """One graph with every frame and edge of `graphs`.
+
+    A transform spelled the same way in many files is drawn once, at its first location;
+    every mismatch is kept, since each one is a separate bug.
+    """
+    edges: dict[tuple[str, str, str, str], FrameEdge] = {}
     frames: set[str] = set()
     for graph in graphs:
-        edges.extend(graph.edges)
+        for edge in graph.edges:
+            place = edge.location if edge.mismatch else ""
+            edges.setdefault((edge.parent, edge.child, edge.label, place), edge)
         frames.update(graph.frames)
-    return FrameGraph(edges=tuple(edges), frames=tuple(sorted(frames)), name=name)
+    return FrameGraph(edges=tuple(edges.values()), frames=tuple(sorted(frames)), name=name)
 
 
 def graph_of_paths(paths: Sequence[Path], config: Config | None = None) -> FrameGraph:

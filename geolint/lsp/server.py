@@ -31,6 +31,7 @@ from pygls.workspace import TextDocument
 
 from geolint import api
 from geolint._version import __version__
+from geolint.engine import SYNTAX_ERROR
 from geolint.lint_types import Config, Edit, Finding
 from geolint.lsp.actions import FIX_ALL_KIND, changed_region_edit, ignore_edit
 from geolint.lsp.configs import ConfigCache
@@ -353,7 +354,8 @@ async def code_actions(ls: GeolintLanguageServer, params: types.CodeActionParams
                         edit=ls.workspace_edit(uri, result.source, finding.fix.edits),
                     )
                 )
-            suppress = ignore_edit(result.source, finding.line, finding.code)
+            # A syntax error is fixed, not silenced.
+            suppress = None if finding.code == SYNTAX_ERROR else ignore_edit(result.source, finding.line, finding.code)
             if suppress is not None:
                 actions.append(
                     types.CodeAction(

@@ -121,3 +121,13 @@ def f(T_world_cam, p_base, T_world_base, T_cam_tool):
 def test_code_that_does_not_parse_gives_an_empty_graph() -> None:
     graph = graph_of_source("def f(:\n", "m.py")
     assert graph.edges == () and graph.frames == ()
+
+
+def test_the_same_transform_in_many_files_is_drawn_once(tmp_path: Path) -> None:
+    for name in ("a.py", "b.py"):
+        (tmp_path / name).write_text("def f(T_world_cam, p_base):\n    return T_world_cam @ p_base\n", encoding="utf-8")
+    completed = frames_cli(".", cwd=tmp_path)
+    assert completed.returncode == 0, completed.stderr
+    lines = completed.stdout.splitlines()
+    assert len([line for line in lines if '"world" -> "cam"' in line]) == 1
+    assert len([line for line in lines if "color=red" in line]) == 2  # one bug in each file
