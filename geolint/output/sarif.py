@@ -52,6 +52,12 @@ def _descriptor(finding: Finding) -> dict[str, Any]:
     }
 
 
+def _fix_description(finding: Finding) -> str:
+    assert finding.fix is not None
+    text = finding.fix.description or f"fix {finding.code}"
+    return f"{text} (unsafe: may change behaviour)" if finding.fix.applicability == "unsafe" else text
+
+
 def _result(finding: Finding, rule_index: int) -> dict[str, Any]:
     location = {"artifactLocation": _artifact_uri(finding.path)}
     result: dict[str, Any] = {
@@ -76,7 +82,7 @@ def _result(finding: Finding, rule_index: int) -> dict[str, Any]:
     if finding.fix is not None and finding.fix.edits:
         result["fixes"] = [
             {
-                "description": {"text": finding.fix.description or f"Fix {finding.code} ({finding.fix.applicability})"},
+                "description": {"text": _fix_description(finding)},
                 "artifactChanges": [
                     {
                         **location,
