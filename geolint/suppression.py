@@ -91,15 +91,8 @@ def _directives_on_candidate_lines(lines: Sequence[str], tree: ast.AST) -> list[
     rows = [index + 1 for index, line in enumerate(lines) if "#" in line and CANDIDATE_LINE.search(line)]
     if not rows:
         return []
-    # Multi-line strings, as (first row, first byte column, last row, end byte column).
-    spans = [
-        (node.lineno, node.col_offset, node.end_lineno, node.end_col_offset)
-        for node in ast.walk(tree)
-        if isinstance(node, (ast.Constant, ast.JoinedStr))
-        and node.end_lineno is not None
-        and node.end_lineno > node.lineno
-        and (isinstance(node, ast.JoinedStr) or isinstance(node.value, (str, bytes)))
-    ]
+    # Multi-line strings near the candidate lines, as (first row, first byte column, last row, end byte column).
+    spans = [span for row in rows for span in _multiline_strings_around(tree, row)]
     directives: list[Directive] = []
     for row in rows:
         line = lines[row - 1].rstrip("\r\n")
@@ -128,6 +121,54 @@ def _directives_on_candidate_lines(lines: Sequence[str], tree: ast.AST) -> list[
             if token.type not in (tokenize.NL, tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT, tokenize.ENDMARKER):
                 code_before = True
     return directives
+
+
+_BODY_FIELDS = frozenset({"body", "orelse", "finalbody", "handlers", "cases"})
+
+
+def _multiline_strings_around(tree: ast.AST, row: int) -> list[tuple[int, int, int, int]]:
+    """Multi-line string literals in the innermost statement that spans `row`.
+
+    Descends through statement bodies only (cheap), then walks the expressions of that one
+    statement (for a compound statement, its header only), instead of the whole module.
+    """
+    node: ast.AST = tree
+    while True:
+        inner = None
+        for field in _BODY_FIELDS:
+            for child in getattr(node, field, None) or ():
+                if isinstance(child, ast.ExceptHandler) or (hasattr(ast, "match_case") and isinstance(child, ast.match_case)):
+                    candidates = getattr(child, "body", ())
+                    first = getattr(child, "lineno", None) or (candidates[0].lineno if candidates else 0)
+                    last = candidates[-1].end_lineno if candidates else first
+                    if first <= row <= (last or first):
+                        inner = child
+                        break
+                elif isinstance(child, ast.stmt) and child.lineno <= row <= (child.end_lineno or child.lineno):
+                    inner = child
+                    break
+            if inner is not None:
+                break
+        if inner is None:
+            break
+        node = inner
+    if node is tree:
+        return []
+    header = [getattr(node, name) for name in node._fields if name not in _BODY_FIELDS]
+    found = []
+    for part in header:
+        for value in part if isinstance(part, list) else [part]:
+            if not isinstance(value, ast.AST):
+                continue
+            for item in ast.walk(value):
+                if (
+                    isinstance(item, (ast.Constant, ast.JoinedStr))
+                    and item.end_lineno is not None
+                    and item.end_lineno > item.lineno
+                    and (isinstance(item, ast.JoinedStr) or isinstance(item.value, (str, bytes)))
+                ):
+                    found.append((item.lineno, item.col_offset, item.end_lineno, item.end_col_offset or 0))
+    return found
 
 
 def _tokens(segment: str) -> list[tokenize.TokenInfo]:
