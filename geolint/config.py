@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 import sys
 from dataclasses import fields, replace
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
@@ -244,11 +245,16 @@ def _relative_posix(path: str, root: Path) -> str:
     import os
 
     absolute = os.path.abspath(path)
-    relative = os.path.relpath(absolute, root) if absolute.startswith(str(root)) else path
+    relative = os.path.relpath(absolute, root) if absolute.startswith(str(root) + os.sep) else path
     return relative.replace(os.sep, "/")
 
 
 def _glob_matches(pattern: str, relative: str) -> bool:
+    return _compiled_glob(pattern).match_file(relative)
+
+
+@lru_cache(maxsize=256)
+def _compiled_glob(pattern: str):  # -> pathspec.GitIgnoreSpec
     import pathspec
 
-    return pathspec.GitIgnoreSpec.from_lines([pattern]).match_file(relative)
+    return pathspec.GitIgnoreSpec.from_lines([pattern])
