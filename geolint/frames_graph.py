@@ -228,7 +228,7 @@ class _FileReader(ast.NodeVisitor):
     # ---- findings ------------------------------------------------------------------------------
 
     def add_mismatches(self, module: ast.Module, findings: Iterable[Finding]) -> None:
-        nodes = [node for node in ast.walk(module) if hasattr(node, "lineno")]
+        nodes = [node for node in ast.walk(module) if isinstance(node, (ast.expr, ast.stmt))]
         for finding in findings:
             if not finding.code.startswith(MISMATCH_PREFIX):
                 continue

@@ -16,6 +16,7 @@ Initialization options (all optional): `{"debounce": seconds}` (default 0.3).
 from __future__ import annotations
 
 import asyncio
+import functools
 import logging
 import traceback
 from concurrent.futures import ThreadPoolExecutor
@@ -184,7 +185,7 @@ class GeolintLanguageServer(LanguageServer):
 
         task = asyncio.ensure_future(later())
         self.pending[uri] = task
-        task.add_done_callback(lambda done, uri=uri: self._forget(uri, done))
+        task.add_done_callback(functools.partial(self._forget, uri))
 
     def _forget(self, uri: str, task: asyncio.Task[None]) -> None:
         if self.pending.get(uri) is task:
