@@ -216,11 +216,20 @@ def summarize(source: str) -> FileSummary:
         summary.parse_failed = True
         return summary
     names = summary.names
-    for node in ast.walk(tree):
+    functions: list[tuple[ast.FunctionDef, list[ast.expr]]] = []
+    # A hand-rolled depth-first walk: it skips operator and context leaves and knows the
+    # enclosing function (for returns) without re-walking each function body.
+    stack: list[tuple[ast.AST, list[ast.expr] | None]] = [(tree, None)]
+    pop, push = stack.pop, stack.append
+    while stack:
+        node, returned = pop()
         kind = type(node)
         if kind is ast.Name:
             names.add(node.id)  # type: ignore[attr-defined]
-        elif kind is ast.Attribute:
+            continue
+        if kind is ast.Constant:
+            continue
+        if kind is ast.Attribute:
             names.add(node.attr)  # type: ignore[attr-defined]
             if node.attr == "T":  # type: ignore[attr-defined]
                 inner = _last(node.value)  # type: ignore[attr-defined]
@@ -233,31 +242,59 @@ def summarize(source: str) -> FileSummary:
         elif kind is ast.Call:
             _call(summary, node)  # type: ignore[arg-type]
         elif kind is ast.Assign or kind is ast.AnnAssign or kind is ast.NamedExpr:
-            targets = node.targets if kind is ast.Assign else [node.target]  # type: ignore[attr-defined]
-            value = node.value  # type: ignore[attr-defined]
-            for target in targets:
-                if isinstance(target, ast.Name) and value is not None:
-                    summary.assignments.append((target.id, value))
-                    if _HOMOGENEOUS_TOKENS & set(target.id.lower().split("_")):
-                        summary.has_homogeneous_name = True
-                elif isinstance(target, ast.Subscript) and value is not None:
-                    _subscript_store(summary, target, value)
-                elif isinstance(target, ast.Attribute) and target.attr == "points":
-                    summary.stores_points_attribute = True
-        elif kind is ast.For or kind is ast.comprehension:
+            _assignment(summary, node)
+        elif kind is ast.For or kind is ast.comprehension or kind is ast.AsyncFor:
             for target in ast.walk(node.target):  # type: ignore[attr-defined]
                 if isinstance(target, ast.Name):
                     summary.assignments.append((target.id, node.iter))  # type: ignore[attr-defined]
         elif kind is ast.FunctionDef or kind is ast.AsyncFunctionDef:
             names.add(node.name)  # type: ignore[attr-defined]
-            returned = [
-                child.value for child in ast.walk(node) if isinstance(child, ast.Return) and child.value is not None
-            ]
-            summary.returns[node.name] = returned  # type: ignore[attr-defined]
-            _check_returned_normals(summary, node, returned)  # type: ignore[arg-type]
+            returned = summary.returns.setdefault(node.name, [])  # type: ignore[attr-defined]
+            functions.append((node, returned))  # type: ignore[arg-type]
+        elif kind is ast.Lambda or kind is ast.ClassDef:
+            returned = None
+        elif kind is ast.Return:
+            if returned is not None and node.value is not None:  # type: ignore[attr-defined]
+                returned.append(node.value)  # type: ignore[attr-defined]
         elif kind is ast.Subscript:
             _subscript(summary, node)  # type: ignore[arg-type]
+        for field_name in _child_fields(kind):
+            value = getattr(node, field_name, None)
+            if type(value) is list:
+                for item in value:
+                    if isinstance(item, ast.AST):
+                        push((item, returned))
+            elif isinstance(value, ast.AST):
+                push((value, returned))
+    for function, returned in functions:
+        _check_returned_normals(summary, function, returned)
     return summary
+
+
+_SKIPPED_FIELDS = frozenset({"ctx", "op", "type_comment", "kind", "type_ignores"})
+_CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
+
+
+def _child_fields(kind: type) -> tuple[str, ...]:
+    fields = _CHILD_FIELDS.get(kind)
+    if fields is None:
+        fields = tuple(name for name in getattr(kind, "_fields", ()) if name not in _SKIPPED_FIELDS)
+        _CHILD_FIELDS[kind] = fields
+    return fields
+
+
+def _assignment(summary: FileSummary, node: ast.AST) -> None:
+    targets = node.targets if isinstance(node, ast.Assign) else [node.target]  # type: ignore[attr-defined]
+    value = node.value  # type: ignore[attr-defined]
+    for target in targets:
+        if isinstance(target, ast.Name) and value is not None:
+            summary.assignments.append((target.id, value))
+            if _HOMOGENEOUS_TOKENS & set(target.id.lower().split("_")):
+                summary.has_homogeneous_name = True
+        elif isinstance(target, ast.Subscript) and value is not None:
+            _subscript_store(summary, target, value)
+        elif isinstance(target, ast.Attribute) and target.attr == "points":
+            summary.stores_points_attribute = True
 
 
 def _binop(summary: FileSummary, node: ast.BinOp) -> None:
