@@ -131,3 +131,19 @@ def test_the_same_transform_in_many_files_is_drawn_once(tmp_path: Path) -> None:
     lines = completed.stdout.splitlines()
     assert len([line for line in lines if '"world" -> "cam"' in line]) == 1
     assert len([line for line in lines if "color=red" in line]) == 2  # one bug in each file
+
+
+def test_a_bad_config_is_a_clear_error(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text('[tool.geolint]\nframe-aliasez = {cam = "camera"}\n', encoding="utf-8")
+    (tmp_path / "a.py").write_text("T_world_cam = load()\n", encoding="utf-8")
+    completed = frames_cli(".", cwd=tmp_path)
+    assert completed.returncode == 2
+    assert "pyproject.toml" in completed.stderr and "frame-aliasez" in completed.stderr
+
+
+def test_frame_aliases_from_the_config_merge_frames(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text('[tool.geolint]\nframe-aliases = {cam = "camera"}\n', encoding="utf-8")
+    (tmp_path / "a.py").write_text("T_world_cam = load()\nT_camera_tool = load()\n", encoding="utf-8")
+    completed = frames_cli(".", cwd=tmp_path)
+    assert completed.returncode == 0, completed.stderr
+    assert '"world" -> "camera"' in completed.stdout and '"cam"' not in completed.stdout
