@@ -7,16 +7,17 @@ into LSP edits in the client's position encoding.
 from __future__ import annotations
 
 import io
-import re
 import tokenize
 from dataclasses import dataclass
 
 from geolint.lint_types import Edit
+from geolint.lsp.positions import split_lines
+from geolint.suppression import CODE_SPLIT, GEOLINT_DIRECTIVE, NOQA_DIRECTIVE
 
 FIX_ALL_KIND = "source.fixAll.geolint"
 
-# The suppression comment `geolint check` honours: `# geolint: ignore[GEO101, GEO203]`.
-_IGNORE_COMMENT = re.compile(r"#\s*geolint:\s*ignore\[(?P<codes>[^\]]*)\]")
+# The suppression comments `geolint check` honours, read with the engine's own patterns.
+_DIRECTIVES = (GEOLINT_DIRECTIVE, NOQA_DIRECTIVE)
 
 
 @dataclass(frozen=True)
@@ -39,7 +40,8 @@ def _comments_on_line(source: str, line: int) -> _LineComments:
                 break
         return _LineComments(tuple(comments), ends_in_string)
     except (tokenize.TokenError, SyntaxError, IndentationError):
-        text = source.splitlines()[line - 1] if line - 1 < len(source.splitlines()) else ""
+        lines = split_lines(source)
+        text = lines[line - 1] if line - 1 < len(lines) else ""
         hash_at = text.find("#")
         return _LineComments(((hash_at, text[hash_at:]),) if hash_at >= 0 else (), False)
 
@@ -47,10 +49,11 @@ def _comments_on_line(source: str, line: int) -> _LineComments:
 def ignore_edit(source: str, line: int, code: str) -> Edit | None:
     """The edit that makes `geolint` ignore `code` on 1-based `line`; None if there is nothing to do.
 
-    Extends an existing `# geolint: ignore[...]` comment, or appends one at the end of the line
-    (after any other comment, so `# type: ignore` and `# noqa` keep working).
+    Extends an existing `# geolint: ignore[...]` or `# noqa: ...` list (geolint reads one
+    directive per comment, so a second one in the same comment would not count), or else appends
+    `# geolint: ignore[CODE]` at the end of the line, after any other comment such as `# type: ignore`.
     """
-    lines = source.splitlines()
+    lines = split_lines(source)
     if not 1 <= line <= len(lines):
         return None
     text = lines[line - 1]
@@ -58,16 +61,18 @@ def ignore_edit(source: str, line: int, code: str) -> Edit | None:
     if found.ends_in_string:
         return None
     for column, comment in found.comments:
-        match = _IGNORE_COMMENT.search(comment)
-        if match is None:
-            continue
-        codes = [c.strip() for c in match.group("codes").split(",") if c.strip()]
-        if code in codes:
-            return None
-        start = column + match.start("codes")
-        end = column + match.end("codes")
-        new_codes = ", ".join([*codes, code])
-        return Edit(line, start + 1, line, end + 1, new_codes)
+        for pattern in _DIRECTIVES:
+            match = pattern.search(comment)
+            if match is None:
+                continue
+            if match.group("codes") is None:
+                return None  # a bare `# noqa` or `# geolint: ignore` already covers every code
+            codes = [c for c in CODE_SPLIT.split(match.group("codes").strip()) if c]
+            if code in codes:
+                return None
+            start = column + match.start("codes")
+            end = column + match.end("codes")
+            return Edit(line, start + 1, line, end + 1, ", ".join([*codes, code]))
     content_end = len(text.rstrip())
     return Edit(line, content_end + 1, line, len(text) + 1, f"  # geolint: ignore[{code}]")
 

@@ -88,3 +88,21 @@ def test_changed_region_edit_turns_old_into_new(old: str, new: str) -> None:
     edit = changed_region_edit(old, new)
     assert apply_lsp_style(old, edit) == new
     assert len(edit.content) <= len(new)
+
+
+def test_ignore_edit_extends_a_noqa_list_instead_of_adding_a_second_directive() -> None:
+    source = (
+        "def f(R_world_cam, normal_cam, t_world_cam, T_world_base, p_cam):\n"
+        "    a = R_world_cam @ normal_cam + t_world_cam; b = T_world_base @ p_cam  # noqa: E501, GEO101\n"
+    )
+    assert [f.code for f in api.lint_text(source, "m.py")] == ["GEO201"]
+    extended = apply_lsp_style(source, ignore_edit(source, 2, "GEO201"))
+    assert extended.endswith("# noqa: E501, GEO101, GEO201\n")
+    assert api.lint_text(extended, "m.py") == []
+    assert ignore_edit("x = R @ n + t  # noqa\n", 1, "GEO101") is None
+
+
+def test_ignore_edit_counts_lines_like_the_linter() -> None:
+    # A form feed is not a line break for Python or LSP (str.splitlines would say it is).
+    source = "a = 1\x0c  # page\nx = R @ n + t\n"
+    assert apply_lsp_style(source, ignore_edit(source, 2, "GEO101")).endswith("x = R @ n + t  # geolint: ignore[GEO101]\n")
