@@ -138,8 +138,12 @@ def _single_operand(args: list[list[Expression]]) -> Expression | None:
 
 
 def _operand_type(api: CheckerPluginInterface, expr: Expression) -> Type:
-    # The operand was already inferred by mypy for the operator; asking again reads the same expression.
-    return api.get_expression_type(expr)
+    """The operand's type, read from mypy's type map when mypy has already inferred it (it has, for an
+    operator): inferring it again would re-check the whole operand once per overload item, which grows
+    exponentially with nesting such as ``T1 @ (T2 @ (T3 @ p))``."""
+    lookup = getattr(api, "lookup_type_or_none", None)
+    known = lookup(expr) if lookup is not None else None
+    return known if known is not None else api.get_expression_type(expr)
 
 
 def _accepting(signature: CallableType, operand: Type | None, result: Type) -> CallableType:
