@@ -71,7 +71,8 @@ if TYPE_CHECKING:
         """A (3, 3) rotation mapping Src coordinates into Dst (``R_dst_src``)."""
 
         @property
-        def T(self) -> RotationMatrix[Src, Dst]: ...  # noqa: N802  (numpy's name)
+        # numpy's name; for a rotation the transpose is the inverse, with the frames swapped (not Self)
+        def T(self) -> RotationMatrix[Src, Dst]: ...  # type: ignore[override]  # noqa: N802
 
     class TransformMatrix(np.ndarray[Any, _Float], Generic[Dst, Src]):
         """A (4, 4) homogeneous transform mapping Src into Dst (``T_dst_src``).

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from mypy.nodes import TypeInfo
 from mypy.plugin import CheckerPluginInterface
 from mypy.subtypes import is_same_type
-from mypy.types import AnyType, Instance, ProperType, Type, TypeOfAny, get_proper_type
+from mypy.types import AnyType, Instance, ProperType, Type, TypeOfAny, UnionType, get_proper_type
 
 from geolint.mypy import fullnames as names
 
@@ -126,7 +126,7 @@ def lookup_class(api: CheckerPluginInterface, fullname: str) -> TypeInfo | None:
 
 def is_known(frame: ProperType) -> bool:
     """Whether a frame is precise enough to compare (not Any, not a union of frames)."""
-    return not isinstance(frame, AnyType) and not _is_union(frame)
+    return not isinstance(frame, (AnyType, UnionType))
 
 
 def same_frame(first: ProperType, second: ProperType) -> bool | None:
@@ -138,9 +138,3 @@ def same_frame(first: ProperType, second: ProperType) -> bool | None:
 
 def unknown_frame() -> ProperType:
     return AnyType(TypeOfAny.special_form)
-
-
-def _is_union(frame: ProperType) -> bool:
-    from mypy.types import UnionType
-
-    return isinstance(frame, UnionType)

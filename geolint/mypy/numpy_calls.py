@@ -54,7 +54,7 @@ def asarray(ctx: FunctionContext) -> Type:
     return geometry.build(ctx.api, array) or ctx.default_return_type
 
 
-_APPENDED = {
+_APPENDED: dict[tuple[str, float], str] = {
     (POINT, 1): HOMOGENEOUS_POINT,
     (VECTOR, 0): HOMOGENEOUS_VECTOR,
     (DIRECTION, 0): HOMOGENEOUS_VECTOR,
