@@ -76,8 +76,14 @@ def test_dmypy_runs_the_plugin(tmp_path: Path) -> None:
         )
         assert "[geo-frame]" in result.stdout, result.stdout + result.stderr
         assert 'Transform["world" <- "camera"] applied to Point["base"]' in result.stdout
-        # a second, incremental check in the same daemon gives the same answer
-        again = subprocess.run([*dmypy, "check", "snippet.py"], cwd=tmp_path, capture_output=True, text=True, timeout=120, env=env)
-        assert "[geo-frame]" in again.stdout, again.stdout + again.stderr
+        # fine-grained re-checks after edits: the fix silences it, a new string-frame bug is found
+        check = [*dmypy, "check", "snippet.py"]
+        (tmp_path / "snippet.py").write_text(SNIPPET.replace('p: Point["base"]', 'p: Point["camera"]'))
+        fixed = subprocess.run(check, cwd=tmp_path, capture_output=True, text=True, timeout=120, env=env)
+        assert "geo-frame" not in fixed.stdout and "name-defined" not in fixed.stdout, fixed.stdout + fixed.stderr
+        (tmp_path / "snippet.py").write_text(SNIPPET.replace('p: Point["base"]', 'p: Point["odom"]'))
+        broken = subprocess.run(check, cwd=tmp_path, capture_output=True, text=True, timeout=120, env=env)
+        assert 'applied to Point["odom"]' in broken.stdout, broken.stdout + broken.stderr
+        assert "name-defined" not in broken.stdout, broken.stdout
     finally:
         subprocess.run([*dmypy, "stop"], cwd=tmp_path, capture_output=True, timeout=60, env=env)
