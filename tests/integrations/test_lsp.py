@@ -434,3 +434,15 @@ async def test_a_broken_config_is_reported_once_and_linting_goes_on(client: Reco
     assert "GEO101" in [d.code for d in client.diagnostics[first]]
     errors = [m for m in client.messages if m.type == types.MessageType.Error]
     assert len(errors) == 1 and "pyproject.toml" in errors[0].message and "selectt" in errors[0].message
+
+
+@pytest.mark.asyncio
+async def test_columns_follow_a_negotiated_utf8_encoding(client: RecordingClient, tmp_path: Path) -> None:
+    utf8_only = types.ClientCapabilities(general=types.GeneralClientCapabilities(position_encodings=["utf-8"]))
+    result = await start(client, utf8_only)
+    assert result.capabilities.position_encoding == types.PositionEncodingKind.Utf8
+    uri = open_doc(client, tmp_path / "emoji8.py", EMOJI_SYNTAX_ERROR)
+    await eventually(lambda: uri in client.diagnostics)
+    (diagnostic,) = client.diagnostics[uri]
+    paren = EMOJI_SYNTAX_ERROR.index("(")
+    assert diagnostic.range.start.character == len(EMOJI_SYNTAX_ERROR[:paren].encode("utf-8"))
