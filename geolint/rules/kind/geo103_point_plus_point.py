@@ -10,6 +10,20 @@ from geolint.semantic.names import Kind
 from geolint.semantic.prefilter import Trigger, may_add_points
 from geolint.semantic.rule_support import SemanticRule
 
+_COLLECTION_WORDS = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
+
+
+def _is_collection(node: cst.BaseExpression) -> bool:
+    """`points`, `mesh.vertices`, `pts_world`: many positions, not one."""
+    name = last_name(node.value if isinstance(node, cst.Subscript) else node)
+    return name is not None and bool(_COLLECTION_WORDS & set(name.lower().split("_")))
+
+
+def _is_sequence_slice(node: cst.BaseExpression) -> bool:
+    """`points[i:]`: a sub-sequence (adding two of them concatenates lists)."""
+    return isinstance(node, cst.Subscript) and len(node.slice) == 1 and isinstance(node.slice[0].slice, cst.Slice)
+
+
 # Reductions that turn a sum of points into an affine combination.
 _AVERAGING_CALLS = frozenset({"mean", "average", "sum", "nanmean", "median"})
 
@@ -54,17 +68,25 @@ class PointPlusPoint(SemanticRule):
         Valid("import numpy as np\nc = np.mean([point_a + point_b], axis=0)\n"),
         Valid("n_points = 3\ntotal = n_points + n_points\n"),
         Valid("centroid = 0\nfor p in points:\n    centroid += p\n"),
+        Valid("mirrored = current_pos + current_pos - last_control\n"),  # 2a - b: an affine reflection
+        Valid("rotated = points[start:] + points[:start]\n"),  # sequence concatenation
+        Valid("curve = current_pt + points\n"),  # a collection and a position: concatenation or offset
     ]
     INVALID = [
         Invalid("grasp_position = object_position + gripper_position\n"),
-        Invalid("def f(p_world, points_world):\n    return points_world + p_world\n"),
-        Invalid("moved = mesh.vertices + mesh.centroid\n"),
+        Invalid("def f(p_world, tip_position):\n    return p_world + tip_position\n"),
+        Invalid("both = mesh_a.centroid + mesh_b.centroid\n"),
+        Invalid("x = tip_position + base_position + offset\n"),
     ]
 
     def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
         if not isinstance(node.operator, cst.Add):
             return
         if self.model.kind_of(node.left) != Kind.POINT or self.model.kind_of(node.right) != Kind.POINT:
+            return
+        if _is_sequence_slice(node.left) or _is_sequence_slice(node.right):
+            return
+        if _is_collection(node.left) != _is_collection(node.right):
             return
         if self._is_affine(node):
             return
@@ -75,11 +97,15 @@ class PointPlusPoint(SemanticRule):
         )
 
     def _is_affine(self, node: cst.CSTNode) -> bool:
-        """Whether this sum is divided, scaled, averaged, or one term of a weighted sum."""
+        """Whether this sum is divided, scaled, averaged, or part of a combination whose point
+        weights sum to 0 or 1 (`a + b - c` reflects a point)."""
         current = node
         parent = self.model.parent(current)
-        while isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, cst.Add):
+        while isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, (cst.Add, cst.Subtract)):
             current, parent = parent, self.model.parent(parent)
+        weight = self._point_weight(current, 1)
+        if weight is None or weight in (0, 1):
+            return True
         if isinstance(parent, cst.BinaryOperation):
             if isinstance(parent.operator, (cst.Divide, cst.FloorDivide)) and parent.left is current:
                 return True
@@ -93,3 +119,21 @@ class PointPlusPoint(SemanticRule):
                 return True
             parent = self.model.parent(parent)
         return False
+
+    def _point_weight(self, node: cst.BaseExpression, sign: int) -> int | None:
+        """The sum of the weights of the point terms of an additive expression, or None when a
+        term of unknown kind is subtracted or scaled (it may be a point that balances the sum)."""
+        if isinstance(node, cst.BinaryOperation) and isinstance(node.operator, (cst.Add, cst.Subtract)):
+            left = self._point_weight(node.left, sign)
+            right = self._point_weight(node.right, -sign if isinstance(node.operator, cst.Subtract) else sign)
+            return None if left is None or right is None else left + right
+        if isinstance(node, cst.UnaryOperation) and isinstance(node.operator, cst.Minus):
+            return self._point_weight(node.expression, -sign)
+        kind = self.model.kind_of(node)
+        if kind == Kind.POINT:
+            return sign
+        if kind == Kind.DIRECTION:
+            return 0
+        if sign < 0 or isinstance(node, cst.BinaryOperation):
+            return None  # `- last_control`, `s * b`: could be a point
+        return 0
