@@ -5,7 +5,7 @@
 
 An edge points from the parent frame to the child frame: `T_world_cam` (which maps points in
 `cam` to `world`) is the edge world -> cam. A `mismatch` edge is a use the linter found wrong
-(a GEO2xx finding); it is drawn red, labelled with its `location` ("file:line").
+(a GEO2xx finding); it is drawn red and dashed, labelled with its `location` ("file:line").
 
 Output is deterministic (frames and edges sorted), so it can be compared with a golden file.
 """
@@ -92,7 +92,8 @@ def render_dot(graph: FrameGraph) -> str:
         if caption:
             attributes.append(f"label={_dot_quote(caption)}")
         if edge.mismatch:
-            attributes += [f"color={MISMATCH_COLOR}", f"fontcolor={MISMATCH_COLOR}", "penwidth=2"]
+            # Dashed as well as red, so the mismatch reads without colour too.
+            attributes += [f"color={MISMATCH_COLOR}", f"fontcolor={MISMATCH_COLOR}", "penwidth=2", "style=dashed"]
         suffix = f" [{', '.join(attributes)}]" if attributes else ""
         lines.append(f"  {_dot_quote(edge.parent)} -> {_dot_quote(edge.child)}{suffix};")
     lines.append("}")
@@ -123,7 +124,7 @@ def render_mermaid(graph: FrameGraph) -> str:
         if edge.mismatch:
             red_links.append(str(index))
     if red_links:
-        lines.append(f"  linkStyle {','.join(red_links)} stroke:{MISMATCH_COLOR},stroke-width:2px,color:{MISMATCH_COLOR}")
+        lines.append(f"  linkStyle {','.join(red_links)} stroke:{MISMATCH_COLOR},stroke-width:2px,stroke-dasharray:5 3,color:{MISMATCH_COLOR}")
     return "\n".join(lines) + "\n"
 
 
