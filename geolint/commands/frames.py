@@ -38,5 +38,9 @@ def run(args: argparse.Namespace) -> int:
     if args.output is None:
         sys.stdout.write(text)
     else:
-        args.output.write_text(text, encoding="utf-8")
+        try:
+            args.output.write_text(text, encoding="utf-8")
+        except OSError as error:
+            print(f"geolint frames: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
+            return EXIT_ERROR
     return EXIT_OK

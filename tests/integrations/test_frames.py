@@ -76,6 +76,12 @@ def test_missing_path_is_an_error() -> None:
     assert completed.returncode == 2 and "no/such/dir" in completed.stderr
 
 
+def test_unwritable_output_is_an_error(tmp_path: Path) -> None:
+    target = tmp_path / "missing" / "frames.dot"
+    completed = frames_cli(".", "--output", str(target))
+    assert completed.returncode == 2 and "cannot write" in completed.stderr and not target.exists()
+
+
 def test_each_naming_convention_gives_the_same_edge() -> None:
     for name in ("T_world_cam", "world_T_cam", "world_from_cam", "cam_to_world", "cam2world"):
         assert edges(f"{name} = load()\n") == {("world", "cam", name, False)}, name
