@@ -444,6 +444,35 @@ class SemanticModel:
         first = node.value.strip("_").split("_")[0].lower()
         return first in ("t", "trans", "translation", "tvec", "tran")
 
+    # -- library transforms -----------------------------------------------------------------
+    def translating_library_object(self, node: cst.CSTNode) -> str | None:
+        """"PyKDL.Frame" or "spatialmath.SE3" when `node` is one (built directly, through a
+        variable, or returned by a helper of this module): `*` with them translates vectors."""
+        return self._cached("library", node, lambda: self._library_object(node))
+
+    def _library_object(self, node: cst.CSTNode) -> str | None:
+        if isinstance(node, cst.Name):
+            bindings = self.bindings(node) or []
+            found = {self.translating_library_object(b) for b in bindings if isinstance(b, cst.BaseExpression)}
+            return found.pop() if len(found) == 1 and len(bindings) == len([b for b in bindings if isinstance(b, cst.BaseExpression)]) else None
+        if isinstance(node, cst.BinaryOperation) and isinstance(node.operator, cst.Multiply):
+            left, right = self.translating_library_object(node.left), self.translating_library_object(node.right)
+            return left if left is not None and left == right else None  # SE3 * SE3 is an SE3
+        if not isinstance(node, cst.Call):
+            return None
+        qualified = self.qualified_name(node.func) or ""
+        parts = qualified.split(".")
+        if parts[-1] == "Frame" and (parts[0] in ("PyKDL", "kdl") or "PyKDL" in parts):
+            return "PyKDL.Frame"
+        if "SE3" in parts and (parts[0] == "spatialmath" or parts[0] == "SE3") and parts[-1] not in ("inv",):
+            return "spatialmath.SE3"
+        if isinstance(node.func, cst.Name) and node.func.value in self.facts.functions:
+            scope = self.facts.scopes.get(self.facts.functions[node.func.value])
+            if scope is not None and scope.returns:
+                found = {self.translating_library_object(value) for value in scope.returns}
+                return found.pop() if len(found) == 1 else None
+        return None
+
     # -- frames ---------------------------------------------------------------------------
     def frames_of(self, node: cst.CSTNode) -> NameFrames | None:
         """The frames of an expression (operator: dst/src; value: frame), or None."""

@@ -423,6 +423,7 @@ def may_translate_direction(summary: FileSummary, config: Config) -> bool:
         or summary.add_after_rotation_translation
         or bool(summary.called & {"transform_points", "vector_to_point"})
         or ("matrix_world" in summary.names and summary.has_matmul)
+        or (summary.has_multiply and bool(summary.called & {"Frame", "SE3"} or "SE3" in summary.names))
     )
 
 

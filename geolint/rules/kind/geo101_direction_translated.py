@@ -57,6 +57,8 @@ class DirectionTranslated(SemanticRule):
         Valid("import trimesh\nn2 = trimesh.transform_points(normals, T, translate=False)\n"),
         Valid('direction = "left"\nx = np.append(direction, 1)\n'),
         Valid("import numpy as np\nn = 3\nout = np.append(n, 1)\n"),
+        Valid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\np_moved = T * points\n"),
+        Valid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\nn_moved = T.R @ normals\n"),
     ]
     INVALID = [
         Invalid(
@@ -82,6 +84,13 @@ class DirectionTranslated(SemanticRule):
         Invalid("import trimesh\nmoved = trimesh.transform_points(mesh.vertex_normals, T)\n"),
         Invalid("from pytransform3d.transformations import vector_to_point\nn_h = vector_to_point(approach)\n"),
         Invalid("world_normal = obj.matrix_world @ face.normal\n"),
+        Invalid(
+            "import PyKDL\n"
+            "def tool_frame(q):\n"
+            "    return PyKDL.Frame(PyKDL.Rotation.RPY(*q), PyKDL.Vector(0, 0, 0.1))\n"
+            "approach_base = tool_frame(q) * approach\n"
+        ),
+        Invalid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\nn_moved = T * normals\n"),
     ]
 
     # homogeneous w = 1 -----------------------------------------------------------------
@@ -120,6 +129,15 @@ class DirectionTranslated(SemanticRule):
                         fix_description="drop the translation",
                     )
                     return
+        if isinstance(node.operator, cst.Multiply) and self.model.kind_of(node.right) == Kind.DIRECTION:
+            library = self.model.translating_library_object(node.left)
+            if library is not None:
+                self.report(
+                    node,
+                    f"`{self.code_of(node.left)}` is a {library}, and `*` translates what it multiplies, but "
+                    f"`{self.code_of(node.right)}` is a direction; apply only its rotation",
+                )
+                return
         if isinstance(node.operator, cst.MatrixMultiply) and isinstance(node.left, cst.Attribute):
             if node.left.attr.value == "matrix_world" and self.model.kind_of(node.right) == Kind.DIRECTION:
                 self.report(
