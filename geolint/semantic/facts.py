@@ -75,6 +75,14 @@ class ModuleFacts:
     functions: dict[str, cst.FunctionDef]  # module-level functions, by name
     views: dict[object, object] = field(default_factory=dict)  # config -> SemanticModel (model.py)
 
+    @property
+    def code(self) -> str:
+        """The module's source text (generated once, on first use)."""
+        text = self.views.get("__code__")
+        if text is None:
+            text = self.views["__code__"] = self.module.code
+        return text  # type: ignore[return-value]
+
     def parent(self, node: cst.CSTNode) -> cst.CSTNode | None:
         return self.parents.get(node)
 

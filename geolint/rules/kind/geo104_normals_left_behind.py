@@ -102,7 +102,7 @@ class NormalsLeftBehind(SemanticRule):
         if last_name(node.func) != "do_transform_cloud" or not node.args:
             return
         cloud = node.args[0].value
-        carries_normals = bool(_MENTIONS_NORMAL_FIELDS.search(self.model.facts.module.code)) or bool(
+        carries_normals = bool(_MENTIONS_NORMAL_FIELDS.search(self.model.facts.code)) or bool(
             _NORMAL_TOKENS & set(tokens(last_name(cloud) or ""))
         )
         if carries_normals:
@@ -137,7 +137,7 @@ class NormalsLeftBehind(SemanticRule):
             )
 
     def _module_reads_normals_of(self, base: str) -> bool:
-        code = self.model.facts.module.code
+        code = self.model.facts.code
         return re.search(rf"{re.escape(base)}\s*\.\s*normals\b", code) is not None
 
     def _scope_calls_method(self, scope_node: cst.CSTNode, base: str, method: str) -> bool:
