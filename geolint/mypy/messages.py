@@ -94,3 +94,12 @@ def vector_made_point(call: str, value: Geo) -> str:
         f"{call} gives {geo_text(value)} w=1, so a 4x4 transform will add its translation to it; "
         "use vector_to_direction (w=0)"
     )
+
+
+def raw_array_operand(operator: str, value: Geo) -> str:
+    wrap = "Point" if value.kind == "transform" else "Vector"
+    frame = frame_text(value.src if value.kind == "transform" else value.frame)
+    return (
+        f"{geo_text(value)} {operator} a raw ndarray: its kind and frame are unknown (the runtime refuses it); "
+        f"wrap it first, e.g. {wrap}[{frame}](array)"
+    )

@@ -20,10 +20,11 @@ from typing import Callable
 from mypy.nodes import Context, Expression, OpExpr
 from mypy.plugin import CheckerPluginInterface, MethodContext, MethodSigContext
 from mypy.subtypes import is_same_type
-from mypy.types import CallableType, FunctionLike, Type
+from mypy.types import CallableType, FunctionLike, Instance, Type, get_proper_type
 
-from geolint.mypy import algebra, geometry
-from geolint.mypy.algebra import Outcome
+from geolint.mypy import algebra, fullnames as names, geometry, messages
+from geolint.mypy.algebra import Outcome, Problem
+from geolint.mypy.errorcodes import GEO_KIND
 from geolint.mypy.geometry import Geo
 
 BinaryRule = Callable[[Geo, Geo], "Outcome | None"]
@@ -38,6 +39,9 @@ BINARY_RULES: dict[str, tuple[BinaryRule, bool]] = {
     "__rsub__": (algebra.subtract, False),
 }
 SCALING_OPERATORS = frozenset({"__mul__", "__rmul__", "__truediv__", "__neg__"})
+# The runtime refuses a bare ndarray here (it cannot know its kind or frame); so does the plugin, statically.
+RAW_ARRAY_REFUSED = frozenset({"__matmul__", "__add__", "__sub__"})
+_SYMBOL = {"__matmul__": "@", "__add__": "+", "__sub__": "-"}
 
 
 def outcome(
@@ -45,23 +49,53 @@ def outcome(
 ) -> Outcome | None:
     """What `algebra` says about ``receiver <operator> operand`` (None: not a framed operation)."""
     receiver_geo = geometry.read(receiver)
+    operand_geo = geometry.read(operand) if operand is not None else None
+    rule, receiver_is_left_by_name = BINARY_RULES.get(operator, (None, True))
+    if receiver_is_left is None:
+        receiver_is_left = receiver_is_left_by_name
+    refused = _raw_array_refused(operator, receiver, receiver_geo, operand, operand_geo, receiver_is_left)
+    if refused is not None:
+        return refused
     if receiver_geo is None:
         return None
     if operator in SCALING_OPERATORS:
-        if operand is not None and geometry.read(operand) is not None:
+        if operand_geo is not None:
             return None  # vector * vector is numpy's elementwise product; no frame meaning to add
         if operator == "__neg__" and receiver_geo.kind in algebra.FREE_KINDS:
             return Outcome(receiver_geo)  # -d is still a unit direction
         return algebra.scale(receiver_geo)
-    operand_geo = geometry.read(operand) if operand is not None else None
-    if operand_geo is None:
+    if operand_geo is None or rule is None:
         return None
-    rule, receiver_is_left_by_name = BINARY_RULES[operator]
-    if receiver_is_left is None:
-        receiver_is_left = receiver_is_left_by_name
     if receiver_is_left:
         return rule(receiver_geo, operand_geo)
     return rule(operand_geo, receiver_geo)
+
+
+def _raw_array_refused(
+    operator: str,
+    receiver: Type,
+    receiver_geo: Geo | None,
+    operand: Type | None,
+    operand_geo: Geo | None,
+    receiver_is_left: bool,
+) -> Outcome | None:
+    """A runtime value meeting a bare ndarray in ``@``, ``+``, ``-`` (either side): the runtime raises, so the
+    plugin reports ``geo-kind``. mypy would otherwise accept it through numpy's reflected operator."""
+    symbol = _SYMBOL.get(operator.replace("__r", "__", 1))
+    if symbol is None or operand is None:
+        return None
+    if receiver_geo is not None and receiver_geo.family == geometry.RUNTIME and _is_raw_array(operand, operand_geo):
+        value = receiver_geo
+    elif (
+        not receiver_is_left  # ``array - point`` is numpy's business; only its reflected call follows a refusal
+        and operand_geo is not None
+        and operand_geo.family == geometry.RUNTIME
+        and _is_raw_array(receiver, receiver_geo)
+    ):
+        value = operand_geo
+    else:
+        return None
+    return Outcome(None, Problem(GEO_KIND, messages.raw_array_operand(symbol, value)))
 
 
 def signature_hook(operator: str) -> Callable[[MethodSigContext], FunctionLike]:
@@ -103,6 +137,14 @@ def _built(api: CheckerPluginInterface, result: Outcome, default: Type) -> Type:
     return geometry.build(api, result.result) or (
         default.ret_type if isinstance(default, CallableType) else default
     )
+
+
+def _is_raw_array(operand: Type | None, operand_geo: Geo | None) -> bool:
+    """An ndarray that is not a runtime value: plain, or annotated with geolint.typing (still plain at runtime)."""
+    if operand_geo is not None:
+        return operand_geo.family == geometry.ARRAY
+    proper = get_proper_type(operand) if operand is not None else None
+    return isinstance(proper, Instance) and proper.type.has_base(names.NDARRAY)
 
 
 def _receiver_is_left(

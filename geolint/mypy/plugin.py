@@ -67,6 +67,9 @@ METHOD_HOOKS: dict[str, Callable[[MethodContext], Type]] = {
     for receiver in _OPERATOR_RECEIVERS
     for operator in names.OPERATORS
 }
+# A plain ndarray's reflected operators: reached only when a runtime value's own operator refused the array.
+for _reflected in ("__rmatmul__", "__radd__", "__rsub__"):
+    METHOD_HOOKS[f"{names.NDARRAY}.{_reflected}"] = operators.method_hook(_reflected)
 METHOD_HOOKS[f"{names.TRANSFORM_MATRIX}.__getitem__"] = numpy_calls.transform_matrix_item
 METHOD_HOOKS[names.NP_GUFUNC_CALL] = numpy_calls.matmul_ufunc_call
 
@@ -133,6 +136,20 @@ def _imports_geolint(file: MypyFile) -> bool:
     return False
 
 
+class GeolintPluginForMypy1(GeolintPlugin):
+    """mypy 1.x checks a reflected operator under the forward name (``array.__matmul__(T)`` for the reflected
+    half of ``T @ array``), so a plain ndarray's forward operators need the hook there too."""
+
+    def get_method_hook(self, fullname: str) -> Callable[[MethodContext], Type] | None:
+        return METHOD_HOOKS.get(fullname) or LEGACY_NDARRAY_HOOKS.get(fullname)
+
+
+LEGACY_NDARRAY_HOOKS = {
+    f"{names.NDARRAY}.{operator}": operators.method_hook(operator) for operator in ("__matmul__", "__add__", "__sub__")
+}
+
+
 def plugin(version: str) -> type[Plugin]:
     """mypy's entry point (``plugins = geolint.mypy``); `version` is mypy's, see docs/typing.md."""
-    return GeolintPlugin
+    major = int(version.split(".", 1)[0]) if version[:1].isdigit() else 2
+    return GeolintPluginForMypy1 if major < 2 else GeolintPlugin

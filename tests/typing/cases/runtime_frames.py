@@ -2,6 +2,8 @@
 
 from typing import TypeVar
 
+import numpy as np
+
 from geolint import Direction, Frame, Point, Transform, Vector
 
 
@@ -58,3 +60,10 @@ def run(
     reveal_type(T_wc.inverse())  # N: geolint.runtime.transform.Transform[runtime_frames.Camera, runtime_frames.World]
     silenced = T_wc @ p_b  # type: ignore[geo-frame]
     wrong: Point[World] = p_c  # E: assignment
+
+
+def raw_arrays(T_wc: Transform[World, Camera], p_c: Point[Camera], raw: np.ndarray) -> None:
+    T_wc @ raw  # E: geo-kind: Transform[World <- Camera] @ a raw ndarray: its kind and frame are unknown
+    p_c + raw  # E: geo-kind: wrap it first, e.g. Vector[Camera](array)
+    T_wc @ Point[Camera](raw)
+    reveal_type(raw @ raw)  # N: Any
