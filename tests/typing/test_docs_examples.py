@@ -51,7 +51,8 @@ def test_examples_report_what_they_announce(tmp_path: Path) -> None:
         path = tmp_path / f"doc_example_{index}.py"
         path.write_text(block)
         files.append(path)
-    stdout, stderr, _ = api.run(["--config-file", str(CONFIG), "--cache-dir", str(tmp_path / "cache"), *map(str, files)])
+    arguments = ["--config-file", str(CONFIG), "--cache-dir", str(tmp_path / "cache"), *map(str, files)]
+    stdout, stderr, _ = api.run(arguments)
     for path, block in zip(files, python_blocks()):
         reported = {
             (int(m["line"]), m["code"])

@@ -87,3 +87,17 @@ def test_dmypy_runs_the_plugin(tmp_path: Path) -> None:
         assert "name-defined" not in broken.stdout, broken.stdout
     finally:
         subprocess.run([*dmypy, "stop"], cwd=tmp_path, capture_output=True, timeout=60, env=env)
+
+
+def test_frame_aliases_from_pyproject(tmp_path: Path) -> None:
+    (tmp_path / "snippet.py").write_text(SNIPPET)
+    pyproject = tmp_path / "pyproject.toml"
+    pyproject.write_text(
+        f'[tool.mypy]\nplugins = ["geolint.mypy"]\nmypy_path = "{REPO}"\nshow_error_codes = true\n'
+        '[[tool.mypy.overrides]]\nmodule = "geolint.*"\nfollow_imports = "silent"\n'
+        '[tool.geolint-mypy]\nframe_aliases = { base = "base_link" }\n'
+    )
+    cache = str(tmp_path / "c")
+    stdout, _, _ = api.run(["--config-file", str(pyproject), "--cache-dir", cache, str(tmp_path / "snippet.py")])
+    assert "[geo-frame]" in stdout  # the plugin ran
+    assert "return-value" not in stdout  # and "base" is "base_link"
