@@ -1,4 +1,4 @@
-"""``as_points(array, "camera")``: the markers of `geolint.typing` with string frames.
+"""``as_points(array, "camera")``, ``Transform.identity("camera")``: calls that name frames with strings.
 
 The markers' overloads infer the frame from a Frame class (``type[F]``); a string argument would infer only
 ``str``. This function hook replaces each frame that was passed as a string literal by ``Literal["..."]``,
@@ -8,7 +8,7 @@ the same type a ``PointArray["camera"]`` annotation gets, so the two spellings m
 from __future__ import annotations
 
 from mypy.nodes import StrExpr
-from mypy.plugin import FunctionContext
+from mypy.plugin import FunctionContext, MethodContext
 from mypy.types import Instance, LiteralType, Type, get_proper_type
 
 
@@ -27,3 +27,15 @@ def mark(ctx: FunctionContext) -> Type:
         else:
             frames.append(inferred)
     return returned.copy_modified(args=frames)
+
+
+def identity(ctx: MethodContext) -> Type:
+    """``Transform.identity("camera")`` is a ``Transform["camera", "camera"]`` (the overload says Any, Any)."""
+    returned = get_proper_type(ctx.default_return_type)
+    if not (isinstance(returned, Instance) and ctx.args and len(ctx.args[0]) == 1):
+        return ctx.default_return_type
+    frame = ctx.args[0][0]
+    if not isinstance(frame, StrExpr):
+        return ctx.default_return_type
+    literal = LiteralType(frame.value, ctx.api.named_generic_type("builtins.str", []))
+    return returned.copy_modified(args=[literal] * len(returned.args))

@@ -72,6 +72,7 @@ for _reflected in ("__rmatmul__", "__radd__", "__rsub__"):
     METHOD_HOOKS[f"{names.NDARRAY}.{_reflected}"] = operators.method_hook(_reflected)
 METHOD_HOOKS[f"{names.TRANSFORM_MATRIX}.__getitem__"] = numpy_calls.transform_matrix_item
 METHOD_HOOKS[names.NP_GUFUNC_CALL] = numpy_calls.matmul_ufunc_call
+METHOD_HOOKS[f"{names.TRANSFORM}.identity"] = markers.identity
 
 METHOD_SIGNATURE_HOOKS: dict[str, Callable[[MethodSigContext], FunctionLike]] = {
     f"{receiver}.{operator}": operators.signature_hook(operator)

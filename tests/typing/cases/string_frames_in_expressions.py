@@ -47,3 +47,9 @@ def constructors(T: WorldFromCam) -> None:
 def nested() -> None:
     def inner(T: Transform["map", "odom"], p: P["base_link"]) -> None:
         T @ p  # E: geo-frame
+
+
+def identity() -> None:
+    T = Transform.identity("camera")
+    reveal_type(T)  # N: geolint.runtime.transform.Transform[Literal['camera'], Literal['camera']]
+    T @ P["world"]([1.0, 2.0, 3.0])  # E: geo-frame: Transform["camera" <- "camera"] applied to Point["world"]
