@@ -41,7 +41,7 @@ def quaternion_order(model: SemanticModel, call: cst.Call) -> str | None:
                 return None  # decided at run time
         return SCALAR_LAST
     qualified = model.qualified_name(func) or ""
-    name = last_name(func) or ""
+    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
     if qualified.startswith("transforms3d.") and name.startswith("quat2"):
         return SCALAR_FIRST
     if qualified.startswith("pytransform3d.") and (name.endswith("_from_quaternion") or name == "check_quaternion"):

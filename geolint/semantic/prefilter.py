@@ -258,6 +258,10 @@ def summarize(source: str) -> FileSummary:
                 returned.append(node.value)  # type: ignore[attr-defined]
         elif kind is ast.Subscript:
             _subscript(summary, node)  # type: ignore[arg-type]
+        elif kind is ast.ImportFrom or kind is ast.Import:
+            # `from pyquaternion import Quaternion as PQ` calls `PQ(...)`: count the real name as called.
+            for alias in node.names:  # type: ignore[attr-defined]
+                summary.called.add(alias.name.rsplit(".", 1)[-1])
         for field_name in _child_fields(kind):
             value = getattr(node, field_name, None)
             if type(value) is list:
@@ -457,7 +461,11 @@ def may_mislabel_frames(summary: FileSummary, config: Config) -> bool:
 
 
 def may_transpose_transform(summary: FileSummary, config: Config) -> bool:
-    return summary.has_transposed_transform(config)
+    # `pose = T_world_cam; pose.T`: the transposed name need not state frames itself.
+    return bool(summary.transposed) and any(
+        (frames := frames_of_name(name, config)) is not None and frames.operator == "transform"
+        for name in summary.names
+    )
 
 
 def may_pass_quaternion(summary: FileSummary, config: Config) -> bool:

@@ -58,6 +58,7 @@ class TransposeAsInverse(SemanticRule):
         Invalid("p_cam = (T_world_cam.T @ p_world_h)[:3]\n"),
         Invalid("X_BW = X_WB.T\n"),
         Invalid("T = world_T_base.T @ world_T_cam\n"),
+        Invalid("def f(T_world_cam, p_world_h):\n    pose = T_world_cam\n    return pose.T @ p_world_h\n"),
     ]
 
     def visit_Attribute(self, node: cst.Attribute) -> None:

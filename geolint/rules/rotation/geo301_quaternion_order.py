@@ -56,6 +56,7 @@ class QuaternionOrder(SemanticRule):
         Valid("from transforms3d.quaternions import quat2mat\nm = quat2mat([q.w, q.x, q.y, q.z])\n"),
         Valid("from pyquaternion import Quaternion\nq2 = Quaternion(q.w, q.x, q.y, q.z)\n"),
         Valid("from geometry_msgs.msg import Quaternion\nq2 = Quaternion(q.x, q.y, q.z, q.w)\n"),
+        Valid("from pyquaternion import Quaternion as PQ\nq2 = PQ(q.w, q.x, q.y, q.z)\n"),
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([a, b, c, d])\n"),
     ]
     INVALID = [

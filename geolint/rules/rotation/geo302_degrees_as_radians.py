@@ -70,6 +70,7 @@ class DegreesAsRadians(SemanticRule):
             expected_fix='from scipy.spatial.transform import Rotation as R\nr = R.from_euler("z", -45.0, degrees=True)\n',
         ),
         Invalid("from transforms3d.euler import euler2mat\nm = euler2mat(0, 0, 180)\n"),
+        Invalid("from transforms3d.euler import euler2mat as e2m\nm = e2m(0, 0, 90)\n"),
         Invalid("from spatialmath import SE3\nT = SE3.Rz(90)\n"),
         Invalid("import numpy as np\ny = np.sin(90)\n"),
         Invalid("import pytransform3d.rotations as pr\nm = pr.active_matrix_from_angle(2, 90)\n"),
@@ -109,6 +110,7 @@ class DegreesAsRadians(SemanticRule):
                 angles = positional[0] if positional else getattr(_keyword(node, "rotvec"), "value", None)
             return _literals(angles) if angles is not None else None
         qualified = self.model.qualified_name(func) or ""
+        name = qualified.rsplit(".", 1)[-1] if qualified else name  # through `import ... as`
         if qualified.startswith("transforms3d."):
             if name.startswith("euler2"):
                 return _literals_of(positional[:3])
