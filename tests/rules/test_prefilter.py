@@ -1,0 +1,66 @@
+"""The prefilter is sound: wherever a rule finds something, its trigger lets the file through.
+
+Checked on every fixture (annotated, clean, demo) and on ad-hoc flows the triggers must
+follow (aliases, helpers, `import ... as`), by linting once with triggers and once without.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from geolint.engine import lint_source
+from geolint.lint_types import Config
+from geolint.rules import all_rules
+from geolint.semantic.prefilter import summarize
+
+ROOT = Path(__file__).resolve().parents[2]
+SEMANTIC_RULES = [rule for rule in all_rules() if rule.code[3] in "123"]
+SOURCES = sorted((ROOT / "fixtures").glob("GEO*.py")) + sorted((ROOT / "fixtures" / "demo").glob("*.py"))
+
+FLOWS = [
+    "from pyquaternion import Quaternion as PQ\nq2 = PQ(q.x, q.y, q.z, q.w)\n",
+    "def f(T_world_cam, p):\n    pose = T_world_cam\n    return pose.T @ p\n",
+    "import numpy as np\ndef helper(mesh):\n    return mesh.face_normals\nh = np.append(helper(m), 1)\nout = T @ h\n",
+    "import numpy as np\nfor n in np.cross(a, b):\n    h = np.r_[n, 1]\n    y = T @ h\n",
+    "def f(points, normals, T):\n    moved = (T[:3, :3] @ points.T).T + T[:3, 3]\n    return moved, normals\n",
+]
+
+
+def without_triggers(rule, source: str, monkeypatch: pytest.MonkeyPatch) -> list:
+    with monkeypatch.context() as patch:
+        patch.setattr(rule, "triggers", None)
+        return [f for f in lint_source(source, "x.py", rules=[rule]) if f.code == rule.code]
+
+
+@pytest.mark.parametrize("source", [path.read_text() for path in SOURCES] + FLOWS, ids=[p.name for p in SOURCES] + [f"flow{i}" for i in range(len(FLOWS))])
+def test_trigger_never_hides_a_finding(source: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    for rule in SEMANTIC_RULES:
+        unfiltered = without_triggers(rule, source, monkeypatch)
+        filtered = [f for f in lint_source(source, "x.py", rules=[rule]) if f.code == rule.code]
+        assert filtered == unfiltered, f"{rule.code}'s trigger hides findings"
+        if unfiltered:
+            assert rule.triggers.search_with(source, Config())
+
+
+def test_flows_are_real_findings(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The ad-hoc flows above must each be flagged by some rule (else they test nothing)."""
+    for source in FLOWS:
+        assert any(without_triggers(rule, source, monkeypatch) for rule in SEMANTIC_RULES), source
+
+
+def test_numpy_like_code_is_skipped() -> None:
+    source = (
+        '"""Normalize along an axis; the normal distribution; point-wise ops."""\n'
+        "import numpy as np\n"
+        "def f(a, axis=0):\n"
+        "    out = np.concatenate([a, np.ones(3)])\n"
+        "    return np.sum(out, axis=axis) + np.random.normal(size=3)\n"
+    )
+    assert not any(rule.triggers.search_with(source, Config()) for rule in SEMANTIC_RULES)
+
+
+def test_unparsable_text_always_passes() -> None:
+    assert summarize("def broken(:\n").parse_failed
+    assert all(rule.triggers.search_with("def broken(:\n", Config()) for rule in SEMANTIC_RULES)
