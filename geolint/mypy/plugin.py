@@ -20,7 +20,16 @@ from mypy.plugin import (
 )
 from mypy.types import FunctionLike, Type
 
-from geolint.mypy import config, fullnames as names, markers, numpy_calls, operators, string_frames, third_party
+from geolint.mypy import (
+    config,
+    fullnames as names,
+    markers,
+    numpy_calls,
+    operators,
+    string_frame_prepass,
+    string_frames,
+    third_party,
+)
 from geolint.mypy.geometry import FRAMED_CLASSES
 
 ARITY = {names.TRANSFORM: 2, names.ROTATION_MATRIX: 2, names.TRANSFORM_MATRIX: 2, names.TRANSLATION: 2}
@@ -110,7 +119,7 @@ class GeolintPlugin(Plugin):
         # The same moment (parsed, not yet analyzed) is the one chance to protect string frames.
         if file.fullname.startswith("geolint") or not _imports_geolint(file):
             return []
-        string_frames.protect_string_frames(file)
+        string_frame_prepass.protect_string_frames(file)
         return [(10, names.TYPING_MODULE, -1)]
 
     def get_type_analyze_hook(self, fullname: str) -> Callable[[AnalyzeTypeContext], Type] | None:

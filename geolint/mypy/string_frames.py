@@ -6,10 +6,9 @@ subscript: an argument that was written as a string and does not name a type in 
 ``Literal["camera"]``; every other argument (a frame class, a TypeVar, a real forward reference such as
 ``Point["World"]`` before ``class World`` is defined) is analyzed normally.
 
-One pre-pass is needed: before the hook runs, mypy's search for type variables in a ``def`` signature looks
-up every name in it, and would still report "camera" as undefined. `protect_string_frames` runs when a module
-that imports geolint is parsed (the plugin's ``get_additional_deps``) and turns each string argument of a
-geolint class in a signature into a string literal node, which that search skips; the hook then reads it.
+Before the hook runs, mypy looks some of those strings up on its own (type variables in a ``def`` signature,
+each argument of a type application such as ``Point["camera"](xyz)``); `string_frame_prepass` rewrites them
+first so that no lookup happens, and leaves the answer to this hook.
 
 Literal types are ordinary, cacheable mypy types, distinct per string and invariant in the generic, so a
 ``Point["camera"]`` is not a ``Point["world"]``, and ``Point[Literal["camera"]]`` (which needs no plugin and
@@ -18,69 +17,12 @@ also works in pyright) is the very same type. The runtime accepts all three spel
 
 from __future__ import annotations
 
-from typing import Iterable
-
-from mypy.nodes import (
-    AssertStmt,
-    AssignmentExpr,
-    AssignmentStmt,
-    AwaitExpr,
-    Block,
-    CallExpr,
-    ClassDef,
-    ComparisonExpr,
-    ConditionalExpr,
-    DictExpr,
-    Expression,
-    ExpressionStmt,
-    ForStmt,
-    GeneratorExpr,
-    IndexExpr,
-    LambdaExpr,
-    ListComprehension,
-    ListExpr,
-    MemberExpr,
-    NameExpr,
-    OperatorAssignmentStmt,
-    OpExpr,
-    ReturnStmt,
-    SetComprehension,
-    SetExpr,
-    StarExpr,
-    StrExpr,
-    TryStmt,
-    TupleExpr,
-    UnaryExpr,
-    WhileStmt,
-    WithStmt,
-    Decorator,
-    FuncDef,
-    IfStmt,
-    OverloadedFuncDef,
-    Statement,
-    Import,
-    ImportFrom,
-    MypyFile,
-    PlaceholderNode,
-    TypeAlias,
-    TypeInfo,
-    TypeVarLikeExpr,
-)
+from mypy.nodes import PlaceholderNode, TypeAlias, TypeInfo, TypeVarLikeExpr
 from mypy.plugin import AnalyzeTypeContext
-from mypy.types import (
-    AnyType,
-    CallableType,
-    LiteralType,
-    RawExpressionType,
-    Type,
-    TypeList,
-    TypeOfAny,
-    UnboundType,
-    UnionType,
-)
+from mypy.types import AnyType, LiteralType, RawExpressionType, Type, TypeOfAny, UnboundType
 
 from geolint.mypy.config import PluginConfig
-from geolint.mypy.geometry import FRAMED_CLASSES
+from geolint.mypy.string_frame_prepass import LITERAL_MARKER
 
 TYPE_NODES = (TypeInfo, TypeAlias, PlaceholderNode, TypeVarLikeExpr)
 
@@ -91,7 +33,7 @@ def analyze_framed_subscript(
     """``Kind[frame, ...]`` with string frames turned into Literal types (the type-analyze hook)."""
     unbound = ctx.type
     marked = _marked_literal(unbound)
-    if marked is not None:  # the stand-in made by `_marked_frame`: just the frame
+    if marked is not None:  # the pre-pass's stand-in for one frame
         return LiteralType(settings.canonical_frame(marked), ctx.api.named_type("builtins.str", []))
     if not unbound.args:
         omitted = AnyType(TypeOfAny.from_omitted_generics)
@@ -148,153 +90,3 @@ def _names_a_type(ctx: AnalyzeTypeContext, name: str) -> bool:
         return False
     # "map", "filter", "range" are common frame names (ROS's map frame) and builtin classes: a frame there.
     return not (symbol.fullname or "").startswith("builtins.")
-
-
-def protect_string_frames(file: MypyFile) -> None:
-    """Pre-pass over a freshly parsed module: string frames in ``def`` signatures become literal nodes."""
-    framed_names = _local_names_of_framed_classes(file)
-    if framed_names:
-        _protect_statements(file.defs, framed_names)
-
-
-FRAMED_CLASS_NAMES = frozenset(fullname.rsplit(".", 1)[1] for fullname in FRAMED_CLASSES)
-
-
-def _local_names_of_framed_classes(file: MypyFile) -> frozenset[str]:
-    """How this module spells geolint's framed classes: ``Point``, ``P`` (an import alias), ``gt.PointArray``."""
-    local: set[str] = set()
-    for node in file.imports:
-        if isinstance(node, ImportFrom) and _is_geolint(node.id):
-            local.update(alias or name for name, alias in node.names if name in FRAMED_CLASS_NAMES)
-        elif isinstance(node, Import):
-            for module, alias in node.ids:
-                if _is_geolint(module):
-                    local.update(f"{alias or module}.{name}" for name in FRAMED_CLASS_NAMES)
-    return frozenset(local)
-
-
-def _is_geolint(module: str) -> bool:
-    return module == "geolint" or module.startswith("geolint.")
-
-
-def _protect_statements(statements: Iterable[Statement | None], framed_names: frozenset[str]) -> None:
-    # A plain walk: mypy's compiled visitor classes cannot be subclassed from interpreted code.
-    for statement in statements:
-        if statement is None:
-            continue
-        if isinstance(statement, Decorator):
-            _protect_expressions(statement.decorators, framed_names)
-            statement = statement.func
-        if isinstance(statement, OverloadedFuncDef):
-            _protect_statements([*statement.items, statement.impl], framed_names)
-        elif isinstance(statement, FuncDef):
-            if isinstance(statement.type, CallableType):
-                for typ in [*statement.type.arg_types, statement.type.ret_type]:
-                    _protect(typ, framed_names)
-            _protect_statements(statement.body.body, framed_names)
-        elif isinstance(statement, ClassDef):
-            _protect_statements(statement.defs.body, framed_names)
-        elif isinstance(statement, Block):
-            _protect_statements(statement.body, framed_names)
-        else:
-            _protect_expressions(_statement_expressions(statement), framed_names)
-            _protect_statements(_statement_blocks(statement), framed_names)
-
-
-def _statement_expressions(statement: Statement) -> list[Expression | None]:
-    if isinstance(statement, (AssignmentStmt, OperatorAssignmentStmt)):
-        return [statement.rvalue]
-    if isinstance(statement, (ExpressionStmt, ReturnStmt, IfStmt, WhileStmt, ForStmt, AssertStmt)):
-        return list(statement.expr) if isinstance(statement.expr, list) else [statement.expr]
-    if isinstance(statement, WithStmt):
-        return list(statement.expr)
-    return []
-
-
-def _statement_blocks(statement: Statement) -> list[Statement | None]:
-    if isinstance(statement, IfStmt):
-        return [*statement.body, statement.else_body]
-    if isinstance(statement, (WhileStmt, ForStmt)):
-        return [statement.body, statement.else_body]
-    if isinstance(statement, WithStmt):
-        return [statement.body]
-    if isinstance(statement, TryStmt):
-        return [statement.body, *statement.handlers, statement.else_body, statement.finally_body]
-    return []
-
-
-def _protect_expressions(expressions: Iterable[Expression | None], framed_names: frozenset[str]) -> None:
-    for expr in expressions:
-        if expr is None:
-            continue
-        if isinstance(expr, IndexExpr):
-            _protect_type_application(expr, framed_names)
-            _protect_expressions([expr.base, expr.index], framed_names)
-        elif isinstance(expr, CallExpr):
-            _protect_expressions([expr.callee, *expr.args], framed_names)
-        elif isinstance(expr, (MemberExpr, UnaryExpr, StarExpr, AwaitExpr)):
-            _protect_expressions([expr.expr], framed_names)
-        elif isinstance(expr, OpExpr):
-            _protect_expressions([expr.left, expr.right], framed_names)
-        elif isinstance(expr, ComparisonExpr):
-            _protect_expressions(expr.operands, framed_names)
-        elif isinstance(expr, (TupleExpr, ListExpr, SetExpr)):
-            _protect_expressions(expr.items, framed_names)
-        elif isinstance(expr, DictExpr):
-            _protect_expressions([item for pair in expr.items for item in pair], framed_names)
-        elif isinstance(expr, ConditionalExpr):
-            _protect_expressions([expr.cond, expr.if_expr, expr.else_expr], framed_names)
-        elif isinstance(expr, AssignmentExpr):
-            _protect_expressions([expr.value], framed_names)
-        elif isinstance(expr, (ListComprehension, SetComprehension)):
-            _protect_expressions([expr.generator], framed_names)
-        elif isinstance(expr, GeneratorExpr):
-            _protect_expressions([expr.left_expr, *expr.sequences], framed_names)
-        elif isinstance(expr, LambdaExpr):
-            _protect_statements(expr.body.body, framed_names)
-
-
-# A type application (``Point["camera"](xyz)``, ``CamPoint = Point["camera"]``) has each argument analyzed on
-# its own, where no hook can see it. The pre-pass rewrites the argument "camera" into the *string*
-# ``"Point['\x01geolint-frame:camera']"``: a string argument is parsed into a type by mypy without any
-# per-argument lookup, the parse gives ``Point[<raw text>]`` (the control character stops the inner parse),
-# and the framed class's hook answers a bare ``Literal["camera"]`` for that stand-in.
-LITERAL_MARKER = "\x01geolint-frame:"
-
-
-def _protect_type_application(expr: IndexExpr, framed_names: frozenset[str]) -> None:
-    base_name = _expression_name(expr.base)
-    if base_name not in framed_names:
-        return
-    items = expr.index.items if isinstance(expr.index, TupleExpr) else [expr.index]
-    for item in items:
-        if isinstance(item, StrExpr) and LITERAL_MARKER not in item.value:
-            item.value = f"{base_name}[{LITERAL_MARKER + item.value!r}]"
-
-
-def _protect(typ: Type, framed_names: frozenset[str]) -> None:
-    if isinstance(typ, (UnionType, TypeList)):  # X | None, Callable[[X], Y]
-        for item in typ.items:
-            _protect(item, framed_names)
-        return
-    if not isinstance(typ, UnboundType):
-        return
-    if typ.name in framed_names:
-        typ.args = tuple(_as_literal_node(arg) for arg in typ.args)
-    for arg in typ.args:
-        _protect(arg, framed_names)
-
-
-def _expression_name(expr: Expression) -> str | None:
-    if isinstance(expr, NameExpr):
-        return expr.name
-    if isinstance(expr, MemberExpr):
-        owner = _expression_name(expr.expr)
-        return f"{owner}.{expr.name}" if owner else None
-    return None
-
-
-def _as_literal_node(arg: Type) -> Type:
-    if isinstance(arg, UnboundType) and arg.original_str_expr is not None and not arg.args:
-        return RawExpressionType(arg.original_str_expr, "builtins.str", line=arg.line, column=arg.column)
-    return arg
