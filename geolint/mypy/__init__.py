@@ -3,8 +3,12 @@
 
 It adds what plain generics cannot: string frames (``Point["camera"]``), precise frame messages under the
 error codes ``geo-frame``, ``geo-kind`` and ``geo-translation``, and frame inference for plain ndarrays
-annotated with `geolint.typing`. Layout: `plugin` (dispatch tables), `fullnames`, `errorcodes`, `geometry`
-(types as kinds + frames), `algebra` (the rules), and one module per feature.
+annotated with `geolint.typing`.
+
+Layout: `plugin` (the dispatch tables, nothing else), `fullnames` and `errorcodes` (defined once), `config`
+(settings and the cache key), `geometry` (a mypy type read as kind + frames), `algebra` (the rules),
+`messages`; one module per feature: `string_frames` with its `string_frame_prepass`, `operators`,
+`numpy_calls`, `markers`, `third_party`. docs/typing.md is the user guide.
 """
 
 from geolint.mypy.plugin import GeolintPlugin, plugin
