@@ -68,6 +68,7 @@ def median_of(repeats: int, measure) -> float:
 
 
 def main() -> int:
+    sys.stdout.reconfigure(line_buffering=True)  # progress shows up when piped to a file
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("tree", nargs="?", type=Path, default=None, help="source tree (default: installed numpy)")
     parser.add_argument("--repeats", type=int, default=3)
