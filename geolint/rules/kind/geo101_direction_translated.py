@@ -5,7 +5,7 @@ from __future__ import annotations
 import libcst as cst
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.names import Kind
+from geolint.semantic.names import Kind, kind_of_name
 from geolint.semantic.model import last_name
 from geolint.semantic.prefilter import Trigger, may_translate_direction
 from geolint.semantic.rule_support import SemanticRule, keyword_arg
@@ -54,6 +54,7 @@ class DirectionTranslated(SemanticRule):
         Valid("normal_world = R_world_cam @ normal_cam\n"),
         Valid("p_world = R @ p_cam + t\n"),
         Valid("v = R @ velocity + omega_cross_r\n"),
+        Valid("tip_point = R @ approach + t\n"),  # a point built from a direction on purpose
         Valid("import trimesh\nn2 = trimesh.transform_points(normals, T, translate=False)\n"),
         Valid('direction = "left"\nx = np.append(direction, 1)\n'),
         Valid("import numpy as np\nn = 3\nout = np.append(n, 1)\n"),
@@ -120,7 +121,7 @@ class DirectionTranslated(SemanticRule):
         if isinstance(node.operator, cst.Add):
             for rotated, other in ((node.left, node.right), (node.right, node.left)):
                 direction = self._rotated_direction(rotated)
-                if direction is not None and self.model.is_translation_like(other):
+                if direction is not None and self.model.is_translation_like(other) and not self._stored_as_point(node):
                     self.report(
                         node,
                         f"direction `{self.code_of(direction)}` is rotated and then translated by "
@@ -145,6 +146,16 @@ class DirectionTranslated(SemanticRule):
                     f"`{self.code_of(node.left)}` translates, but `{self.code_of(node.right)}` is a direction; "
                     "rotate it with `matrix_world.to_3x3()`",
                 )
+
+    def _stored_as_point(self, node: cst.CSTNode) -> bool:
+        """`tip_point = R @ offset_dir + t` builds a point from a direction on purpose."""
+        parent = self.model.parent(node)
+        if isinstance(parent, cst.Assign):
+            return any(
+                isinstance(target.target, cst.Name) and kind_of_name(target.target.value, self.context.config) == Kind.POINT
+                for target in parent.targets
+            )
+        return False
 
     def _rotated_direction(self, node: cst.BaseExpression) -> cst.BaseExpression | None:
         """For `R @ n`, `n @ R.T`, `(R @ n.T).T` with n a direction, the direction n."""
