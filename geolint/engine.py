@@ -19,7 +19,8 @@ import re
 import threading
 import tokenize
 from dataclasses import replace
-from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Iterable, Sequence
 
 from geolint import suppression
 from geolint.config import enabled_codes
@@ -153,6 +154,13 @@ def finding_order(finding: Finding) -> tuple[int, int, str, int, int, str]:
 
 
 def _run_rules(module: cst.Module, path: str, config: Config, rule_classes: Sequence[type[Rule]]) -> list[Finding]:
+    """One batched traversal of `module` by every rule; reports become findings.
+
+    Positions are computed only when a rule reported something: libcst's PositionProvider
+    re-renders the whole module and costs more than parsing it, and most parsed files have no
+    finding. Every other metadata the rules declare is resolved up front, as libcst does.
+    """
+    import libcst as cst
     from libcst.metadata import MetadataWrapper, PositionProvider
 
     from geolint.rules import RuleContext
@@ -160,13 +168,42 @@ def _run_rules(module: cst.Module, path: str, config: Config, rule_classes: Sequ
     wrapper = MetadataWrapper(module, unsafe_skip_copy=True)
     context = RuleContext(path=path, config=config)
     instances = [rule_cls(context) for rule_cls in rule_classes]
-    wrapper.visit_batched(instances)
+    wanted = set().union(*(type(rule).get_inherited_dependencies() for rule in instances))
+    resolved = dict(wrapper.resolve_many(wanted - {PositionProvider}))
+    resolved[PositionProvider] = _LazyMetadata(lambda: wrapper.resolve(PositionProvider))
+    for rule in instances:
+        rule.metadata = {key: resolved[key] for key in type(rule).get_inherited_dependencies()}
+    cst.visit_batched(wrapper.module, instances)
+    if not any(rule.reports for rule in instances):
+        return []
     positions = wrapper.resolve(PositionProvider)
     return [
         _finding(rule, report, positions, wrapper.module, path, config)
         for rule in instances
         for report in rule.reports
     ]
+
+
+class _LazyMetadata(Mapping):  # type: ignore[type-arg]
+    """A metadata mapping computed on first use (for a rule that asks for positions itself)."""
+
+    def __init__(self, compute) -> None:  # type: ignore[no-untyped-def]
+        self._compute = compute
+        self._value: Mapping | None = None  # type: ignore[type-arg]
+
+    def _mapping(self) -> Mapping:  # type: ignore[type-arg]
+        if self._value is None:
+            self._value = self._compute()
+        return self._value
+
+    def __getitem__(self, key: object) -> object:
+        return self._mapping()[key]
+
+    def __iter__(self):  # type: ignore[no-untyped-def]
+        return iter(self._mapping())
+
+    def __len__(self) -> int:
+        return len(self._mapping())
 
 
 def _finding(
