@@ -26,7 +26,7 @@ from geolint.semantic.facts import (
     OpaqueBinding,
     ParamBinding,
 )
-from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_name, same_frame
+from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_name, same_frame, states_geometry
 
 _T = TypeVar("_T")
 
@@ -443,6 +443,36 @@ class SemanticModel:
             return False
         first = node.value.strip("_").split("_")[0].lower()
         return first in ("t", "trans", "translation", "tvec", "tran")
+
+    def has_geometric_evidence(self, node: cst.CSTNode) -> bool:
+        """Whether a point-like expression is visibly geometric (not a file offset, a cursor
+        position or a tuple): a strong or frame-stating name, a mesh attribute, or numpy flow."""
+        return bool(self._cached("evidence", node, lambda: self._evidence(node)))
+
+    def _evidence(self, node: cst.CSTNode) -> bool:
+        if isinstance(node, cst.Name):
+            if states_geometry(node.value, self.config):
+                return True
+            return any(
+                isinstance(binding, cst.BaseExpression) and self.has_geometric_evidence(binding)
+                for binding in self.bindings(node) or []
+            )
+        if isinstance(node, cst.Attribute):
+            if node.attr.value == "T":
+                return self.has_geometric_evidence(node.value)
+            return node.attr.value in ("vertices", "centroid", "vertex_normals", "face_normals") or states_geometry(
+                node.attr.value, self.config
+            )
+        if isinstance(node, cst.Subscript):
+            return self.has_geometric_evidence(node.value)
+        if isinstance(node, cst.Call):
+            qualified = self.qualified_name(node.func) or ""
+            return qualified.startswith(("numpy.", "np.")) or self.matmul(node) is not None
+        if isinstance(node, cst.BinaryOperation):
+            if isinstance(node.operator, cst.MatrixMultiply):
+                return True
+            return self.has_geometric_evidence(node.left) or self.has_geometric_evidence(node.right)
+        return False
 
     # -- library transforms -----------------------------------------------------------------
     def translating_library_object(self, node: cst.CSTNode) -> str | None:

@@ -292,7 +292,9 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
             yield NameFrames(dst=match.group(2).lower(), src=match.group(1).lower(), operator="unknown")
     if len(raw) == 2 and naming.suffix:
         head, frame = raw[0].lower(), raw[1]
-        if head in _VALUE_HEADS and frame.lower() not in _VALUE_HEADS and _is_known_frame(frame, known):
+        # One capital letter is a frame in Drake's two-letter `p_BQ`, not in `v_T` (tendon speed).
+        word_frame = not re.fullmatch(_MONOGRAM_FRAME, frame)
+        if head in _VALUE_HEADS and frame.lower() not in _VALUE_HEADS and word_frame and _is_known_frame(frame, known):
             yield NameFrames(frame=frame.lower())
 
 
@@ -319,6 +321,23 @@ def _is_conversion_frame(word: str) -> bool:
     if lowered in NOT_A_FRAME_IN_CONVERSION or lowered in NOT_A_FRAME or lowered in NON_GEOMETRIC_TOKENS:
         return False
     return bool(re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", word))
+
+
+# Point words that mean geometry almost always; `pos`, `position`, `point`, `origin` are also
+# file offsets, cursor positions and sympy tuples, so they need more evidence (see GEO103).
+STRONG_POINT_WORDS = frozenset({"vertex", "vertices", "verts", "centroid", "centroids", "landmark", "landmarks"})
+
+
+def states_geometry(name: str, config: Config = Config()) -> bool:
+    """Whether a point-like name is geometric beyond doubt: a strong point word, or a frame
+    (`p_world`, `points_cam`, `gripper_position_base`)."""
+    parts = tokens(name)
+    if STRONG_POINT_WORDS & set(parts):
+        return True
+    frames = frames_of_name(name, config)
+    if frames is not None and frames.frame is not None:
+        return True
+    return len(parts) >= 2 and parts[-1] in KNOWN_FRAMES and kind_of_name(name, config) is not None
 
 
 def same_frame(first: str | None, second: str | None) -> bool | None:

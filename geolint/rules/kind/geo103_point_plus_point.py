@@ -71,12 +71,14 @@ class PointPlusPoint(SemanticRule):
         Valid("mirrored = current_pos + current_pos - last_control\n"),  # 2a - b: an affine reflection
         Valid("rotated = points[start:] + points[:start]\n"),  # sequence concatenation
         Valid("curve = current_pt + points\n"),  # a collection and a position: concatenation or offset
+        Valid("self._pos = max(0, self._pos + pos)\n"),  # a file offset
+        Valid("point = expr.point + point\n"),  # sympy: tuples of coordinates, concatenated
     ]
     INVALID = [
-        Invalid("grasp_position = object_position + gripper_position\n"),
+        Invalid("grasp_position = object_centroid + gripper_position\n"),
         Invalid("def f(p_world, tip_position):\n    return p_world + tip_position\n"),
         Invalid("both = mesh_a.centroid + mesh_b.centroid\n"),
-        Invalid("x = tip_position + base_position + offset\n"),
+        Invalid("x = tip_position_world + base_position_world + offset\n"),
     ]
 
     def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
@@ -86,6 +88,8 @@ class PointPlusPoint(SemanticRule):
             return
         if _is_sequence_slice(node.left) or _is_sequence_slice(node.right):
             return
+        if not (self.model.has_geometric_evidence(node.left) or self.model.has_geometric_evidence(node.right)):
+            return  # `self._pos + pos`: file offsets, cursor positions and tuples are "positions" too
         if _is_collection(node.left) != _is_collection(node.right):
             return
         if self._is_affine(node):
