@@ -75,7 +75,8 @@ class FileSummary:
     def geometric_names(self, config: Config) -> set[str]:
         """Names that can hold a point or a direction (by name, attribute, maker call, or flow)."""
         seeds = {name for name in self.names if kind_of_name(name, config) in (Kind.POINT, Kind.DIRECTION)}
-        seeds |= _POINT_ATTRIBUTES | {"normals", "vertex_normals", "face_normals", "normal"} | _DIRECTION_MAKERS
+        seeds |= _POINT_ATTRIBUTES | {"normals", "vertex_normals", "face_normals", "normal"}
+        seeds |= {_CALLED + maker for maker in _DIRECTION_MAKERS}
         return self._closure(seeds)
 
     def may_be_geometric_homogeneous(self, config: Config) -> bool:
@@ -92,8 +93,8 @@ class FileSummary:
                 if target not in found and _may_carry(value, found):
                     found.add(target)
             for function, values in self.returns.items():
-                if function not in found and any(_may_carry(value, found) for value in values):
-                    found.add(function)
+                if _CALLED + function not in found and any(_may_carry(value, found) for value in values):
+                    found.add(_CALLED + function)
             if len(found) == before:
                 break
         return found
@@ -125,6 +126,11 @@ _PASSTHROUGH = frozenset(
 )  # fmt: skip
 
 
+# Marks a callable in a name set: `()cross` means "calling cross gives a geometric value",
+# so `np.random.normal(...)` is not mistaken for the attribute `mesh.normal`.
+_CALLED = "()"
+
+
 def _may_carry(node: ast.AST | None, names: set[str]) -> bool:
     """Whether the semantic model could give this expression the kind of one of `names`: it
     propagates kinds only through names, attributes, subscripts, arithmetic and pass-through calls."""
@@ -140,7 +146,7 @@ def _may_carry(node: ast.AST | None, names: set[str]) -> bool:
         return _may_carry(node.left, names) or _may_carry(node.right, names)
     if isinstance(node, ast.Call):
         name = _last(node.func)
-        if name in names:
+        if name is not None and _CALLED + name in names:  # a maker (np.cross) or a helper of this module
             return True
         if name in _PASSTHROUGH:
             receiver = node.func.value if isinstance(node.func, ast.Attribute) else None
