@@ -419,7 +419,10 @@ class Trigger:
 
 # --- the predicates the rules use -----------------------------------------------------------
 
-_DIRECTION_MAKERS = frozenset({"cross", "norm", "unitize", "normalize", "normalized", "unit_vector", "norm_vector"})
+# Calls the model gives a direction kind (keep in step with model.UNIT_FUNCTIONS and is_norm_call).
+_DIRECTION_MAKERS = frozenset(
+    {"cross", "norm", "vector_norm", "unitize", "normalize", "normalized", "unit_vector", "norm_vector", "normalize_vector"}
+)
 _QUATERNION_CALLS = frozenset({"from_quat", "Quaternion", "UnitQuaternion", "check_quaternion"})
 _EULER_CALLS = frozenset(
     {"from_euler", "from_rotvec", "Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz",

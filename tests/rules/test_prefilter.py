@@ -64,3 +64,10 @@ def test_numpy_like_code_is_skipped() -> None:
 def test_unparsable_text_always_passes() -> None:
     assert summarize("def broken(:\n").parse_failed
     assert all(rule.triggers.search_with("def broken(:\n", Config()) for rule in SEMANTIC_RULES)
+
+
+def test_prefilter_knows_every_call_the_model_reads_as_a_direction() -> None:
+    from geolint.semantic.model import UNIT_FUNCTIONS
+    from geolint.semantic.prefilter import _DIRECTION_MAKERS
+
+    assert UNIT_FUNCTIONS | {"cross", "norm", "vector_norm"} <= _DIRECTION_MAKERS
