@@ -1,11 +1,10 @@
-"""Frame reasoning shared by the GEO2xx rules: operand pairs of products and how to describe frames."""
+"""Frame reasoning shared by the GEO2xx rules: which operand pairs of a product carry frames."""
 
 from __future__ import annotations
 
 import libcst as cst
 
 from geolint.semantic.model import MatMul, SemanticModel
-from geolint.semantic.names import NameFrames
 
 
 def product_operands(model: SemanticModel, node: cst.CSTNode) -> MatMul | None:
@@ -20,8 +19,3 @@ def product_operands(model: SemanticModel, node: cst.CSTNode) -> MatMul | None:
             return MatMul(node, node.left, node.right)
     return None
 
-
-def describe(frames: NameFrames) -> str:
-    if frames.is_operator:
-        return f"maps {frames.src} into {frames.dst}"
-    return f"is in {frames.frame}"

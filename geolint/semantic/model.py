@@ -23,7 +23,6 @@ from geolint.semantic.facts import (
     Binding,
     LoopBinding,
     ModuleFacts,
-    OpaqueBinding,
     ParamBinding,
 )
 from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_name, same_frame, states_geometry
