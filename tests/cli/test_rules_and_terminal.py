@@ -79,3 +79,17 @@ def test_colour_only_on_a_terminal_and_never_with_no_color(cli):
     assert "GEO190" in no_color and "\x1b[" not in no_color
     piped = cli("check", "--no-cache")
     assert "GEO190" in piped.stdout and "\x1b[" not in piped.stdout + piped.stderr
+
+
+def test_progress_bar_only_on_an_interactive_terminal_outside_ci(cli):
+    for index in range(3):
+        cli.write(f"m{index}.py", "x = bad_thing\n")
+    launcher = [sys.executable, "-c", "import sys, sample_rules; from geolint.cli import main; sys.exit(main(sys.argv[1:]))"]
+    env = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "CI")}
+    env.update(PYTHONPATH=str(Path(__file__).parent), GEOLINT_CACHE_DIR=str(cli.cache_dir), TERM="xterm")
+    interactive = _run_on_a_tty([*launcher, "check", "--no-cache"], cli.project, env)
+    assert "3 files" in interactive and "\r[" in interactive
+    in_ci = _run_on_a_tty([*launcher, "check", "--no-cache"], cli.project, {**env, "CI": "true"})
+    assert "GEO190" in in_ci and "\r[" not in in_ci
+    quiet = _run_on_a_tty([*launcher, "check", "--no-cache", "--quiet"], cli.project, env)
+    assert "GEO190" in quiet and "\r[" not in quiet
