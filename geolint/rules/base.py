@@ -7,14 +7,19 @@ the engine turns reports into `Finding`s (positions, severity, fix edits).
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
-from typing import ClassVar, Sequence
+from typing import ClassVar, Protocol, Sequence
 
 import libcst as cst
 from libcst.metadata import PositionProvider
 
 from geolint.lint_types import Applicability, Config, Severity
+
+
+class RuleTrigger(Protocol):
+    """What the engine's prefilter calls: truthy when the rule might fire on `source`."""
+
+    def search(self, source: str, /) -> object: ...
 
 
 @dataclass(frozen=True)
@@ -62,9 +67,10 @@ class Rule(cst.BatchableCSTVisitor):
     code: ClassVar[str]  # e.g. "GEO101", a stable public contract
     name: ClassVar[str]  # e.g. "direction-translated", reads as the bug
     default_severity: ClassVar[Severity] = Severity.ERROR
-    # A file with no match for this pattern cannot give this rule a finding, so the
-    # engine may skip parsing it. None means "always run".
-    triggers: ClassVar[re.Pattern[str] | None] = None
+    # A file this prefilter does not match cannot give the rule a finding, so the engine may
+    # skip parsing it. None means "always run". A compiled regex works; the real rules use
+    # `geolint.semantic.prefilter.Trigger`, which also reads the config (`search_with`).
+    triggers: ClassVar[RuleTrigger | None] = None
     VALID: ClassVar[Sequence[Valid]] = ()
     INVALID: ClassVar[Sequence[Invalid]] = ()
 
