@@ -344,13 +344,18 @@ def same_frame(first: str | None, second: str | None) -> bool | None:
     """Whether two frame names are the same frame; None when they cannot be compared.
 
     A one-letter monogram frame (`W`) and a word (`world`) are never compared: they
-    come from different conventions and `W` may well mean `world`.
+    come from different conventions and `W` may well mean `world`. Nor is a word and its
+    abbreviation (`cam` and `camera`, `base` and `base_link`): they usually name one frame,
+    and `frame-aliases` can say so when a check is wanted.
     """
     if first is None or second is None:
         return None
     if _is_letter_frame(first) != _is_letter_frame(second):
         return None
-    return first.lower() == second.lower()
+    first, second = first.lower(), second.lower()
+    if first != second and (first.startswith(second) or second.startswith(first)):
+        return None
+    return first == second
 
 
 def _is_letter_frame(frame: str) -> bool:

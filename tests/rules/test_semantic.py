@@ -95,6 +95,12 @@ def test_same_frame_never_compares_a_letter_with_a_word() -> None:
     assert same_frame(None, "cam") is None
 
 
+def test_same_frame_does_not_compare_a_word_with_its_abbreviation() -> None:
+    assert same_frame("cam", "camera") is None
+    assert same_frame("base_link", "base") is None
+    assert same_frame("camera", "base") is False
+
+
 def model_of(source: str) -> tuple[SemanticModel, cst.Module]:
     wrapper = MetadataWrapper(cst.parse_module(source), unsafe_skip_copy=True)
     facts = wrapper.resolve(SemanticFactsProvider)[wrapper.module]

@@ -53,8 +53,8 @@ class FrameMismatchApply(SemanticRule):
         Valid("p_world = cam2world @ point_in_cam\n"),
         Valid("p_world = T_world_cam @ p\n"),
         Valid("p_cam = np.linalg.inv(T_world_cam) @ p_world\n"),
-        Valid("p_world = T_world_camera @ p_cam\n"),  # cam vs camera: different words, no alias
-    ][:-1]
+        Valid("p_world = T_world_camera @ p_cam\n"),  # an abbreviation may name the same frame
+    ]
     INVALID = [
         Invalid("p_world = T_world_cam @ p_base\n"),
         Invalid("p_W = X_WB @ p_CQ\n"),
