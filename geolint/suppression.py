@@ -227,7 +227,9 @@ def _directive(comment: str, line: int, column: int, after_code: bool) -> Direct
 
 
 def _assign_own_line_spans(source: str, directives: Sequence[Directive]) -> None:
-    lines = source.splitlines()
+    from geolint.engine import split_lines
+
+    lines = split_lines(source)
     spans = _statement_spans(source)
     for directive in directives:
         if not directive.own_line:
