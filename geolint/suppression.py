@@ -389,8 +389,10 @@ def _comment_sites(source: str) -> tuple[set[int], dict[int, Directive]]:
 
 def _statement_start(source: str, line: int) -> int:
     """The first line of the innermost statement that covers `line` (the line itself if none)."""
+    from geolint.engine import cached_ast
+
     try:
-        tree = ast.parse(source)
+        tree = cached_ast(source)  # called once per finding: parse the text once
     except (SyntaxError, ValueError):
         return line
     best = line
