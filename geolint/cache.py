@@ -78,8 +78,6 @@ class FindingsCache:
         self.file = directory / f"findings-{settings_key(config)}.json"
         self._entries: dict[str, list[Any]] = self._load()
         self._dirty = False
-        self.hits = 0
-        self.misses = 0
 
     def _load(self) -> dict[str, list[Any]]:
         try:
@@ -92,9 +90,7 @@ class FindingsCache:
     def get(self, path: Path, digest: str, display: str) -> list[Finding] | None:
         entry = self._entries.get(str(path))
         if entry is None or entry[0] != digest:
-            self.misses += 1
             return None
-        self.hits += 1
         return [finding_from_dict(item, display) for item in entry[1]]
 
     def put(self, path: Path, digest: str, findings: list[Finding]) -> None:
