@@ -82,18 +82,8 @@ def _relative(path: str, base: Path) -> str:
     return os.path.relpath(os.path.abspath(path), base).replace(os.sep, "/")
 
 
-_lines_cache: dict[str, list[str]] = {}
-
-
 def _line_text(path: str, line: int) -> str:
-    lines = _lines_cache.get(path)
-    if lines is None:
-        from geolint.engine import decode_source, split_lines
+    from geolint.engine import read_source_lines
 
-        try:
-            with open(path, "rb") as stream:
-                lines = split_lines(decode_source(stream.read())[0])
-        except (OSError, SyntaxError, UnicodeDecodeError, LookupError):
-            lines = []
-        _lines_cache[path] = lines
+    lines = read_source_lines(path)
     return lines[line - 1] if 1 <= line <= len(lines) else ""

@@ -19,6 +19,7 @@ import re
 import threading
 import tokenize
 from dataclasses import replace
+from functools import lru_cache
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Iterable, Sequence
 
@@ -319,6 +320,21 @@ def split_lines(source: str) -> list[str]:
     """The lines of `source` with their endings, split only at \\n, \\r\\n and \\r (as libcst and
     tokenize count lines; `str.splitlines` also splits at form feeds and would shift positions)."""
     return [line for line in LINE_BREAK.split(source) if line]
+
+
+@lru_cache(maxsize=256)
+def read_source_lines(path: str) -> tuple[str, ...]:
+    """The lines of the Python file at `path` (as `split_lines` gives them); () when it cannot be read.
+
+    Remembered for the last files asked for: the text output and the baseline both look up
+    the line each finding starts on, many findings to a file.
+    """
+    try:
+        with open(path, "rb") as stream:
+            text, _ = decode_source(stream.read())
+    except (OSError, SyntaxError, UnicodeDecodeError, LookupError):
+        return ()
+    return tuple(split_lines(text))
 
 
 def apply_edits(source: str, edits: Iterable[Edit]) -> str:

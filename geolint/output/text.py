@@ -7,7 +7,6 @@ paths; a file that cannot be read simply gets no excerpt.
 
 from __future__ import annotations
 
-from functools import lru_cache
 from typing import Sequence
 
 from geolint.lint_types import Finding, Severity
@@ -43,19 +42,9 @@ def _finding_block(finding: Finding, color: bool) -> str:
 
 
 def _source_line(path: str, line: int) -> str | None:
-    lines = _read_lines(path)
-    if lines is None or not 1 <= line <= len(lines):
+    from geolint.engine import read_source_lines
+
+    lines = read_source_lines(path)
+    if not 1 <= line <= len(lines):
         return None
     return lines[line - 1].rstrip("\r\n")
-
-
-@lru_cache(maxsize=256)
-def _read_lines(path: str) -> tuple[str, ...] | None:
-    from geolint.engine import decode_source, split_lines
-
-    try:
-        with open(path, "rb") as stream:
-            text, _ = decode_source(stream.read())
-    except (OSError, SyntaxError, UnicodeDecodeError, LookupError):
-        return None
-    return tuple(split_lines(text))
