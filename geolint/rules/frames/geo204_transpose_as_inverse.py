@@ -2,11 +2,19 @@
 
 from __future__ import annotations
 
+import re
+
 import libcst as cst
 
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.prefilter import Trigger, may_transpose_transform
 from geolint.semantic.rule_support import SemanticRule
+
+
+# Methods and functions that turn a matrix into a flat buffer: the transpose only picks the
+# column-major memory layout, it is never applied as an operator.
+_FLATTENING = frozenset({"flatten", "ravel", "tolist", "tobytes", "tofile", "flat"})
+_OPENGL_CALL = re.compile(r"gl[A-Z]\w*$")
 
 
 class TransposeAsInverse(SemanticRule):
@@ -16,7 +24,10 @@ class TransposeAsInverse(SemanticRule):
     Flags `T.T` where T is named as a full rigid transform (`T_world_cam`, `world_T_cam`,
     Drake `X_WB`, `H_a_b`) and the transpose is used as an operator or stored: `T_world_cam.T @
     p_world`, `T_cam_world = T_world_cam.T`. The row-vector form `points_h @ T_world_cam.T`
-    is correct and never flagged, nor is `T.T[:3, :3]` (a rotation's transpose is its inverse).
+    is correct and never flagged, nor is `T.T[:3, :3]` (a rotation's transpose is its inverse),
+    nor a transpose that only changes memory layout: flattened for column-major consumers
+    (`T.T.flatten()`, `.ravel()`, `.tolist()`, `.tobytes()`, `np.ravel(T.T)`) or passed to an
+    OpenGL call (`glUniformMatrix4fv(loc, 1, GL_FALSE, T.T)`, `glLoadMatrixf(T.T)`).
 
     ## Why is this bad?
     Only a rotation's transpose is its inverse. Transposing a homogeneous transform moves the
@@ -49,6 +60,9 @@ class TransposeAsInverse(SemanticRule):
         Valid("import numpy as np\nT_cam_world = np.linalg.inv(T_world_cam)\n"),
         Valid("p = cam2world.T @ p_world\n"),  # 3x3 or 4x4? the name does not say
         Valid("import numpy as np\nout = np.dot(points_h, T_world_cam.T)\n"),
+        Valid("gl_model = T_world_obj.T.flatten().astype(np.float32)\n"),  # column-major export
+        Valid("import numpy as np\nbuf = np.ravel(T_world_cam.T)\n"),
+        Valid("glUniformMatrix4fv(loc, 1, GL_FALSE, T_world_obj.T)\n"),
     ]
     INVALID = [
         Invalid(
@@ -81,6 +95,8 @@ class TransposeAsInverse(SemanticRule):
 
     def _is_row_form_or_rotation_block(self, node: cst.Attribute) -> bool:
         parent = self.model.parent(node)
+        if self._is_memory_layout(node, parent):
+            return True
         if isinstance(parent, cst.Subscript) and parent.value is node:
             return self.model.rotation_block_of(parent) is not None
         if isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, cst.MatrixMultiply):
@@ -89,4 +105,16 @@ class TransposeAsInverse(SemanticRule):
             call = self.model.parent(parent)
             if isinstance(call, cst.Call) and self.model.matmul(call) is not None:
                 return call.args[-1] is parent
+        return False
+
+    def _is_memory_layout(self, node: cst.Attribute, parent: cst.CSTNode | None) -> bool:
+        """`T.T.flatten()`, `np.ravel(T.T)`, `glLoadMatrixf(T.T)`: a column-major buffer."""
+        if isinstance(parent, cst.Attribute) and parent.value is node:
+            return parent.attr.value in _FLATTENING
+        if isinstance(parent, cst.Arg):
+            call = self.model.parent(parent)
+            if isinstance(call, cst.Call):
+                func = call.func
+                name = func.attr.value if isinstance(func, cst.Attribute) else func.value if isinstance(func, cst.Name) else ""
+                return name in _FLATTENING or _OPENGL_CALL.match(name) is not None
         return False
