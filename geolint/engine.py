@@ -18,7 +18,6 @@ import io
 import re
 import threading
 import tokenize
-from dataclasses import replace
 from functools import lru_cache
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Iterable, Sequence
@@ -306,11 +305,6 @@ def _only_syntax_error(
 def _byte_position(data: bytes, offset: int) -> tuple[int, int]:
     line_start = data.rfind(b"\n", 0, offset) + 1
     return data.count(b"\n", 0, offset) + 1, offset - line_start + 1
-
-
-def with_path(findings: Iterable[Finding], path: str) -> list[Finding]:
-    """The same findings reported against another path (cache hits, display paths)."""
-    return [finding if finding.path == path else replace(finding, path=path) for finding in findings]
 
 
 LINE_BREAK = re.compile(r"(?<=\n)|(?<=\r)(?!\n)")

@@ -131,10 +131,6 @@ def render_mermaid(graph: FrameGraph) -> str:
 # ---- SVG ---------------------------------------------------------------------------------------
 
 
-def graphviz_available() -> bool:
-    return shutil.which("dot") is not None
-
-
 def render_svg(graph: FrameGraph, *, timeout: float = 60.0) -> str:
     """The graph as SVG, laid out by the Graphviz `dot` binary; `GraphvizNotFound` if it is missing."""
     dot = shutil.which("dot")

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from mypy.nodes import TypeInfo
 from mypy.plugin import CheckerPluginInterface
 from mypy.subtypes import is_same_type
-from mypy.types import AnyType, Instance, ProperType, Type, TypeOfAny, UnionType, get_proper_type
+from mypy.types import AnyType, Instance, ProperType, Type, UnionType, get_proper_type
 
 from geolint.mypy import fullnames as names
 
@@ -134,7 +134,3 @@ def same_frame(first: ProperType, second: ProperType) -> bool | None:
     if not (is_known(first) and is_known(second)):
         return None
     return is_same_type(first, second)
-
-
-def unknown_frame() -> ProperType:
-    return AnyType(TypeOfAny.special_form)

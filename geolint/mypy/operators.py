@@ -40,7 +40,6 @@ BINARY_RULES: dict[str, tuple[BinaryRule, bool]] = {
 }
 SCALING_OPERATORS = frozenset({"__mul__", "__rmul__", "__truediv__", "__neg__"})
 # The runtime refuses a bare ndarray here (it cannot know its kind or frame); so does the plugin, statically.
-RAW_ARRAY_REFUSED = frozenset({"__matmul__", "__add__", "__sub__"})
 _SYMBOL = {"__matmul__": "@", "__add__": "+", "__sub__": "-"}
 
 
