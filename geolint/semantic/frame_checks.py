@@ -5,6 +5,8 @@ from __future__ import annotations
 import libcst as cst
 
 from geolint.semantic.model import MatMul, SemanticModel
+from geolint.semantic.names import NameFrames
+from geolint.semantic.rule_support import SemanticRule
 
 
 def product_operands(model: SemanticModel, node: cst.CSTNode) -> MatMul | None:
@@ -19,3 +21,28 @@ def product_operands(model: SemanticModel, node: cst.CSTNode) -> MatMul | None:
             return MatMul(node, node.left, node.right)
     return None
 
+
+
+class ProductRule(SemanticRule):
+    """A rule about products whose two operands both have known frames (GEO201, GEO202).
+
+    Subclasses implement `check_product`; this base finds the product in any spelling and reads
+    both operands' frames once.
+    """
+
+    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
+        self._visit_product(node)
+
+    def visit_Call(self, node: cst.Call) -> None:
+        self._visit_product(node)
+
+    def _visit_product(self, node: cst.CSTNode) -> None:
+        product = product_operands(self.model, node)
+        if product is None:
+            return
+        left, right = self.model.frames_of(product.left), self.model.frames_of(product.right)
+        if left is not None and right is not None:
+            self.check_product(node, product, left, right)
+
+    def check_product(self, node: cst.CSTNode, product: MatMul, left: NameFrames, right: NameFrames) -> None:
+        raise NotImplementedError

@@ -5,13 +5,13 @@ from __future__ import annotations
 import libcst as cst
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.frame_checks import product_operands
-from geolint.semantic.names import same_frame
+from geolint.semantic.frame_checks import ProductRule
+from geolint.semantic.model import MatMul
+from geolint.semantic.names import NameFrames, same_frame
 from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
-from geolint.semantic.rule_support import SemanticRule
 
 
-class FrameMismatchApply(SemanticRule):
+class FrameMismatchApply(ProductRule):
     """A transform is applied to a value expressed in a frame it does not map from.
 
     ## What it does
@@ -65,19 +65,7 @@ class FrameMismatchApply(SemanticRule):
         Invalid("import numpy as np\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
     ]
 
-    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
-        self._check(node)
-
-    def visit_Call(self, node: cst.Call) -> None:
-        self._check(node)
-
-    def _check(self, node: cst.CSTNode) -> None:
-        product = product_operands(self.model, node)
-        if product is None:
-            return
-        left, right = self.model.frames_of(product.left), self.model.frames_of(product.right)
-        if left is None or right is None:
-            return
+    def check_product(self, node: cst.CSTNode, product: MatMul, left: NameFrames, right: NameFrames) -> None:
         if left.is_operator and right.frame is not None:
             if same_frame(left.src, right.frame) is False:
                 self.report(

@@ -5,13 +5,13 @@ from __future__ import annotations
 import libcst as cst
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.frame_checks import product_operands
-from geolint.semantic.names import same_frame
+from geolint.semantic.frame_checks import ProductRule
+from geolint.semantic.model import MatMul
+from geolint.semantic.names import NameFrames, same_frame
 from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
-from geolint.semantic.rule_support import SemanticRule
 
 
-class FrameMismatchCompose(SemanticRule):
+class FrameMismatchCompose(ProductRule):
     """Two transforms are composed although the inner frames do not match.
 
     ## What it does
@@ -62,18 +62,8 @@ class FrameMismatchCompose(SemanticRule):
         Invalid("T = cam2world @ world2base\n"),
     ]
 
-    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
-        self._check(node)
-
-    def visit_Call(self, node: cst.Call) -> None:
-        self._check(node)
-
-    def _check(self, node: cst.CSTNode) -> None:
-        product = product_operands(self.model, node)
-        if product is None:
-            return
-        left, right = self.model.frames_of(product.left), self.model.frames_of(product.right)
-        if left is None or right is None or not (left.is_operator and right.is_operator):
+    def check_product(self, node: cst.CSTNode, product: MatMul, left: NameFrames, right: NameFrames) -> None:
+        if not (left.is_operator and right.is_operator):
             return
         if same_frame(left.src, right.dst) is False:
             self.report(
