@@ -97,6 +97,12 @@ class _Coordinates(FramedKind):
     def _prepared(self, xyz: np.ndarray) -> np.ndarray:
         return xyz
 
+    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
+        def __radd__(self, other: object) -> Any:
+            if isinstance(other, np.ndarray):
+                raise _refuse_with_ndarray(self, other, "+", "Vector")
+            return NotImplemented
+
     @classmethod
     def _wrap(cls, frame: str, xyz: np.ndarray) -> Any:
         """A value of this kind in ``frame`` around computed coordinates (no validation, no copy)."""
@@ -245,12 +251,6 @@ class Point(_Coordinates, Generic[F]):
         return NotImplemented
 
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
-        def __radd__(self, other: object) -> Any:
-            if isinstance(other, np.ndarray):
-                raise _refuse_with_ndarray(self, other, "+", "Vector")
-            return NotImplemented
-
-    if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
         def __mul__(self, other: object) -> Any:
             raise GeometryTypeError(
                 f"{describe(self)} * {describe(other)}: scaling a point depends on where the origin is; "
@@ -309,13 +309,10 @@ class Vector(_Coordinates, Generic[F]):
         return NotImplemented
 
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
-        def __radd__(self, other: object) -> Any:
+        def __rsub__(self, other: object) -> Any:
             if isinstance(other, np.ndarray):
-                raise _refuse_with_ndarray(self, other, "+", "Vector")
+                raise _refuse_with_ndarray(self, other, "-", "Vector")
             return NotImplemented
-
-    if not TYPE_CHECKING:
-        __rsub__ = __radd__
 
     def __neg__(self) -> Vector[F]:
         return Vector._wrap(self._frame, -self._xyz)  # type: ignore[no-any-return]
