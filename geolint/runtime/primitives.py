@@ -373,13 +373,17 @@ class Direction(Vector[F]):
     xyz : array_like, shape (3,) or (N, 3)
         Any non-zero vector(s); stored scaled to unit length. A zero vector raises `GeometryValueError`.
 
-    Arithmetic returns plain `Vector` values (a sum of two directions is not unit length).
+    Arithmetic returns plain `Vector` values (a sum of two directions is not unit length); negation keeps a `Direction`.
     """
 
     __slots__ = ()
 
     def _prepared(self, xyz: np.ndarray) -> np.ndarray:
         return _unit(xyz, type(self).__name__)
+
+    def __neg__(self) -> Direction[F]:
+        # The opposite unit direction is still a unit direction (geolint.algebra.negate).
+        return Direction._wrap(self._frame, -self._xyz)  # type: ignore[no-any-return]
 
     def _moved_by(self, transform: Any) -> Any:
         # Re-normalised so that long chains of (tolerance-limited) rotations cannot drift off unit length.
