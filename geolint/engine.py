@@ -3,9 +3,11 @@
 This is the only place that turns rule `Report`s into `Finding`s. The API, the CLI and
 the language server all come through here, so the editor and CI always agree.
 
-The pipeline for one file: decode (PEP 263 cookie, BOM) -> syntax check (GEO000) -> prefilter
-(each rule's `triggers` regex; a file no enabled rule can fire on is never parsed by libcst) ->
-one libcst traversal -> configured severities -> suppression comments -> GEO900.
+The pipeline for one file: decode (PEP 263 cookie, BOM) -> syntax check (GEO000, CPython's `ast`)
+-> prefilter (each rule's `triggers`; a file no enabled rule can fire on is analysed no further)
+-> every `AstRule`'s `check` on the cached `ast` tree and the file's fact base -> (only for the
+libcst `Rule`s still enabled) one libcst traversal -> configured severities -> suppression
+comments -> GEO900. A file whose enabled rules are all AstRules never touches libcst.
 
 libcst and the rule registry are imported on first use, so a run served from the cache
 never pays for them.
@@ -30,7 +32,7 @@ if TYPE_CHECKING:
     import libcst as cst
 
     from geolint.rules import Rule
-    from geolint.rules.base import Report
+    from geolint.rules.base import AnyRule, AstReport, AstRule, Report
 
 SYNTAX_ERROR = "GEO000"
 SYNTAX_ERROR_NAME = "syntax-error"
@@ -38,7 +40,7 @@ SYNTAX_ERROR_NAME = "syntax-error"
 ENGINE_RULE_CODES = frozenset({SYNTAX_ERROR, suppression.UNUSED_SUPPRESSION})
 
 
-def registered_rules() -> tuple[type[Rule], ...]:
+def registered_rules() -> tuple[AnyRule, ...]:
     from geolint.rules import all_rules
 
     return all_rules()
@@ -48,7 +50,7 @@ def lint_bytes(
     data: bytes,
     path: str = "<string>",
     config: Config = Config(),
-    rules: Sequence[type[Rule]] | None = None,
+    rules: Sequence[AnyRule] | None = None,
 ) -> list[Finding]:
     """Lint a file's raw bytes: honours a PEP 263 coding cookie or a BOM (UTF-8 otherwise).
 
@@ -94,7 +96,7 @@ def lint_source(
     source: str,
     path: str = "<string>",
     config: Config = Config(),
-    rules: Sequence[type[Rule]] | None = None,
+    rules: Sequence[AnyRule] | None = None,
 ) -> list[Finding]:
     """Lint one module's text and return its findings, sorted by position.
 
@@ -116,14 +118,18 @@ def lint_source(
                 return _only_syntax_error(path, config, rules, line, column, f"syntax error: {message}")
 
     active = [rule for rule in visitors if _may_fire(rule, source, config)]
+    ast_rules = [rule for rule in active if _is_ast_rule(rule)]
+    cst_rules = [rule for rule in active if not _is_ast_rule(rule)]
     findings: list[Finding] = []
-    if active:
+    if ast_rules:
+        findings += _run_ast_rules(source, path, config, ast_rules)
+    if cst_rules:
         if module is None:
             module, parse_error = _libcst_parse(source)
             if module is None:  # CPython accepts it but libcst does not (rare, new syntax)
                 line, column, message = parse_error
                 return _only_syntax_error(path, config, rules, line, column, f"libcst cannot parse this file: {message}")
-        findings = _run_rules(module, path, config, active)
+        findings += _run_rules(module, path, config, cst_rules)
 
     if suppression.may_have_directives(source):
         directives = suppression.parse_directives(source)
@@ -140,13 +146,89 @@ def lint_source(
     return sorted(findings, key=finding_order)
 
 
-def _may_fire(rule: type[Rule], source: str, config: Config) -> bool:
+def _may_fire(rule: AnyRule, source: str, config: Config) -> bool:
     """The prefilter: whether the rule's trigger matches (a trigger that can read the config is given it)."""
     trigger = rule.triggers
     if trigger is None:
         return True
     search_with = getattr(trigger, "search_with", None)
     return bool(search_with(source, config) if search_with is not None else trigger.search(source))
+
+
+def _is_ast_rule(rule: AnyRule) -> bool:
+    from geolint.rules.base import AstRule
+
+    return issubclass(rule, AstRule)
+
+
+def _run_ast_rules(source: str, path: str, config: Config, rule_classes: Sequence[type[AstRule]]) -> list[Finding]:
+    """Every AstRule's `check` on the cached `ast` of `source`, sharing one fact base; reports become findings."""
+    from geolint.rules.base import RuleContext
+
+    tree = cached_ast(source)
+    facts = _facts_for(tree, source, path, config, rule_classes)
+    context = RuleContext(path=path, config=config, source=source, facts=facts)
+    instances = [rule_cls(context) for rule_cls in rule_classes]
+    for rule in instances:
+        rule.check(tree)
+    if not any(rule.reports for rule in instances):
+        return []
+    columns = _CharacterColumns(source)
+    return [_ast_finding(rule, report, columns, path, config) for rule in instances for report in rule.reports]
+
+
+def _facts_for(
+    tree: ast.Module, source: str, path: str, config: Config, rule_classes: Sequence[type[AstRule]]
+) -> object:
+    """The file's fact base, built once for all rules that ask for it (`needs_facts`); None otherwise."""
+    if not any(getattr(rule, "needs_facts", False) for rule in rule_classes):
+        return None
+    try:
+        from geolint.factbase import facts_for_module
+    except ImportError:  # the fact base is not there yet
+        return None
+    return facts_for_module(tree, source, path, config)
+
+
+class _CharacterColumns:
+    """Turns `ast`'s UTF-8 byte offsets within a line into the character columns findings use."""
+
+    def __init__(self, source: str) -> None:
+        self._lines = split_lines(source)
+
+    def column(self, line: int, byte_offset: int) -> int:
+        """The 0-based character column of `byte_offset` on 1-based `line`."""
+        if not 1 <= line <= len(self._lines):
+            return byte_offset
+        text = self._lines[line - 1]
+        if text.isascii():
+            return byte_offset
+        return len(text.encode("utf-8")[:byte_offset].decode("utf-8", errors="replace"))
+
+
+def _ast_finding(rule: AstRule, report: AstReport, columns: _CharacterColumns, path: str, config: Config) -> Finding:
+    node = report.node
+    line = getattr(node, "lineno", 1) or 1
+    end_line = getattr(node, "end_lineno", None) or line
+    column = columns.column(line, getattr(node, "col_offset", 0) or 0)
+    end_offset = getattr(node, "end_col_offset", None)
+    end_column = column + 1 if end_offset is None else columns.column(end_line, end_offset)
+    fix = None
+    if report.replacement is not None:
+        edit = Edit(line, column + 1, end_line, end_column + 1, report.replacement)
+        fix = Fix(report.applicability, (edit,), report.fix_description)
+    return Finding(
+        path=path,
+        line=line,
+        column=column + 1,
+        end_line=end_line,
+        end_column=end_column + 1,
+        code=rule.code,
+        name=rule.name,
+        message=report.message,
+        severity=_severity_of(rule.code, config, rule.default_severity),
+        fix=fix,
+    )
 
 
 def finding_order(finding: Finding) -> tuple[int, int, str, int, int, str]:
@@ -282,7 +364,7 @@ def _libcst_parse(source: str) -> tuple[cst.Module | None, tuple[int, int, str]]
 
 
 def _only_syntax_error(
-    path: str, config: Config, rules: Sequence[type[Rule]] | None, line: int, column: int, message: str
+    path: str, config: Config, rules: Sequence[AnyRule] | None, line: int, column: int, message: str
 ) -> list[Finding]:
     candidates = (SYNTAX_ERROR,) if rules is None else tuple(rule.code for rule in rules)
     if SYNTAX_ERROR not in candidates or not enabled_codes(config, path, (SYNTAX_ERROR,)):

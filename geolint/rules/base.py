@@ -1,19 +1,27 @@
-"""The base class every lint rule derives from, and the example types rules document themselves with.
+"""The base classes lint rules derive from, and the example types rules document themselves with.
 
-A rule is a libcst batchable visitor: the engine parses a file once and runs every
-enabled rule over it in a single traversal. A rule reports with `self.report(node, ...)`;
-the engine turns reports into `Finding`s (positions, severity, fix edits).
+Two kinds of rule share one set of class attributes (`RuleAttributes`):
+
+- `AstRule` runs on CPython's `ast` (the fast C parser) and the file's fact base: the engine calls
+  `check(tree)` once per file; the rule reports with `self.report(node, message, replacement=...)`,
+  where a replacement is the new source text for exactly the node's span. New rules are AstRules.
+- `Rule` is a libcst batchable visitor (the engine parses the file with libcst only when an
+  enabled `Rule` may fire on it). It lives in `geolint.rules.cst_base` and is imported from here on
+  first use, so code that only runs AstRules never imports libcst.
+
+The engine turns reports into `Finding`s (positions, severity, fix edits).
 """
 
 from __future__ import annotations
 
+import ast
 from dataclasses import dataclass
-from typing import ClassVar, Protocol, Sequence
-
-import libcst as cst
-from libcst.metadata import PositionProvider
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol, Sequence, Union
 
 from geolint.lint_types import Applicability, Config, Severity
+
+if TYPE_CHECKING:
+    from geolint.rules.cst_base import Report, Rule
 
 
 class RuleTrigger(Protocol):
@@ -38,26 +46,36 @@ class Invalid:
 
 
 @dataclass(frozen=True)
-class Report:
-    """What a rule says about a node; the engine resolves positions and builds the Fix."""
+class AstReport:
+    """What an `AstRule` says about an `ast` node; `replacement` is the new text of the node's whole span.
 
-    node: cst.CSTNode
+    `evidence` says why, strongest first (e.g. "T_world_cam: from_frame='cam' at line 12").
+    """
+
+    node: ast.AST
     message: str
-    replacement: cst.CSTNode | cst.RemovalSentinel | None = None
+    replacement: str | None = None
     applicability: Applicability = "safe"
     fix_description: str = ""
+    evidence: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
 class RuleContext:
-    """What a rule may know about the file it is checking."""
+    """What a rule may know about the file it is checking.
+
+    `source` is the module's text; `facts` the file's fact base (what the analysis knows about its
+    values), built once per file and shared by every rule; None when no enabled rule needs it.
+    """
 
     path: str
     config: Config
+    source: str = ""
+    facts: Any = None
 
 
-class Rule(cst.BatchableCSTVisitor):
-    """Base class of all rules. Subclasses set the class attributes below.
+class RuleAttributes:
+    """The class attributes every rule sets (both `AstRule` and the libcst `Rule`).
 
     The class docstring is the rule's documentation, in ruff's sections:
     "What it does", "Why is this bad?", "Example", "Use instead", "Fix safety"
@@ -74,20 +92,38 @@ class Rule(cst.BatchableCSTVisitor):
     VALID: ClassVar[Sequence[Valid]] = ()
     INVALID: ClassVar[Sequence[Invalid]] = ()
 
-    METADATA_DEPENDENCIES = (PositionProvider,)
+
+class AstRule(RuleAttributes):
+    """A rule on CPython's `ast`: `check(tree)` is called once per file and reports through `report`."""
 
     def __init__(self, context: RuleContext) -> None:
-        super().__init__()
         self.context = context
-        self.reports: list[Report] = []
+        self.reports: list[AstReport] = []
+
+    def check(self, tree: ast.Module) -> None:
+        """Inspect the module and `report` what is wrong (the engine calls this once per file)."""
+        raise NotImplementedError
 
     def report(
         self,
-        node: cst.CSTNode,
+        node: ast.AST,
         message: str,
         *,
-        replacement: cst.CSTNode | cst.RemovalSentinel | None = None,
+        replacement: str | None = None,
         applicability: Applicability = "safe",
         fix_description: str = "",
+        evidence: Sequence[str] = (),
     ) -> None:
-        self.reports.append(Report(node, message, replacement, applicability, fix_description))
+        self.reports.append(AstReport(node, message, replacement, applicability, fix_description, tuple(evidence)))
+
+
+AnyRule = Union["type[Rule]", type[AstRule]]
+
+
+def __getattr__(name: str) -> object:
+    # `Rule` and `Report` need libcst: imported only when someone asks for them.
+    if name in ("Rule", "Report"):
+        from geolint.rules import cst_base
+
+        return getattr(cst_base, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
