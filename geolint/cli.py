@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from typing import Sequence
 
@@ -24,6 +25,20 @@ SUBCOMMANDS = {
 }
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
+
+# The distribution's name on the package index (the import package and the command are `geolint`).
+DISTRIBUTION = "geolint-robotics"
+# Optional modules -> the extra that installs them.
+EXTRA_OF_MODULE = {"pygls": "lsp", "lsprotocol": "lsp", "mypy": "mypy", "scipy": "scipy"}
+
+
+def missing_extra_message(command: str, error: ImportError) -> str | None:
+    """What to install when `error` is an optional dependency's absence, else None."""
+    module = (getattr(error, "name", None) or "").split(".")[0]
+    extra = EXTRA_OF_MODULE.get(module)
+    if extra is None:
+        return None
+    return f"geolint {command} needs the `{extra}` extra ({module} is not installed): pip install '{DISTRIBUTION}[{extra}]'"
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -51,7 +66,17 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = sub.parse_args(argv[1:])
     except SystemExit as exit_:  # argparse exits 2 on usage errors, as we want
         return int(exit_.code or 0)
-    return int(module.run(args))
+    try:
+        return int(module.run(args))
+    except ImportError as error:
+        message = missing_extra_message(known.command, error)
+        if message is None:
+            raise
+        print(f"geolint: error: {message}", file=sys.stderr)
+        return EXIT_ERROR
+    except BrokenPipeError:  # `geolint rules | head`: the reader left; stop quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return EXIT_FINDINGS
 
 
 if __name__ == "__main__":

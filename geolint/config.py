@@ -39,6 +39,15 @@ class ConfigError(Exception):
         self.key = key
 
 
+class UsageError(ConfigError):
+    """A command-line option that cannot be used; the message names the option, not a config file."""
+
+    def __init__(self, message: str) -> None:
+        Exception.__init__(self, message)
+        self.path = None
+        self.key = None
+
+
 def find_pyproject(start: Path) -> Path | None:
     """The nearest pyproject.toml with a `[tool.geolint]` table at or above `start`."""
     start = start.resolve()
@@ -97,10 +106,14 @@ def config_from_table(table: Mapping[str, Any], source: Path | None) -> Config:
 def with_overrides(
     config: Config, *, select: tuple[str, ...] | None = None, extend_ignore: tuple[str, ...] = ()
 ) -> Config:
-    """The config with command-line `--select` (replaces) and `--ignore` (adds to) applied."""
-    for selector in (*(select or ()), *extend_ignore):
-        if not SELECTOR.match(selector):
-            raise ConfigError(None, None, f"invalid rule selector {selector!r} (expected e.g. GEO, GEO2, GEO201)")
+    """The config with command-line `--select` (replaces) and `--ignore` (adds to) applied.
+
+    A malformed selector raises `UsageError` naming the option: the mistake is on the command line.
+    """
+    for option, selectors in (("--select", select or ()), ("--ignore", extend_ignore)):
+        for selector in selectors:
+            if not SELECTOR.match(selector):
+                raise UsageError(f"{option}: invalid rule selector {selector!r} (expected e.g. GEO, GEO2, GEO201)")
     return replace(
         config,
         select=select if select is not None else config.select,

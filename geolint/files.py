@@ -3,8 +3,10 @@
 Folders are walked with `.gitignore`-style excludes: the config's `exclude` (which replaces the
 defaults below) and `extend-exclude` (which adds to them), plus every `.gitignore` file met on the
 way. Patterns are anchored at the config root (the folder of pyproject.toml, else the cwd). A file
-named explicitly is always linted, unless `force_exclude` is set (what pre-commit hooks want, since
-pre-commit passes every staged file by name).
+or folder named explicitly is always linted, unless `force_exclude` is set (what pre-commit hooks
+want, since pre-commit passes every staged file by name): a named folder that sits in an excluded
+one (`geolint check .venv/lib/python3.11/site-packages/numpy`) is walked as its own root, so the
+excludes still apply to what is below it.
 """
 
 from __future__ import annotations
@@ -61,7 +63,10 @@ def discover(paths: Sequence[Path], config: Config, *, force_exclude: bool = Fal
         if not given.exists():
             raise DiscoveryError(f"{given}: no such file or directory")
         if given.is_dir():
-            for file in _walk(given, excluder):
+            walk_excluder = excluder
+            if not force_exclude and _excluded_file(given.resolve() / "__init__.py", excluder):
+                walk_excluder = _Excluder(given.resolve(), excluder.patterns)
+            for file in _walk(given, walk_excluder):
                 found.setdefault(file.resolve(), SourceFile(file, _display(file)))
         elif not (force_exclude and _excluded_file(given.resolve(), excluder)):
             found.setdefault(given.resolve(), SourceFile(given, _display(given)))
@@ -143,6 +148,7 @@ class _Excluder:
 
     def __init__(self, root: Path, patterns: tuple[str, ...]) -> None:
         self.root = str(root)
+        self.patterns = patterns
         self.spec = _spec(patterns)
 
     def excluded(self, path: Path, *, is_dir: bool) -> bool:

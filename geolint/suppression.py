@@ -27,8 +27,11 @@ UNUSED_SUPPRESSION_NAME = "unused-suppression"
 # `# geolint: ignore` or `# geolint: ignore[GEO101, GEO2...]`, anywhere in a comment.
 GEOLINT_DIRECTIVE = re.compile(r"#\s*geolint\s*:\s*ignore\b(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE)
 # `# noqa` or `# noqa: GEO101, E501` (flake8 syntax; the colon is required before codes).
-NOQA_DIRECTIVE = re.compile(r"#\s*noqa(?::\s*(?P<codes>[A-Za-z]+[0-9]+(?:[,\s]+[A-Za-z]+[0-9]+)*))?", re.IGNORECASE)
-GEO_CODE = re.compile(r"^GEO\d+$", re.IGNORECASE)
+# A code is letters, a digit, then letters or digits: a typo such as `GEO1O1` stays one code.
+NOQA_DIRECTIVE = re.compile(
+    r"#\s*noqa(?::\s*(?P<codes>[A-Za-z]+[0-9][A-Za-z0-9]*(?:[,\s]+[A-Za-z]+[0-9][A-Za-z0-9]*)*))?", re.IGNORECASE
+)
+GEO_CODE = re.compile(r"^GEO\d", re.IGNORECASE)  # ours: GEO then a digit (misspelt codes included)
 CODE_SPLIT = re.compile(r"[,\s]+")
 
 
@@ -40,8 +43,9 @@ class Directive:
     line: int  # 1-based line of the comment
     column: int  # 1-based column where the directive starts
     end_column: int  # exclusive
-    codes: tuple[str, ...] | None  # None: every code
+    codes: tuple[str, ...] | None  # None: every code; upper-cased for matching
     own_line: bool
+    written: tuple[str, ...] = ()  # the codes as the comment spells them, for messages
     first_line: int = 0
     last_line: int = 0
     used_codes: set[str] = field(default_factory=set)
@@ -208,14 +212,16 @@ def _directive(comment: str, line: int, column: int, after_code: bool) -> Direct
     if match is None:
         return None
     raw = match.group("codes")
+    written: tuple[str, ...] = ()
     if raw is None:
         codes = None
     else:
-        codes = tuple(code.upper() for code in CODE_SPLIT.split(raw.strip()) if code)
+        written = tuple(code for code in CODE_SPLIT.split(raw.strip()) if code)
         if kind == "noqa":
-            codes = tuple(code for code in codes if GEO_CODE.match(code))
-            if not codes:
+            written = tuple(code for code in written if GEO_CODE.match(code))
+            if not written:
                 return None  # only other tools' codes: not ours to judge
+        codes = tuple(code.upper() for code in written)
     return Directive(
         kind=kind,
         line=line,
@@ -223,6 +229,7 @@ def _directive(comment: str, line: int, column: int, after_code: bool) -> Direct
         end_column=column + match.end() + 1,
         codes=codes,
         own_line=not after_code,
+        written=written,
     )
 
 
@@ -306,7 +313,8 @@ def unused_suppression_findings(
             if directive.kind == "geolint" and not directive.used:
                 problems.append("unused blanket suppression `# geolint: ignore`")
         else:
-            unknown = [code for code in directive.codes if code not in known_codes]
+            spelled = dict(zip(directive.codes, directive.written))
+            unknown = [spelled.get(code, code) for code in directive.codes if code not in known_codes]
             unused = [
                 code
                 for code in directive.codes

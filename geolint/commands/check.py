@@ -2,7 +2,9 @@
 
 Exit codes: 0 nothing to report, 1 findings (or, with `--exit-non-zero-on-fix`, files fixed),
 2 a usage, config or internal error. Findings go to stdout (or `--output FILE`) in the chosen
-format; summaries, progress and errors go to stderr, so stdout stays machine-readable.
+format. The text format's summary follows the findings on stdout, so a piped CI log reads top to
+bottom; with a machine format or `--output` it goes to stderr, so stdout stays machine-readable.
+Progress, warnings and errors go to stderr.
 """
 
 from __future__ import annotations
@@ -89,6 +91,8 @@ def run(args: argparse.Namespace) -> int:
         _error(str(error))
         return EXIT_ERROR
     progress.close()
+    if not results:
+        _warn_nothing_found(paths)
 
     internal_errors = 0
     for result in results:
@@ -154,7 +158,12 @@ def run(args: argparse.Namespace) -> int:
             f"time: {time.perf_counter() - started:.2f}s"
         )
     if not args.quiet:
-        _note(_summary(findings, fixed_total, known))
+        summary = _summary(findings, fixed_total, known)
+        if args.format == "text" and not to_file and not args.statistics:
+            sys.stdout.write(summary + "\n")
+            sys.stdout.flush()
+        else:
+            _note(summary)
 
     if internal_errors:
         return EXIT_ERROR
@@ -285,6 +294,15 @@ def _summary(findings: Sequence[Finding], fixed: int, known: int) -> str:
     if known:
         parts.append(f"({known} known finding{'s' * (known != 1)} hidden by the baseline.)")
     return " ".join(parts)
+
+
+def _warn_nothing_found(paths: Sequence[Path]) -> None:
+    shown = ", ".join(str(path) for path in paths)
+    sys.stderr.write(
+        f"geolint: warning: no Python files found under {shown} (.venv, build, dist and the config's "
+        "`exclude` are skipped, and so is what .gitignore lists; name such a folder to lint it)\n"
+    )
+    sys.stderr.flush()
 
 
 def _error(message: str) -> None:

@@ -14,11 +14,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    try:
-        from geolint.lsp.server import server
-    except ImportError as error:  # pygls/lsprotocol are the `lsp` extra
-        print(f"geolint lsp needs the language server extra: pip install 'geolint[lsp]' ({error})", file=sys.stderr)
-        return 2
+    from geolint.lsp.server import server  # without the `lsp` extra, the CLI names the extra to install
     level = logging.DEBUG if args.verbose else logging.WARNING
     if args.log_file:
         logging.basicConfig(filename=args.log_file, level=level)

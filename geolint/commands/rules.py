@@ -4,7 +4,10 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
+import shutil
 import sys
+import textwrap
 
 from geolint.cli import EXIT_OK
 
@@ -23,7 +26,23 @@ def run(args: argparse.Namespace) -> int:
         sys.stdout.write(json.dumps(table, indent=2) + "\n")
         return EXIT_OK
     name_width = max((len(n) for _, n, _, _ in rows), default=4)
+    indent = 7 + 1 + name_width + 1 + 3 + 2
+    width = _terminal_width()
+    if width is not None and width - indent < 30:  # too narrow for a column: the summary goes under its row
+        for code, name, fixable, summary in rows:
+            sys.stdout.write(f"{code} {name}{' (fix)' if fixable else ''}\n")
+            sys.stdout.writelines(f"    {line}\n" for line in textwrap.wrap(summary, max(width - 4, 16), break_on_hyphens=False))
+        return EXIT_OK
     sys.stdout.write(f"{'CODE':<7} {'NAME':<{name_width}} FIX  SUMMARY\n")
     for code, name, fixable, summary in rows:
-        sys.stdout.write(f"{code:<7} {name:<{name_width}} {'yes' if fixable else '   '}  {summary}\n")
+        first, *rest = textwrap.wrap(summary, width - indent, break_on_hyphens=False) if width is not None else [summary]
+        sys.stdout.write(f"{code:<7} {name:<{name_width}} {'yes' if fixable else '   '}  {first}\n")
+        sys.stdout.writelines(" " * indent + line + "\n" for line in rest)
     return EXIT_OK
+
+
+def _terminal_width() -> int | None:
+    """The width to wrap summaries to: a terminal's (or `COLUMNS`); None for a pipe, so grep sees whole rows."""
+    if not os.environ.get("COLUMNS") and not sys.stdout.isatty():
+        return None
+    return shutil.get_terminal_size().columns

@@ -71,7 +71,8 @@ def test_text_format_shows_location_source_line_and_caret(cli):
     assert caret_line.count("^") == len("bad_thing")
     assert caret_line.index("^") == lines[1].index("bad_thing")
     assert "\x1b[" not in result.stdout + result.stderr  # piped: no colour, no progress bar
-    assert "Found 1 finding" in result.stderr
+    assert lines[-1] == "Found 1 finding (1 fixable with --fix)."  # the summary follows the findings on stdout
+    assert result.stderr == ""
 
 
 def test_output_file_and_statistics(cli, tmp_path):

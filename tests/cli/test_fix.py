@@ -27,7 +27,7 @@ def test_unsafe_fixes_and_exit_non_zero_on_fix(cli):
     path = cli.write("mod.py", SOURCE)
     result = cli("check", "--fix", "--unsafe-fixes", "--exit-non-zero-on-fix")
     assert path.read_text() == SOURCE.replace("bad_thing", "good_thing").replace("risky_thing", "safe_thing")
-    assert result.returncode == 1 and result.stdout == ""  # nothing left, but files changed
+    assert result.returncode == 1 and result.stdout == "Fixed 3 findings. All checks passed.\n"  # nothing left, but files changed
     again = cli("check", "--fix", "--unsafe-fixes", "--exit-non-zero-on-fix")
     assert again.returncode == 0  # idempotent: the second run has nothing to do
     assert path.read_text() == SOURCE.replace("bad_thing", "good_thing").replace("risky_thing", "safe_thing")
