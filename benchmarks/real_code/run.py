@@ -70,7 +70,6 @@ class Entry:
     expr_hash: str
     verdict: str
     reason: str
-    expr: str = ""
 
 
 @dataclass
@@ -285,7 +284,7 @@ def compare(args: argparse.Namespace) -> int:
         print(f"  GONE {entry.repo}:{entry.path}:{entry.line}: {entry.code} ({entry.verdict}) {entry.reason}")
     if args.record_new:
         ledger.findings += [
-            Entry(f.repo, repo_commit(repos, f.repo), f.path, f.line, f.code, expression_hash(f.expr), "unclear", "untriaged: " + f.message, f.expr)
+            Entry(f.repo, repo_commit(repos, f.repo), f.path, f.line, f.code, expression_hash(f.expr), "unclear", "untriaged: " + f.message)
             for f in all_new
         ]
         dump_ledger(ledger, args.ledger)
@@ -331,8 +330,10 @@ def candidate_commits(checkout: Path, limit: int) -> list[tuple[str, list[str]]]
             commits.append(current)
         elif line.strip() and current is not None:
             current[1].append(line.strip())
-    chosen = []
+    chosen: list[tuple[str, list[str]]] = []
     for sha, paths in commits:
+        if len(chosen) >= limit:
+            break
         if not paths:
             continue
         diff = git(checkout, "show", "--format=", "-U0", "--diff-filter=M", sha, "--", *paths)
@@ -341,8 +342,6 @@ def candidate_commits(checkout: Path, limit: int) -> list[tuple[str, list[str]]]
             touched = sorted({p for p in paths if any(GEOMETRY_LINE.search(l) for l in _removed_lines(diff, p))})
             if touched:
                 chosen.append((sha, touched[:8]))  # a sweeping refactor is rarely a bug fix
-        if len(chosen) >= limit:
-            break
     return chosen
 
 
@@ -426,9 +425,44 @@ def history(args: argparse.Namespace) -> int:
         print(f"  {mark} {c['repo']}@{c['commit'][:10]} {c['path']}:{c['line']} {c['code']} {c['message']}")
     if args.candidates_out:
         Path(args.candidates_out).write_text(json.dumps(candidates, indent=1))
-    caught = sum(1 for h in ledger.history if h.caught)
-    if ledger.history:
-        print(f"historical bugs in the ledger: {len(ledger.history)}, caught at their pre-fix commit: {caught} ({100 * caught / len(ledger.history):.0f} %)")
+    status = max(status, verify_history(args, ledger, select))
+    return status
+
+
+def verify_history(args: argparse.Namespace, ledger: Ledger, select: tuple[str, ...]) -> int:
+    """Lint each recorded historical bug's file at the commit before its fix: is the bug's line flagged today?"""
+    from geolint import api
+
+    if not ledger.history:
+        return 0
+    status = 0
+    config = geolint_config(select)
+    caught = 0
+    changed = 0
+    print(f"historical bugs recorded in the ledger: {len(ledger.history)} (linted at the commit before each fix)")
+    for bug in ledger.history:
+        checkout = args.mirror / bug.repo.replace("/", "+")
+        try:
+            before = git(checkout, "show", f"{bug.fix_commit}^:{bug.path}")
+        except (subprocess.CalledProcessError, OSError):
+            print(f"  {bug.repo}@{bug.fix_commit[:10]}:{bug.path}: pre-fix file not available", file=sys.stderr)
+            status = 2
+            continue
+        hits = [f for f in api.lint_text(before, bug.path, config) if f.code != "GEO000" and f.line <= bug.line <= f.end_line]
+        now = bool(hits)
+        caught += now
+        mark = "CAUGHT" if now else "missed"
+        note = "" if now == bug.caught else f"  (ledger says {'caught' if bug.caught else 'missed'})"
+        print(f"  {mark:6} {bug.bug_class:22} {bug.repo}@{bug.fix_commit[:10]} {bug.path}:{bug.line}{note}")
+        for f in hits:
+            print(f"         {f.code} {f.message}")
+        if now != bug.caught:
+            changed += 1
+            bug.caught = now
+    print(f"caught at the pre-fix commit: {caught} / {len(ledger.history)} = {100 * caught / len(ledger.history):.0f} %")
+    if changed and args.record_new:
+        dump_ledger(ledger, args.ledger)
+        print(f"updated 'caught' of {changed} historical bug(s) in {args.ledger}")
     return status
 
 
@@ -500,10 +534,14 @@ def main(argv: list[str] | None = None) -> int:
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--history", action="store_true", help="lint files before and after each candidate commit")
     mode.add_argument("--throughput", action="store_true", help="time geolint -j1/-j2, ruff and ast.parse on the corpus")
-    parser.add_argument("--history-limit", type=int, default=100, help="candidate commits per repository (newest first)")
+    parser.add_argument(
+        "--history-limit", type=int, default=100, help="candidate commits per repository, newest first (0: only re-check the ledger's historical bugs)"
+    )
     parser.add_argument("--candidates-out", help="with --history: write the candidates as JSON here")
     parser.add_argument("--repeats", type=int, default=3, help="with --throughput: runs per tool")
-    parser.add_argument("--record-new", action="store_true", help="append new findings to the ledger as 'unclear' for triage")
+    parser.add_argument(
+        "--record-new", action="store_true", help="append new findings to the ledger as 'unclear' for triage; with --history, update 'caught'"
+    )
     args = parser.parse_args(argv)
     if not args.mirror.is_dir():
         parser.error(f"{args.mirror}: not a folder")
