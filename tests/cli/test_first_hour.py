@@ -153,3 +153,16 @@ def test_import_geolint_loads_numpy_and_nothing_else_outside_the_standard_librar
     result = subprocess.run([sys.executable, "-c", probe], cwd=tmp_path, capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stderr
     assert result.stdout.split() == ["geolint", "numpy"]
+
+
+def test_the_lint_benchmark_finds_a_tree_under_the_projects_venv(tmp_path: Path) -> None:
+    """`python benchmarks/bench_lint.py` from the repository root benchmarks the numpy of `.venv`, not zero files."""
+    write(tmp_path, ".venv/lib/site-packages/numpy/core.py", BUGGY)
+    write(tmp_path, ".venv/lib/site-packages/numpy/linalg.py", BUGGY)
+    benchmarks = Path(__file__).resolve().parents[2] / "benchmarks"
+    probe = (
+        f"import sys; sys.path.insert(0, {str(benchmarks)!r}); from pathlib import Path; "
+        "from bench_lint import python_files; print(len(python_files(Path('.venv/lib/site-packages/numpy').resolve())))"
+    )
+    result = subprocess.run([sys.executable, "-c", probe], cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert result.stdout.strip() == "2", result.stderr

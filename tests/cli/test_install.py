@@ -86,8 +86,11 @@ def fresh_venv(where: Path) -> Path:
 
 
 def local(text: str, repo: Path) -> str:
-    """A snippet with the public repository's URL pointed at the local one."""
-    return text.replace(f"git+{PUBLIC_URL}", f"git+file://{repo}").replace(PUBLIC_URL, str(repo))
+    """A snippet with the public repository's URL pointed at the local one.
+
+    pip's requirement parser wants a host in a `git+file:` URL, so `localhost` (git accepts it).
+    """
+    return text.replace(f"git+{PUBLIC_URL}", f"git+file://localhost{repo}").replace(PUBLIC_URL, str(repo))
 
 
 def readme_install_lines() -> list[str]:
@@ -118,7 +121,7 @@ def test_git_url_install_gives_a_working_linter(base_install: Path, released: Pa
     python = str(base_install / "python")
     names = subprocess.run(
         [python, "-c", "import importlib.metadata as m; print(m.version('geolint-robotics')); m.distribution('geolint')"],
-        env=env, capture_output=True, text=True,
+        cwd=tmp_path, env=env, capture_output=True, text=True,
     )  # fmt: skip
     assert names.stdout.split("\n")[0] == project_version() and "PackageNotFoundError" in names.stderr
 
