@@ -157,13 +157,24 @@ def _per_file_ignores(value: Any, source: Path | None, key: str) -> dict[str, tu
     return {pattern: _selectors(codes, source, f"{key}.{pattern}") for pattern, codes in value.items()}
 
 
+NAMING_ORDERS = ("auto", "dst-first", "src-first")
+
+
 def _naming(value: Any, source: Path | None, key: str) -> NamingConventions:
+    # `naming = "src-first"` sets the order of `T_a_b` names; a table switches conventions (and may set `order`)
+    if isinstance(value, str):
+        value = {"order": value}
     if not isinstance(value, dict):
-        raise ConfigError(source, key, f"must be a table of switches, got {_describe(value)}")
+        raise ConfigError(source, key, f"must be \"auto\", \"dst-first\", \"src-first\" or a table of switches, got {_describe(value)}")
     known = {field.name for field in fields(NamingConventions)}
-    switches: dict[str, bool] = {}
+    switches: dict[str, Any] = {}
     for raw_name, switch in value.items():
         name = raw_name.replace("-", "_")
+        if name == "order":
+            if switch not in NAMING_ORDERS:
+                raise ConfigError(source, f"{key}.order" if raw_name == "order" else key, f"must be one of {', '.join(NAMING_ORDERS)}, got {_describe(switch)}")
+            switches[name] = switch
+            continue
         if name not in known:
             raise ConfigError(source, f"{key}.{raw_name}", f"unknown naming convention{_did_you_mean(name, known)}")
         if not isinstance(switch, bool):

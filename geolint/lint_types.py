@@ -73,6 +73,9 @@ class NamingConventions:
     from_style: bool = True  # world_from_cam, point_in_cam
     to_style: bool = True  # cam_to_world, cam2world (src first)
     suffix: bool = True  # p_world, v_cam
+    # How `T_a_b` reads: "dst-first" (maps b into a), "src-first" (maps a into b), or "auto" (learned
+    # from the project's own declarations and compositions; see geolint.factbase.conventions)
+    order: str = "auto"
 
 
 @dataclass(frozen=True)

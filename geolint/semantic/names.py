@@ -360,3 +360,12 @@ def same_frame(first: str | None, second: str | None) -> bool | None:
 
 def _is_letter_frame(frame: str) -> bool:
     return bool(re.fullmatch(r"[A-Za-z][0-9]*", frame))
+
+
+def order_dependent(name: str) -> bool:
+    """Whether the frames a name states depend on the project's order convention: `T_a_b` and
+    `R_a_b` map b into a in dst-first code and a into b in src-first code (autolab_core's
+    `T_obj_world`). Every other convention says its direction in words (`a_from_b`, `a2b`,
+    `a_T_b`, Drake's `X_AB`)."""
+    raw = name.strip("_").split("_")
+    return len(raw) == 3 and raw[0] in TRANSFORM_LETTERS | ROTATION_LETTERS

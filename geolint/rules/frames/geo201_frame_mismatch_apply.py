@@ -2,11 +2,9 @@
 
 from __future__ import annotations
 
-import libcst as cst
-
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.frame_checks import ProductRule
-from geolint.semantic.model import MatMul
+from geolint.factbase.model import MatMul
+from geolint.factbase.rule_support import ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
 
@@ -62,22 +60,22 @@ class FrameMismatchApply(ProductRule):
         Invalid("import numpy as np\np = np.dot(world_from_cam, point_in_base)\n"),
         Invalid("pts = pts_base @ R_world_cam.T\n"),
         Invalid("p = T_world_cam.dot(p_base)\n"),
-        Invalid("import numpy as np\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
+        # the composition states the module's order (dst-first), which the inverse's reading needs
+        Invalid("import numpy as np\nT_world_base = T_world_cam @ T_cam_base\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
     ]
 
-    def check_product(self, node: cst.CSTNode, product: MatMul, left: NameFrames, right: NameFrames) -> None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> str | None:
         if left.is_operator and right.frame is not None:
             if same_frame(left.src, right.frame) is False:
-                self.report(
-                    node,
+                return (
                     f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "
-                    f"`{self.code_of(product.right)}` is in {right.frame}",
+                    f"`{self.code_of(product.right)}` is in {right.frame}"
                 )
         elif right.is_operator and left.frame is not None:
             # Row vectors: `x @ M` applies M.T, which maps M.dst into M.src.
             if same_frame(right.dst, left.frame) is False:
-                self.report(
-                    node,
+                return (
                     f"`{self.code_of(product.left)} @ {self.code_of(product.right)}` maps {right.dst} into "
-                    f"{right.src}, but `{self.code_of(product.left)}` is in {left.frame}",
+                    f"{right.src}, but `{self.code_of(product.left)}` is in {left.frame}"
                 )
+        return None

@@ -2,11 +2,9 @@
 
 from __future__ import annotations
 
-import libcst as cst
-
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.frame_checks import ProductRule
-from geolint.semantic.model import MatMul
+from geolint.factbase.model import MatMul
+from geolint.factbase.rule_support import ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
 
@@ -62,13 +60,13 @@ class FrameMismatchCompose(ProductRule):
         Invalid("T = cam2world @ world2base\n"),
     ]
 
-    def check_product(self, node: cst.CSTNode, product: MatMul, left: NameFrames, right: NameFrames) -> None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> str | None:
         if not (left.is_operator and right.is_operator):
-            return
+            return None
         if same_frame(left.src, right.dst) is False:
-            self.report(
-                node,
+            return (
                 f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "
                 f"`{self.code_of(product.right)}` maps {right.src} into {right.dst}: the inner frames "
-                f"{left.src} and {right.dst} differ",
+                f"{left.src} and {right.dst} differ"
             )
+        return None

@@ -2,15 +2,16 @@
 
 from __future__ import annotations
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.names import frames_of_name, same_frame
+from geolint.factbase.model import walk_within
+from geolint.factbase.rule_support import FactRule
+from geolint.semantic.names import NameFrames, same_frame
 from geolint.semantic.prefilter import Trigger, may_mislabel_frames
-from geolint.semantic.rule_support import SemanticRule
 
 
-class FrameMismatchAssign(SemanticRule):
+class FrameMismatchAssign(FactRule):
     """A value is stored under a name that states another frame.
 
     ## What it does
@@ -56,21 +57,31 @@ class FrameMismatchAssign(SemanticRule):
         Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_base_cam = pose\n    return T_base_cam\n"),
     ]
 
-    def visit_Assign(self, node: cst.Assign) -> None:
-        for target in node.targets:
-            self._check(target.target, node.value)
+    def run(self) -> None:
+        for node in self.facts.index.nodes(ast.Assign, ast.AnnAssign):
+            if isinstance(node, ast.Assign):
+                for target in node.targets:
+                    self._check(target, node.value)
+            elif node.value is not None:
+                self._check(node.target, node.value)
 
-    def visit_AnnAssign(self, node: cst.AnnAssign) -> None:
-        if node.value is not None:
-            self._check(node.target, node.value)
+    def _check(self, target: ast.expr, value: ast.expr) -> None:
+        if not isinstance(target, ast.Name) or _mentions_name(value, target.id):
+            return  # `world2cam = inv(world2cam)`, `T_a_b = T_a_b @ D`: a name updated from itself
+        facts = self.facts
+        messages = []
+        for order in facts.readings():
+            stated, actual = facts.name_frames(target.id, order), facts.frame_fact(value, order)
+            if stated is None or actual is None:
+                return
+            message = self._problem(target.id, value, stated.frames, actual.frames)
+            if message is None:
+                return
+            messages.append((message, stated.evidence + actual.evidence))
+        if messages:
+            self.report(value, messages[0][0], evidence=messages[0][1])
 
-    def _check(self, target: cst.BaseExpression, value: cst.BaseExpression) -> None:
-        if not isinstance(target, cst.Name):
-            return
-        stated = frames_of_name(target.value, self.context.config)
-        actual = self.model.frames_of(value)
-        if stated is None or actual is None:
-            return
+    def _problem(self, name: str, value: ast.expr, stated: NameFrames, actual: NameFrames) -> str | None:
         if stated.is_operator and actual.is_operator:
             if same_frame(stated.dst, actual.dst) is False or same_frame(stated.src, actual.src) is False:
                 hint = (
@@ -78,14 +89,15 @@ class FrameMismatchAssign(SemanticRule):
                     if same_frame(stated.dst, actual.src) and same_frame(stated.src, actual.dst)
                     else ""
                 )
-                self.report(
-                    value,
-                    f"`{target.value}` should map {stated.src} into {stated.dst}, but "
-                    f"`{self.code_of(value)}` maps {actual.src} into {actual.dst}{hint}",
+                return (
+                    f"`{name}` should map {stated.src} into {stated.dst}, but "
+                    f"`{self.code_of(value)}` maps {actual.src} into {actual.dst}{hint}"
                 )
         elif not stated.is_operator and not actual.is_operator:
             if same_frame(stated.frame, actual.frame) is False:
-                self.report(
-                    value,
-                    f"`{target.value}` should be in {stated.frame}, but `{self.code_of(value)}` is in {actual.frame}",
-                )
+                return f"`{name}` should be in {stated.frame}, but `{self.code_of(value)}` is in {actual.frame}"
+        return None
+
+
+def _mentions_name(value: ast.expr, name: str) -> bool:
+    return any(isinstance(node, ast.Name) and node.id == name for node in walk_within(value))

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import re
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.semantic.prefilter import Trigger, may_transpose_transform
-from geolint.semantic.rule_support import SemanticRule
+from geolint.factbase.model import last_name, number
+from geolint.factbase.rule_support import FactRule
 
 
 # Methods and functions that turn a matrix into a flat buffer: the transpose only picks the
@@ -17,7 +18,7 @@ _FLATTENING = frozenset({"flatten", "ravel", "tolist", "tobytes", "tofile", "fla
 _OPENGL_CALL = re.compile(r"gl[A-Z]\w*$")
 
 
-class TransposeAsInverse(SemanticRule):
+class TransposeAsInverse(FactRule):
     """The transpose of a 4x4 homogeneous transform is used where its inverse is meant.
 
     ## What it does
@@ -63,6 +64,7 @@ class TransposeAsInverse(SemanticRule):
         Valid("gl_model = T_world_obj.T.flatten().astype(np.float32)\n"),  # column-major export
         Valid("import numpy as np\nbuf = np.ravel(T_world_cam.T)\n"),
         Valid("glUniformMatrix4fv(loc, 1, GL_FALSE, T_world_obj.T)\n"),
+        Valid("import numpy as np\nubo = np.hstack((T_view_world.T.reshape(-1), T_proj_view.T.reshape(16)))\n"),
     ]
     INVALID = [
         Invalid(
@@ -75,46 +77,58 @@ class TransposeAsInverse(SemanticRule):
         Invalid("def f(T_world_cam, p_world_h):\n    pose = T_world_cam\n    return pose.T @ p_world_h\n"),
     ]
 
-    def visit_Attribute(self, node: cst.Attribute) -> None:
-        if node.attr.value != "T":
-            return
-        frames = self.model.frames_of(node.value)
-        if frames is None or not frames.is_operator or frames.operator != "transform":
-            return
-        if self._is_row_form_or_rotation_block(node):
-            return
-        matrix = self.code_of(node.value)
-        self.report(
-            node,
-            f"`{matrix}.T` is not the inverse of the homogeneous transform `{matrix}` "
-            f"(only a rotation's transpose is); use `np.linalg.inv({matrix})`",
-            replacement=cst.parse_expression(f"np.linalg.inv({matrix})"),
-            applicability="unsafe",
-            fix_description="use np.linalg.inv",
-        )
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.Attribute):
+            if node.attr != "T":  # type: ignore[attr-defined]
+                continue
+            fact = facts.frame_fact(node.value, facts.readings()[0])  # type: ignore[attr-defined]
+            if fact is None or not fact.frames.is_operator or fact.frames.operator != "transform":
+                continue
+            if self._is_row_form_or_rotation_block(node):  # type: ignore[arg-type]
+                continue
+            matrix = self.code_of(node.value)  # type: ignore[attr-defined]
+            self.report(
+                node,
+                f"`{matrix}.T` is not the inverse of the homogeneous transform `{matrix}` "
+                f"(only a rotation's transpose is); use `np.linalg.inv({matrix})`",
+                replacement=f"np.linalg.inv({facts.index.segment(node.value)})",  # type: ignore[attr-defined]
+                applicability="unsafe",
+                fix_description="use np.linalg.inv",
+                evidence=fact.evidence,
+            )
 
-    def _is_row_form_or_rotation_block(self, node: cst.Attribute) -> bool:
-        parent = self.model.parent(node)
+    def _is_row_form_or_rotation_block(self, node: ast.Attribute) -> bool:
+        facts = self.facts
+        parent = facts.parent(node)
         if self._is_memory_layout(node, parent):
             return True
-        if isinstance(parent, cst.Subscript) and parent.value is node:
-            return self.model.rotation_block_of(parent) is not None
-        if isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, cst.MatrixMultiply):
+        if isinstance(parent, ast.Subscript) and parent.value is node:
+            return facts.rotation_block_of(parent) is not None
+        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
             return parent.right is node
-        if isinstance(parent, cst.Arg):
-            call = self.model.parent(parent)
-            if isinstance(call, cst.Call) and self.model.matmul(call) is not None:
-                return call.args[-1] is parent
+        if isinstance(parent, ast.Call) and any(arg is node for arg in parent.args):
+            if facts.matmul(parent) is not None:
+                return parent.args[-1] is node
         return False
 
-    def _is_memory_layout(self, node: cst.Attribute, parent: cst.CSTNode | None) -> bool:
-        """`T.T.flatten()`, `np.ravel(T.T)`, `glLoadMatrixf(T.T)`: a column-major buffer."""
-        if isinstance(parent, cst.Attribute) and parent.value is node:
-            return parent.attr.value in _FLATTENING
-        if isinstance(parent, cst.Arg):
-            call = self.model.parent(parent)
-            if isinstance(call, cst.Call):
-                func = call.func
-                name = func.attr.value if isinstance(func, cst.Attribute) else func.value if isinstance(func, cst.Name) else ""
-                return name in _FLATTENING or _OPENGL_CALL.match(name) is not None
+    def _is_memory_layout(self, node: ast.Attribute, parent: ast.AST | None) -> bool:
+        """`T.T.flatten()`, `T.T.reshape(-1)`, `np.ravel(T.T)`, `glLoadMatrixf(T.T)`: a column-major buffer."""
+        if isinstance(parent, ast.Attribute) and parent.value is node:
+            if parent.attr == "reshape":
+                call = self.facts.parent(parent)
+                return isinstance(call, ast.Call) and _is_flat_shape(call.args)
+            return parent.attr in _FLATTENING
+        if isinstance(parent, ast.Call) and any(arg is node for arg in parent.args):
+            name = last_name(parent.func) or ""
+            if name == "reshape":
+                return _is_flat_shape(parent.args[1:])
+            return name in _FLATTENING or _OPENGL_CALL.match(name) is not None
         return False
+
+
+def _is_flat_shape(args: list[ast.expr]) -> bool:
+    """`(-1)`, `(16,)`, `-1`: a reshape to one dimension."""
+    if len(args) == 1 and isinstance(args[0], (ast.Tuple, ast.List)):
+        args = list(args[0].elts)
+    return len(args) == 1 and number(args[0]) in (-1, 16)

@@ -2,18 +2,18 @@
 
 from __future__ import annotations
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.conventions import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_order
-from geolint.semantic.model import last_name
+from geolint.factbase.model import FactBase, positional_args, replace_span, string
+from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_order
+from geolint.factbase.rule_support import FactRule
 from geolint.semantic.prefilter import Trigger, may_pass_quaternion
-from geolint.semantic.rule_support import SemanticRule
 
 _COMPONENTS = "wxyz"
 
 
-class QuaternionOrder(SemanticRule):
+class QuaternionOrder(FactRule):
     """Quaternion components are listed in the order of the other convention.
 
     ## What it does
@@ -82,58 +82,52 @@ class QuaternionOrder(SemanticRule):
         ),
     ]
 
-    def visit_Call(self, node: cst.Call) -> None:
-        expected = quaternion_order(self.model, node)
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.Call):
+            self._check(node)  # type: ignore[arg-type]
+
+    def _check(self, node: ast.Call) -> None:
+        facts = self.facts
+        expected = quaternion_order(facts, node)
         if expected is None:
             return
-        positional = [arg for arg in node.args if arg.keyword is None and not arg.star]
-        if len(positional) == 4 and len(node.args) == 4:
-            order = _order([arg.value for arg in positional])
+        positional = positional_args(node)
+        if len(positional) == 4 and len(node.args) == 4 and not node.keywords:
+            order = _order(facts, positional)
             if order is not None and order != expected and _is_other_convention(order, expected):
-                replacement = node.with_changes(args=_reordered(list(node.args), order, expected))
-                self._report(node, order, expected, replacement)
+                self._report(node, node, positional, order, expected)
             return
-        if not positional or not isinstance(positional[0].value, (cst.List, cst.Tuple)):
+        if not positional or not isinstance(positional[0], (ast.List, ast.Tuple)):
             return
-        sequence = positional[0].value
-        elements = list(sequence.elements)
-        if len(elements) != 4 or any(isinstance(element, cst.StarredElement) for element in elements):
+        sequence = positional[0]
+        elements = list(sequence.elts)
+        if len(elements) != 4 or any(isinstance(element, ast.Starred) for element in elements):
             return
-        order = _order([element.value for element in elements])
+        order = _order(facts, elements)
         if order is None or order == expected or not _is_other_convention(order, expected):
             return
-        # The reported span excludes the sequence's own parentheses, so the replacement must too.
-        fixed = sequence.with_changes(elements=_reordered(elements, order, expected), lpar=[], rpar=[])
-        self._report(sequence, order, expected, fixed)
+        self._report(sequence, node, elements, order, expected)
 
-    def _report(self, node: cst.CSTNode, order: str, expected: str, replacement: cst.CSTNode) -> None:
+    def _report(self, reported: ast.expr, call: ast.Call, items: list[ast.expr], order: str, expected: str) -> None:
+        by_component = {component: item for component, item in zip(order, items)}
+        edits = [(item, self.facts.index.segment(by_component[component])) for item, component in zip(items, expected)]
         self.report(
-            node,
+            reported,
             f"quaternion components are in ({', '.join(order)}) order, but "
-            f"`{self.code_of(node.func) if isinstance(node, cst.Call) else self._callee(node)}` expects "
-            f"{api_label(expected)}",
-            replacement=replacement,
+            f"`{self.code_of(call.func)}` expects {api_label(expected)}",
+            replacement=replace_span(self.facts.index, reported, edits),  # type: ignore[arg-type]
             fix_description=f"reorder to {', '.join(expected)}",
         )
-
-    def _callee(self, node: cst.CSTNode) -> str:
-        call = self.model.parent(self.model.parent(node) or node)
-        return self.code_of(call.func) if isinstance(call, cst.Call) else "the call"
 
 
 def _is_other_convention(order: str, expected: str) -> bool:
     return {order, expected} == {SCALAR_FIRST, SCALAR_LAST}
 
 
-def _reordered(items: list, order: str, expected: str) -> list:
-    """Move the values so that position i holds component expected[i]; commas stay in place."""
-    values = {component: item.value for component, item in zip(order, items)}
-    return [item.with_changes(value=values[component]) for item, component in zip(items, expected)]
-
-
-def _order(values: list[cst.BaseExpression]) -> str | None:
+def _order(facts: FactBase, values: list[ast.expr]) -> str | None:
     """'wxyz' for `[q.w, q.x, q.y, q.z]` (attributes of one object, or names like qw/q_w/w)."""
-    components = [_component(value) for value in values]
+    components = [_component(facts, value) for value in values]
     if any(component is None for component in components):
         return None
     letters = "".join(component[0] for component in components)  # type: ignore[index]
@@ -143,24 +137,21 @@ def _order(values: list[cst.BaseExpression]) -> str | None:
     return letters
 
 
-def _component(value: cst.BaseExpression) -> tuple[str, str] | None:
+def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
     """The quaternion component a value names, with what it belongs to."""
-    if isinstance(value, cst.Attribute) and value.attr.value in _COMPONENTS:
-        return value.attr.value, cst.Module([]).code_for_node(value.value)
-    if isinstance(value, cst.Subscript) and len(value.slice) == 1:
-        index = value.slice[0].slice
-        if isinstance(index, cst.Index) and isinstance(index.value, cst.SimpleString):
-            key = index.value.evaluated_value
-            if key in _COMPONENTS:
-                return str(key), cst.Module([]).code_for_node(value.value)
-    name = last_name(value) if isinstance(value, cst.Name) else None
-    if name is None:
+    if isinstance(value, ast.Attribute) and value.attr in _COMPONENTS:
+        return value.attr, ast.dump(value.value)
+    if isinstance(value, ast.Subscript):
+        key = string(value.slice)
+        if key is not None and key in _COMPONENTS and len(key) == 1:
+            return key, ast.dump(value.value)
+    if not isinstance(value, ast.Name):
         return None
-    lowered = name.lower()
-    if lowered in _COMPONENTS:
+    lowered = value.id.lower()
+    if lowered in _COMPONENTS and len(lowered) == 1:
         return lowered, ""
     for prefix in ("q", "q_", "quat_", "quat", "rot_", "orientation_", "ori_"):
         rest = lowered[len(prefix) :]
-        if lowered.startswith(prefix) and rest in _COMPONENTS:
+        if lowered.startswith(prefix) and len(rest) == 1 and rest in _COMPONENTS:
             return rest, prefix
     return None

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import math
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.conventions import TRIG_FUNCTIONS, is_scipy_rotation_method
-from geolint.semantic.model import int_literal, last_name
+from geolint.factbase.model import keyword, last_name, number, positional_args, string
+from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
+from geolint.factbase.rule_support import FactRule
 from geolint.semantic.prefilter import Trigger, may_pass_degrees
-from geolint.semantic.rule_support import SemanticRule, keyword_arg
 
 _TWO_PI = 2 * math.pi
 _SPATIALMATH_ANGLE_CALLS = frozenset(
@@ -18,7 +18,7 @@ _SPATIALMATH_ANGLE_CALLS = frozenset(
 )
 
 
-class DegreesAsRadians(SemanticRule):
+class DegreesAsRadians(FactRule):
     """Angles written in degrees are passed to an API that reads radians.
 
     ## What it does
@@ -76,7 +76,11 @@ class DegreesAsRadians(SemanticRule):
         Invalid("import pytransform3d.rotations as pr\nm = pr.active_matrix_from_angle(2, 90)\n"),
     ]
 
-    def visit_Call(self, node: cst.Call) -> None:
+    def run(self) -> None:
+        for node in self.facts.index.nodes(ast.Call):
+            self._check(node)  # type: ignore[arg-type]
+
+    def _check(self, node: ast.Call) -> None:
         angles = self._radian_angles(node)
         if angles is None:
             return
@@ -85,8 +89,8 @@ class DegreesAsRadians(SemanticRule):
             return
         shown = _format(too_big[0])
         fix = None
-        if is_scipy_rotation_method(self.model, node.func, "from_euler", "from_rotvec") and _keyword(node, "degrees") is None:
-            fix = node.with_changes(args=(*node.args, keyword_arg("degrees", "True")))
+        if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
+            fix = _with_keyword(self.facts.index.segment(node), "degrees=True")
         self.report(
             node,
             f"`{self.code_of(node.func)}` takes radians, but the literal angle {shown} is above 2 pi: "
@@ -95,21 +99,22 @@ class DegreesAsRadians(SemanticRule):
             fix_description="pass degrees=True",
         )
 
-    def _radian_angles(self, node: cst.Call) -> list[float] | None:
+    def _radian_angles(self, node: ast.Call) -> list[float] | None:
         """The literal angles of a call to a radian API, or None when the call is not one (or opted into degrees)."""
+        facts = self.facts
         func = node.func
-        positional = [arg.value for arg in node.args if arg.keyword is None and not arg.star]
+        positional = positional_args(node)
         name = last_name(func) or ""
-        if is_scipy_rotation_method(self.model, func, "from_euler", "from_rotvec"):
-            degrees = _keyword(node, "degrees")
-            if degrees is not None and not (isinstance(degrees.value, cst.Name) and degrees.value.value == "False"):
+        if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
+            degrees = keyword(node, "degrees")
+            if degrees is not None and not (isinstance(degrees.value, ast.Constant) and degrees.value.value is False):
                 return None
             if name == "from_euler":
-                angles = positional[1] if len(positional) > 1 else getattr(_keyword(node, "angles"), "value", None)
+                angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
             else:
-                angles = positional[0] if positional else getattr(_keyword(node, "rotvec"), "value", None)
+                angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
             return _literals(angles) if angles is not None else None
-        qualified = self.model.qualified_name(func) or ""
+        qualified = facts.qualified_name(func) or ""
         name = qualified.rsplit(".", 1)[-1] if qualified else name  # through `import ... as`
         if qualified.startswith("transforms3d."):
             if name.startswith("euler2"):
@@ -122,37 +127,42 @@ class DegreesAsRadians(SemanticRule):
             if name.endswith("_from_angle") and len(positional) > 1:
                 return _literals(positional[1])
         if qualified.startswith("spatialmath") and name in _SPATIALMATH_ANGLE_CALLS:
-            if _keyword(node, "unit") is not None or any(isinstance(value, cst.SimpleString) for value in positional[1:]):
+            if keyword(node, "unit") is not None or any(string(value) is not None for value in positional[1:]):
                 return None
             return _literals_of(positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3])
         if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
             return _literals_of(positional[:3])
         if name in TRIG_FUNCTIONS and len(positional) == 1 and (
-            self.model.is_numpy(func, *TRIG_FUNCTIONS) or qualified in {f"math.{fn}" for fn in TRIG_FUNCTIONS}
+            facts.is_array_call(func, *TRIG_FUNCTIONS) or qualified in {f"math.{fn}" for fn in TRIG_FUNCTIONS}
         ):
-            value = int_literal(positional[0])
+            value = number(positional[0])
             if value is not None and value == int(value) and int(value) % 15 == 0 and abs(value) <= 720:
                 return [float(value)]
         return None
 
 
-def _keyword(node: cst.Call, keyword: str) -> cst.Arg | None:
-    return next((arg for arg in node.args if arg.keyword is not None and arg.keyword.value == keyword), None)
+def _with_keyword(call_text: str, argument: str) -> str:
+    """The call's text with `argument` added last (after a trailing comma, if there is one)."""
+    body = call_text.rstrip()
+    assert body.endswith(")")
+    inner = body[:-1].rstrip()
+    separator = " " if inner.endswith((",", "(")) else ", "
+    return f"{inner}{separator}{argument})"
 
 
-def _literals(node: cst.BaseExpression) -> list[float]:
+def _literals(node: ast.AST) -> list[float]:
     """The numeric literals of an angle expression: a number, or a (nested) list/tuple of them."""
-    value = int_literal(node)
+    value = number(node)
     if value is not None:
         return [float(value)]
-    if isinstance(node, (cst.List, cst.Tuple)):
-        return [found for element in node.elements for found in _literals(element.value)]
-    if isinstance(node, cst.Call) and last_name(node.func) in ("array", "asarray") and node.args:
-        return _literals(node.args[0].value)
+    if isinstance(node, (ast.List, ast.Tuple)):
+        return [found for element in node.elts for found in _literals(element)]
+    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and node.args:
+        return _literals(node.args[0])
     return []
 
 
-def _literals_of(nodes: list[cst.BaseExpression]) -> list[float]:
+def _literals_of(nodes: list[ast.expr]) -> list[float]:
     return [found for node in nodes for found in _literals(node)]
 
 

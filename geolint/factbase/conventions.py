@@ -1,0 +1,177 @@
+"""The project's naming order, learned from its own code: does `T_a_b` map b into a (dst-first,
+`T_world_cam @ p_cam`) or a into b (src-first, autolab_core's `T_obj_world`)?
+
+Evidence, strongest first:
+
+- declarations bound to names: `T_obj_world = RigidTransform(R, t, from_frame="obj", to_frame="world")`,
+  `T_a_b = X.as_frames("a", "b")`, `T_a_b = buffer.lookup_transform("a", "b", t)`. A name whose frames
+  the call states in the name's order votes for that order.
+- the internal consistency of compositions: `T_a_b @ T_b_c` only makes sense dst-first,
+  `T_b_c * T_a_b` only src-first.
+
+Declarations decide when there are any (both orders declared: mixed); otherwise compositions
+decide when one order outnumbers the other more than four to one. Mixed or absent evidence leaves both orders possible, and the
+frame rules then report only what is wrong in both readings. `[tool.geolint] naming` overrides.
+
+The whole project is read (once per process and project root; files without a declaration or a
+composition of `T_` names are skipped by a substring test before any parsing).
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+import re
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+
+from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames
+from geolint.semantic.names import TRANSFORM_LETTERS, ROTATION_LETTERS
+
+_ORDER_NAME = re.compile(r"^_*([TRXH])_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)$")
+_COMPOSITION = re.compile(
+    r"\b(?:self\.)?[TXH]_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)\b(?:\.inverse\(\))?\s*[@*]\s*"
+    r"(?:self\.)?[TXH]_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)\b(?!\.inverse|\.inv|\.T\b)"
+)
+_DECLARING = ("from_frame", "as_frames", "lookup_transform", "lookupTransform")
+_MAX_FILES = 20000
+_MAX_BYTES = 2_000_000
+
+
+@dataclass(frozen=True)
+class Votes:
+    declared_dst: int = 0
+    declared_src: int = 0
+    composed_dst: int = 0
+    composed_src: int = 0
+
+    def __add__(self, other: Votes) -> Votes:
+        return Votes(
+            self.declared_dst + other.declared_dst,
+            self.declared_src + other.declared_src,
+            self.composed_dst + other.composed_dst,
+            self.composed_src + other.composed_src,
+        )
+
+    def orders(self) -> tuple[str, ...]:
+        """The readings left open by the evidence."""
+        if self.declared_dst or self.declared_src:
+            if self.declared_dst and not self.declared_src:
+                return (DST_FIRST,)
+            if self.declared_src and not self.declared_dst:
+                return (SRC_FIRST,)
+            return (DST_FIRST, SRC_FIRST)
+        # compositions are weaker: a few that read the other way are usually the project's bugs
+        if self.composed_dst > 4 * self.composed_src:
+            return (DST_FIRST,)
+        if self.composed_src > 4 * self.composed_dst:
+            return (SRC_FIRST,)
+        return (DST_FIRST, SRC_FIRST)
+
+
+def votes_of_tree(tree: ast.Module) -> Votes:
+    """What one module's declarations say about the order of `T_a_b` names."""
+    dst = src = 0
+    for node in ast.walk(tree):
+        if not isinstance(node, (ast.Assign, ast.AnnAssign)) or not isinstance(node.value, ast.Call):
+            continue
+        targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+        declared = declared_call_frames(node.value)
+        if declared is None:
+            continue
+        frames = declared[0]
+        for target in targets:
+            name = target.attr if isinstance(target, ast.Attribute) else target.id if isinstance(target, ast.Name) else None
+            match = _ORDER_NAME.match(name or "")
+            if not match or match.group(1) not in TRANSFORM_LETTERS | ROTATION_LETTERS:
+                continue
+            first, second = match.group(2).lower(), match.group(3).lower()
+            if (first, second) == (frames.dst, frames.src):
+                dst += 1
+            elif (first, second) == (frames.src, frames.dst):
+                src += 1
+    return Votes(declared_dst=dst, declared_src=src)
+
+
+def votes_of_text(text: str) -> Votes:
+    """What a module's compositions of `T_a_b` names say (inner frames agree in one order only)."""
+    dst = src = 0
+    for match in _COMPOSITION.finditer(text):
+        a, b, c, d = (group.lower() for group in match.groups())
+        if "inverse" in match.group(0):
+            continue
+        dst_consistent, src_consistent = b == c, a == d
+        if dst_consistent and not src_consistent:
+            dst += 1
+        elif src_consistent and not dst_consistent:
+            src += 1
+    return Votes(composed_dst=dst, composed_src=src)
+
+
+def votes_of_source(source: str, tree: ast.Module | None = None) -> Votes:
+    votes = votes_of_text(source) if "_" in source else Votes()
+    if any(word in source for word in _DECLARING):
+        if tree is None:
+            try:
+                tree = ast.parse(source)
+            except (SyntaxError, ValueError, MemoryError, RecursionError):
+                return votes
+        votes = votes + votes_of_tree(tree)
+    return votes
+
+
+_lock = threading.Lock()
+_project_votes: dict[Path, Votes] = {}
+
+
+def project_root(path: str) -> Path | None:
+    """The nearest folder above `path` that holds a project marker (pyproject.toml, setup.py, .git)."""
+    try:
+        current = Path(path).resolve().parent
+    except (OSError, RuntimeError):
+        return None
+    for folder in (current, *current.parents):
+        if any((folder / marker).exists() for marker in ("pyproject.toml", "setup.py", "setup.cfg", ".git")):
+            return folder
+    return None
+
+
+def project_votes(root: Path) -> Votes:
+    """The votes of every Python file under `root` (cached per process)."""
+    with _lock:
+        cached = _project_votes.get(root)
+    if cached is not None:
+        return cached
+    total = Votes()
+    count = 0
+    for folder, dirnames, filenames in os.walk(root):
+        dirnames[:] = [d for d in dirnames if not d.startswith(".") and d not in ("node_modules", "__pycache__", "build", "dist")]
+        for filename in filenames:
+            if not filename.endswith(".py"):
+                continue
+            count += 1
+            if count > _MAX_FILES:
+                break
+            try:
+                with open(os.path.join(folder, filename), "rb") as stream:
+                    data = stream.read(_MAX_BYTES)
+                text = data.decode("utf-8", errors="replace")
+            except OSError:
+                continue
+            if "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text):
+                total = total + votes_of_source(text)
+    with _lock:
+        _project_votes[root] = total
+    return total
+
+
+def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> tuple[str, ...]:
+    """The readings of `T_a_b` names open for this file: the config's, or what the project's code says."""
+    if setting == DST_FIRST:
+        return (DST_FIRST,)
+    if setting == SRC_FIRST:
+        return (SRC_FIRST,)
+    root = project_root(path) if os.path.isfile(path) else None
+    votes = project_votes(root) if root is not None else votes_of_source(source, tree)
+    return votes.orders()

@@ -1,0 +1,295 @@
+"""One walk over a module's `ast`: parents, scopes and their bindings, imports, and nodes by type.
+
+Everything the fact base (`geolint.factbase.model`) and the rules need to look up is gathered
+here in a single iterative pass (no recursion, so absurdly deep expressions cannot overflow the
+stack), and the rules iterate the per-type node lists instead of walking the tree again.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+from typing import Union
+
+ScopeNode = Union[ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda]
+FUNCTION_NODES = (ast.FunctionDef, ast.AsyncFunctionDef)
+
+
+@dataclass(frozen=True)
+class LoopBinding:
+    """`for target in iterable` (and comprehensions): one element of `iterable`.
+
+    `position` is the index in a tuple target (`for i, n in enumerate(normals)`), else None.
+    """
+
+    iterable: ast.expr
+    position: int | None = None
+
+
+@dataclass(frozen=True)
+class ParamBinding:
+    """A function parameter: its default and annotation are the local evidence about it."""
+
+    arg: ast.arg
+    default: ast.expr | None
+    function: ast.AST
+
+
+@dataclass(frozen=True)
+class UnpackBinding:
+    """`a, b = value`: element `position` of `value` (a tuple literal, or a call's returned tuple)."""
+
+    value: ast.expr
+    position: int
+
+
+@dataclass(frozen=True)
+class OpaqueBinding:
+    """A binding nothing is known about (`with ... as`, imports, `global`)."""
+
+
+Binding = Union[ast.expr, LoopBinding, ParamBinding, UnpackBinding, OpaqueBinding]
+
+
+@dataclass
+class Scope:
+    """The names bound directly in one module, class or function body."""
+
+    node: ScopeNode
+    parent: Scope | None
+    bindings: dict[str, list[Binding]] = field(default_factory=dict)
+    # `buf[:3] = x`: name -> [(subscript target, value)]
+    subscript_stores: dict[str, list[tuple[ast.Subscript, ast.expr]]] = field(default_factory=dict)
+    # `obj.attr = value`
+    attribute_stores: list[tuple[ast.Attribute, ast.expr]] = field(default_factory=list)
+    augmented: set[str] = field(default_factory=set)
+    # names used as an operand of a matrix product (`T @ x`, `x.dot(M)`)
+    matmul_operands: set[str] = field(default_factory=set)
+    returns: list[ast.expr] = field(default_factory=list)
+
+    def bind(self, name: str, binding: Binding) -> None:
+        self.bindings.setdefault(name, []).append(binding)
+
+
+class ModuleIndex:
+    """The facts of one module that do not depend on the config."""
+
+    def __init__(self, tree: ast.Module, source: str) -> None:
+        self.tree = tree
+        self.source = source
+        self.parents: dict[ast.AST, ast.AST] = {}
+        self.scope_of_node: dict[ast.AST, Scope] = {}
+        self.scopes: dict[ast.AST, Scope] = {}
+        self.imports: dict[str, str] = {}  # local name -> qualified name
+        self.imported_modules: set[str] = set()
+        self.functions: dict[str, ast.FunctionDef | ast.AsyncFunctionDef] = {}  # module level
+        self.methods: dict[str, list[ast.FunctionDef | ast.AsyncFunctionDef]] = {}  # by name, in classes
+        self.by_type: dict[type, list[ast.AST]] = {}
+        self.self_attribute_stores: dict[str, list[ast.expr]] = {}  # `self.x = value` anywhere in a class
+        self._lines: list[str] | None = None
+        self._build()
+
+    # -- the walk ----------------------------------------------------------------------
+    def _build(self) -> None:
+        root = Scope(self.tree, None)
+        self.scopes[self.tree] = root
+        by_type = self.by_type
+        parents = self.parents
+        scope_of = self.scope_of_node
+        # (node, scope the node's code runs in)
+        stack: list[tuple[ast.AST, Scope]] = [(self.tree, root)]
+        while stack:
+            node, scope = stack.pop()
+            scope_of[node] = scope
+            kind = type(node)
+            bucket = by_type.get(kind)
+            if bucket is None:
+                by_type[kind] = [node]
+            else:
+                bucket.append(node)
+            inner = self._record(node, scope)
+            for child in ast.iter_child_nodes(node):
+                parents[child] = node
+                stack.append((child, inner if _runs_in_inner_scope(node, child) else scope))
+        for bucket in by_type.values():  # source order, which the walk above does not keep
+            bucket.sort(key=_position)
+
+    def _record(self, node: ast.AST, scope: Scope) -> Scope:
+        """Record what `node` binds in `scope`; return the scope its body runs in."""
+        if isinstance(node, FUNCTION_NODES):
+            scope.bind(node.name, OpaqueBinding())
+            if isinstance(scope.node, ast.Module):
+                self.functions[node.name] = node
+            elif isinstance(scope.node, ast.ClassDef):
+                self.methods.setdefault(node.name, []).append(node)
+            inner = Scope(node, scope)
+            self.scopes[node] = inner
+            self._bind_arguments(node.args, inner, node)
+            return inner
+        if isinstance(node, ast.Lambda):
+            inner = Scope(node, scope)
+            self.scopes[node] = inner
+            self._bind_arguments(node.args, inner, node)
+            return inner
+        if isinstance(node, ast.ClassDef):
+            scope.bind(node.name, OpaqueBinding())
+            inner = Scope(node, scope)
+            self.scopes[node] = inner
+            return inner
+        if isinstance(node, ast.Assign):
+            for target in node.targets:
+                self._bind_target(target, node.value, scope)
+        elif isinstance(node, ast.AnnAssign):
+            self._bind_target(node.target, node.value if node.value is not None else OpaqueBinding(), scope)
+        elif isinstance(node, ast.AugAssign):
+            if isinstance(node.target, ast.Name):
+                scope.augmented.add(node.target.id)
+            elif isinstance(node.target, ast.Attribute):
+                scope.attribute_stores.append((node.target, node.value))
+        elif isinstance(node, ast.NamedExpr):
+            self._bind_target(node.target, node.value, scope)
+        elif isinstance(node, (ast.For, ast.AsyncFor)):
+            self._bind_loop(node.target, node.iter, scope)
+        elif isinstance(node, ast.comprehension):
+            self._bind_loop(node.target, node.iter, scope)
+        elif isinstance(node, ast.withitem):
+            if node.optional_vars is not None:
+                self._bind_target(node.optional_vars, OpaqueBinding(), scope)
+        elif isinstance(node, ast.ExceptHandler):
+            if node.name:
+                scope.bind(node.name, OpaqueBinding())
+        elif isinstance(node, ast.BinOp):
+            if isinstance(node.op, ast.MatMult):
+                _matmul_operands(scope, node.left, node.right)
+        elif isinstance(node, ast.Call):
+            func = node.func
+            if isinstance(func, ast.Attribute) and func.attr in ("dot", "matmul"):
+                _matmul_operands(scope, func.value, *node.args)
+        elif isinstance(node, ast.Return):
+            if node.value is not None:
+                scope.returns.append(node.value)
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            for name in node.names:
+                scope.bind(name, OpaqueBinding())
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.asname:
+                    local = alias.asname
+                    self.imports[local] = alias.name
+                else:
+                    local = alias.name.split(".")[0]
+                    self.imports[local] = local
+                self.imported_modules.add(local)
+                scope.bind(local, OpaqueBinding())
+        elif isinstance(node, ast.ImportFrom):
+            if node.module and not node.level:
+                for alias in node.names:
+                    if alias.name == "*":
+                        continue
+                    local = alias.asname or alias.name
+                    self.imports[local] = f"{node.module}.{alias.name}"
+                    scope.bind(local, OpaqueBinding())
+        return scope
+
+    def _bind_arguments(self, args: ast.arguments, scope: Scope, function: ast.AST) -> None:
+        positional = [*args.posonlyargs, *args.args]
+        defaults: list[ast.expr | None] = [None] * (len(positional) - len(args.defaults)) + list(args.defaults)
+        for arg, default in zip(positional, defaults):
+            scope.bind(arg.arg, ParamBinding(arg, default, function))
+        for arg, default in zip(args.kwonlyargs, args.kw_defaults):
+            scope.bind(arg.arg, ParamBinding(arg, default, function))
+        for star in (args.vararg, args.kwarg):
+            if star is not None:
+                scope.bind(star.arg, OpaqueBinding())
+
+    def _bind_target(self, target: ast.expr, value: Binding, scope: Scope) -> None:
+        if isinstance(target, ast.Name):
+            scope.bind(target.id, value)
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            for position, element in enumerate(target.elts):
+                if isinstance(element, ast.Name) and isinstance(value, ast.expr):
+                    scope.bind(element.id, UnpackBinding(value, position))
+                else:
+                    self._bind_target(element, OpaqueBinding(), scope)
+        elif isinstance(target, ast.Starred):
+            self._bind_target(target.value, OpaqueBinding(), scope)
+        elif isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
+            if isinstance(value, ast.expr):
+                scope.subscript_stores.setdefault(target.value.id, []).append((target, value))
+        elif isinstance(target, ast.Attribute) and isinstance(value, ast.expr):
+            scope.attribute_stores.append((target, value))
+            if isinstance(target.value, ast.Name) and target.value.id == "self":
+                self.self_attribute_stores.setdefault(target.attr, []).append(value)
+
+    def _bind_loop(self, target: ast.expr, iterable: ast.expr, scope: Scope) -> None:
+        if isinstance(target, ast.Name):
+            scope.bind(target.id, LoopBinding(iterable))
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            for position, element in enumerate(target.elts):
+                if isinstance(element, ast.Name):
+                    scope.bind(element.id, LoopBinding(iterable, position))
+                else:
+                    self._bind_target(element, OpaqueBinding(), scope)
+
+    # -- queries ------------------------------------------------------------------------
+    def nodes(self, *kinds: type) -> list[ast.AST]:
+        """Every node of these types, in source order."""
+        if len(kinds) == 1:
+            return self.by_type.get(kinds[0], [])
+        found = [node for kind in kinds for node in self.by_type.get(kind, [])]
+        found.sort(key=_position)
+        return found
+
+    def parent(self, node: ast.AST) -> ast.AST | None:
+        return self.parents.get(node)
+
+    def scope_of(self, node: ast.AST) -> Scope:
+        return self.scope_of_node.get(node) or self.scopes[self.tree]
+
+    def lookup(self, name: str, scope: Scope) -> list[Binding] | None:
+        """The bindings `name` resolves to from `scope` (class bodies are skipped, as in Python)."""
+        if name in scope.bindings:
+            return scope.bindings[name]
+        current = scope.parent
+        while current is not None:
+            if not isinstance(current.node, ast.ClassDef) and name in current.bindings:
+                return current.bindings[name]
+            current = current.parent
+        return None
+
+    def code_of(self, node: ast.AST) -> str:
+        """The source text of a node (normalised to one line when it spans several)."""
+        segment = ast.get_source_segment(self.source, node) if hasattr(node, "lineno") else None
+        if segment is None:
+            try:
+                return ast.unparse(node)
+            except Exception:  # noqa: BLE001 - a message must never crash the run
+                return "?"
+        return " ".join(segment.split()) if "\n" in segment else segment
+
+    def segment(self, node: ast.AST) -> str:
+        """The exact source text of a node's span (what a replacement replaces)."""
+        return ast.get_source_segment(self.source, node) or ""
+
+
+def _runs_in_inner_scope(node: ast.AST, child: ast.AST) -> bool:
+    """Whether `child` of a scope-making `node` belongs to the new scope (not defaults, decorators, bases)."""
+    if isinstance(node, FUNCTION_NODES):
+        return not (child is node.args or child is node.returns or any(child is d for d in node.decorator_list))
+    if isinstance(node, ast.Lambda):
+        return child is node.body
+    if isinstance(node, ast.ClassDef):
+        return not any(child is other for other in (*node.bases, *node.keywords, *node.decorator_list))
+    return True
+
+
+def _position(node: ast.AST) -> tuple[int, int]:
+    return (getattr(node, "lineno", 0), getattr(node, "col_offset", 0))
+
+
+def _matmul_operands(scope: Scope, *operands: ast.expr) -> None:
+    for operand in operands:
+        while isinstance(operand, ast.Attribute) and operand.attr == "T":
+            operand = operand.value
+        if isinstance(operand, ast.Name):
+            scope.matmul_operands.add(operand.id)

@@ -1,0 +1,1012 @@
+"""The fact base the rules query: what an expression is (its `algebra.Kind`), which frames it lives in,
+and why (the evidence), on CPython's `ast`.
+
+Evidence, strongest first:
+
+1. explicit declarations: `from_frame=` / `to_frame=` keywords (autolab_core `RigidTransform`),
+   `.as_frames(from, to)`, tf2 `lookup_transform(target, source, t)`;
+2. library semantics, from the tables in `geolint.factbase.vocabulary`, keyed by qualified names
+   resolved through the module's imports (`import torch.nn.functional as F`);
+3. data flow within a module: assignments, tuple unpacking, loops and comprehensions, `self.x`
+   attributes, helpers whose every `return` agrees;
+4. names (`geolint.semantic.names`), the weakest, read under the project's naming convention
+   (`geolint.factbase.conventions`): where the order of `T_a_b` is not known, a frame question is
+   answered under both orders and the rules speak only when both agree.
+
+Every question answers None when the evidence is missing or contradictory.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from dataclasses import dataclass
+from typing import Callable, Iterator, TypeVar
+
+from geolint.algebra import FREE, Kind
+from geolint.factbase import vocabulary as vocab
+from geolint.factbase.index import (
+    Binding,
+    LoopBinding,
+    ModuleIndex,
+    OpaqueBinding,
+    ParamBinding,
+    UnpackBinding,
+)
+from geolint.lint_types import Config
+from geolint.semantic.names import (
+    Kind as NameKind,
+    NameFrames,
+    frames_of_name,
+    kind_of_name,
+    order_dependent,
+    states_geometry,
+)
+
+_T = TypeVar("_T")
+
+DST_FIRST = "dst-first"
+SRC_FIRST = "src-first"
+GEOMETRIC = frozenset({Kind.POINT, Kind.VECTOR, Kind.DIRECTION})
+OPERATORS = frozenset({Kind.TRANSFORM, Kind.ROTATION})
+_NAME_KIND = {
+    NameKind.POINT: Kind.POINT,
+    NameKind.DIRECTION: Kind.DIRECTION,
+    NameKind.TRANSFORM: Kind.TRANSFORM,
+    NameKind.ROTATION: Kind.ROTATION,
+}
+_MAX_DEPTH = 60
+
+
+@dataclass(frozen=True)
+class Homogeneous:
+    """A homogeneous 4-vector (or N x 4 array) built from `inner` with the constant `w`.
+
+    `construction` is the expression that builds it; `fixed` the source text of that expression
+    with the other w (0 <-> 1), ready to be a fix's replacement.
+    """
+
+    inner: ast.expr
+    w: int
+    construction: ast.expr
+    fixed: str
+    # False when only the use can tell a homogeneous w from a padded coordinate
+    # (`np.column_stack((xy, np.zeros(n)))` lifts 2D points to z = 0).
+    explicit: bool = True
+
+
+@dataclass(frozen=True)
+class MatMul:
+    """`left @ right` in any spelling (`@`, `.dot`, `np.dot`, `np.matmul`, `torch.matmul`)."""
+
+    node: ast.expr
+    left: ast.expr
+    right: ast.expr
+
+
+@dataclass(frozen=True)
+class FrameFact:
+    """Frames and the evidence they rest on (strongest source first)."""
+
+    frames: NameFrames
+    evidence: tuple[str, ...] = ()
+    declared: bool = False  # an explicit declaration, not a name
+
+
+# --- small ast helpers -----------------------------------------------------------------------
+
+
+def dotted_name(node: ast.AST) -> str | None:
+    """`np.linalg.norm` for that expression; None for anything but a plain dotted name."""
+    parts = []
+    while isinstance(node, ast.Attribute):
+        parts.append(node.attr)
+        node = node.value
+    if not isinstance(node, ast.Name):
+        return None
+    parts.append(node.id)
+    return ".".join(reversed(parts))
+
+
+def last_name(node: ast.AST) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    return None
+
+
+def number(node: ast.AST | None) -> int | float | None:
+    """The value of a numeric literal (with an optional unary minus), else None."""
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        inner = number(node.operand)
+        return None if inner is None else -inner
+    if isinstance(node, ast.Constant) and type(node.value) in (int, float):
+        return node.value  # type: ignore[no-any-return]
+    return None
+
+
+def string(node: ast.AST | None) -> str | None:
+    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
+
+
+def positional_args(call: ast.Call) -> list[ast.expr]:
+    return [arg for arg in call.args if not isinstance(arg, ast.Starred)]
+
+
+def keyword(call: ast.Call, name: str) -> ast.keyword | None:
+    return next((kw for kw in call.keywords if kw.arg == name), None)
+
+
+def subscript_parts(node: ast.Subscript) -> list[ast.expr]:
+    index = node.slice
+    return list(index.elts) if isinstance(index, ast.Tuple) else [index]
+
+
+def is_slice_upto(part: ast.AST, stop: int) -> bool:
+    """`:3` or `0:3` (no step)."""
+    if not isinstance(part, ast.Slice) or part.step is not None:
+        return False
+    if part.lower is not None and number(part.lower) != 0:
+        return False
+    return part.upper is not None and number(part.upper) == stop
+
+
+def is_full_slice(part: ast.AST) -> bool:
+    return isinstance(part, ast.Slice) and part.lower is None and part.upper is None and part.step is None
+
+
+def is_index(part: ast.AST, *values: int) -> bool:
+    return not isinstance(part, ast.Slice) and number(part) in values
+
+
+def is_transpose(node: ast.AST) -> bool:
+    """`x.T`, `x.mT`, `x.transpose(-1, -2)` / `x.transpose(1, 2)` / `x.swapaxes(-1, -2)`."""
+    if isinstance(node, ast.Attribute) and node.attr in ("T", "mT"):
+        return True
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in ("transpose", "swapaxes", "permute"):
+        values = [number(arg) for arg in node.args]
+        return node.func.attr != "permute" and (values == [] and node.func.attr == "transpose" or len(values) == 2 and None not in values)
+    return False
+
+
+def transposed_value(node: ast.AST) -> ast.expr | None:
+    """For `x.T` (and the torch spellings), x."""
+    if is_transpose(node):
+        return node.value if isinstance(node, ast.Attribute) else node.func.value  # type: ignore[attr-defined,no-any-return]
+    return None
+
+
+class FactBase:
+    """What the expressions of one module are, under one config. Built once per file."""
+
+    def __init__(self, index: ModuleIndex, config: Config, path: str = "<string>", orders: tuple[str, ...] = (DST_FIRST, SRC_FIRST)) -> None:
+        self.index = index
+        self.config = config
+        self.path = path
+        # the naming orders `T_a_b` may be read in; one when the project's convention is known
+        self.orders = orders
+        self._memo: dict[tuple[str, int, str], object] = {}
+        self._active: set[tuple[str, int, str]] = set()
+
+    # -- plumbing -------------------------------------------------------------------------
+    def _cached(self, tag: str, node: ast.AST, compute: Callable[[], _T], order: str = "") -> _T | None:
+        key = (tag, id(node), order)
+        if key in self._memo:
+            return self._memo[key]  # type: ignore[return-value]
+        if key in self._active or len(self._active) > _MAX_DEPTH:
+            return None  # a cycle (`x = x + v`) or runaway depth: no evidence
+        self._active.add(key)
+        try:
+            value = compute()
+        finally:
+            self._active.discard(key)
+        self._memo[key] = value
+        return value
+
+    def parent(self, node: ast.AST) -> ast.AST | None:
+        return self.index.parents.get(node)
+
+    def code_of(self, node: ast.AST) -> str:
+        return self.index.code_of(node)
+
+    def bindings(self, name: ast.Name) -> list[Binding] | None:
+        return self.index.lookup(name.id, self.index.scope_of(name))
+
+    def qualified_name(self, node: ast.AST) -> str | None:
+        """The dotted name with its first component resolved through the module's imports."""
+        dotted = dotted_name(node)
+        if dotted is None:
+            return None
+        head, _, rest = dotted.partition(".")
+        resolved = self.index.imports.get(head)
+        if resolved is None:
+            resolved = vocab.CONVENTIONAL_ALIASES.get(head) if head not in self._local_names() else None
+            if resolved is None:
+                return dotted
+        return f"{resolved}.{rest}" if rest else resolved
+
+    def _local_names(self) -> set[str]:
+        names = self._memo.get(("local", 0, ""))
+        if names is None:
+            names = {name for scope in self.index.scopes.values() for name in scope.bindings}
+            self._memo[("local", 0, "")] = names
+        return names  # type: ignore[return-value]
+
+    def is_array_call(self, func: ast.AST, *names: str) -> bool:
+        """Whether `func` is `<array library>.<one of names>` (numpy, torch, jax.numpy, cupy)."""
+        qualified = self.qualified_name(func)
+        if qualified is None:
+            return False
+        module, _, name = qualified.rpartition(".")
+        return name in names and module in vocab.ARRAY_MODULES
+
+    def is_module_like(self, node: ast.AST) -> bool:
+        """`np`, `np.linalg`, `scipy.spatial`: a (dotted) module name, never a value."""
+        if isinstance(node, ast.Attribute):
+            return node.attr not in ("T", "mT") and self.is_module_like(node.value)
+        return isinstance(node, ast.Name) and (node.id in vocab.MODULE_LIKE or node.id in self.index.imported_modules)
+
+    def is_norm_call(self, node: ast.AST) -> bool:
+        """`np.linalg.norm(x, ...)`, `torch.norm(x)`, `x.norm(dim=-1)`, possibly indexed (`[:, None]`)."""
+        if isinstance(node, ast.Subscript):
+            node = node.value
+        return isinstance(node, ast.Call) and last_name(node.func) in vocab.NORM_FUNCTIONS
+
+    def expects_failure(self, node: ast.AST) -> bool:
+        """Whether `node` is inside `with pytest.raises(...)` / `self.assertRaises(...)`."""
+        current = self.parent(node)
+        while current is not None:
+            if isinstance(current, (ast.With, ast.AsyncWith)):
+                for item in current.items:
+                    call = item.context_expr
+                    if isinstance(call, ast.Call) and last_name(call.func) in ("raises", "assertRaises", "assertRaisesRegex"):
+                        return True
+            current = self.parent(current)
+        return False
+
+    # -- matrix products -------------------------------------------------------------------
+    def matmul(self, node: ast.AST) -> MatMul | None:
+        """`a @ b`, `a.dot(b)`, `np.dot(a, b)`, `np.matmul(a, b)`, `torch.matmul/bmm(a, b)`."""
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
+            return MatMul(node, node.left, node.right)
+        if isinstance(node, ast.Call):
+            positional = positional_args(node)
+            func = node.func
+            if isinstance(func, ast.Attribute) and func.attr in ("dot", "matmul") and len(positional) == 1 and not node.keywords:
+                if not self.is_module_like(func.value):
+                    return MatMul(node, func.value, positional[0])
+            if len(positional) == 2 and len(node.args) == 2 and self.is_array_call(func, "dot", "matmul", "bmm"):
+                return MatMul(node, positional[0], positional[1])
+        return None
+
+    # -- kind --------------------------------------------------------------------------------
+    def kind_of(self, node: ast.AST) -> Kind | None:
+        """The geometric kind of an expression, or None."""
+        return self._cached("kind", node, lambda: self._kind(node))
+
+    def is_free(self, node: ast.AST) -> bool:
+        """A free vector (direction, normal, velocity...): rotated only, never translated."""
+        return self.kind_of(node) in FREE
+
+    def _kind(self, node: ast.AST) -> Kind | None:
+        if isinstance(node, ast.Name):
+            return self._kind_of_variable(node)
+        if isinstance(node, ast.Attribute):
+            if self.is_module_like(node.value):
+                return None
+            attr = node.attr
+            if attr in ("T", "mT"):
+                return self.kind_of(node.value)
+            if attr in vocab.DIRECTION_ATTRIBUTES:
+                return Kind.DIRECTION
+            if attr in vocab.POINT_ATTRIBUTES:
+                return Kind.POINT
+            if isinstance(node.value, ast.Name) and node.value.id == "self":
+                flowed = self._kind_of_self_attribute(attr)
+                if flowed is not None:
+                    return flowed
+            return self._name_kind(attr)
+        if isinstance(node, ast.Subscript):
+            base = self.kind_of(node.value)
+            if base in GEOMETRIC:
+                return base
+            if base == Kind.TRANSFORM and self.rotation_block_of(node) is not None:
+                return Kind.ROTATION
+            return None
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            kind = self.kind_of(node.operand)
+            return kind if kind in FREE else None
+        if isinstance(node, ast.BinOp):
+            return self._kind_of_binary(node)
+        if isinstance(node, ast.Call):
+            return self._kind_of_call(node)
+        return None
+
+    def _name_kind(self, name: str) -> Kind | None:
+        kind = kind_of_name(name, self.config)
+        return None if kind is None else _NAME_KIND[kind]
+
+    def _kind_of_self_attribute(self, attr: str) -> Kind | None:
+        """`self.x`: the kind every `self.x = value` of the module agrees on."""
+        stores = self.index.self_attribute_stores.get(attr)
+        if not stores:
+            return None
+        kinds = {self.kind_of(value) for value in stores}
+        return kinds.pop() if len(kinds) == 1 else None
+
+    def _kind_of_binary(self, node: ast.BinOp) -> Kind | None:
+        op = node.op
+        if isinstance(op, ast.MatMult):
+            return self._kind_of_product(node)
+        left, right = self.kind_of(node.left), self.kind_of(node.right)
+        if isinstance(op, ast.Div):
+            if self.is_norm_call(node.right):
+                return Kind.DIRECTION
+            return Kind.DIRECTION if left in FREE and right is None else None
+        if isinstance(op, ast.Mult):
+            if left in FREE and right is None and not self._is_operator_expr(node.right):
+                return left
+            if right in FREE and left is None and not self._is_operator_expr(node.left):
+                return right
+            return None
+        if isinstance(op, ast.Sub):
+            if left == Kind.POINT and right == Kind.POINT:
+                return Kind.VECTOR  # algebra.sub: a displacement
+            if left == Kind.POINT and right in FREE:
+                return Kind.POINT
+            if left in FREE and right in FREE:
+                return Kind.VECTOR if Kind.VECTOR in (left, right) else Kind.DIRECTION
+            return None
+        if isinstance(op, ast.Add):
+            if left == Kind.POINT and right in FREE or right == Kind.POINT and left in FREE:
+                return Kind.POINT
+            if left in FREE and right in FREE:
+                return Kind.VECTOR if Kind.VECTOR in (left, right) else Kind.DIRECTION
+        return None
+
+    def _is_operator_expr(self, node: ast.AST) -> bool:
+        return self.kind_of(node) in OPERATORS
+
+    def _kind_of_product(self, node: ast.AST) -> Kind | None:
+        product = self.matmul(node)
+        if product is None:
+            return None
+        left, right = self.kind_of(product.left), self.kind_of(product.right)
+        if left in OPERATORS and right in OPERATORS:
+            return Kind.ROTATION if left == right == Kind.ROTATION else Kind.TRANSFORM
+        if left == Kind.ROTATION and right in GEOMETRIC:  # algebra.apply: a rotation keeps the kind
+            return right
+        if right == Kind.ROTATION and left in GEOMETRIC:
+            return left
+        return None
+
+    def _kind_of_call(self, node: ast.Call) -> Kind | None:
+        func = node.func
+        positional = positional_args(node)
+        name = last_name(func)
+        if self.is_array_call(func, "cross") or (isinstance(func, ast.Name) and func.id == "cross"):
+            return Kind.DIRECTION
+        if name in vocab.UNIT_FUNCTIONS:
+            return Kind.DIRECTION
+        if self.matmul(node) is not None:
+            return self._kind_of_product(node)
+        if positional and self.is_array_call(func, *vocab.PASSTHROUGH_FUNCTIONS):
+            return self.kind_of(positional[0])
+        if isinstance(func, ast.Attribute) and not self.is_module_like(func.value):
+            if func.attr in vocab.PASSTHROUGH_METHODS:
+                return self.kind_of(func.value)
+            if func.attr in vocab.INVERSE_METHODS:
+                kind = self.kind_of(func.value)
+                return kind if kind in OPERATORS else None
+        if name in vocab.INVERSE_FUNCTIONS and positional:
+            kind = self.kind_of(positional[0])
+            return kind if kind in OPERATORS else None
+        qualified = self.qualified_name(func) or ""
+        library = vocab.LIBRARY_KINDS.get(qualified)
+        if library is not None:
+            return library
+        if isinstance(func, ast.Name) and func.id in self.index.functions:
+            return self._kind_of_helper(self.index.functions[func.id])
+        return None
+
+    def _kind_of_helper(self, function: ast.AST) -> Kind | None:
+        """A module-level helper's kind when every `return` has the same kind."""
+        scope = self.index.scopes.get(function)
+        if scope is None or not scope.returns:
+            return None
+        kinds = {self.kind_of(value) for value in scope.returns}
+        return kinds.pop() if len(kinds) == 1 else None
+
+    def _kind_of_variable(self, name: ast.Name) -> Kind | None:
+        stated = self._name_kind(name.id)
+        bindings = self.bindings(name) or []
+        flowed: set[Kind | None] = set()
+        for binding in bindings:
+            if self.is_non_geometric(binding):
+                return None  # `direction = "left"`, `velocity = distance / dt`, `axis=0`
+            flowed.add(self._kind_of_binding(binding))
+        if stated is not None:
+            # a free vector named as a point (or the reverse) by its own flow: the flow wins
+            known = {kind for kind in flowed if kind is not None}
+            if known and known != {stated} and not (known <= FREE and stated in FREE):
+                return None
+            return stated
+        if len(flowed) == 1:
+            return flowed.pop()
+        if None not in flowed and flowed and flowed <= FREE:
+            return Kind.VECTOR
+        return None
+
+    def _kind_of_binding(self, binding: Binding) -> Kind | None:
+        if isinstance(binding, ast.expr):
+            return self.kind_of(binding)
+        if isinstance(binding, LoopBinding):
+            iterable = binding.iterable
+            if binding.position is None:
+                return self._element_kind(iterable)
+            if isinstance(iterable, ast.Call) and isinstance(iterable.func, ast.Name):
+                args = positional_args(iterable)
+                if iterable.func.id == "enumerate" and binding.position == 1 and args:
+                    return self._element_kind(args[0])
+                if iterable.func.id == "zip" and binding.position < len(args):
+                    return self._element_kind(args[binding.position])
+        if isinstance(binding, UnpackBinding):
+            value = binding.value
+            if isinstance(value, (ast.Tuple, ast.List)) and binding.position < len(value.elts):
+                return self.kind_of(value.elts[binding.position])
+        return None
+
+    def _element_kind(self, iterable: ast.expr) -> Kind | None:
+        kind = self.kind_of(iterable)
+        return kind if kind in GEOMETRIC else None
+
+    def is_non_geometric(self, binding: Binding) -> bool:
+        """Evidence that a binding holds a scalar, a string or a flag, never a 3-vector."""
+        if isinstance(binding, ParamBinding):
+            if binding.default is not None and self.is_non_geometric(binding.default):
+                return True
+            annotation = binding.arg.annotation
+            return annotation is not None and _is_scalar_annotation(annotation)
+        if not isinstance(binding, ast.expr):
+            return False
+        if isinstance(binding, ast.Constant):
+            return binding.value is not None and binding.value is not Ellipsis
+        if isinstance(binding, (ast.JoinedStr, ast.Compare, ast.BoolOp, ast.Dict, ast.Lambda)):
+            return True
+        if isinstance(binding, ast.UnaryOp):
+            return isinstance(binding.op, ast.Not) or self.is_non_geometric(binding.operand)
+        if isinstance(binding, ast.Call):
+            name = last_name(binding.func)
+            qualified = self.qualified_name(binding.func) or ""
+            if name in ("len", "int", "float", "str", "bool", "range", "round", "abs", "sum", "max", "min"):
+                return isinstance(binding.func, ast.Name)
+            return ".random." in f".{qualified}." or qualified.startswith("random.")
+        if isinstance(binding, ast.BinOp) and isinstance(binding.op, (ast.Div, ast.Mult, ast.FloorDiv, ast.Mod, ast.Pow)):
+            # `velocity = distance / dt`: a ratio of two things that are not geometry
+            if isinstance(binding.left, (ast.List, ast.Tuple)) or isinstance(binding.right, (ast.List, ast.Tuple)):
+                return False
+            return (
+                self.kind_of(binding.left) is None
+                and self.kind_of(binding.right) is None
+                and not self._may_be_array(binding.left)
+                and not self._may_be_array(binding.right)
+            )
+        return False
+
+    def _may_be_array(self, node: ast.AST) -> bool:
+        """Whether an expression visibly builds an array (an array call, a subscript, a product)."""
+        if isinstance(node, ast.Call):
+            qualified = self.qualified_name(node.func) or ""
+            return qualified.split(".")[0] in vocab.ARRAY_ROOTS or isinstance(node.func, ast.Attribute)
+        if isinstance(node, (ast.Subscript, ast.List, ast.Tuple)):
+            return True
+        if isinstance(node, ast.BinOp):
+            return self._may_be_array(node.left) or self._may_be_array(node.right)
+        return False
+
+    # -- blocks of transforms ----------------------------------------------------------------
+    def rotation_block_of(self, node: ast.AST) -> ast.expr | None:
+        """For `M[:3, :3]` (or `M[..., :3, :3]`, `M[:, :3, :3]`), the matrix M; else None."""
+        if isinstance(node, ast.Subscript):
+            parts = _drop_batch(subscript_parts(node))
+            if len(parts) == 2 and is_slice_upto(parts[0], 3) and is_slice_upto(parts[1], 3):
+                return node.value
+        return None
+
+    def translation_of(self, node: ast.AST) -> ast.expr | None:
+        """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`), the matrix M; else None."""
+        if isinstance(node, ast.Subscript):
+            parts = _drop_batch(subscript_parts(node))
+            if len(parts) == 2 and is_slice_upto(parts[0], 3) and is_index(parts[1], 3, -1):
+                return node.value
+        return None
+
+    def is_translation_like(self, node: ast.AST) -> bool:
+        """`t`, `trans`, `translation`, `t_world_cam`, `T[:3, 3]`, `pose.translation`, `tvec`."""
+        if self.translation_of(node) is not None:
+            return True
+        word = last_name(node)
+        if word is None:
+            return False
+        if isinstance(node, ast.Attribute) and word in ("translation", "t", "trans", "p"):
+            return not self.is_module_like(node.value)
+        if not isinstance(node, ast.Name):
+            return False
+        first = node.id.strip("_").split("_")[0].lower()
+        return first in ("t", "trans", "translation", "tvec", "tran")
+
+    def has_geometric_evidence(self, node: ast.AST) -> bool:
+        """Whether a point-like expression is visibly geometric (not a file offset, a cursor
+        position or a tuple): a strong or frame-stating name, a mesh attribute, or array flow."""
+        return bool(self._cached("evidence", node, lambda: self._evidence(node)))
+
+    def _evidence(self, node: ast.AST) -> bool:
+        if isinstance(node, ast.Name):
+            if states_geometry(node.id, self.config):
+                return True
+            return any(
+                isinstance(binding, ast.expr) and self.has_geometric_evidence(binding)
+                for binding in self.bindings(node) or []
+            )
+        if isinstance(node, ast.Attribute):
+            if node.attr in ("T", "mT"):
+                return self.has_geometric_evidence(node.value)
+            return node.attr in ("vertices", "centroid", "vertex_normals", "face_normals") or states_geometry(node.attr, self.config)
+        if isinstance(node, ast.Subscript):
+            return self.has_geometric_evidence(node.value)
+        if isinstance(node, ast.Call):
+            qualified = self.qualified_name(node.func) or ""
+            return qualified.split(".")[0] in vocab.ARRAY_ROOTS or self.matmul(node) is not None
+        if isinstance(node, ast.BinOp):
+            if isinstance(node.op, ast.MatMult):
+                return True
+            return self.has_geometric_evidence(node.left) or self.has_geometric_evidence(node.right)
+        return False
+
+    # -- library transforms ------------------------------------------------------------------
+    def translating_library_object(self, node: ast.AST) -> str | None:
+        """"PyKDL.Frame" or "spatialmath.SE3" when `node` is one (built directly, through a
+        variable, or returned by a helper of this module): `*` with them translates vectors."""
+        return self._cached("library", node, lambda: self._library_object(node))
+
+    def _library_object(self, node: ast.AST) -> str | None:
+        if isinstance(node, ast.Name):
+            bindings = self.bindings(node) or []
+            values = [b for b in bindings if isinstance(b, ast.expr)]
+            found = {self.translating_library_object(b) for b in values}
+            return found.pop() if len(found) == 1 and len(bindings) == len(values) else None
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+            left, right = self.translating_library_object(node.left), self.translating_library_object(node.right)
+            return left if left is not None and left == right else None  # SE3 * SE3 is an SE3
+        if not isinstance(node, ast.Call):
+            return None
+        qualified = self.qualified_name(node.func) or ""
+        parts = qualified.split(".")
+        if parts[-1] == "Frame" and (parts[0] in ("PyKDL", "kdl") or "PyKDL" in parts):
+            return "PyKDL.Frame"
+        if "SE3" in parts and parts[0] in ("spatialmath", "SE3") and parts[-1] != "inv":
+            return "spatialmath.SE3"
+        if isinstance(node.func, ast.Name) and node.func.id in self.index.functions:
+            scope = self.index.scopes.get(self.index.functions[node.func.id])
+            if scope is not None and scope.returns:
+                found = {self.translating_library_object(value) for value in scope.returns}
+                return found.pop() if len(found) == 1 else None
+        return None
+
+    # -- frames ------------------------------------------------------------------------------
+    def frames_of(self, node: ast.AST, order: str = DST_FIRST) -> NameFrames | None:
+        """The frames of an expression (operator: dst/src; value: frame) with `T_a_b` names read
+        in `order`, or None."""
+        fact = self.frame_fact(node, order)
+        return None if fact is None else fact.frames
+
+    def frame_fact(self, node: ast.AST, order: str = DST_FIRST) -> FrameFact | None:
+        return self._cached("frames", node, lambda: self._frames(node, order), order)
+
+    def readings(self) -> tuple[str, ...]:
+        """The orders a rule must check: a frame problem is reported only when every reading has it."""
+        return self.orders
+
+    def name_frames(self, name: str, order: str) -> FrameFact | None:
+        """What a name states, read in `order` (only `T_a_b` / `R_a_b` depend on it)."""
+        stated = frames_of_name(name, self.config)
+        if stated is None:
+            return None
+        if order == SRC_FIRST and stated.is_operator and order_dependent(name):
+            return FrameFact(stated.inverted(), (f"name `{name}` (src-first)",))
+        return FrameFact(stated, (f"name `{name}`" + (" (dst-first)" if order_dependent(name) else ""),))
+
+    def _frames(self, node: ast.AST, order: str) -> FrameFact | None:
+        if isinstance(node, ast.Name):
+            return self._frames_of_variable(node, order)
+        if isinstance(node, ast.Attribute):
+            if node.attr in ("T", "mT"):
+                inner = self.frame_fact(node.value, order)
+                if inner is not None and inner.frames.is_operator:
+                    return FrameFact(inner.frames.inverted(), inner.evidence, inner.declared)
+                return inner
+            if self.is_module_like(node.value):
+                return None
+            declared = vocab.DECLARING_ATTRIBUTES.get(node.attr)
+            if declared is not None:
+                return FrameFact(declared, (f"`.{node.attr}` ({vocab.DECLARING_ATTRIBUTE_SOURCES[node.attr]})",), True)
+            return self.name_frames(node.attr, order)
+        if isinstance(node, ast.Subscript):
+            inner = self.frame_fact(node.value, order)
+            if inner is None:
+                return None
+            frames = inner.frames
+            if frames.is_operator:
+                if self.rotation_block_of(node) is not None:
+                    return FrameFact(NameFrames(dst=frames.dst, src=frames.src, operator="rotation"), inner.evidence, inner.declared)
+                if self.translation_of(node) is not None:
+                    return FrameFact(NameFrames(frame=frames.dst), inner.evidence, inner.declared)
+                return None
+            return inner
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            inner = self.frame_fact(node.operand, order)
+            return inner if inner is not None and not inner.frames.is_operator else None
+        if isinstance(node, ast.Call):
+            return self._frames_of_call(node, order)
+        if isinstance(node, ast.BinOp):
+            if isinstance(node.op, (ast.Add, ast.Sub)):
+                left, right = self.frame_fact(node.left, order), self.frame_fact(node.right, order)
+                if left is not None and not left.frames.is_operator and (right is None or right.frames == left.frames):
+                    return left
+                if right is not None and not right.frames.is_operator and left is None:
+                    return right
+                return None
+            if isinstance(node.op, ast.MatMult):
+                return self._frames_of_product(node.left, node.right, order)
+            if isinstance(node.op, ast.Mult):
+                left = self.frame_fact(node.left, order)
+                if left is not None and left.frames.is_operator and left.frames.operator == "transform":
+                    return self._frames_of_product(node.left, node.right, order)
+        return None
+
+    def _frames_of_variable(self, node: ast.Name, order: str) -> FrameFact | None:
+        bindings = self.bindings(node) or []
+        if any(self._rebinds_own_inverse(node.id, binding) for binding in bindings):
+            return None  # `world2cam = inv(world2cam)`: the name holds both directions
+        declared = [fact for fact in (self._declared_frames(b) for b in bindings if isinstance(b, ast.expr)) if fact is not None]
+        if declared:
+            frames = {fact.frames for fact in declared}
+            return declared[0] if len(frames) == 1 else None
+        stated = self.name_frames(node.id, order)
+        if stated is not None:
+            return stated
+        readings = set()
+        facts = []
+        for binding in bindings:
+            if not isinstance(binding, ast.expr):
+                return None
+            fact = self.frame_fact(binding, order)
+            facts.append(fact)
+            readings.add(None if fact is None else fact.frames)
+        if len(readings) == 1 and facts and facts[0] is not None:
+            return facts[0]
+        return None
+
+    def _rebinds_own_inverse(self, name: str, binding: Binding) -> bool:
+        if not isinstance(binding, ast.Call):
+            return False
+        inner = None
+        if isinstance(binding.func, ast.Attribute) and binding.func.attr in vocab.INVERSE_METHODS:
+            inner = binding.func.value
+        elif last_name(binding.func) in vocab.INVERSE_FUNCTIONS and binding.args:
+            inner = binding.args[0]
+        return isinstance(inner, ast.Name) and inner.id == name
+
+    def _declared_frames(self, value: ast.expr) -> FrameFact | None:
+        """Frames a call states explicitly: `from_frame=`/`to_frame=`, `.as_frames(a, b)`, `lookup_transform(target, source, t)`."""
+        if not isinstance(value, ast.Call):
+            return None
+        declared = declared_call_frames(value)
+        if declared is None:
+            return None
+        frames, how = declared
+        return FrameFact(frames, (f"{how} at line {value.lineno}",), True)
+
+    def _frames_of_call(self, node: ast.Call, order: str) -> FrameFact | None:
+        declared = self._declared_frames(node)
+        if declared is not None:
+            return declared
+        homogeneous = self.homogeneous(node)
+        if homogeneous is not None:  # [x, 1] lives where x lives
+            inner = self.frame_fact(homogeneous.inner, order)
+            return inner if inner is not None and not inner.frames.is_operator else None
+        func = node.func
+        positional = positional_args(node)
+        product = self.matmul(node)
+        if product is not None:
+            return self._frames_of_product(product.left, product.right, order)
+        if isinstance(func, ast.Attribute) and func.attr in vocab.INVERSE_METHODS and not self.is_module_like(func.value):
+            inner = self.frame_fact(func.value, order)
+            return FrameFact(inner.frames.inverted(), inner.evidence, inner.declared) if inner is not None and inner.frames.is_operator else None
+        if last_name(func) in vocab.INVERSE_FUNCTIONS and len(positional) == 1:
+            inner = self.frame_fact(positional[0], order)
+            return FrameFact(inner.frames.inverted(), inner.evidence, inner.declared) if inner is not None and inner.frames.is_operator else None
+        if positional and self.is_array_call(func, *vocab.PASSTHROUGH_FUNCTIONS):
+            return self.frame_fact(positional[0], order)
+        if isinstance(func, ast.Attribute) and func.attr in vocab.PASSTHROUGH_METHODS and not self.is_module_like(func.value):
+            return self.frame_fact(func.value, order)
+        return None
+
+    def _frames_of_product(self, left_node: ast.AST, right_node: ast.AST, order: str) -> FrameFact | None:
+        left_fact, right_fact = self.frame_fact(left_node, order), self.frame_fact(right_node, order)
+        if left_fact is None or right_fact is None:
+            return None
+        left, right = left_fact.frames, right_fact.frames
+        evidence = left_fact.evidence + right_fact.evidence
+        declared = left_fact.declared and right_fact.declared
+        from geolint.semantic.names import same_frame
+
+        if left.is_operator and right.is_operator:
+            if same_frame(left.src, right.dst) is True:
+                operator = "rotation" if left.operator == right.operator == "rotation" else "transform"
+                return FrameFact(NameFrames(dst=left.dst, src=right.src, operator=operator), evidence, declared)
+            return None
+        if left.is_operator and right.frame is not None:
+            return FrameFact(NameFrames(frame=left.dst), evidence, declared)
+        if right.is_operator and left.frame is not None:
+            return FrameFact(NameFrames(frame=right.src), evidence, declared)  # row vectors: `x @ M` applies M.T
+        return None
+
+    # -- homogeneous coordinates ---------------------------------------------------------------
+    def homogeneous(self, node: ast.AST) -> Homogeneous | None:
+        """The homogeneous construction `node` is (directly, or through a variable), or None."""
+        return self._cached("homog", node, lambda: self._homogeneous(node))
+
+    def homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
+        """The homogeneous value whose construction is exactly `node` (including an `np.ones(4)`
+        buffer filled later), or None."""
+        found = self.homogeneous(node)
+        if found is None and isinstance(node, ast.Call):
+            assign = self.parent(node)
+            if isinstance(assign, ast.Assign) and len(assign.targets) == 1 and isinstance(assign.targets[0], ast.Name):
+                found = self.homogeneous(assign.targets[0])
+        return found if found is not None and found.construction is node else None
+
+    def _homogeneous(self, node: ast.AST) -> Homogeneous | None:
+        if isinstance(node, ast.Name):
+            bindings = self.bindings(node) or []
+            if len(bindings) != 1 or not isinstance(bindings[0], ast.expr):
+                return None
+            direct = self.homogeneous(bindings[0])
+            if direct is not None:
+                return direct
+            return self._filled_buffer(node, bindings[0])
+        if isinstance(node, ast.Call):
+            return self._homogeneous_call(node)
+        if isinstance(node, ast.Subscript) and self.is_array_call(node.value, "r_", "c_"):
+            index = node.slice
+            if isinstance(index, ast.Tuple) and len(index.elts) == 2 and not any(isinstance(e, ast.Slice) for e in index.elts):
+                return self._with_w(node, index.elts[0], index.elts[1], explicit=False)
+        return None
+
+    def _homogeneous_call(self, node: ast.Call) -> Homogeneous | None:
+        positional = positional_args(node)
+        if self.is_array_call(node.func, "append") and len(positional) == 2 and len(node.args) == 2:
+            return self._with_w(node, positional[0], positional[1], explicit=False)
+        if self.is_array_call(node.func, *vocab.STACKING_FUNCTIONS) and positional:
+            sequence = positional[0]
+            if isinstance(sequence, (ast.List, ast.Tuple)) and len(sequence.elts) == 2:
+                first, second = sequence.elts
+                if not isinstance(first, ast.Starred) and self._last_axis(node):
+                    return self._with_w(node, first, second, explicit=False)
+        if self.is_array_call(node.func, "array", "asarray", "tensor", "as_tensor") and positional and isinstance(positional[0], ast.List):
+            elements = positional[0].elts
+            if len(elements) == 4:
+                base = self._components_of_one_array(elements[:3])
+                if base is not None:
+                    return self._with_w(node, base, elements[3])
+        return None
+
+    def _last_axis(self, call: ast.Call) -> bool:
+        """Whether a concatenation joins along the last axis (`axis=-1`/`dim=-1`/`axis=1`, or hstack/column_stack)."""
+        name = last_name(call.func)
+        if name in ("hstack", "column_stack"):
+            return True
+        axis = keyword(call, "axis") or keyword(call, "dim")
+        positional = positional_args(call)
+        value = axis.value if axis is not None else (positional[1] if len(positional) > 1 else None)
+        if value is None:
+            return name == "append"
+        return number(value) in (-1, 1)
+
+    def _with_w(self, construction: ast.expr, inner: ast.expr, w_node: ast.expr, explicit: bool = True) -> Homogeneous | None:
+        w, fixed_w = self._w_value(w_node)
+        if w is None or fixed_w is None:
+            return None
+        fixed = replace_span(self.index, construction, fixed_w)
+        if fixed is None:
+            return None
+        return Homogeneous(inner=inner, w=w, construction=construction, fixed=fixed, explicit=explicit)
+
+    def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[ast.AST, str]] | None]:
+        """The constant w a construction appends, and the edits (node, new text) that give the other w."""
+        literal = number(node)
+        if literal in (0, 1) and isinstance(node, ast.Constant):
+            other = 1 - int(literal)  # type: ignore[arg-type]
+            return int(literal), [(node, str(other) if isinstance(node.value, int) else f"{other}.0")]  # type: ignore[arg-type]
+        if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 1:
+            return self._w_value(node.elts[0])
+        if isinstance(node, ast.Call) and self.is_array_call(node.func, "ones", "zeros", "ones_like", "zeros_like"):
+            w = 1 if last_name(node.func) in ("ones", "ones_like") else 0
+            return w, [(_name_node_of(node.func), _SWAP[last_name(node.func) or ""])]
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in ("type_as", "to", "astype", "float", "double"):
+            return self._w_value(node.func.value)
+        return None, None
+
+    def used_as_homogeneous(self, homogeneous: Homogeneous) -> bool:
+        """Whether a construction is visibly used as homogeneous: built explicitly as a 4-vector,
+        multiplied by a matrix (directly or through the variable holding it), or stored under a
+        homogeneous name (`p_h`, `points_hom`)."""
+        if homogeneous.explicit:
+            return True
+        node: ast.AST = homogeneous.construction
+        parent = self.parent(node)
+        while parent is not None and is_transpose(parent):
+            node, parent = parent, self.parent(parent)
+        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
+            return True
+        if isinstance(parent, ast.Call) and node in parent.args and self.matmul(parent) is not None:
+            return True
+        if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name):
+            target = parent.targets[0].id
+            if set(target.lower().split("_")) & {"h", "hom", "homog", "homogeneous", "homo"}:
+                return True
+            return target in self.index.scope_of(parent).matmul_operands
+        return False
+
+    def _filled_buffer(self, name: ast.Name, value: ast.expr) -> Homogeneous | None:
+        """`h = np.ones(4); h[:3] = x` (or `np.ones((n, 4)); h[:, :3] = x`): homogeneous x with w = 1."""
+        if not isinstance(value, ast.Call) or not self.is_array_call(value.func, "ones", "zeros"):
+            return None
+        scope = self.index.scope_of(name)
+        stores = scope.subscript_stores.get(name.id, [])
+        fills = [stored for target, stored in stores if _is_xyz_slice(target)]
+        if len(fills) != 1 or len(stores) != 1:
+            return None
+        w = 1 if last_name(value.func) == "ones" else 0
+        fixed = replace_span(self.index, value, [(_name_node_of(value.func), _SWAP[last_name(value.func) or ""])])
+        if fixed is None:
+            return None
+        return Homogeneous(inner=fills[0], w=w, construction=value, fixed=fixed)
+
+    def _components_of_one_array(self, elements: list[ast.expr]) -> ast.expr | None:
+        """For `[x[0], x[1], x[2]]`, the expression x; else None."""
+        bases = []
+        for position, element in enumerate(elements):
+            if not isinstance(element, ast.Subscript) or not is_index(element.slice, position):
+                return None
+            bases.append(element.value)
+        codes = {ast.dump(base) for base in bases}
+        return bases[0] if len(codes) == 1 else None
+
+
+_SWAP = {"ones": "zeros", "zeros": "ones", "ones_like": "zeros_like", "zeros_like": "ones_like"}
+
+
+@dataclass(frozen=True)
+class _LastName:
+    """An edit target: only the last name of a called function (`np.ones` -> its `ones`)."""
+
+    func: ast.AST
+
+
+def _name_node_of(func: ast.AST) -> _LastName:
+    return _LastName(func)
+
+
+def _drop_batch(parts: list[ast.expr]) -> list[ast.expr]:
+    """`M[..., :3, :3]` and `M[:, :3, :3]` index a batch of matrices like `M[:3, :3]` indexes one."""
+    if len(parts) == 3 and (isinstance(parts[0], ast.Constant) and parts[0].value is Ellipsis or is_full_slice(parts[0])):
+        return parts[1:]
+    return parts
+
+
+def _is_xyz_slice(target: ast.Subscript) -> bool:
+    parts = subscript_parts(target)
+    if len(parts) == 1:
+        return is_slice_upto(parts[0], 3)
+    return len(parts) == 2 and is_full_slice(parts[0]) and is_slice_upto(parts[1], 3)
+
+
+def _is_scalar_annotation(annotation: ast.expr) -> bool:
+    text = ast.unparse(annotation)
+    words = set(re.split(r"[\s|\[\],]+", text)) - {""}
+    scalar = {"int", "float", "str", "bool", "SupportsIndex", "None", "Optional", "typing.Optional", "Literal"}
+    return bool(words) and words <= scalar | {word for word in words if word.startswith(("'", '"'))}
+
+
+def declared_call_frames(call: ast.Call) -> tuple[NameFrames, str] | None:
+    """The frames a call states in so many words, and how it states them."""
+    from_kw, to_kw = keyword(call, "from_frame"), keyword(call, "to_frame")
+    source, target = string(from_kw.value) if from_kw else None, string(to_kw.value) if to_kw else None
+    if source and target:
+        return NameFrames(dst=target.lower(), src=source.lower(), operator="transform"), f"from_frame={source!r}, to_frame={target!r}"
+    func = call.func
+    if isinstance(func, ast.Attribute) and func.attr == "as_frames" and len(call.args) >= 2:
+        source, target = string(call.args[0]), string(call.args[1])
+        if source and target:
+            return NameFrames(dst=target.lower(), src=source.lower(), operator="transform"), f".as_frames({source!r}, {target!r})"
+    if isinstance(func, ast.Attribute) and func.attr in ("lookup_transform", "lookupTransform") and len(call.args) >= 2:
+        target, source = string(call.args[0]), string(call.args[1])
+        if source and target:
+            return NameFrames(dst=target.strip("/").lower(), src=source.strip("/").lower(), operator="transform"), f"{func.attr}({target!r}, {source!r})"
+    return None
+
+
+def replace_span(index: ModuleIndex, outer: ast.AST, edits: list[tuple[ast.AST | _LastName, str]]) -> str | None:
+    """The source text of `outer` with each inner node's span replaced (for a `_LastName` target,
+    only the function's last name)."""
+    text = index.segment(outer)
+    if not text:
+        return None
+    base = _offset(index, outer.lineno, outer.col_offset)  # type: ignore[attr-defined]
+    pieces = []
+    for node, new in edits:
+        if isinstance(node, _LastName):
+            node = node.func
+            if not isinstance(node, ast.Attribute):
+                start = _offset(index, node.lineno, node.col_offset)  # type: ignore[attr-defined]
+                end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined,arg-type]
+                if start is None or end is None or base is None:
+                    return None
+                pieces.append((start - base, end - base, new))
+                continue
+            end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[arg-type]
+            start = end - len(node.attr)
+        else:
+            start = _offset(index, node.lineno, node.col_offset)  # type: ignore[attr-defined]
+            end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined,arg-type]
+        if start is None or end is None or base is None:
+            return None
+        pieces.append((start - base, end - base, new))
+    for start, end, new in sorted(pieces, reverse=True):
+        if start < 0 or end > len(text):
+            return None
+        text = text[:start] + new + text[end:]
+    return text
+
+
+def _offset(index: ModuleIndex, line: int | None, byte_column: int | None) -> int | None:
+    """The character offset in the module's source of an ast (line, UTF-8 byte column)."""
+    if line is None or byte_column is None:
+        return None
+    starts = index.__dict__.get("_line_starts")
+    if starts is None:
+        from geolint.engine import split_lines
+
+        lines = split_lines(index.source)
+        starts = [0]
+        for text in lines:
+            starts.append(starts[-1] + len(text))
+        index.__dict__["_line_starts"] = starts
+        index.__dict__["_line_texts"] = lines
+    lines = index.__dict__["_line_texts"]
+    if not 1 <= line <= len(lines):
+        return None
+    text = lines[line - 1]
+    column = byte_column if text.isascii() else len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
+    return starts[line - 1] + column  # type: ignore[no-any-return]
+
+
+def walk_within(node: ast.AST, stop_at_functions: bool = True) -> Iterator[ast.AST]:
+    """The nodes below `node` (iteratively), not entering nested functions when asked."""
+    stack = list(ast.iter_child_nodes(node))
+    while stack:
+        current = stack.pop()
+        yield current
+        if stop_at_functions and isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
+            continue
+        stack.extend(ast.iter_child_nodes(current))
+
+
+__all__ = [
+    "DST_FIRST", "SRC_FIRST", "FactBase", "FrameFact", "Homogeneous", "MatMul", "OpaqueBinding",
+    "declared_call_frames", "dotted_name", "is_index", "is_slice_upto", "last_name", "number",
+    "positional_args", "keyword", "string", "subscript_parts", "walk_within",
+]  # fmt: skip

@@ -1,0 +1,105 @@
+"""The base of the rules that reason with the fact base, and the frame checks GEO201/GEO202 share."""
+
+from __future__ import annotations
+
+import ast
+from typing import Sequence
+
+from geolint.factbase.model import FactBase, MatMul
+from geolint.lint_types import Applicability
+from geolint.rules.base import AstRule
+from geolint.semantic.names import NameFrames, same_frame
+
+
+class FactRule(AstRule):
+    """An `AstRule` that reads the module's shared fact base (`self.facts`)."""
+
+    needs_facts = True
+
+    @property
+    def facts(self) -> FactBase:
+        return self.context.facts  # type: ignore[no-any-return]
+
+    def check(self, tree: ast.Module) -> None:
+        if self.context.facts is not None:
+            self.run()
+
+    def run(self) -> None:
+        raise NotImplementedError
+
+    def report(
+        self,
+        node: ast.AST,
+        message: str,
+        *,
+        replacement: str | None = None,
+        applicability: Applicability = "safe",
+        fix_description: str = "",
+        evidence: Sequence[str] = (),
+    ) -> None:
+        """Report, except inside `with pytest.raises(...)`: code written to fail is not a bug."""
+        if self.facts.expects_failure(node):
+            return
+        super().report(
+            node, message, replacement=replacement, applicability=applicability, fix_description=fix_description, evidence=evidence
+        )
+
+    def code_of(self, node: ast.AST) -> str:
+        return self.facts.code_of(node)
+
+
+def product_operands(facts: FactBase, node: ast.AST, order: str) -> MatMul | None:
+    """A matrix product in any spelling, plus `A * B` when the left operand is a transform
+    (spatialmath `SE3 * SE3`, PyKDL `Frame * Vector`, autolab_core `RigidTransform * x`)."""
+    product = facts.matmul(node)
+    if product is not None:
+        return product
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+        left = facts.frames_of(node.left, order)
+        if left is not None and left.is_operator and left.operator == "transform":
+            return MatMul(node, node.left, node.right)
+    return None
+
+
+class ProductRule(FactRule):
+    """A rule about products whose two operands both have known frames (GEO201, GEO202).
+
+    `problem` says what is wrong with one reading of the names (or None); the rule reports only
+    when every reading the project's naming order leaves open has a problem, with the first.
+    """
+
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.BinOp, ast.Call):
+            found: list[tuple[str, tuple[str, ...]]] = []
+            for order in facts.readings():
+                product = product_operands(facts, node, order)
+                if product is None:
+                    break
+                left, right = facts.frame_fact(product.left, order), facts.frame_fact(product.right, order)
+                if left is None or right is None:
+                    # an operand inconsistent in this reading: the reading has its problem already
+                    if self._inconsistent(product.left, order) or self._inconsistent(product.right, order):
+                        continue
+                    break
+                message = self.problem(product, left.frames, right.frames)
+                if message is None:
+                    break
+                found.append((message, left.evidence + right.evidence))
+            else:
+                if found:
+                    self.report(node, found[0][0], evidence=found[0][1])
+
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> str | None:
+        raise NotImplementedError
+
+    def _inconsistent(self, node: ast.AST, order: str, depth: int = 0) -> bool:
+        """Whether a product inside `node` composes operators whose inner frames disagree in `order`."""
+        facts = self.facts
+        product = product_operands(facts, node, order)
+        if product is None or depth > 20:
+            return False
+        left, right = facts.frames_of(product.left, order), facts.frames_of(product.right, order)
+        if left is not None and right is not None and left.is_operator and right.is_operator:
+            return same_frame(left.src, right.dst) is False
+        return self._inconsistent(product.left, order, depth + 1) or self._inconsistent(product.right, order, depth + 1)

@@ -1,0 +1,96 @@
+"""The one vocabulary of the fact base: library semantics keyed by qualified names, and the words
+the cheap per-file gate looks for (derived from the same tables, never synced by hand).
+
+Names of variables (what `normals` or `T_world_cam` state) live in `geolint.semantic.names`; this
+module holds what libraries mean. The gate (`may_hold_geometry`) is a regex built from both.
+"""
+
+from __future__ import annotations
+
+import re
+
+from geolint.algebra import Kind
+from geolint.semantic import names
+from geolint.semantic.names import NameFrames
+
+# Array libraries whose functions behave alike for our purposes (numpy's names).
+ARRAY_MODULES = frozenset({"numpy", "np", "torch", "jax.numpy", "jnp", "cupy", "cp"})
+ARRAY_ROOTS = frozenset({"numpy", "np", "torch", "jax", "jnp", "cupy", "cp"})
+# Local names that mean a module by convention even when the import is not in this file.
+CONVENTIONAL_ALIASES = {"np": "numpy", "jnp": "jax.numpy", "cp": "cupy"}
+# Module aliases that are never geometric values themselves (`np.random.normal` is not a normal).
+MODULE_LIKE = frozenset({"np", "numpy", "math", "random", "torch", "scipy", "stats", "tf", "jnp", "cp", "os", "sys", "F"})
+
+DIRECTION_ATTRIBUTES = frozenset({"normals", "vertex_normals", "face_normals", "normal"})
+POINT_ATTRIBUTES = frozenset({"vertices", "points", "centroid", "origin", "position"})
+
+# Calls that return their first argument's value, reshaped, copied or moved between devices.
+PASSTHROUGH_FUNCTIONS = frozenset(
+    {
+        "asarray", "array", "copy", "asanyarray", "ascontiguousarray", "atleast_1d", "atleast_2d",
+        "squeeze", "float64", "float32", "tensor", "as_tensor", "from_numpy", "clone",
+    }
+)  # fmt: skip
+PASSTHROUGH_METHODS = frozenset(
+    {"copy", "astype", "reshape", "squeeze", "flatten", "ravel", "clone", "detach", "cpu", "cuda", "to", "float", "double", "numpy", "contiguous", "view"}
+)
+# Calls that return a unit vector.
+UNIT_FUNCTIONS = frozenset({"unitize", "normalize", "normalized", "unit_vector", "norm_vector", "normalize_vector"})
+NORM_FUNCTIONS = frozenset({"norm", "vector_norm"})
+INVERSE_FUNCTIONS = frozenset({"inv", "invert_transform", "inverse_transform", "invert", "pinv"})
+INVERSE_METHODS = frozenset({"inv", "inverse", "Inverse", "inverted", "inverse_transform"})
+# Joins along the last axis that can append a w column (`torch.cat([x, ones], dim=-1)`).
+STACKING_FUNCTIONS = frozenset({"hstack", "column_stack", "concatenate", "cat", "concat"})
+
+# Library calls whose result kind is fixed, by qualified name.
+LIBRARY_KINDS: dict[str, Kind] = {
+    "scipy.spatial.transform.Rotation.as_matrix": Kind.ROTATION,
+    "transforms3d.quaternions.quat2mat": Kind.ROTATION,
+    "transforms3d.euler.euler2mat": Kind.ROTATION,
+    "pytransform3d.rotations.matrix_from_quaternion": Kind.ROTATION,
+    "pytransform3d.transformations.transform_from": Kind.TRANSFORM,
+    "pytransform3d.transformations.transform_from_pq": Kind.TRANSFORM,
+    "trimesh.transformations.rotation_matrix": Kind.TRANSFORM,
+    "trimesh.transformations.translation_matrix": Kind.TRANSFORM,
+    "open3d.geometry.PointCloud.create_from_rgbd_image": Kind.POINT,
+    "open3d.geometry.PointCloud.create_from_depth_image": Kind.POINT,
+}
+
+# Attributes that state a convention in so many words (pycolmap, BOP, nerfstudio-style names).
+DECLARING_ATTRIBUTES: dict[str, NameFrames] = {
+    "cam_from_world": NameFrames(dst="camera", src="world", operator="transform"),
+    "world_from_cam": NameFrames(dst="world", src="camera", operator="transform"),
+    "cam_R_w2c": NameFrames(dst="camera", src="world", operator="rotation"),
+    "cam_t_w2c": NameFrames(frame="camera"),
+}
+DECLARING_ATTRIBUTE_SOURCES = {
+    "cam_from_world": "pycolmap: world to camera",
+    "world_from_cam": "pycolmap: camera to world",
+    "cam_R_w2c": "BOP: world to camera",
+    "cam_t_w2c": "BOP: world to camera",
+}
+
+# --- the gate ---------------------------------------------------------------------------------
+
+_GATE_WORDS = sorted(
+    names.DIRECTION_WORDS
+    | names.POINT_WORDS
+    | names.TRANSFORM_WORDS
+    | DIRECTION_ATTRIBUTES
+    | POINT_ATTRIBUTES
+    | UNIT_FUNCTIONS
+    | {"cross", "quat", "quaternion", "from_quat", "from_euler", "from_rotvec", "euler", "rpy", "sin", "cos", "tan"}
+    | {"transform_points", "vector_to_point", "vector_to_direction", "do_transform_cloud", "matrix_world"}
+    | {"from_frame", "to_frame", "as_frames", "lookup_transform", "Frame", "SE3", "Quaternion", "axangle"}
+)
+# Any of these (as a whole word, or a word part of a snake_case name), a `@`, or a frame-naming
+# shape (`T_a_b`, `a2b`, `a_from_b`, `p_world`) lets a file through to the analysis.
+GATE = re.compile(
+    r"@|\b[TRXH]_[A-Za-z0-9]|[a-z0-9]2[a-z]|_(?:from|to|in)_|\.dot\(|\.T\b|"
+    r"(?:\b|_)(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_)",
+)
+
+
+def may_hold_geometry(source: str) -> bool:
+    """The cheap gate: whether a module's text mentions anything the rules could reason about."""
+    return GATE.search(source) is not None
