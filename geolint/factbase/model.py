@@ -900,6 +900,11 @@ def _name_node_of(func: ast.AST) -> _LastName:
     return _LastName(func)
 
 
+def last_name_target(func: ast.AST) -> _LastName:
+    """An edit target for `replace_span` that replaces only a called function's last name."""
+    return _LastName(func)
+
+
 def _drop_batch(parts: list[ast.expr]) -> list[ast.expr]:
     """`M[..., :3, :3]` and `M[:, :3, :3]` index a batch of matrices like `M[:3, :3]` indexes one."""
     if len(parts) == 3 and (isinstance(parts[0], ast.Constant) and parts[0].value is Ellipsis or is_full_slice(parts[0])):

@@ -103,3 +103,11 @@ class ProductRule(FactRule):
         if left is not None and right is not None and left.is_operator and right.is_operator:
             return same_frame(left.src, right.dst) is False
         return self._inconsistent(product.left, order, depth + 1) or self._inconsistent(product.right, order, depth + 1)
+
+
+def with_keyword(call_text: str, argument: str) -> str:
+    """A call's source text with `argument` (`translate=False`) added last, after a trailing comma if any."""
+    body = call_text.rstrip()
+    inner = body[:-1].rstrip()
+    separator = " " if inner.endswith((",", "(")) else ", "
+    return f"{inner}{separator}{argument})"

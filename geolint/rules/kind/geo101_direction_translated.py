@@ -2,16 +2,17 @@
 
 from __future__ import annotations
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.names import Kind, kind_of_name
-from geolint.semantic.model import last_name
+from geolint.algebra import FREE
+from geolint.factbase.model import GEOMETRIC, keyword, last_name, last_name_target, positional_args, replace_span, transposed_value
+from geolint.factbase.rule_support import FactRule, with_keyword
+from geolint.semantic.names import Kind as NameKind, kind_of_name
 from geolint.semantic.prefilter import Trigger, may_translate_direction
-from geolint.semantic.rule_support import SemanticRule, keyword_arg
 
 
-class DirectionTranslated(SemanticRule):
+class DirectionTranslated(FactRule):
     """A direction (normal, axis, velocity, force) is moved by a translation.
 
     ## What it does
@@ -95,11 +96,22 @@ class DirectionTranslated(SemanticRule):
     ]
 
     # homogeneous w = 1 -----------------------------------------------------------------
-    def _check_homogeneous(self, node: cst.BaseExpression) -> None:
-        homogeneous = self.model.homogeneous_built_by(node)
-        if homogeneous is None or homogeneous.w != 1 or not self.model.used_as_homogeneous(homogeneous):
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.Call, ast.Subscript, ast.BinOp):
+            if isinstance(node, ast.BinOp):
+                self._check_binary(node)
+                continue
+            self._check_homogeneous(node)  # type: ignore[arg-type]
+            if isinstance(node, ast.Call):
+                self._check_library_call(node)
+
+    def _check_homogeneous(self, node: ast.expr) -> None:
+        facts = self.facts
+        homogeneous = facts.homogeneous_built_by(node)
+        if homogeneous is None or homogeneous.w != 1 or not facts.used_as_homogeneous(homogeneous):
             return
-        if self.model.kind_of(homogeneous.inner) != Kind.DIRECTION:
+        if not facts.is_free(homogeneous.inner):
             return
         self.report(
             node,
@@ -109,29 +121,22 @@ class DirectionTranslated(SemanticRule):
             fix_description="use w = 0 for the direction",
         )
 
-    def visit_Call(self, node: cst.Call) -> None:
-        self._check_homogeneous(node)
-        self._check_library_call(node)
-
-    def visit_Subscript(self, node: cst.Subscript) -> None:
-        self._check_homogeneous(node)
-
-    # R @ n + t --------------------------------------------------------------------------
-    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
-        if isinstance(node.operator, cst.Add):
+    def _check_binary(self, node: ast.BinOp) -> None:
+        facts = self.facts
+        if isinstance(node.op, ast.Add):
             for rotated, other in ((node.left, node.right), (node.right, node.left)):
                 direction = self._rotated_direction(rotated)
-                if direction is not None and self.model.is_translation_like(other) and not self._stored_as_point(node):
+                if direction is not None and facts.is_translation_like(other) and not self._stored_as_point(node):
                     self.report(
                         node,
                         f"direction `{self.code_of(direction)}` is rotated and then translated by "
                         f"`{self.code_of(other)}`; a direction only rotates",
-                        replacement=rotated,
+                        replacement=facts.index.segment(rotated),
                         fix_description="drop the translation",
                     )
                     return
-        if isinstance(node.operator, cst.Multiply) and self.model.kind_of(node.right) == Kind.DIRECTION:
-            library = self.model.translating_library_object(node.left)
+        if isinstance(node.op, ast.Mult) and facts.is_free(node.right):
+            library = facts.translating_library_object(node.left)
             if library is not None:
                 self.report(
                     node,
@@ -139,73 +144,65 @@ class DirectionTranslated(SemanticRule):
                     f"`{self.code_of(node.right)}` is a direction; apply only its rotation",
                 )
                 return
-        if isinstance(node.operator, cst.MatrixMultiply) and isinstance(node.left, cst.Attribute):
-            if node.left.attr.value == "matrix_world" and self.model.kind_of(node.right) == Kind.DIRECTION:
+        if isinstance(node.op, ast.MatMult) and isinstance(node.left, ast.Attribute):
+            if node.left.attr == "matrix_world" and facts.is_free(node.right):
                 self.report(
                     node,
                     f"`{self.code_of(node.left)}` translates, but `{self.code_of(node.right)}` is a direction; "
                     "rotate it with `matrix_world.to_3x3()`",
                 )
 
-    def _stored_as_point(self, node: cst.CSTNode) -> bool:
+    def _stored_as_point(self, node: ast.AST) -> bool:
         """`tip_point = R @ offset_dir + t` builds a point from a direction on purpose."""
-        parent = self.model.parent(node)
-        if isinstance(parent, cst.Assign):
+        parent = self.facts.parent(node)
+        if isinstance(parent, ast.Assign):
             return any(
-                isinstance(target.target, cst.Name) and kind_of_name(target.target.value, self.context.config) == Kind.POINT
+                isinstance(target, ast.Name) and kind_of_name(target.id, self.context.config) == NameKind.POINT
                 for target in parent.targets
             )
         return False
 
-    def _rotated_direction(self, node: cst.BaseExpression) -> cst.BaseExpression | None:
+    def _rotated_direction(self, node: ast.expr) -> ast.expr | None:
         """For `R @ n`, `n @ R.T`, `(R @ n.T).T` with n a direction, the direction n."""
-        if isinstance(node, cst.Attribute) and node.attr.value == "T":
-            node = node.value
-        product = self.model.matmul(node)
+        facts = self.facts
+        inner = transposed_value(node)
+        if inner is not None:
+            node = inner
+        product = facts.matmul(node)
         if product is None:
             return None
-        left, right = self.model.kind_of(product.left), self.model.kind_of(product.right)
-        geometric = (Kind.POINT, Kind.DIRECTION)
-        if right == Kind.DIRECTION and left not in geometric:
+        left, right = facts.kind_of(product.left), facts.kind_of(product.right)
+        if right in FREE and left not in GEOMETRIC:
             return product.right
-        if left == Kind.DIRECTION and right not in geometric:
+        if left in FREE and right not in GEOMETRIC:
             return product.left
         return None
 
-    # library calls ------------------------------------------------------------------------
-    def _check_library_call(self, node: cst.Call) -> None:
+    def _check_library_call(self, node: ast.Call) -> None:
+        facts = self.facts
         name = last_name(node.func)
-        positional = [arg.value for arg in node.args if arg.keyword is None and not arg.star]
-        if not positional or self.model.kind_of(positional[0]) != Kind.DIRECTION:
+        positional = positional_args(node)
+        if not positional or not facts.is_free(positional[0]):
             return
         if name == "transform_points":
-            translate = next((arg for arg in node.args if arg.keyword and arg.keyword.value == "translate"), None)
-            if translate is not None or len(positional) > 2:
+            if keyword(node, "translate") is not None or len(positional) > 2:
                 return
             self.report(
                 node,
                 f"`transform_points` translates its input, but `{self.code_of(positional[0])}` holds directions; "
                 "pass `translate=False`",
-                replacement=node.with_changes(
-                    args=(*node.args, keyword_arg("translate", "False"))
-                ),
+                replacement=with_keyword(facts.index.segment(node), "translate=False"),
                 applicability="unsafe",
                 fix_description="pass translate=False",
             )
         elif name == "vector_to_point":
-            qualified = self.model.qualified_name(node.func) or ""
+            qualified = facts.qualified_name(node.func) or ""
             if qualified.startswith("pytransform3d") or qualified == "vector_to_point":
                 self.report(
                     node,
                     f"`vector_to_point` gives w = 1, but `{self.code_of(positional[0])}` is a direction; "
                     "use `vector_to_direction`",
-                    replacement=node.with_changes(func=_renamed(node.func, "vector_to_direction")),
+                    replacement=replace_span(facts.index, node, [(last_name_target(node.func), "vector_to_direction")]),
                     applicability="unsafe",
                     fix_description="use vector_to_direction",
                 )
-
-
-def _renamed(func: cst.BaseExpression, new_name: str) -> cst.BaseExpression:
-    if isinstance(func, cst.Attribute):
-        return func.with_changes(attr=cst.Name(new_name))
-    return cst.Name(new_name)

@@ -4,16 +4,16 @@ from __future__ import annotations
 
 import re
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.model import last_name
-from geolint.semantic.names import Kind
+from geolint.algebra import Kind
+from geolint.factbase.model import keyword, last_name, positional_args, transposed_value
+from geolint.factbase.rule_support import FactRule
 from geolint.semantic.prefilter import Trigger, may_drop_point_translation
-from geolint.semantic.rule_support import SemanticRule
 
 
-class PointNotTranslated(SemanticRule):
+class PointNotTranslated(FactRule):
     """A point (position, vertex, centroid) loses the translation of a transform.
 
     ## What it does
@@ -68,20 +68,24 @@ class PointNotTranslated(SemanticRule):
         Invalid("from pytransform3d.transformations import vector_to_direction\nd = vector_to_direction(centroid)\n"),
     ]
 
-    def visit_Call(self, node: cst.Call) -> None:
-        self._check_homogeneous(node)
-        self._check_product(node)
-        self._check_library_call(node)
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.Call, ast.Subscript, ast.BinOp):
+            if isinstance(node, ast.Subscript):
+                self._check_homogeneous(node)
+            elif isinstance(node, ast.BinOp):
+                self._check_product(node)
+            else:
+                self._check_homogeneous(node)  # type: ignore[arg-type]
+                self._check_product(node)  # type: ignore[arg-type]
+                self._check_library_call(node)  # type: ignore[arg-type]
 
-    def visit_Subscript(self, node: cst.Subscript) -> None:
-        self._check_homogeneous(node)
-
-    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
-        self._check_product(node)
-
-    def _check_homogeneous(self, node: cst.BaseExpression) -> None:
-        homogeneous = self.model.homogeneous_built_by(node)
-        if homogeneous is None or homogeneous.w != 0 or not self.model.used_as_homogeneous(homogeneous) or self.model.kind_of(homogeneous.inner) != Kind.POINT:
+    def _check_homogeneous(self, node: ast.expr) -> None:
+        facts = self.facts
+        homogeneous = facts.homogeneous_built_by(node)
+        if homogeneous is None or homogeneous.w != 0 or not facts.used_as_homogeneous(homogeneous):
+            return
+        if facts.kind_of(homogeneous.inner) != Kind.POINT:
             return
         self.report(
             node,
@@ -92,17 +96,18 @@ class PointNotTranslated(SemanticRule):
             fix_description="use w = 1 for the point",
         )
 
-    def _check_product(self, node: cst.BaseExpression) -> None:
-        product = self.model.matmul(node)
+    def _check_product(self, node: ast.expr) -> None:
+        facts = self.facts
+        product = facts.matmul(node)
         if product is None:
             return
         for block, value in ((product.left, product.right), _row_form(product.left, product.right)):
             if block is None or value is None:
                 continue
-            matrix = self.model.rotation_block_of(block)
-            if matrix is None or self.model.kind_of(matrix) != Kind.TRANSFORM:
+            matrix = facts.rotation_block_of(block)
+            if matrix is None or facts.kind_of(matrix) != Kind.TRANSFORM:
                 continue
-            if self.model.kind_of(value) != Kind.POINT or self._translated_later(node, matrix):
+            if facts.kind_of(value) != Kind.POINT or self._translated_later(node, matrix):
                 continue
             self.report(
                 node,
@@ -111,40 +116,41 @@ class PointNotTranslated(SemanticRule):
             )
             return
 
-    def _translated_later(self, node: cst.CSTNode, matrix: cst.BaseExpression) -> bool:
+    def _translated_later(self, node: ast.AST, matrix: ast.expr) -> bool:
         """Whether the product is part of a sum, its target is added to afterwards (`q += t`),
         or the same scope reads the matrix's translation column (added after a reduction)."""
-        scope = self.model.facts.scope_of(node)
-        scope_code = self.model.facts.module.code_for_node(scope.node)
+        facts = self.facts
+        scope = facts.index.scope_of(node)
         column = rf"{re.escape(self.code_of(matrix))}\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]"
-        if re.search(column, scope_code):
+        if re.search(column, _scope_text(facts, scope.node)):
             return True
-        parent = self.model.parent(node)
-        while isinstance(parent, cst.Attribute) and parent.attr.value == "T":
-            node, parent = parent, self.model.parent(parent)
-        if isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, (cst.Add, cst.Subtract)):
+        parent = facts.parent(node)
+        while parent is not None and transposed_value(parent) is node:
+            node, parent = parent, facts.parent(parent)
+        if isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Add, ast.Sub)):
             return True
-        if isinstance(parent, cst.Assign):
-            scope = self.model.facts.scope_of(parent)
+        if isinstance(parent, ast.Assign):
+            scope = facts.index.scope_of(parent)
             for target in parent.targets:
-                if isinstance(target.target, cst.Name) and target.target.value in scope.augmented:
+                if isinstance(target, ast.Name) and target.id in scope.augmented:
                     return True
-        return not isinstance(parent, (cst.Assign, cst.Return, cst.Arg, cst.AnnAssign, cst.Element))
+        return not isinstance(parent, (ast.Assign, ast.Return, ast.Call, ast.AnnAssign, ast.List, ast.Tuple))
 
-    def _check_library_call(self, node: cst.Call) -> None:
+    def _check_library_call(self, node: ast.Call) -> None:
+        facts = self.facts
         name = last_name(node.func)
-        positional = [arg.value for arg in node.args if arg.keyword is None and not arg.star]
-        if not positional or self.model.kind_of(positional[0]) != Kind.POINT:
+        positional = positional_args(node)
+        if not positional or facts.kind_of(positional[0]) != Kind.POINT:
             return
         if name == "transform_points":
-            translate = next((arg for arg in node.args if arg.keyword and arg.keyword.value == "translate"), None)
-            if translate is not None and isinstance(translate.value, cst.Name) and translate.value.value == "False":
+            translate = keyword(node, "translate")
+            if translate is not None and isinstance(translate.value, ast.Constant) and translate.value.value is False:
                 self.report(
                     node,
                     f"`{self.code_of(positional[0])}` holds points, but `translate=False` drops the translation",
                 )
         elif name == "vector_to_direction":
-            qualified = self.model.qualified_name(node.func) or ""
+            qualified = facts.qualified_name(node.func) or ""
             if qualified.startswith("pytransform3d") or qualified == "vector_to_direction":
                 self.report(
                     node,
@@ -153,8 +159,13 @@ class PointNotTranslated(SemanticRule):
                 )
 
 
-def _row_form(left: cst.BaseExpression, right: cst.BaseExpression) -> tuple[cst.BaseExpression | None, cst.BaseExpression | None]:
+def _scope_text(facts, scope_node: ast.AST) -> str:  # type: ignore[no-untyped-def]
+    return facts.index.source if isinstance(scope_node, ast.Module) else facts.index.segment(scope_node)
+
+
+def _row_form(left: ast.expr, right: ast.expr) -> tuple[ast.expr | None, ast.expr | None]:
     """`p @ M[:3, :3].T` as (block, value); (None, None) when the right side is not a transposed block."""
-    if isinstance(right, cst.Attribute) and right.attr.value == "T":
-        return right.value, left
+    inner = transposed_value(right)
+    if inner is not None:
+        return inner, left
     return None, None

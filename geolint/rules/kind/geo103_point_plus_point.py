@@ -2,33 +2,41 @@
 
 from __future__ import annotations
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.model import int_literal, last_name
-from geolint.semantic.names import Kind
+from geolint.algebra import FREE, Kind
+from geolint.factbase.model import last_name, number
+from geolint.factbase.rule_support import FactRule
 from geolint.semantic.prefilter import Trigger, may_add_points
-from geolint.semantic.rule_support import SemanticRule
 
 _COLLECTION_WORDS = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
+# `delta_pos`, `pos_offset`, `displacement`: a displacement (a vector), never a point
+_DISPLACEMENT_WORDS = frozenset({"delta", "d", "offset", "offsets", "displacement", "disp", "shift", "step", "increment", "inc"})
+# joint-space "positions" (`arm_motor_pos`, `joint_pos`, `qpos`) are not Euclidean points
+_JOINT_SPACE_WORDS = frozenset({"joint", "joints", "motor", "motors", "qpos", "arm", "actuator", "servo", "gripper_pos"})
 
 
-def _is_collection(node: cst.BaseExpression) -> bool:
+def _name_tokens(node: ast.AST) -> set[str]:
+    name = last_name(node.value if isinstance(node, ast.Subscript) else node)
+    return set(name.lower().split("_")) if name else set()
+
+
+def _is_collection(node: ast.AST) -> bool:
     """`points`, `mesh.vertices`, `pts_world`: many positions, not one."""
-    name = last_name(node.value if isinstance(node, cst.Subscript) else node)
-    return name is not None and bool(_COLLECTION_WORDS & set(name.lower().split("_")))
+    return bool(_COLLECTION_WORDS & _name_tokens(node))
 
 
-def _is_sequence_slice(node: cst.BaseExpression) -> bool:
+def _is_sequence_slice(node: ast.AST) -> bool:
     """`points[i:]`: a sub-sequence (adding two of them concatenates lists)."""
-    return isinstance(node, cst.Subscript) and len(node.slice) == 1 and isinstance(node.slice[0].slice, cst.Slice)
+    return isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Slice)
 
 
 # Reductions that turn a sum of points into an affine combination.
 _AVERAGING_CALLS = frozenset({"mean", "average", "sum", "nanmean", "median"})
 
 
-class PointPlusPoint(SemanticRule):
+class PointPlusPoint(FactRule):
     """Two points are added, which has no geometric meaning.
 
     ## What it does
@@ -81,14 +89,21 @@ class PointPlusPoint(SemanticRule):
         Invalid("x = tip_position_world + base_position_world + offset\n"),
     ]
 
-    def visit_BinaryOperation(self, node: cst.BinaryOperation) -> None:
-        if not isinstance(node.operator, cst.Add):
-            return
-        if self.model.kind_of(node.left) != Kind.POINT or self.model.kind_of(node.right) != Kind.POINT:
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.BinOp):
+            if isinstance(node.op, ast.Add):  # type: ignore[attr-defined]
+                self._check(node)  # type: ignore[arg-type]
+
+    def _check(self, node: ast.BinOp) -> None:
+        facts = self.facts
+        if facts.kind_of(node.left) != Kind.POINT or facts.kind_of(node.right) != Kind.POINT:
             return
         if _is_sequence_slice(node.left) or _is_sequence_slice(node.right):
             return
-        if not (self.model.has_geometric_evidence(node.left) or self.model.has_geometric_evidence(node.right)):
+        if any(_DISPLACEMENT_WORDS & _name_tokens(side) or _JOINT_SPACE_WORDS & _name_tokens(side) for side in (node.left, node.right)):
+            return  # `delta_pos + pos`, `arm_motor_pos + ...`: a displacement, or joint space
+        if not (facts.has_geometric_evidence(node.left) or facts.has_geometric_evidence(node.right)):
             return  # `self._pos + pos`: file offsets, cursor positions and tuples are "positions" too
         if _is_collection(node.left) != _is_collection(node.right):
             return
@@ -100,44 +115,52 @@ class PointPlusPoint(SemanticRule):
             "positions depends on the origin (did you mean an offset, a difference or a midpoint?)",
         )
 
-    def _is_affine(self, node: cst.CSTNode) -> bool:
+    def _is_affine(self, node: ast.AST) -> bool:
         """Whether this sum is divided, scaled, averaged, or part of a combination whose point
-        weights sum to 0 or 1 (`a + b - c` reflects a point)."""
+        weights sum to 0 or 1 (`a + b - c` reflects a point): `algebra.affine_combination`."""
+        facts = self.facts
         current = node
-        parent = self.model.parent(current)
-        while isinstance(parent, cst.BinaryOperation) and isinstance(parent.operator, (cst.Add, cst.Subtract)):
-            current, parent = parent, self.model.parent(parent)
-        weight = self._point_weight(current, 1)
+        parent = facts.parent(current)
+        while isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Add, ast.Sub)):
+            current, parent = parent, facts.parent(parent)
+        weight = self._point_weight(current)
         if weight is None or weight in (0, 1):
             return True
-        if isinstance(parent, cst.BinaryOperation):
-            if isinstance(parent.operator, (cst.Divide, cst.FloorDivide)) and parent.left is current:
+        if isinstance(parent, ast.BinOp):
+            if isinstance(parent.op, (ast.Div, ast.FloorDiv)) and parent.left is current:
                 return True
-            if isinstance(parent.operator, cst.Multiply):
+            if isinstance(parent.op, ast.Mult):
                 other = parent.right if parent.left is current else parent.left
-                scale = int_literal(other)
+                scale = number(other)
                 return scale is None or abs(scale) < 1
         # Inside a list/argument of a reduction: `np.mean([a + b, ...])`, `sum(...)`.
-        while parent is not None and not isinstance(parent, (cst.BaseSmallStatement, cst.BaseCompoundStatement)):
-            if isinstance(parent, cst.Call) and last_name(parent.func) in _AVERAGING_CALLS:
+        while parent is not None and not isinstance(parent, ast.stmt):
+            if isinstance(parent, ast.Call) and last_name(parent.func) in _AVERAGING_CALLS:
                 return True
-            parent = self.model.parent(parent)
+            parent = facts.parent(parent)
         return False
 
-    def _point_weight(self, node: cst.BaseExpression, sign: int) -> int | None:
+    def _point_weight(self, root: ast.AST) -> int | None:
         """The sum of the weights of the point terms of an additive expression, or None when a
-        term of unknown kind is subtracted or scaled (it may be a point that balances the sum)."""
-        if isinstance(node, cst.BinaryOperation) and isinstance(node.operator, (cst.Add, cst.Subtract)):
-            left = self._point_weight(node.left, sign)
-            right = self._point_weight(node.right, -sign if isinstance(node.operator, cst.Subtract) else sign)
-            return None if left is None or right is None else left + right
-        if isinstance(node, cst.UnaryOperation) and isinstance(node.operator, cst.Minus):
-            return self._point_weight(node.expression, -sign)
-        kind = self.model.kind_of(node)
-        if kind == Kind.POINT:
-            return sign
-        if kind == Kind.DIRECTION:
-            return 0
-        if sign < 0 or isinstance(node, cst.BinaryOperation):
-            return None  # `- last_control`, `s * b`: could be a point
-        return 0
+        term of unknown kind is subtracted or scaled (it may be a point that balances the sum).
+        Iterative, so a chain of thousands of terms costs linear time."""
+        facts = self.facts
+        total = 0
+        stack: list[tuple[ast.AST, int]] = [(root, 1)]
+        while stack:
+            node, sign = stack.pop()
+            if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+                stack.append((node.left, sign))
+                stack.append((node.right, -sign if isinstance(node.op, ast.Sub) else sign))
+                continue
+            if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+                stack.append((node.operand, -sign))
+                continue
+            kind = facts.kind_of(node)
+            if kind == Kind.POINT:
+                total += sign
+            elif kind in FREE:
+                continue
+            elif sign < 0 or isinstance(node, ast.BinOp):
+                return None  # `- last_control`, `s * b`: could be a point
+        return total

@@ -4,20 +4,21 @@ from __future__ import annotations
 
 import re
 
-import libcst as cst
+import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.facts import ParamBinding
-from geolint.semantic.model import last_name
-from geolint.semantic.names import Kind, tokens
+from geolint.algebra import Kind
+from geolint.factbase.index import ParamBinding
+from geolint.factbase.model import GEOMETRIC, last_name, transposed_value, walk_within
+from geolint.factbase.rule_support import FactRule
+from geolint.semantic.names import tokens
 from geolint.semantic.prefilter import Trigger, may_leave_normals
-from geolint.semantic.rule_support import SemanticRule
 
 _NORMAL_TOKENS = frozenset({"normal", "normals", "nrm", "nrms"})
 _MENTIONS_NORMAL_FIELDS = re.compile(r"normal_x")
 
 
-class NormalsLeftBehind(SemanticRule):
+class NormalsLeftBehind(FactRule):
     """Points are transformed in a scope that leaves their normals in the old frame.
 
     ## What it does
@@ -97,12 +98,21 @@ class NormalsLeftBehind(SemanticRule):
         ),
     ]
 
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.Call):
+            self._check_cloud_call(node)  # type: ignore[arg-type]
+        for node in facts.index.nodes(ast.Assign):
+            self._check_points_store(node)  # type: ignore[arg-type]
+        for node in facts.index.nodes(ast.FunctionDef, ast.AsyncFunctionDef):
+            self._check_function(node)
+
     # do_transform_cloud -----------------------------------------------------------------
-    def visit_Call(self, node: cst.Call) -> None:
+    def _check_cloud_call(self, node: ast.Call) -> None:
         if last_name(node.func) != "do_transform_cloud" or not node.args:
             return
-        cloud = node.args[0].value
-        carries_normals = bool(_MENTIONS_NORMAL_FIELDS.search(self.model.facts.code)) or bool(
+        cloud = node.args[0]
+        carries_normals = bool(_MENTIONS_NORMAL_FIELDS.search(self.facts.index.source)) or bool(
             _NORMAL_TOKENS & set(tokens(last_name(cloud) or ""))
         )
         if carries_normals:
@@ -113,19 +123,19 @@ class NormalsLeftBehind(SemanticRule):
             )
 
     # obj.points = <transformed>, obj.normals untouched -------------------------------------
-    def visit_Assign(self, node: cst.Assign) -> None:
-        for target in node.targets:
-            store = target.target
-            if not isinstance(store, cst.Attribute) or store.attr.value != "points":
+    def _check_points_store(self, node: ast.Assign) -> None:
+        facts = self.facts
+        for store in node.targets:
+            if not isinstance(store, ast.Attribute) or store.attr != "points":
                 continue
-            if not self._contains_transform(node.value):
+            if _TransformFinder(self).first(node.value) is None:
                 continue
             base = self.code_of(store.value)
             if not self._module_reads_normals_of(base):
                 continue
-            scope = self.model.facts.scope_of(node)
+            scope = facts.index.scope_of(node)
             if any(
-                stored.attr.value in ("normals", "vertex_normals") and self.code_of(stored.value) == base
+                stored.attr in ("normals", "vertex_normals") and self.code_of(stored.value) == base
                 for stored, _ in scope.attribute_stores
             ):
                 continue
@@ -137,21 +147,15 @@ class NormalsLeftBehind(SemanticRule):
             )
 
     def _module_reads_normals_of(self, base: str) -> bool:
-        code = self.model.facts.code
-        return re.search(rf"{re.escape(base)}\s*\.\s*normals\b", code) is not None
+        return re.search(rf"{re.escape(base)}\s*\.\s*normals\b", self.facts.index.source) is not None
 
-    def _scope_calls_method(self, scope_node: cst.CSTNode, base: str, method: str) -> bool:
-        code = self.model.facts.module.code_for_node(scope_node)
+    def _scope_calls_method(self, scope_node: ast.AST, base: str, method: str) -> bool:
+        code = self.facts.index.source if isinstance(scope_node, ast.Module) else self.facts.index.segment(scope_node)
         return re.search(rf"{re.escape(base)}\s*\.\s*{method}\s*\(", code) is not None
 
-    def _contains_transform(self, node: cst.CSTNode) -> bool:
-        finder = _TransformFinder(self)
-        node.visit(finder)
-        return finder.found is not None
-
     # def f(points, normals, T): ... return moved_points, normals ---------------------------
-    def visit_FunctionDef(self, node: cst.FunctionDef) -> None:
-        scope = self.model.facts.scopes.get(node)
+    def _check_function(self, node: ast.AST) -> None:
+        scope = self.facts.index.scopes.get(node)
         if scope is None:
             return
         returned = _returned_names(scope.returns)
@@ -164,14 +168,13 @@ class NormalsLeftBehind(SemanticRule):
         ]
         if not left_behind:
             return
-        finder = _TransformFinder(self, params_only=scope.bindings)
-        node.body.visit(finder)
-        if finder.found is None:
+        found = _TransformFinder(self, params_only=scope.bindings).first(node, body_only=True)
+        if found is None:
             return
         for normals in left_behind:
-            if _uses_outside_returns(node.body, normals):
+            if _uses_outside_returns(node, normals):
                 continue
-            site, points = finder.found
+            site, points = found
             self.report(
                 site,
                 f"points `{points}` are moved to a new frame here, but normals `{normals}` are returned unrotated",
@@ -179,80 +182,70 @@ class NormalsLeftBehind(SemanticRule):
             return
 
 
-class _TransformFinder(cst.CSTVisitor):
+class _TransformFinder:
     """Finds the first place where a point-like value is multiplied by a matrix or transformed."""
 
-    def __init__(self, rule: NormalsLeftBehind, params_only: dict | None = None) -> None:
-        super().__init__()
+    def __init__(self, rule: NormalsLeftBehind, params_only: dict | None = None) -> None:  # type: ignore[type-arg]
         self.rule = rule
         self.params_only = params_only
-        self.found: tuple[cst.CSTNode, str] | None = None
 
-    def visit_FunctionDef(self, node: cst.FunctionDef) -> bool:
-        return False  # a nested function is another scope
-
-    def _point(self, node: cst.CSTNode) -> str | None:
-        model = self.rule.model
-        while isinstance(node, (cst.Attribute, cst.Call)):
-            if isinstance(node, cst.Attribute) and node.attr.value == "T":
-                node = node.value
-            elif isinstance(node, cst.Call) and last_name(node.func) in ("asarray", "array") and node.args:
-                node = node.args[0].value
+    def _point(self, node: ast.AST) -> str | None:
+        facts = self.rule.facts
+        while isinstance(node, (ast.Attribute, ast.Call)):
+            inner = transposed_value(node)
+            if inner is not None:
+                node = inner
+            elif isinstance(node, ast.Call) and last_name(node.func) in ("asarray", "array") and node.args:
+                node = node.args[0]
             else:
                 break
-        if model.kind_of(node) != Kind.POINT:
+        if facts.kind_of(node) != Kind.POINT:
             return None
         if self.params_only is not None:
-            if not isinstance(node, cst.Name):
+            if not isinstance(node, ast.Name):
                 return None
-            bindings = self.params_only.get(node.value, [])
+            bindings = self.params_only.get(node.id, [])
             if not bindings or not all(isinstance(binding, ParamBinding) for binding in bindings):
                 return None
         return self.rule.code_of(node)
 
-    def on_visit(self, node: cst.CSTNode) -> bool:
-        if self.found is not None:
-            return False
-        model = self.rule.model
-        product = model.matmul(node)
-        if product is not None:
-            for value, matrix in ((product.left, product.right), (product.right, product.left)):
-                points = self._point(value)
-                if points is not None and model.kind_of(matrix) not in (Kind.POINT, Kind.DIRECTION):
-                    self.found = (node, points)
-                    return False
-        if isinstance(node, cst.Call) and last_name(node.func) == "transform_points" and node.args:
-            points = self._point(node.args[0].value)
-            if points is not None:
-                self.found = (node, points)
-                return False
-        return super().on_visit(node)
+    def first(self, root: ast.AST, body_only: bool = False) -> tuple[ast.AST, str] | None:
+        """The first (in source order) product or `transform_points` call on a point inside `root`."""
+        facts = self.rule.facts
+        nodes = [root] if not body_only else []
+        nodes += sorted(walk_within(root), key=lambda n: (getattr(n, "lineno", 0), getattr(n, "col_offset", 0)))
+        for node in nodes:
+            product = facts.matmul(node)
+            if product is not None:
+                for value, matrix in ((product.left, product.right), (product.right, product.left)):
+                    points = self._point(value)
+                    if points is not None and facts.kind_of(matrix) not in GEOMETRIC:
+                        return node, points
+            if isinstance(node, ast.Call) and last_name(node.func) == "transform_points" and node.args:
+                points = self._point(node.args[0])
+                if points is not None:
+                    return node, points
+        return None
 
 
-def _returned_names(returns: list[cst.BaseExpression]) -> set[str]:
+def _returned_names(returns: list[ast.expr]) -> set[str]:
     names: set[str] = set()
     for value in returns:
-        elements = value.elements if isinstance(value, (cst.Tuple, cst.List)) else [value]
+        elements = value.elts if isinstance(value, (ast.Tuple, ast.List)) else [value]
         for element in elements:
-            inner = element.value if isinstance(element, cst.BaseElement) else element
-            if isinstance(inner, cst.Name):
-                names.add(inner.value)
+            if isinstance(element, ast.Name):
+                names.add(element.id)
     return names
 
 
-def _uses_outside_returns(body: cst.CSTNode, name: str) -> bool:
-    """Whether `name` is read anywhere in `body` other than directly in a `return`."""
-
-    class Uses(cst.CSTVisitor):
-        found = False
-
-        def visit_Return(self, node: cst.Return) -> bool:
-            return False
-
-        def visit_Name(self, node: cst.Name) -> None:
-            if node.value == name:
-                self.found = True
-
-    uses = Uses()
-    body.visit(uses)
-    return uses.found
+def _uses_outside_returns(function: ast.AST, name: str) -> bool:
+    """Whether `name` is read anywhere in the function's body other than directly in a `return`."""
+    stack = list(getattr(function, "body", []))
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ast.Return):
+            continue
+        if isinstance(node, ast.Name) and node.id == name:
+            return True
+        stack.extend(ast.iter_child_nodes(node))
+    return False

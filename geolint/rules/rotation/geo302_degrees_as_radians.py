@@ -9,7 +9,7 @@ import ast
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
-from geolint.factbase.rule_support import FactRule
+from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.semantic.prefilter import Trigger, may_pass_degrees
 
 _TWO_PI = 2 * math.pi
@@ -90,7 +90,7 @@ class DegreesAsRadians(FactRule):
         shown = _format(too_big[0])
         fix = None
         if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
-            fix = _with_keyword(self.facts.index.segment(node), "degrees=True")
+            fix = with_keyword(self.facts.index.segment(node), "degrees=True")
         self.report(
             node,
             f"`{self.code_of(node.func)}` takes radians, but the literal angle {shown} is above 2 pi: "
@@ -139,15 +139,6 @@ class DegreesAsRadians(FactRule):
             if value is not None and value == int(value) and int(value) % 15 == 0 and abs(value) <= 720:
                 return [float(value)]
         return None
-
-
-def _with_keyword(call_text: str, argument: str) -> str:
-    """The call's text with `argument` added last (after a trailing comma, if there is one)."""
-    body = call_text.rstrip()
-    assert body.endswith(")")
-    inner = body[:-1].rstrip()
-    separator = " " if inner.endswith((",", "(")) else ", "
-    return f"{inner}{separator}{argument})"
 
 
 def _literals(node: ast.AST) -> list[float]:
