@@ -24,7 +24,7 @@ from geolint.lint_types import Config, Edit, Finding, Fix, Severity
 
 CACHE_DIR_ENV = "GEOLINT_CACHE_DIR"
 CACHE_FOLDER = ".geolint_cache"
-FORMAT_VERSION = 1
+FORMAT_VERSION = 2
 
 
 def content_hash(data: bytes) -> str:
@@ -32,7 +32,7 @@ def content_hash(data: bytes) -> str:
 
 
 # The parts of the package whose code decides what a file's findings are.
-FINDINGS_SOURCES = ("rules", "semantic", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py")
+FINDINGS_SOURCES = ("rules", "semantic", "factbase", "algebra.py", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py")
 
 
 @lru_cache(maxsize=1)
@@ -134,6 +134,7 @@ def finding_to_dict(finding: Finding) -> dict[str, Any]:
             "description": fix.description,
             "edits": [[e.line, e.column, e.end_line, e.end_column, e.content] for e in fix.edits],
         },
+        "evidence": list(finding.evidence),
     }
 
 
@@ -152,4 +153,5 @@ def finding_from_dict(item: dict[str, Any], path: str) -> Finding:
         fix=None
         if fix is None
         else Fix(fix["applicability"], tuple(Edit(*edit) for edit in fix["edits"]), fix["description"]),
+        evidence=tuple(item.get("evidence", ())),
     )

@@ -109,16 +109,19 @@ def lint_source(
     visitors = [rule for rule in candidates if rule.code in on and rule.code not in ENGINE_RULE_CODES]
 
     module = None
+    syntax_error = None
     if SYNTAX_ERROR in on or visitors:
         syntax_error = _syntax_error(source)
         if syntax_error is not None:
-            module, parse_error = _libcst_parse(source)
-            if module is None:  # neither CPython nor libcst can read it
+            # only a libcst rule could still read what CPython rejects
+            if any(not _is_ast_rule(rule) for rule in visitors):
+                module, parse_error = _libcst_parse(source)
+            if module is None:
                 line, column, message = syntax_error
                 return _only_syntax_error(path, config, rules, line, column, f"syntax error: {message}")
 
     active = [rule for rule in visitors if _may_fire(rule, source, config)]
-    ast_rules = [rule for rule in active if _is_ast_rule(rule)]
+    ast_rules = [rule for rule in active if _is_ast_rule(rule)] if syntax_error is None else []
     cst_rules = [rule for rule in active if not _is_ast_rule(rule)]
     findings: list[Finding] = []
     if ast_rules:
@@ -183,10 +186,8 @@ def _facts_for(
     """The file's fact base, built once for all rules that ask for it (`needs_facts`); None otherwise."""
     if not any(getattr(rule, "needs_facts", False) for rule in rule_classes):
         return None
-    try:
-        from geolint.factbase import facts_for_module
-    except ImportError:  # the fact base is not there yet
-        return None
+    from geolint.factbase import facts_for_module
+
     return facts_for_module(tree, source, path, config)
 
 
@@ -228,6 +229,7 @@ def _ast_finding(rule: AstRule, report: AstReport, columns: _CharacterColumns, p
         message=report.message,
         severity=_severity_of(rule.code, config, rule.default_severity),
         fix=fix,
+        evidence=report.evidence,
     )
 
 

@@ -58,6 +58,8 @@ class Finding:
     message: str
     severity: Severity
     fix: Fix | None = None
+    # why the rule believes it, strongest evidence first ("from_frame='obj', to_frame='world' at line 12")
+    evidence: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)

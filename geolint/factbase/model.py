@@ -692,10 +692,10 @@ class FactBase:
         if not isinstance(binding, ast.Call):
             return False
         inner = None
-        if isinstance(binding.func, ast.Attribute) and binding.func.attr in vocab.INVERSE_METHODS:
-            inner = binding.func.value
-        elif last_name(binding.func) in vocab.INVERSE_FUNCTIONS and binding.args:
+        if last_name(binding.func) in vocab.INVERSE_FUNCTIONS and binding.args:
             inner = binding.args[0]
+        elif isinstance(binding.func, ast.Attribute) and binding.func.attr in vocab.INVERSE_METHODS:
+            inner = binding.func.value
         return isinstance(inner, ast.Name) and inner.id == name
 
     def _declared_frames(self, value: ast.expr) -> FrameFact | None:

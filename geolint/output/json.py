@@ -1,7 +1,8 @@
 """`--format json`: one JSON array, one object per finding with exactly the keys
 `path`, `line`, `column`, `end_line`, `end_column` (1-based; end exclusive), `code`, `name`,
 `message`, `severity`, `fix` (null, or `{"applicability": "safe"|"unsafe", "edits": [...]}` where
-each edit is `{"line", "column", "end_line", "end_column", "content"}`). `[]` when clean.
+each edit is `{"line", "column", "end_line", "end_column", "content"}`), and, only when the rule
+states why, `evidence` (a list of strings, strongest first). `[]` when clean.
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from geolint.lint_types import Finding, Severity
 
 def finding_as_json(finding: Finding) -> dict[str, Any]:
     fix = finding.fix
-    return {
+    shown = {
         "path": finding.path,
         "line": finding.line,
         "column": finding.column,
@@ -40,6 +41,9 @@ def finding_as_json(finding: Finding) -> dict[str, Any]:
             ],
         },
     }
+    if finding.evidence:
+        shown["evidence"] = list(finding.evidence)
+    return shown
 
 
 def render(findings: Sequence[Finding], *, color: bool = False) -> str:

@@ -1,5 +1,5 @@
-"""The linter's semantic model: what a value in plain numpy code is (point, direction, transform)
-and which frames it lives in, read from names, library calls and simple data flow.
+"""Name-level vocabulary shared by the linter, the frames graph, the mypy plugin and the editor server.
 
-`names` reads a single name; `model` reads a whole module once per file for all rules.
+`names` reads what a single name states (kind, frames); `prefilter` is the per-rule `ast` gate.
+The fact base that reasons about whole modules lives in `geolint.factbase`.
 """

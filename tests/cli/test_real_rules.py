@@ -27,9 +27,10 @@ def test_real_findings_follow_the_json_contract_and_fix_to_a_fixed_point(cli_rea
     codes = {f["code"] for f in findings}
     assert {"GEO302", "GEO201"} <= codes
     for finding in findings:
-        assert set(finding) == {
+        assert set(finding) - {"evidence"} == {
             "path", "line", "column", "end_line", "end_column", "code", "name", "message", "severity", "fix",
         }  # fmt: skip
+        assert all(isinstance(reason, str) for reason in finding.get("evidence", []))  # optional: why
         assert finding["path"] == "robot.py"
         assert finding["severity"] in {"error", "warning", "info", "hint"}
 

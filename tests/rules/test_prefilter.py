@@ -67,7 +67,7 @@ def test_unparsable_text_always_passes() -> None:
 
 
 def test_prefilter_knows_every_call_the_model_reads_as_a_direction() -> None:
-    from geolint.semantic.model import UNIT_FUNCTIONS
+    from geolint.factbase.vocabulary import UNIT_FUNCTIONS
     from geolint.semantic.prefilter import _DIRECTION_MAKERS
 
     assert UNIT_FUNCTIONS | {"cross", "norm", "vector_norm"} <= _DIRECTION_MAKERS

@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
-import libcst as cst
-import pytest
-from libcst.metadata import MetadataWrapper
+import ast
 
+import pytest
+
+from geolint.algebra import Kind as Algebra
+from geolint.factbase.index import ModuleIndex
+from geolint.factbase.model import DST_FIRST, SRC_FIRST, FactBase
 from geolint.lint_types import Config, NamingConventions
-from geolint.semantic.facts import SemanticFactsProvider
-from geolint.semantic.model import SemanticModel, model_for
 from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_name, same_frame
 from geolint.semantic.prefilter import summarize
 
@@ -101,43 +102,49 @@ def test_same_frame_does_not_compare_a_word_with_its_abbreviation() -> None:
     assert same_frame("camera", "base") is False
 
 
-def model_of(source: str) -> tuple[SemanticModel, cst.Module]:
-    wrapper = MetadataWrapper(cst.parse_module(source), unsafe_skip_copy=True)
-    facts = wrapper.resolve(SemanticFactsProvider)[wrapper.module]
-    return model_for(facts, Config()), wrapper.module
+def model_of(source: str, orders: tuple[str, ...] = (DST_FIRST,)) -> tuple[FactBase, ast.Module]:
+    tree = ast.parse(source)
+    return FactBase(ModuleIndex(tree, source), Config(), "<string>", orders), tree
 
 
-def last_value(module: cst.Module) -> cst.BaseExpression:
-    statement = module.body[-1].body[0]  # type: ignore[attr-defined]
-    return statement.value
+def last_value(module: ast.Module) -> ast.expr:
+    return module.body[-1].value  # type: ignore[attr-defined,no-any-return]
 
 
 @pytest.mark.parametrize(
     ("source", "kind"),
     [
-        ("import numpy as np\nx = np.cross(a, b)\nx\n", Kind.DIRECTION),
-        ("import numpy as np\nd = offset / np.linalg.norm(offset)\nd\n", Kind.DIRECTION),
-        ("delta = tip_position - base_position\ndelta\n", Kind.DIRECTION),
-        ("for item in normals:\n    pass\nitem\n", Kind.DIRECTION),
-        ("for i, item in enumerate(points):\n    pass\nitem\n", Kind.POINT),
-        ("alias = mesh.vertices\nalias\n", Kind.POINT),
-        ("row = normals[3]\nrow\n", Kind.DIRECTION),
-        ("def helper():\n    return mesh.face_normals\nhelper()\n", Kind.DIRECTION),
+        ("import numpy as np\nx = np.cross(a, b)\nx\n", Algebra.DIRECTION),
+        ("import numpy as np\nd = offset / np.linalg.norm(offset)\nd\n", Algebra.DIRECTION),
+        ("delta = tip_position - base_position\ndelta\n", Algebra.VECTOR),  # the algebra: p - q is a vector
+        ("for item in normals:\n    pass\nitem\n", Algebra.DIRECTION),
+        ("for i, item in enumerate(points):\n    pass\nitem\n", Algebra.POINT),
+        ("alias = mesh.vertices\nalias\n", Algebra.POINT),
+        ("row = normals[3]\nrow\n", Algebra.DIRECTION),
+        ("def helper():\n    return mesh.face_normals\nhelper()\n", Algebra.DIRECTION),
+        ("import torch\nn = torch.cross(a, b, dim=-1)\nm = n.detach().cpu()\nm\n", Algebra.DIRECTION),
+        ("class C:\n    def __init__(self, mesh):\n        self.vn = mesh.vertex_normals\nC().vn\n", None),
+        ("a, b = mesh.vertices, mesh.face_normals\nb\n", Algebra.DIRECTION),
         ('direction = "left"\ndirection\n', None),
         ("velocity = distance / dt\nvelocity\n", None),
         ("import numpy as np\nnormal = np.random.normal(size=3)\nnormal\n", None),
-        ("def f(axis=0):\n    return axis\nf\n", None),
     ],
 )
-def test_kind_flow(source: str, kind: Kind | None) -> None:
+def test_kind_flow(source: str, kind: Algebra | None) -> None:
     model, module = model_of(source)
-    value = last_value(module)
-    if isinstance(value, cst.Name) and value.value == "f":
-        function = module.body[0]
-        returned = function.body.body[0].body[0].value  # type: ignore[attr-defined]
-        assert model.kind_of(returned) == kind
-        return
-    assert model.kind_of(value) == kind
+    assert model.kind_of(last_value(module)) == kind
+
+
+def test_self_attribute_flow() -> None:
+    source = "class Cloud:\n    def load(self, mesh):\n        self.vn = mesh.vertex_normals\n    def use(self):\n        return self.vn\n"
+    model, module = model_of(source)
+    returned = module.body[0].body[1].body[0].value  # type: ignore[attr-defined]
+    assert model.kind_of(returned) == Algebra.DIRECTION
+
+
+def test_parameter_default_says_not_geometry() -> None:
+    model, module = model_of("def f(axis=0):\n    return axis\n")
+    assert model.kind_of(module.body[0].body[0].value) is None  # type: ignore[attr-defined]
 
 
 @pytest.mark.parametrize(
@@ -155,7 +162,28 @@ def test_kind_flow(source: str, kind: Kind | None) -> None:
 )
 def test_frames_of_expressions(expression: str, frames: NameFrames | None) -> None:
     model, module = model_of(f"import numpy as np\nresult = {expression}\n")
-    assert model.frames_of(last_value(module)) == frames
+    assert model.frames_of(module.body[-1].value) == frames  # type: ignore[attr-defined]
+
+
+def test_src_first_reading_flips_only_letter_names() -> None:
+    model, module = model_of("T_obj_world @ world_from_cam\n", orders=(SRC_FIRST,))
+    product = last_value(module)
+    assert model.frames_of(product.left, SRC_FIRST) == NameFrames(dst="world", src="obj", operator="transform")  # type: ignore[attr-defined]
+    assert model.frames_of(product.right, SRC_FIRST) == NameFrames(dst="world", src="cam", operator="unknown")  # type: ignore[attr-defined]
+
+
+def test_explicit_declaration_beats_the_name() -> None:
+    source = 'T_obj_world = RigidTransform(R, t, from_frame="obj", to_frame="world")\nT_obj_world\n'
+    model, module = model_of(source)
+    fact = model.frame_fact(last_value(module))
+    assert fact is not None and fact.declared
+    assert fact.frames == NameFrames(dst="world", src="obj", operator="transform")
+    assert "from_frame='obj'" in fact.evidence[0]
+
+
+def test_a_name_rebound_to_its_own_inverse_has_no_frames() -> None:
+    model, module = model_of("import numpy as np\nworld2cam = np.linalg.inv(world2cam)\nworld2cam\n")
+    assert model.frames_of(last_value(module)) is None
 
 
 @pytest.mark.parametrize(
@@ -166,26 +194,28 @@ def test_frames_of_expressions(expression: str, frames: NameFrames | None) -> No
         ("np.r_[x, 1.0]", 1),
         ("np.hstack([x, np.ones((len(x), 1))])", 1),
         ("np.column_stack((x, np.zeros(len(x))))", 0),
-        ("np.concatenate([x, [1]])", 1),
+        ("np.concatenate([x, [1]], axis=-1)", 1),
         ("np.array([x[0], x[1], x[2], 1])", 1),
+        ("torch.cat([x, torch.zeros(*shape).type_as(x)], dim=-1)", 0),
+        ("torch.cat([x, torch.ones_like(x[..., :1])], dim=-1)", 1),
     ],
 )
 def test_homogeneous_forms(construction: str, w: int) -> None:
-    model, module = model_of(f"import numpy as np\nh = {construction}\n")
-    found = model.homogeneous(last_value(module))
+    model, module = model_of(f"import numpy as np\nimport torch\nh = {construction}\n")
+    found = model.homogeneous(module.body[-1].value)  # type: ignore[attr-defined]
     assert found is not None and found.w == w
-    assert cst.Module([]).code_for_node(found.inner).startswith("x")
+    assert ast.unparse(found.inner).startswith("x")
+
+
+def test_concatenation_along_the_first_axis_is_not_homogeneous() -> None:
+    model, module = model_of("import numpy as np\nh = np.concatenate([x, np.ones((1, 3))], axis=0)\n")
+    assert model.homogeneous(module.body[-1].value) is None  # type: ignore[attr-defined]
 
 
 def test_ones_buffer_filled_with_xyz() -> None:
     model, module = model_of("import numpy as np\nh = np.ones(4)\nh[:3] = x\nh\n")
     found = model.homogeneous(last_value(module))
-    assert found is not None and found.w == 1 and cst.Module([]).code_for_node(found.fixed) == "np.zeros(4)"
-
-
-def test_facts_are_computed_once_per_module_and_config() -> None:
-    model, module = model_of("x = 1\n")
-    assert model_for(model.facts, Config()) is model
+    assert found is not None and found.w == 1 and found.fixed == "np.zeros(4)"
 
 
 def test_prefilter_reads_code_not_docstrings() -> None:
