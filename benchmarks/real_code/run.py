@@ -278,8 +278,14 @@ def compare(args: argparse.Namespace) -> int:
     judged = total["TP"] + total["FP"]
     precision = f"{100 * total['TP'] / judged:.1f} %" if judged else "n/a (no judged finding)"
     print(f"precision TP / (TP + FP) = {total['TP']} / {judged} = {precision}; {total['new']} new finding(s) need a verdict")
+    if args.markdown:
+        write_markdown(args.markdown, rows, total, seconds)
     for finding in all_new:
         print(f"  NEW {finding.repo}:{finding.path}:{finding.line}: {finding.code} {finding.message}")
+        if args.context:
+            source = (args.mirror / finding.repo.replace("/", "+") / finding.path).read_text(encoding="utf-8", errors="replace").splitlines()
+            for number in range(max(1, finding.line - args.context), min(len(source), finding.line + args.context) + 1):
+                print(f"      {'>' if number == finding.line else ' '}{number:5d} | {source[number - 1]}")
     for entry in all_gone:
         print(f"  GONE {entry.repo}:{entry.path}:{entry.line}: {entry.code} ({entry.verdict}) {entry.reason}")
     if args.record_new:
@@ -290,6 +296,24 @@ def compare(args: argparse.Namespace) -> int:
         dump_ledger(ledger, args.ledger)
         print(f"recorded {len(all_new)} new finding(s) in {args.ledger} as 'unclear' (untriaged)")
     return status
+
+
+def write_markdown(path: str, rows: list, total: Counter, seconds: float) -> None:
+    """The per-repository table for docs/real-code.md."""
+    lines = [
+        "| repository | category | torch | commit | files | lines | findings | TP | FP | unclear |",
+        "|---|---|---|---|---:|---:|---:|---:|---:|---:|",
+    ]
+    for repo, run, verdicts, _, _ in rows:
+        lines.append(
+            f"| [{repo.name}]({repo.url}) | {repo.category} | {'yes' if repo.torch else 'no'} | `{repo.commit[:10]}` |"
+            f" {run.files:,} | {run.lines:,} | {len(run.findings)} | {verdicts['TP']} | {verdicts['FP']} | {verdicts['unclear']} |"
+        )
+    lines.append(
+        f"| **total ({len(rows)})** | | | | {total['files']:,} | {total['lines']:,} | {total['findings']} |"
+        f" {total['TP']} | {total['FP']} | {total['unclear']} |"
+    )
+    Path(path).write_text("\n".join(lines) + "\n")
 
 
 def repo_commit(repos: list[Repo], name: str) -> str:
@@ -538,6 +562,8 @@ def main(argv: list[str] | None = None) -> int:
         "--history-limit", type=int, default=100, help="candidate commits per repository, newest first (0: only re-check the ledger's historical bugs)"
     )
     parser.add_argument("--candidates-out", help="with --history: write the candidates as JSON here")
+    parser.add_argument("--context", type=int, default=0, metavar="N", help="print N source lines around each new finding")
+    parser.add_argument("--markdown", metavar="FILE", help="also write the per-repository table as markdown to FILE")
     parser.add_argument("--repeats", type=int, default=3, help="with --throughput: runs per tool")
     parser.add_argument(
         "--record-new", action="store_true", help="append new findings to the ledger as 'unclear' for triage; with --history, update 'caught'"
