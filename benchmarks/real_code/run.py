@@ -344,39 +344,44 @@ def git(checkout: Path, *arguments: str) -> str:
 
 
 def candidate_commits(checkout: Path, limit: int) -> list[tuple[str, list[str]]]:
-    """The last `limit` non-merge commits that modify .py files and remove a geometry-looking line."""
-    log = git(checkout, "log", "--no-merges", "--diff-filter=M", "--format=@@%H", "--name-only", "HEAD", "--", "*.py")
-    commits: list[tuple[str, list[str]]] = []
-    current: tuple[str, list[str]] | None = None
-    for line in log.splitlines():
-        if line.startswith("@@"):
-            current = (line[2:], [])
-            commits.append(current)
-        elif line.strip() and current is not None:
-            current[1].append(line.strip())
+    """The newest `limit` non-merge commits that modify .py files and remove a geometry-looking line.
+
+    Returns (commit, paths) with the modified files whose removed lines look like geometry (at most 8:
+    a sweeping refactor is rarely a bug fix). One `git log -p` pass, newest first.
+    """
+    if limit <= 0:
+        return []
+    process = subprocess.Popen(
+        ["git", "-C", str(checkout), "log", "--no-merges", "--diff-filter=M", "-p", "-U0", "--no-color", "--format=@@COMMIT %H", "HEAD", "--", "*.py"],
+        stdout=subprocess.PIPE,
+        text=True,
+        errors="replace",
+    )
     chosen: list[tuple[str, list[str]]] = []
-    for sha, paths in commits:
-        if len(chosen) >= limit:
-            break
-        if not paths:
-            continue
-        diff = git(checkout, "show", "--format=", "-U0", "--diff-filter=M", sha, "--", *paths)
-        removed = [l for l in diff.splitlines() if l.startswith("-") and not l.startswith("---")]
-        if any(GEOMETRY_LINE.search(l) for l in removed):
-            touched = sorted({p for p in paths if any(GEOMETRY_LINE.search(l) for l in _removed_lines(diff, p))})
-            if touched:
-                chosen.append((sha, touched[:8]))  # a sweeping refactor is rarely a bug fix
-    return chosen
+    sha, path, touched = "", "", []
 
+    def close_commit() -> None:
+        if sha and touched:
+            chosen.append((sha, touched[:8]))
 
-def _removed_lines(diff: str, path: str) -> list[str]:
-    out, inside = [], False
-    for line in diff.splitlines():
-        if line.startswith("diff --git"):
-            inside = line.endswith(f" b/{path}")
-        elif inside and line.startswith("-") and not line.startswith("---"):
-            out.append(line)
-    return out
+    assert process.stdout is not None
+    for line in process.stdout:
+        if line.startswith("@@COMMIT "):
+            close_commit()
+            if len(chosen) >= limit:
+                break
+            sha, path, touched = line.split()[1], "", []
+        elif line.startswith("+++ b/"):
+            path = line[6:].rstrip("\n")
+        elif line.startswith("-") and not line.startswith("---") and path and path not in touched:
+            if GEOMETRY_LINE.search(line):
+                touched.append(path)
+    else:
+        close_commit()
+    process.stdout.close()
+    process.kill()
+    process.wait()
+    return chosen[:limit]
 
 
 def _lint_pair(item: tuple[str, str, str, str, str, tuple[str, ...]]) -> list[dict]:
