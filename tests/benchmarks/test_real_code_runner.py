@@ -124,6 +124,18 @@ def test_history_mode_finds_the_commit_that_fixed_a_bug(tmp_path: Path, mirror: 
     assert f"candidate someone/grasp-demo@{fix[:10]} planner.py:5 GEO202" in done.stdout
     assert "1 finding(s) removed by a commit" in done.stdout
 
+    # Recorded as a historical bug (wrongly marked missed), it is re-checked at the commit before the fix.
+    (tmp_path / "ledger.toml").write_text(
+        f'[[history]]\nrepo = "someone/grasp-demo"\nfix_commit = "{fix}"\npath = "planner.py"\nline = 5\n'
+        'bug_class = "frames (GEO202)"\ncaught = false\nhow_found = "lint-diff"\nreason = "planted"\n'
+        'issue = ""\nexpr_hash = ""\n'
+    )
+    checked = run(tmp_path, mirror, "--history", "--history-limit", "0", "--record-new")
+    assert checked.returncode == 0, checked.stderr
+    assert "CAUGHT" in checked.stdout and "(ledger says missed)" in checked.stdout
+    assert "caught at the pre-fix commit: 1 / 1 = 100 %" in checked.stdout
+    assert "caught = true" in (tmp_path / "ledger.toml").read_text()
+
 
 def test_a_missing_checkout_is_an_error_not_a_crash(tmp_path: Path, mirror: Path) -> None:
     shutil.rmtree(mirror / "someone+grasp-demo")
