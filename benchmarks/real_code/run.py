@@ -129,7 +129,8 @@ def dump_ledger(ledger: Ledger, path: Path) -> None:
 
 
 def normalised_expression(source_lines: list[str], line: int, column: int, end_line: int, end_column: int) -> str:
-    """The flagged source text (1-based lines and columns, end exclusive) with all whitespace removed."""
+    """The flagged source text (1-based lines and columns, end exclusive), whitespace, quote style and
+    trailing commas normalised away."""
     if line < 1 or end_line > len(source_lines):
         return ""
     if line == end_line:
@@ -139,7 +140,9 @@ def normalised_expression(source_lines: list[str], line: int, column: int, end_l
         parts += source_lines[line : end_line - 1]
         parts.append(source_lines[end_line - 1][: end_column - 1])
         text = "\n".join(parts)
-    return re.sub(r"\s+", "", text)
+    # Formatting changes (black's quotes and magic trailing commas) must not look like a changed expression.
+    text = re.sub(r"\s+", "", text).replace("'", '"')
+    return re.sub(r",([)\]}])", r"\1", text)
 
 
 def expression_hash(expr: str) -> str:

@@ -142,3 +142,20 @@ def test_a_missing_checkout_is_an_error_not_a_crash(tmp_path: Path, mirror: Path
     done = run(tmp_path, mirror)
     assert done.returncode == 2
     assert "someone/grasp-demo: no checkout at" in done.stderr
+
+
+def test_reformatting_does_not_change_the_expression_key() -> None:
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("real_code_run", RUNNER)
+    assert spec is not None and spec.loader is not None
+    runner = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = runner  # dataclasses look their module up there
+    spec.loader.exec_module(runner)
+    before = ["T = RigidTransform(R, from_frame='obj', to_frame='world')"]
+    after = ["T = RigidTransform(", "    R,", '    from_frame="obj",', '    to_frame="world",', ")"]
+    old = runner.normalised_expression(before, 1, 5, 1, len(before[0]) + 1)
+    new = runner.normalised_expression(after, 1, 5, 5, 2)
+    assert old == new == 'RigidTransform(R,from_frame="obj",to_frame="world")'
+    # A real change of the expression still changes the key.
+    assert runner.normalised_expression(["T = RigidTransform(R, from_frame='world')"], 1, 5, 1, 42) != old
