@@ -134,3 +134,17 @@ def same_frame(first: ProperType, second: ProperType) -> bool | None:
     if not (is_known(first) and is_known(second)):
         return None
     return is_same_type(first, second)
+
+
+def misread_string_frame(geo: Geo) -> Instance | None:
+    """A frame that is one of Python's builtin classes (``map``, ``filter``, ``range``...): a string frame that
+    mypy looked up as a name because the plugin could not tell the subscripted name was geolint's class (an
+    alias such as ``Located = Point``). ``str`` and ``object`` are left alone: they can be meant as frames."""
+    for frame in geo.frames:
+        if (
+            isinstance(frame, Instance)
+            and frame.type.fullname.startswith("builtins.")
+            and frame.type.fullname not in ("builtins.str", "builtins.object")
+        ):
+            return frame
+    return None

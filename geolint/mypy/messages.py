@@ -103,3 +103,11 @@ def raw_array_operand(operator: str, value: Geo) -> str:
         f"{geo_text(value)} {operator} a raw ndarray: its kind and frame are unknown (the runtime refuses it); "
         f"wrap it first, e.g. {wrap}[{frame}](array)"
     )
+
+
+def misread_string_frame(value: Geo, frame: Instance) -> str:
+    return (
+        f'{geo_text(value)}: the frame "{frame.type.name}" was read as Python\'s builtin {frame.type.name}, not as a '
+        f"string frame (the plugin rewrites string frames where the class is imported by name, not through an "
+        f'alias); write {kind_text(value)}[Literal["{frame.type.name}"]]'
+    )

@@ -24,7 +24,7 @@ from mypy.types import CallableType, FunctionLike, Instance, Type, get_proper_ty
 
 from geolint.mypy import algebra, fullnames as names, geometry, messages
 from geolint.mypy.algebra import Outcome, Problem
-from geolint.mypy.errorcodes import GEO_KIND
+from geolint.mypy.errorcodes import GEO_FRAME, GEO_KIND
 from geolint.mypy.geometry import Geo
 
 BinaryRule = Callable[[Geo, Geo], "Outcome | None"]
@@ -57,6 +57,10 @@ def outcome(
         return refused
     if receiver_geo is None:
         return None
+    for geo in (receiver_geo, operand_geo):
+        misread = geometry.misread_string_frame(geo) if geo is not None else None
+        if geo is not None and misread is not None:
+            return Outcome(None, Problem(GEO_FRAME, messages.misread_string_frame(geo, misread)))
     if operator in SCALING_OPERATORS:
         if operand_geo is not None:
             return None  # vector * vector is numpy's elementwise product; no frame meaning to add

@@ -117,10 +117,10 @@ class GeolintPlugin(Plugin):
         # Hooks build geolint.typing types (np.asarray(Point[F]) -> PointArray[F]) in modules that import
         # only the runtime: make sure that module is part of the build whenever geolint is.
         # The same moment (parsed, not yet analyzed) is the one chance to protect string frames.
-        if file.fullname.startswith("geolint") or not _imports_geolint(file):
+        if file.fullname.startswith("geolint"):
             return []
-        string_frame_prepass.protect_string_frames(file)
-        return [(10, names.TYPING_MODULE, -1)]
+        string_frame_prepass.protect_string_frames(file)  # also where a project module re-exports geolint's
+        return [(10, names.TYPING_MODULE, -1)] if _imports_geolint(file) else []
 
     def get_type_analyze_hook(self, fullname: str) -> Callable[[AnalyzeTypeContext], Type] | None:
         return self.type_analyze_hooks.get(fullname)

@@ -17,49 +17,61 @@ geolint's framed classes, found by the names the module imported them under:
 
 from __future__ import annotations
 
-from typing import Iterable
+from dataclasses import dataclass
+from typing import Callable, Iterable
 
 from mypy.nodes import (
     AssertStmt,
+    AssertTypeExpr,
     AssignmentExpr,
     AssignmentStmt,
     AwaitExpr,
     Block,
     CallExpr,
+    CastExpr,
     ClassDef,
     ComparisonExpr,
     ConditionalExpr,
     Decorator,
+    DelStmt,
     DictExpr,
+    DictionaryComprehension,
     Expression,
     ExpressionStmt,
     ForStmt,
     FuncDef,
+    FuncItem,
     GeneratorExpr,
     IfStmt,
     Import,
+    ImportAll,
     ImportFrom,
     IndexExpr,
-    LambdaExpr,
     ListComprehension,
     ListExpr,
+    MatchStmt,
     MemberExpr,
     MypyFile,
     NameExpr,
+    Node,
     OperatorAssignmentStmt,
     OpExpr,
     OverloadedFuncDef,
+    RaiseStmt,
     ReturnStmt,
+    RevealExpr,
     SetComprehension,
     SetExpr,
+    SliceExpr,
     StarExpr,
-    Statement,
     StrExpr,
     TryStmt,
     TupleExpr,
     UnaryExpr,
     WhileStmt,
     WithStmt,
+    YieldExpr,
+    YieldFromExpr,
 )
 from mypy.types import CallableType, RawExpressionType, Type, TypeList, UnboundType, UnionType
 
@@ -67,113 +79,159 @@ from geolint.mypy.geometry import FRAMED_CLASSES
 
 LITERAL_MARKER = "\x01geolint-frame:"
 
+
 def protect_string_frames(file: MypyFile) -> None:
     """Rewrite a freshly parsed module's string frames so that mypy never looks them up (see the module doc)."""
-    framed_names = _local_names_of_framed_classes(file)
-    if framed_names:
-        _protect_statements(file.defs, framed_names)
+    from_geolint, from_elsewhere = _local_names_of_framed_classes(file)
+    if from_geolint or from_elsewhere:
+        top_level = _top_level_names(file) if from_elsewhere else frozenset()
+        _walk(file.defs, _Protection(from_geolint, from_elsewhere, top_level))
+
+
+@dataclass(frozen=True)
+class _Protection:
+    """Which subscripted names get their strings rewritten (see `_local_names_of_framed_classes`)."""
+
+    from_geolint: frozenset[str]
+    from_elsewhere: frozenset[str]
+    top_level: frozenset[str]  # names a string from elsewhere must not be (it would be a forward reference)
+
+    def in_application(self, name: str | None) -> bool:
+        return name in self.from_geolint or name in self.from_elsewhere
+
+    def in_signature(self, name: str, frame: str) -> bool:
+        if name in self.from_geolint:
+            return True
+        return name in self.from_elsewhere and frame.split(".", 1)[0] not in self.top_level
+
+
+def _top_level_names(file: MypyFile) -> frozenset[str]:
+    names: set[str] = set()
+    for node in file.imports:
+        if isinstance(node, ImportFrom):
+            names.update(alias or name for name, alias in node.names)
+        elif isinstance(node, Import):
+            names.update((alias or module).split(".", 1)[0] for module, alias in node.ids)
+    for statement in file.defs:
+        if isinstance(statement, (ClassDef, FuncDef)):
+            names.add(statement.name)
+        elif isinstance(statement, AssignmentStmt):
+            names.update(lvalue.name for lvalue in statement.lvalues if isinstance(lvalue, NameExpr))
+    return frozenset(names)
 
 
 FRAMED_CLASS_NAMES = frozenset(fullname.rsplit(".", 1)[1] for fullname in FRAMED_CLASSES)
 
 
-def _local_names_of_framed_classes(file: MypyFile) -> frozenset[str]:
-    """How this module spells geolint's framed classes: ``Point``, ``P`` (an import alias), ``gt.PointArray``."""
-    local: set[str] = set()
+def _local_names_of_framed_classes(file: MypyFile) -> tuple[frozenset[str], frozenset[str]]:
+    """How this module spells the framed classes, imported from geolint (``Point``, ``P`` for an import alias,
+    ``gt.PointArray``, ``from geolint import *``) and from elsewhere (a project module that re-exports
+    geolint's ``Point``). With a name from elsewhere, a string in a signature is taken for a frame only when it
+    names nothing at the module's top level (``Transform["World"]`` of another library stays a forward
+    reference).
+    """
+    from_geolint: set[str] = set()
+    from_elsewhere: set[str] = set()
     for node in file.imports:
-        if isinstance(node, ImportFrom) and _is_geolint(node.id):
-            local.update(alias or name for name, alias in node.names if name in FRAMED_CLASS_NAMES)
+        if isinstance(node, ImportFrom):
+            names = {alias or name for name, alias in node.names if name in FRAMED_CLASS_NAMES}
+            (from_geolint if _is_geolint(node.id) else from_elsewhere).update(names)
+        elif isinstance(node, ImportAll) and _is_geolint(node.id):
+            from_geolint.update(FRAMED_CLASS_NAMES)
         elif isinstance(node, Import):
             for module, alias in node.ids:
                 if _is_geolint(module):
-                    local.update(f"{alias or module}.{name}" for name in FRAMED_CLASS_NAMES)
-    return frozenset(local)
+                    from_geolint.update(f"{alias or module}.{name}" for name in FRAMED_CLASS_NAMES)
+    return frozenset(from_geolint), frozenset(from_elsewhere)
 
 
 def _is_geolint(module: str) -> bool:
     return module == "geolint" or module.startswith("geolint.")
 
 
-def _protect_statements(statements: Iterable[Statement | None], framed_names: frozenset[str]) -> None:
-    # A plain walk: mypy's compiled visitor classes cannot be subclassed from interpreted code.
-    for statement in statements:
-        if statement is None:
-            continue
-        if isinstance(statement, Decorator):
-            _protect_expressions(statement.decorators, framed_names)
-            statement = statement.func
-        if isinstance(statement, OverloadedFuncDef):
-            _protect_statements([*statement.items, statement.impl], framed_names)
-        elif isinstance(statement, FuncDef):
-            if isinstance(statement.type, CallableType):
-                for typ in [*statement.type.arg_types, statement.type.ret_type]:
-                    _protect(typ, framed_names)
-            _protect_statements(statement.body.body, framed_names)
-        elif isinstance(statement, ClassDef):
-            _protect_statements(statement.defs.body, framed_names)
-        elif isinstance(statement, Block):
-            _protect_statements(statement.body, framed_names)
-        else:
-            _protect_expressions(_statement_expressions(statement), framed_names)
-            _protect_statements(_statement_blocks(statement), framed_names)
+def _walk(roots: Iterable[Node | None], protection: _Protection) -> None:
+    """Visit every statement and expression under `roots`: protect type applications and signatures.
+
+    A plain walk over an explicit table of child nodes (mypy's compiled visitor classes cannot be subclassed
+    from interpreted code); a node type missing from `_CHILDREN` hides only what is written inside it.
+    """
+    stack = [node for node in roots if node is not None]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, IndexExpr):
+            _protect_type_application(node, protection)
+        elif isinstance(node, FuncItem) and isinstance(node.type, CallableType):
+            for typ in [*node.type.arg_types, node.type.ret_type]:
+                _protect(typ, protection)
+        children = _CHILDREN.get(type(node))
+        if children is None:
+            children = _children_by_base(node)
+        stack.extend(child for child in children(node) if child is not None)
 
 
-def _statement_expressions(statement: Statement) -> list[Expression | None]:
-    if isinstance(statement, (AssignmentStmt, OperatorAssignmentStmt)):
-        return [statement.rvalue]
-    if isinstance(statement, (ExpressionStmt, ReturnStmt, IfStmt, WhileStmt, ForStmt, AssertStmt)):
-        return list(statement.expr) if isinstance(statement.expr, list) else [statement.expr]
-    if isinstance(statement, WithStmt):
-        return list(statement.expr)
-    return []
+def _flat(groups: Iterable[Iterable[Node | None]]) -> list[Node | None]:
+    return [node for group in groups for node in group]
 
 
-def _statement_blocks(statement: Statement) -> list[Statement | None]:
-    if isinstance(statement, IfStmt):
-        return [*statement.body, statement.else_body]
-    if isinstance(statement, (WhileStmt, ForStmt)):
-        return [statement.body, statement.else_body]
-    if isinstance(statement, WithStmt):
-        return [statement.body]
-    if isinstance(statement, TryStmt):
-        return [statement.body, *statement.handlers, statement.else_body, statement.finally_body]
-    return []
+def _function_children(node: FuncItem) -> list[Node | None]:
+    return [*(argument.initializer for argument in node.arguments), node.body]
 
 
-def _protect_expressions(expressions: Iterable[Expression | None], framed_names: frozenset[str]) -> None:
-    for expr in expressions:
-        if expr is None:
-            continue
-        if isinstance(expr, IndexExpr):
-            _protect_type_application(expr, framed_names)
-            _protect_expressions([expr.base, expr.index], framed_names)
-        elif isinstance(expr, CallExpr):
-            _protect_expressions([expr.callee, *expr.args], framed_names)
-        elif isinstance(expr, (MemberExpr, UnaryExpr, StarExpr, AwaitExpr)):
-            _protect_expressions([expr.expr], framed_names)
-        elif isinstance(expr, OpExpr):
-            _protect_expressions([expr.left, expr.right], framed_names)
-        elif isinstance(expr, ComparisonExpr):
-            _protect_expressions(expr.operands, framed_names)
-        elif isinstance(expr, (TupleExpr, ListExpr, SetExpr)):
-            _protect_expressions(expr.items, framed_names)
-        elif isinstance(expr, DictExpr):
-            _protect_expressions([item for pair in expr.items for item in pair], framed_names)
-        elif isinstance(expr, ConditionalExpr):
-            _protect_expressions([expr.cond, expr.if_expr, expr.else_expr], framed_names)
-        elif isinstance(expr, AssignmentExpr):
-            _protect_expressions([expr.value], framed_names)
-        elif isinstance(expr, (ListComprehension, SetComprehension)):
-            _protect_expressions([expr.generator], framed_names)
-        elif isinstance(expr, GeneratorExpr):
-            _protect_expressions([expr.left_expr, *expr.sequences], framed_names)
-        elif isinstance(expr, LambdaExpr):
-            _protect_statements(expr.body.body, framed_names)
+def _children_by_base(node: Node) -> Callable[[Node], Iterable[Node | None]]:
+    if isinstance(node, FuncItem):  # FuncDef, LambdaExpr
+        return _function_children  # type: ignore[return-value]
+    return lambda _: ()
 
 
-def _protect_type_application(expr: IndexExpr, framed_names: frozenset[str]) -> None:
+# node type -> its child statements and expressions (types and patterns are not walked)
+_CHILDREN: dict[type, Callable[..., Iterable[Node | None]]] = {
+    Block: lambda n: n.body,
+    Decorator: lambda n: [*n.decorators, n.func],
+    OverloadedFuncDef: lambda n: [*n.items, n.impl],
+    ClassDef: lambda n: [*n.decorators, *n.base_type_exprs, *n.keywords.values(), n.defs],
+    ExpressionStmt: lambda n: [n.expr],
+    AssignmentStmt: lambda n: [*n.lvalues, n.rvalue],
+    OperatorAssignmentStmt: lambda n: [n.lvalue, n.rvalue],
+    ReturnStmt: lambda n: [n.expr],
+    AssertStmt: lambda n: [n.expr, n.msg],
+    DelStmt: lambda n: [n.expr],
+    RaiseStmt: lambda n: [n.expr, n.from_expr],
+    IfStmt: lambda n: [*n.expr, *n.body, n.else_body],
+    WhileStmt: lambda n: [n.expr, n.body, n.else_body],
+    ForStmt: lambda n: [n.index, n.expr, n.body, n.else_body],
+    WithStmt: lambda n: [*n.expr, *n.target, n.body],
+    TryStmt: lambda n: [n.body, *n.types, *n.handlers, n.else_body, n.finally_body],
+    MatchStmt: lambda n: [n.subject, *n.guards, *n.bodies],
+    IndexExpr: lambda n: [n.base, n.index],
+    CallExpr: lambda n: [n.callee, *n.args],
+    MemberExpr: lambda n: [n.expr],
+    UnaryExpr: lambda n: [n.expr],
+    StarExpr: lambda n: [n.expr],
+    AwaitExpr: lambda n: [n.expr],
+    YieldExpr: lambda n: [n.expr],
+    YieldFromExpr: lambda n: [n.expr],
+    CastExpr: lambda n: [n.expr],
+    AssertTypeExpr: lambda n: [n.expr],
+    RevealExpr: lambda n: [n.expr],
+    OpExpr: lambda n: [n.left, n.right],
+    ComparisonExpr: lambda n: n.operands,
+    SliceExpr: lambda n: [n.begin_index, n.end_index, n.stride],
+    TupleExpr: lambda n: n.items,
+    ListExpr: lambda n: n.items,
+    SetExpr: lambda n: n.items,
+    DictExpr: lambda n: _flat(n.items),
+    ConditionalExpr: lambda n: [n.cond, n.if_expr, n.else_expr],
+    AssignmentExpr: lambda n: [n.target, n.value],
+    ListComprehension: lambda n: [n.generator],
+    SetComprehension: lambda n: [n.generator],
+    GeneratorExpr: lambda n: [n.left_expr, *n.sequences, *_flat(n.condlists)],
+    DictionaryComprehension: lambda n: [n.key, n.value, *n.sequences, *_flat(n.condlists)],
+}
+
+
+def _protect_type_application(expr: IndexExpr, protection: _Protection) -> None:
     base_name = _expression_name(expr.base)
-    if base_name not in framed_names:
+    if not protection.in_application(base_name):
         return
     items = expr.index.items if isinstance(expr.index, TupleExpr) else [expr.index]
     for item in items:
@@ -181,17 +239,16 @@ def _protect_type_application(expr: IndexExpr, framed_names: frozenset[str]) -> 
             item.value = f"{base_name}[{LITERAL_MARKER + item.value!r}]"
 
 
-def _protect(typ: Type, framed_names: frozenset[str]) -> None:
+def _protect(typ: Type, protection: _Protection) -> None:
     if isinstance(typ, (UnionType, TypeList)):  # X | None, Callable[[X], Y]
         for item in typ.items:
-            _protect(item, framed_names)
+            _protect(item, protection)
         return
     if not isinstance(typ, UnboundType):
         return
-    if typ.name in framed_names:
-        typ.args = tuple(_as_literal_node(arg) for arg in typ.args)
+    typ.args = tuple(_as_literal_node(typ.name, arg, protection) for arg in typ.args)
     for arg in typ.args:
-        _protect(arg, framed_names)
+        _protect(arg, protection)
 
 
 def _expression_name(expr: Expression) -> str | None:
@@ -203,7 +260,12 @@ def _expression_name(expr: Expression) -> str | None:
     return None
 
 
-def _as_literal_node(arg: Type) -> Type:
-    if isinstance(arg, UnboundType) and arg.original_str_expr is not None and not arg.args:
+def _as_literal_node(name: str, arg: Type, protection: _Protection) -> Type:
+    if (
+        isinstance(arg, UnboundType)
+        and arg.original_str_expr is not None
+        and not arg.args
+        and protection.in_signature(name, arg.original_str_expr)
+    ):
         return RawExpressionType(arg.original_str_expr, "builtins.str", line=arg.line, column=arg.column)
     return arg
