@@ -42,6 +42,8 @@ __all__ = [
     "HomogeneousPoints",
     "HomogeneousVectors",
     "VectorWithW1",
+    "OriginOffset",
+    "NegatedRotation",
     "as_points",
     "as_vectors",
     "as_directions",
@@ -53,6 +55,9 @@ __all__ = [
 F = TypeVar("F")
 Dst = TypeVar("Dst")
 Src = TypeVar("Src")
+In = TypeVar("In")
+From = TypeVar("From")
+To = TypeVar("To")
 
 if TYPE_CHECKING:
 
@@ -93,6 +98,17 @@ if TYPE_CHECKING:
     class VectorWithW1(np.ndarray[Any, _Float], Generic[F]):
         """What ``np.append(v, 1)`` makes of a vector: a 4x4 transform would translate it (a bug)."""
 
+    class OriginOffset(np.ndarray[Any, _Float], Generic[In, From, To]):
+        """The vector from From's origin to To's origin, in In's axes: a step of a hand-written composition.
+
+        ``R[A <- B] @ t[B <- C]`` is an ``OriginOffset[A, B, C]``; adding ``t[A <- B]`` gives the
+        ``Translation[A, C]`` (``R_ab @ t_bc + t_ab``). ``Translation[A, B]`` is ``OriginOffset[A, A, B]``, and a
+        negated offset runs the other way (``-t[A <- B]`` is ``OriginOffset[A, B, A]``).
+        """
+
+    class NegatedRotation(np.ndarray[Any, _Float], Generic[Dst, Src]):
+        """``-R`` for a ``RotationMatrix[Dst, Src]``: not a rotation, but ``-R.T @ t`` is the inverse's translation."""
+
 else:
 
     class _FramedArrayAnnotation:
@@ -125,6 +141,8 @@ else:
     HomogeneousPoints = _FramedArrayAnnotation("HomogeneousPoints", 1)
     HomogeneousVectors = _FramedArrayAnnotation("HomogeneousVectors", 1)
     VectorWithW1 = _FramedArrayAnnotation("VectorWithW1", 1)
+    OriginOffset = _FramedArrayAnnotation("OriginOffset", 3)
+    NegatedRotation = _FramedArrayAnnotation("NegatedRotation", 2)
 
 
 # The markers: identity at runtime, a frame for the type checker. With the plugin a string frame

@@ -29,12 +29,17 @@ TRANSLATION = "geolint.typing.Translation"
 HOMOGENEOUS_POINTS = "geolint.typing.HomogeneousPoints"
 HOMOGENEOUS_VECTORS = "geolint.typing.HomogeneousVectors"
 VECTOR_WITH_W1 = "geolint.typing.VectorWithW1"
+ORIGIN_OFFSET = "geolint.typing.OriginOffset"
+NEGATED_ROTATION = "geolint.typing.NegatedRotation"
 AS_POINTS = "geolint.typing.as_points"
 AS_VECTORS = "geolint.typing.as_vectors"
 AS_DIRECTIONS = "geolint.typing.as_directions"
 AS_ROTATION = "geolint.typing.as_rotation"
 AS_TRANSFORM = "geolint.typing.as_transform"
 AS_TRANSLATION = "geolint.typing.as_translation"
+
+# --- runtime methods ---
+COORDINATE_VALUES = (POINT, VECTOR, DIRECTION)  # batch indexing and is_close
 
 # --- numpy ---
 NDARRAY = "numpy.ndarray"

@@ -35,6 +35,8 @@ CLOUD = "point cloud"
 TWIST = "twist"
 WRENCH = "wrench"
 COVARIANCE = "covariance"
+ORIGIN_OFFSET = "origin offset"  # (in, from, to): what R @ t gives in a hand-written composition
+NEGATED_ROTATION = "negated rotation"  # -R: only its product with a translation means something
 
 KIND_OF_FULLNAME: dict[str, tuple[str, str]] = {
     names.POINT: (RUNTIME, POINT),
@@ -54,6 +56,8 @@ KIND_OF_FULLNAME: dict[str, tuple[str, str]] = {
     names.HOMOGENEOUS_POINTS: (ARRAY, HOMOGENEOUS_POINT),
     names.HOMOGENEOUS_VECTORS: (ARRAY, HOMOGENEOUS_VECTOR),
     names.VECTOR_WITH_W1: (ARRAY, VECTOR_WITH_W1),
+    names.ORIGIN_OFFSET: (ARRAY, ORIGIN_OFFSET),
+    names.NEGATED_ROTATION: (ARRAY, NEGATED_ROTATION),
 }
 FULLNAME_OF_KIND = {value: key for key, value in KIND_OF_FULLNAME.items()}
 
@@ -101,7 +105,12 @@ def read(typ: Type) -> Geo | None:
 
 
 def build(api: CheckerPluginInterface, geo: Geo) -> Type | None:
-    """The mypy type for a `Geo`, or None when its class is not loaded in this build."""
+    """The mypy type for a `Geo`, or None when its class is not loaded in this build.
+
+    An origin offset that starts at the origin of the frame it is expressed in is that frame's translation.
+    """
+    if geo.kind == ORIGIN_OFFSET and same_frame(geo.frames[0], geo.frames[1]):
+        geo = Geo(geo.family, TRANSLATION, (geo.frames[0], geo.frames[2]))
     fullname = FULLNAME_OF_KIND.get((geo.family, geo.kind))
     if fullname is None:
         return None

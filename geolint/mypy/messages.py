@@ -10,7 +10,7 @@ from mypy.types import Instance, LiteralType, ProperType, TypeVarType
 
 from geolint.mypy.geometry import DISPLAY_NAME, FULLNAME_OF_KIND, Geo
 
-TWO_FRAME_KINDS = frozenset({"transform", "rotation", "translation"})
+TWO_FRAME_KINDS = frozenset({"transform", "rotation", "translation", "negated rotation"})
 
 
 def frame_text(frame: ProperType) -> str:
@@ -30,7 +30,10 @@ def kind_text(geo: Geo) -> str:
 
 
 def geo_text(geo: Geo) -> str:
-    """``Point[World]`` or ``Transform[World <- Camera]``."""
+    """``Point[World]``, ``Transform[World <- Camera]``, ``OriginOffset[Camera -> Body, in World]``."""
+    if geo.kind == "origin offset":
+        axes, start, end = geo.frames
+        return f"{kind_text(geo)}[{frame_text(start)} -> {frame_text(end)}, in {frame_text(axes)}]"
     if geo.kind in TWO_FRAME_KINDS:
         return f"{kind_text(geo)}[{frame_text(geo.dst)} <- {frame_text(geo.src)}]"
     return f"{kind_text(geo)}[{frame_text(geo.frame)}]"
@@ -68,11 +71,38 @@ def point_subtracted_from_vector(left: Geo, right: Geo) -> str:
     return f"{geo_text(left)} - {geo_text(right)}: a vector minus a point has no geometric meaning"
 
 
-def translation_added_to_vector(vector: Geo, translation: Geo) -> str:
+def translation_added_to_vector(operator: str, vector: Geo, translation: Geo) -> str:
     return (
-        f"{geo_text(vector)} + {geo_text(translation)}: a translation added to a "
+        f"{geo_text(vector)} {operator} {geo_text(translation)}: a translation added to a "
         f"{vector.kind}; vectors and directions take the rotation only (R @ v)"
     )
+
+
+def different_kinds(operator: str, left: Geo, right: Geo) -> str:
+    return f"{geo_text(left)} {operator} {geo_text(right)}: the operands are different kinds"
+
+
+def offsets_do_not_chain(operator: str, left: Geo, right: Geo) -> str:
+    return (
+        f"{geo_text(left)} {operator} {geo_text(right)}: one offset does not start where the other ends "
+        "(a composition reads R_ab @ t_bc + t_ab)"
+    )
+
+
+def bad_affine_weights(sample: Geo, point_weight: float) -> str:
+    return (
+        f"a combination of {kind_text(sample)}s: the point weights sum to {point_weight:g}, not 1 (a point) "
+        "or 0 (a vector), so the result depends on where the origin is"
+    )
+
+
+def compared_across(receiver: Geo, other: Geo) -> str:
+    if receiver.kind != other.kind:
+        return (
+            f"{geo_text(receiver)}.is_close({geo_text(other)}): always False, a {receiver.kind} is never a "
+            f"{other.kind}"
+        )
+    return f"{geo_text(receiver)}.is_close({geo_text(other)}): always False, the values live in different frames"
 
 
 def translation_through_matrix(transform: Geo, value: Geo) -> str:

@@ -22,7 +22,7 @@ from mypy.plugin import CheckerPluginInterface, MethodContext, MethodSigContext
 from mypy.subtypes import is_same_type
 from mypy.types import CallableType, FunctionLike, Instance, Type, get_proper_type
 
-from geolint.mypy import algebra, fullnames as names, geometry, messages
+from geolint.mypy import affine, algebra, fullnames as names, geometry, messages
 from geolint.mypy.algebra import Outcome, Problem
 from geolint.mypy.errorcodes import GEO_FRAME, GEO_KIND
 from geolint.mypy.geometry import Geo
@@ -44,9 +44,19 @@ _SYMBOL = {"__matmul__": "@", "__add__": "+", "__sub__": "-"}
 
 
 def outcome(
-    operator: str, receiver: Type, operand: Type | None, receiver_is_left: bool | None = None
+    operator: str,
+    receiver: Type,
+    operand: Type | None,
+    receiver_is_left: bool | None = None,
+    context: Context | None = None,
+    api: CheckerPluginInterface | None = None,
 ) -> Outcome | None:
     """What `algebra` says about ``receiver <operator> operand`` (None: not a framed operation)."""
+    combination = affine.at(context) if context is not None and api is not None else None
+    if combination is not None and api is not None:
+        judged = _affine_outcome(api, combination)
+        if judged is not None:
+            return judged
     receiver_geo = geometry.read(receiver)
     operand_geo = geometry.read(operand) if operand is not None else None
     rule, receiver_is_left_by_name = BINARY_RULES.get(operator, (None, True))
@@ -64,8 +74,8 @@ def outcome(
     if operator in SCALING_OPERATORS:
         if operand_geo is not None:
             return None  # vector * vector is numpy's elementwise product; no frame meaning to add
-        if operator == "__neg__" and receiver_geo.kind in algebra.FREE_KINDS:
-            return Outcome(receiver_geo)  # -d is still a unit direction
+        if operator == "__neg__":
+            return algebra.negate(receiver_geo)
         return algebra.scale(receiver_geo)
     if operand_geo is None or rule is None:
         return None
@@ -101,6 +111,32 @@ def _raw_array_refused(
     return Outcome(None, Problem(GEO_KIND, messages.raw_array_operand(symbol, value)))
 
 
+def _affine_outcome(api: CheckerPluginInterface, combination: affine.Combination) -> Outcome | None:
+    """An operation inside a weighted combination of annotated arrays (see `affine`), judged on all its terms."""
+    lookup = getattr(api, "lookup_type_or_none", None)
+    if lookup is None:
+        return None
+    geos: list[Geo] = []
+    for term, _ in combination.terms:
+        known = lookup(term)
+        geo = geometry.read(known) if known is not None else None
+        if geo is None or geo.family != geometry.ARRAY or geo.kind not in algebra.LOCATED_KINDS:
+            return None
+        geos.append(geo)
+    points = [geo for geo in geos if geo.kind == geometry.POINT]
+    if not points or combination.outermost and len(points) < 2:
+        return None  # p + 0.5 * v and the like: the ordinary rules know those
+    mixed = next((geo for geo in geos if geometry.same_frame(geos[0].frame, geo.frame) is False), None)
+    if mixed is not None:
+        verdict: Outcome | None = Outcome(None, Problem(GEO_FRAME, messages.mixed_frames("+", geos[0], mixed)))
+    else:
+        weights = [weight for _, weight in combination.terms]
+        verdict = algebra.combination([geo.kind for geo in geos], weights, points[0])
+    if verdict is not None and verdict.problem is not None and not combination.outermost:
+        return Outcome(points[0])  # a step on the way (the a + b of (a + b) / 2): the outermost one judges
+    return verdict
+
+
 def signature_hook(operator: str) -> Callable[[MethodSigContext], FunctionLike]:
     def hook(ctx: MethodSigContext) -> FunctionLike:
         operand_expr = _single_operand(ctx.args)
@@ -108,7 +144,7 @@ def signature_hook(operator: str) -> Callable[[MethodSigContext], FunctionLike]:
             return ctx.default_signature
         operand = _operand_type(ctx.api, operand_expr) if operand_expr is not None else None
         receiver_is_left = _receiver_is_left(ctx.api, ctx.context, operand_expr, ctx.type)
-        result = outcome(operator, ctx.type, operand, receiver_is_left)
+        result = outcome(operator, ctx.type, operand, receiver_is_left, ctx.context, ctx.api)
         if result is None or result.result is None and result.problem is None:
             return ctx.default_signature
         # Only rewrite when both operands are framed: then the plugin owns the answer (and its error).
@@ -124,7 +160,7 @@ def method_hook(operator: str) -> Callable[[MethodContext], Type]:
         operand = ctx.arg_types[0][0] if ctx.arg_types and ctx.arg_types[0] else None
         operand_expr = _single_operand(ctx.args)
         receiver_is_left = _receiver_is_left(ctx.api, ctx.context, operand_expr, ctx.type)
-        result = outcome(operator, ctx.type, operand, receiver_is_left)
+        result = outcome(operator, ctx.type, operand, receiver_is_left, ctx.context, ctx.api)
         if result is None:
             return ctx.default_return_type
         if result.problem is not None:

@@ -26,13 +26,21 @@ from geolint.mypy import (
     markers,
     numpy_calls,
     operators,
+    runtime_values,
     string_frame_prepass,
     string_frames,
     third_party,
 )
 from geolint.mypy.geometry import FRAMED_CLASSES
 
-ARITY = {names.TRANSFORM: 2, names.ROTATION_MATRIX: 2, names.TRANSFORM_MATRIX: 2, names.TRANSLATION: 2}
+ARITY = {
+    names.TRANSFORM: 2,
+    names.ROTATION_MATRIX: 2,
+    names.TRANSFORM_MATRIX: 2,
+    names.TRANSLATION: 2,
+    names.NEGATED_ROTATION: 2,
+    names.ORIGIN_OFFSET: 3,
+}
 
 FUNCTION_HOOKS: dict[str, Callable[[FunctionContext], Type]] = {
     names.NP_DOT: numpy_calls.dot,
@@ -69,6 +77,8 @@ _OPERATOR_RECEIVERS = [
     names.HOMOGENEOUS_POINTS,
     names.HOMOGENEOUS_VECTORS,
     names.VECTOR_WITH_W1,
+    names.ORIGIN_OFFSET,
+    names.NEGATED_ROTATION,
 ]
 
 METHOD_HOOKS: dict[str, Callable[[MethodContext], Type]] = {
@@ -82,6 +92,9 @@ for _reflected in ("__rmatmul__", "__radd__", "__rsub__"):
 METHOD_HOOKS[f"{names.TRANSFORM_MATRIX}.__getitem__"] = numpy_calls.transform_matrix_item
 METHOD_HOOKS[names.NP_GUFUNC_CALL] = numpy_calls.matmul_ufunc_call
 METHOD_HOOKS[f"{names.TRANSFORM}.identity"] = markers.identity
+for _value in names.COORDINATE_VALUES:
+    METHOD_HOOKS[f"{_value}.__getitem__"] = runtime_values.batch_item
+    METHOD_HOOKS[f"{_value}.is_close"] = runtime_values.is_close
 
 METHOD_SIGNATURE_HOOKS: dict[str, Callable[[MethodSigContext], FunctionLike]] = {
     f"{receiver}.{operator}": operators.signature_hook(operator)

@@ -75,6 +75,7 @@ from mypy.nodes import (
 )
 from mypy.types import CallableType, RawExpressionType, Type, TypeList, UnboundType, UnionType
 
+from geolint.mypy import affine
 from geolint.mypy.geometry import FRAMED_CLASSES
 
 LITERAL_MARKER = "\x01geolint-frame:"
@@ -83,9 +84,10 @@ LITERAL_MARKER = "\x01geolint-frame:"
 def protect_string_frames(file: MypyFile) -> None:
     """Rewrite a freshly parsed module's string frames so that mypy never looks them up (see the module doc)."""
     from_geolint, from_elsewhere = _local_names_of_framed_classes(file)
+    affine.forget(file.path)
     if from_geolint or from_elsewhere:
         top_level = _top_level_names(file) if from_elsewhere else frozenset()
-        _walk(file.defs, _Protection(from_geolint, from_elsewhere, top_level))
+        _walk(file.defs, _Protection(from_geolint, from_elsewhere, top_level), file.path)
 
 
 @dataclass(frozen=True)
@@ -149,7 +151,7 @@ def _is_geolint(module: str) -> bool:
     return module == "geolint" or module.startswith("geolint.")
 
 
-def _walk(roots: Iterable[Node | None], protection: _Protection) -> None:
+def _walk(roots: Iterable[Node | None], protection: _Protection, path: str) -> None:
     """Visit every statement and expression under `roots`: protect type applications and signatures.
 
     A plain walk over an explicit table of child nodes (mypy's compiled visitor classes cannot be subclassed
@@ -158,7 +160,9 @@ def _walk(roots: Iterable[Node | None], protection: _Protection) -> None:
     stack = [node for node in roots if node is not None]
     while stack:
         node = stack.pop()
-        if isinstance(node, IndexExpr):
+        if isinstance(node, (OpExpr, UnaryExpr)):
+            affine.register(node, path)  # the same walk finds weighted combinations (see `affine`)
+        elif isinstance(node, IndexExpr):
             _protect_type_application(node, protection)
         elif isinstance(node, FuncItem) and isinstance(node.type, CallableType):
             for typ in [*node.type.arg_types, node.type.ret_type]:
