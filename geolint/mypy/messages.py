@@ -141,3 +141,14 @@ def misread_string_frame(value: Geo, frame: Instance) -> str:
         f"string frame (the plugin rewrites string frames where the class is imported by name, not through an "
         f'alias); write {kind_text(value)}[Literal["{frame.type.name}"]]'
     )
+
+
+def generic_frames_disagree(
+    callee: str, variable: str, first: tuple[ProperType, str, Geo], second: tuple[ProperType, str, Geo]
+) -> str:
+    """Two arguments of a frame-generic call give its type variable two frames."""
+    (frame_a, name_a, value_a), (frame_b, name_b, value_b) = first, second
+    return (
+        f'{callee}(): frame {variable} is {frame_text(frame_a)} from "{name_a}" ({geo_text(value_a)}) but '
+        f'{frame_text(frame_b)} from "{name_b}" ({geo_text(value_b)})'
+    )

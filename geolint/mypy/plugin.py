@@ -13,6 +13,7 @@ from mypy.plugin import (
     AnalyzeTypeContext,
     AttributeContext,
     FunctionContext,
+    FunctionSigContext,
     MethodContext,
     MethodSigContext,
     Plugin,
@@ -23,6 +24,7 @@ from mypy.types import FunctionLike, Type
 from geolint.mypy import (
     config,
     fullnames as names,
+    generic_calls,
     markers,
     numpy_calls,
     operators,
@@ -140,6 +142,9 @@ class GeolintPlugin(Plugin):
 
     def get_function_hook(self, fullname: str) -> Callable[[FunctionContext], Type] | None:
         return FUNCTION_HOOKS.get(fullname)
+
+    def get_function_signature_hook(self, fullname: str) -> Callable[[FunctionSigContext], FunctionLike] | None:
+        return generic_calls.check_frames  # any function may be frame-generic; the hook returns at once if not
 
     def get_method_signature_hook(self, fullname: str) -> Callable[[MethodSigContext], FunctionLike] | None:
         return METHOD_SIGNATURE_HOOKS.get(fullname)

@@ -1,9 +1,8 @@
 """String frames on geolint classes imported through a project module, and a clear error where the plugin
 cannot tell that a subscripted name is geolint's class (the string is then read as a name)."""
 
+import reexported_geometry as geometry
 from reexported_geometry import Point, Transform
-
-Located = Point
 
 
 def through_a_reexport(T: Transform["map", "odom"]) -> Point["map"]:
@@ -14,5 +13,5 @@ def through_a_reexport(T: Transform["map", "odom"]) -> Point["map"]:
 
 
 def unresolved(T: Transform["map", "odom"], p: Point["odom"]) -> None:
-    q = Located["map"]([1.0, 2.0, 3.0])  # an alias: the plugin cannot see it is geolint's Point before mypy does
+    q = geometry.Point["map"]([1.0, 2.0, 3.0])  # through a project module's attribute: not recognised
     T @ p - q  # E: geo-frame: Point[map]: the frame "map" was read as Python's builtin map, not as a string frame
