@@ -26,7 +26,13 @@ SECTION = "geolint-mypy"
 
 
 class PluginConfigError(ValueError):
-    """A malformed [geolint-mypy] section; the message names the file."""
+    """A malformed [geolint-mypy] / [tool.geolint-mypy] section; the message names the file, section and key."""
+
+    def __init__(self, path: Path, section: str, key: str, problem: str) -> None:
+        super().__init__(f"{path}: error: [{section}] {key}: {problem}")
+
+
+KNOWN_KEYS = ("frame_aliases",)
 
 
 @dataclass(frozen=True)
@@ -71,24 +77,63 @@ def _from_toml(path: Path) -> PluginConfig:
     except ImportError:  # Python 3.10
         import tomli as tomllib  # type: ignore[no-redef]
     with path.open("rb") as stream:
-        data = tomllib.load(stream)
-    section = data.get("tool", {}).get(SECTION, {})
+        data = tomllib.load(stream)  # mypy has parsed this file already: a syntax error never gets here
+    section_name = f"tool.{SECTION}"
+    tool = data.get("tool", {})
+    section = tool.get(SECTION, {}) if isinstance(tool, dict) else {}
+    if not isinstance(section, dict):
+        raise PluginConfigError(path, section_name, SECTION, f"expected a table, got {section!r}")
+    _reject_unknown_keys(path, section_name, section)
     aliases = section.get("frame_aliases", {})
-    if not isinstance(aliases, dict) or not all(isinstance(v, str) for v in aliases.values()):
-        raise PluginConfigError(f"{path}: [tool.{SECTION}] frame_aliases must be a table of strings")
-    return PluginConfig(dict(aliases))
+    if not isinstance(aliases, dict) or not all(isinstance(value, str) for value in aliases.values()):
+        example = '{ base = "base_link" }'
+        raise PluginConfigError(
+            path, section_name, "frame_aliases", f"expected a table of frame names such as {example}, got {aliases!r}"
+        )
+    return PluginConfig(_resolved(path, section_name, aliases))
 
 
 def _from_ini(path: Path) -> PluginConfig:
-    parser = configparser.ConfigParser()
-    parser.read(path)
+    parser = configparser.ConfigParser(inline_comment_prefixes=("#", ";"), interpolation=None)
+    try:
+        parser.read(path)
+    except configparser.Error as error:  # mypy reads the same file with the same parser: rarely reached
+        raise PluginConfigError(path, SECTION, "(file)", str(error).splitlines()[0]) from None
     if not parser.has_section(SECTION):
         return PluginConfig()
+    _reject_unknown_keys(path, SECTION, dict(parser.items(SECTION)))
     raw = parser.get(SECTION, "frame_aliases", fallback="")
     aliases: dict[str, str] = {}
     for pair in filter(None, (item.strip() for item in raw.replace("\n", ",").split(","))):
         alias, sep, canonical = pair.partition(":")
         if not sep or not alias.strip() or not canonical.strip():
-            raise PluginConfigError(f"{path}: [{SECTION}] frame_aliases: expected alias:frame, got {pair!r}")
+            raise PluginConfigError(
+                path, SECTION, "frame_aliases", f"expected alias:frame pairs such as base:base_link, got {pair!r}"
+            )
         aliases[alias.strip()] = canonical.strip()
-    return PluginConfig(aliases)
+    return PluginConfig(_resolved(path, SECTION, aliases))
+
+
+def _reject_unknown_keys(path: Path, section: str, values: Mapping[str, object]) -> None:
+    for key in values:
+        if key not in KNOWN_KEYS:
+            known = ", ".join(KNOWN_KEYS)
+            raise PluginConfigError(path, section, key, f"unknown setting (known: {known})")
+
+
+def _resolved(path: Path, section: str, aliases: Mapping[str, str]) -> dict[str, str]:
+    """Aliases followed to the frame they end at (``base -> base_link -> base_footprint``); a cycle is an error."""
+    resolved: dict[str, str] = {}
+    for alias in aliases:
+        seen = [alias]
+        target = aliases[alias]
+        while target in aliases and target != alias:
+            if target in seen:
+                break
+            seen.append(target)
+            target = aliases[target]
+        if target in seen or target == alias:
+            cycle = " -> ".join([*seen, target])
+            raise PluginConfigError(path, section, "frame_aliases", f"aliases form a cycle: {cycle}")
+        resolved[alias] = target
+    return resolved

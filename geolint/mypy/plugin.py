@@ -7,6 +7,7 @@ from __future__ import annotations
 from functools import partial
 from typing import Any, Callable
 
+from mypy.errors import CompileError
 from mypy.nodes import Import, MypyFile
 from mypy.options import Options
 from mypy.plugin import (
@@ -114,7 +115,11 @@ ATTRIBUTE_HOOKS: dict[str, Callable[[AttributeContext], Type]] = {
 class GeolintPlugin(Plugin):
     def __init__(self, options: Options) -> None:
         super().__init__(options)
-        self.settings = config.load(options.config_file)
+        try:
+            self.settings = config.load(options.config_file)
+        except config.PluginConfigError as error:
+            # mypy reports a CompileError like its own blocking errors (exit 2), not as an internal error
+            raise CompileError([str(error)]) from None
         self.type_analyze_hooks: dict[str, Callable[[AnalyzeTypeContext], Type]] = {
             fullname: partial(
                 string_frames.analyze_framed_subscript,

@@ -11,7 +11,6 @@ from pathlib import Path
 import pytest
 from mypy import api
 
-from geolint.mypy.config import PluginConfigError
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -59,10 +58,34 @@ def test_changed_plugin_config_invalidates_the_cache(tmp_path: Path) -> None:
     assert "[return-value]" in plain
 
 
-def test_bad_plugin_config_names_the_file(tmp_path: Path) -> None:
-    config = _write_project(tmp_path, "base")
-    with pytest.raises(PluginConfigError, match=r"mypy\.ini.*frame_aliases.*'base'"):
-        api.run(["--config-file", str(config), "--cache-dir", str(tmp_path / "c"), str(tmp_path / "snippet.py")])
+MALFORMED = [
+    # (config file name, its text after the [mypy] part, what the error must name)
+    ("mypy.ini", "[geolint-mypy]\nframe_aliases = base\n", "[geolint-mypy] frame_aliases: expected alias:frame"),
+    ("mypy.ini", "[geolint-mypy]\nframe_alias = base:base_link\n", "[geolint-mypy] frame_alias: unknown setting"),
+    ("setup.cfg", "[geolint-mypy]\nframe_aliases = a:b, b:a\n", "[geolint-mypy] frame_aliases: aliases form a cycle"),
+    ("pyproject.toml", '[tool.geolint-mypy]\nframe_aliases = "base:base_link"\n', "[tool.geolint-mypy] frame_aliases: expected a table"),
+    ("pyproject.toml", "[tool.geolint-mypy]\nframe_aliases = { base = 1 }\n", "[tool.geolint-mypy] frame_aliases: expected a table"),
+    ("pyproject.toml", '[tool.geolint-mypy]\naliases = { base = "base_link" }\n', "[tool.geolint-mypy] aliases: unknown setting"),
+    ("pyproject.toml", '[tool]\ngeolint-mypy = "base"\n', "[tool.geolint-mypy] geolint-mypy: expected a table"),
+]
+
+
+@pytest.mark.parametrize(("name", "section", "named"), MALFORMED, ids=[f"{m[0]}-{i}" for i, m in enumerate(MALFORMED)])
+def test_malformed_plugin_config_is_a_clear_mypy_error(tmp_path: Path, name: str, section: str, named: str) -> None:
+    (tmp_path / "snippet.py").write_text(SNIPPET)
+    if name == "pyproject.toml":  # the plugin's section first: a bare [tool] table must precede [tool.mypy]
+        text = section + f'[tool.mypy]\nplugins = ["geolint.mypy"]\nmypy_path = "{REPO}"\n'
+    else:
+        text = f"[mypy]\nplugins = geolint.mypy\nmypy_path = {REPO}\n" + section
+    (tmp_path / name).write_text(text)
+    result = subprocess.run(
+        [sys.executable, "-m", "mypy", "--config-file", name, "--cache-dir", str(tmp_path / "c"), "snippet.py"],
+        cwd=tmp_path, capture_output=True, text=True, timeout=300,
+    )
+    output = result.stdout + result.stderr
+    assert result.returncode == 2, output
+    assert "INTERNAL ERROR" not in output and "Traceback" not in output, output
+    assert f"{name}: error: {named}" in result.stderr, output
 
 
 def test_dmypy_runs_the_plugin(tmp_path: Path) -> None:
