@@ -16,7 +16,7 @@ from mypy.plugin import CheckerPluginInterface
 from mypy.subtypes import is_same_type
 from mypy.types import AnyType, Instance, ProperType, Type, UnionType, get_proper_type
 
-from geolint.mypy import fullnames as names
+from geolint.mypy import frame_names, fullnames as names
 
 RUNTIME = "runtime"
 ARRAY = "array"
@@ -139,10 +139,16 @@ def is_known(frame: ProperType) -> bool:
 
 
 def same_frame(first: ProperType, second: ProperType) -> bool | None:
-    """True/False when both frames are known, None when either is unknown (then nobody reports)."""
+    """True/False when both frames are known, None when either is unknown (then nobody reports).
+
+    A frame class and a string frame with its runtime name are the same frame (see `frame_names`).
+    """
     if not (is_known(first) and is_known(second)):
         return None
-    return is_same_type(first, second)
+    if is_same_type(first, second):
+        return True
+    first_name = frame_names.frame_name(first)
+    return first_name is not None and first_name == frame_names.frame_name(second)
 
 
 def misread_string_frame(geo: Geo) -> Instance | None:

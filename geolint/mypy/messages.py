@@ -8,14 +8,19 @@ from __future__ import annotations
 
 from mypy.types import Instance, LiteralType, ProperType, TypeVarType
 
+from geolint.mypy import frame_names
 from geolint.mypy.geometry import DISPLAY_NAME, FULLNAME_OF_KIND, Geo
 
 TWO_FRAME_KINDS = frozenset({"transform", "rotation", "translation", "negated rotation"})
 
 
 def frame_text(frame: ProperType) -> str:
-    """A frame as the user wrote it: a class name, a quoted string frame, or a TypeVar's name."""
+    """A frame as the user wrote it: a class name (with its runtime name when declared with ``name=``), a quoted
+    string frame, or a TypeVar's name."""
     if isinstance(frame, Instance):
+        runtime_name = frame_names.frame_name(frame)
+        if runtime_name is not None and runtime_name != frame.type.name:
+            return f'{frame.type.name} ("{runtime_name}")'
         return frame.type.name
     if isinstance(frame, LiteralType) and isinstance(frame.value, str):
         return f'"{frame.value}"'

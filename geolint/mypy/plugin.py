@@ -13,6 +13,7 @@ from mypy.options import Options
 from mypy.plugin import (
     AnalyzeTypeContext,
     AttributeContext,
+    ClassDefContext,
     FunctionContext,
     FunctionSigContext,
     MethodContext,
@@ -24,6 +25,7 @@ from mypy.types import FunctionLike, Type
 
 from geolint.mypy import (
     config,
+    frame_names,
     fullnames as names,
     generic_calls,
     markers,
@@ -141,6 +143,9 @@ class GeolintPlugin(Plugin):
             return []
         string_frame_prepass.protect_string_frames(file)  # also where a project module re-exports geolint's
         return [(10, names.TYPING_MODULE, -1)] if _imports_geolint(file) else []
+
+    def get_base_class_hook(self, fullname: str) -> Callable[[ClassDefContext], None] | None:
+        return frame_names.record_declared_name if fullname == names.FRAME else None
 
     def get_type_analyze_hook(self, fullname: str) -> Callable[[AnalyzeTypeContext], Type] | None:
         return self.type_analyze_hooks.get(fullname)
