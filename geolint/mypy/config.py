@@ -42,6 +42,11 @@ class PluginConfig:
     def canonical_frame(self, name: str) -> str:
         return self.frame_aliases.get(name, name)
 
+    def version_tag(self) -> str:
+        """geolint's version with a digest of the plugin and these settings (see plugin._expose_settings_to_daemon)."""
+        digest = hashlib.sha256(repr(sorted(self.cache_key().items())).encode()).hexdigest()[:12]
+        return f"{__version__}+{digest}"
+
     def cache_key(self) -> dict[str, Any]:
         return {
             "geolint": __version__,

@@ -4,6 +4,7 @@ the typing tricks live in the feature modules named in the tables.
 
 from __future__ import annotations
 
+import sys
 from functools import partial
 from typing import Any, Callable
 
@@ -122,6 +123,7 @@ class GeolintPlugin(Plugin):
         except config.PluginConfigError as error:
             # mypy reports a CompileError like its own blocking errors (exit 2), not as an internal error
             raise CompileError([str(error)]) from None
+        _expose_settings_to_daemon(self.settings)
         self.type_analyze_hooks: dict[str, Callable[[AnalyzeTypeContext], Type]] = {
             fullname: partial(
                 string_frames.analyze_framed_subscript,
@@ -164,6 +166,20 @@ class GeolintPlugin(Plugin):
 
     def get_attribute_hook(self, fullname: str) -> Callable[[AttributeContext], Type] | None:
         return ATTRIBUTE_HOOKS.get(fullname)
+
+
+def _expose_settings_to_daemon(settings: config.PluginConfig) -> None:
+    """Make the settings part of the plugin's version as mypy records it.
+
+    ``dmypy run`` loads the plugins again on every run and restarts the daemon when a plugin module's
+    ``__version__`` (or file) differs from the one it started with; the daemon's analyzed modules are not
+    re-validated through ``report_config_data``, so this is what makes a changed ``[geolint-mypy]`` reach it.
+    """
+    version = settings.version_tag()
+    for module_name in {__name__, __name__.rpartition(".")[0]}:
+        module = sys.modules.get(module_name)
+        if module is not None:
+            module.__version__ = version  # type: ignore[attr-defined]
 
 
 def _imports_geolint(file: MypyFile) -> bool:

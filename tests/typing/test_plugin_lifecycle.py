@@ -112,6 +112,23 @@ def test_dmypy_runs_the_plugin(tmp_path: Path) -> None:
         subprocess.run([*dmypy, "stop"], cwd=tmp_path, capture_output=True, timeout=60, env=env)
 
 
+def test_dmypy_run_picks_up_a_changed_plugin_config(tmp_path: Path) -> None:
+    dmypy = [sys.executable, "-m", "mypy.dmypy", "--status-file", str(tmp_path / "dmypy.json")]
+    env = {**os.environ, "PYTHONPATH": str(REPO)}
+    run = [*dmypy, "run", "--", "--config-file", "mypy.ini", "snippet.py"]
+    try:
+        _write_project(tmp_path, "base:base_link")
+        aliased = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True, timeout=300, env=env)
+        assert "[geo-frame]" in aliased.stdout, aliased.stdout + aliased.stderr
+        assert "return-value" not in aliased.stdout  # "base" is "base_link"
+        _write_project(tmp_path, None)
+        plain = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True, timeout=300, env=env)
+        # The daemon started under the old aliases would repeat the first answer.
+        assert "[return-value]" in plain.stdout, plain.stdout + plain.stderr
+    finally:
+        subprocess.run([*dmypy, "stop"], cwd=tmp_path, capture_output=True, timeout=60, env=env)
+
+
 def test_frame_aliases_from_pyproject(tmp_path: Path) -> None:
     (tmp_path / "snippet.py").write_text(SNIPPET)
     pyproject = tmp_path / "pyproject.toml"
