@@ -70,10 +70,6 @@ class Outcome:
     problem: Problem | None = None
 
 
-# Kinds the shared table does not name, read as the kind they behave like: a point cloud moves like points,
-# a covariance like a vector (rotated only), an origin offset is a translation (its frames are ours to track).
-_SHARED_KIND = {CLOUD: Kind.POINT, COVARIANCE: Kind.VECTOR, ORIGIN_OFFSET: Kind.TRANSLATION}
-
 # What ``@`` can reach for each carrier (column vectors). A 4x4 matrix applied to a 3-vector is a shape error,
 # not a frame error, and a runtime Transform takes any runtime value; the shared table says what comes out.
 _APPLIES_TO = {
@@ -84,9 +80,8 @@ _APPLIES_TO = {
 
 
 def shared_kind(kind: str) -> Kind | None:
-    """The shared algebra's name for one of the plugin's kinds (None: the table has no such kind)."""
-    if kind in _SHARED_KIND:
-        return _SHARED_KIND[kind]
+    """The shared algebra's name for one of the plugin's kinds (None: a carrier only the plugin has, such as a
+    point cloud or an origin offset, whose rules live here)."""
     try:
         return Kind(kind)
     except ValueError:

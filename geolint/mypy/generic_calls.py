@@ -12,7 +12,17 @@ from __future__ import annotations
 from mypy.expandtype import expand_type
 from mypy.nodes import Expression
 from mypy.plugin import FunctionSigContext
-from mypy.types import AnyType, CallableType, FunctionLike, Instance, ProperType, TypeOfAny, TypeVarType
+from mypy.types import (
+    AnyType,
+    CallableType,
+    FunctionLike,
+    Instance,
+    ProperType,
+    Type,
+    TypeOfAny,
+    TypeVarType,
+    get_proper_type,
+)
 
 from geolint.mypy import geometry, messages
 from geolint.mypy.errorcodes import GEO_FRAME
@@ -50,8 +60,8 @@ def check_frames(ctx: FunctionSigContext) -> FunctionLike:
     return signature
 
 
-def _is_a(actual: ProperType | None, formal: object) -> bool:
-    formal = geometry.get_proper_type(formal)  # type: ignore[arg-type]
+def _is_a(actual: ProperType | None, formal_type: Type) -> bool:
+    formal = get_proper_type(formal_type)
     return (
         isinstance(actual, Instance)
         and isinstance(formal, Instance)
@@ -63,7 +73,7 @@ def _is_a(actual: ProperType | None, formal: object) -> bool:
 def _type_of(ctx: FunctionSigContext, expr: Expression) -> ProperType | None:
     lookup = getattr(ctx.api, "lookup_type_or_none", None)
     known = lookup(expr) if lookup is not None else None
-    return geometry.get_proper_type(known if known is not None else ctx.api.get_expression_type(expr))
+    return get_proper_type(known if known is not None else ctx.api.get_expression_type(expr))
 
 
 def _without(signature: CallableType, variable: TypeVarType) -> CallableType:
