@@ -20,5 +20,5 @@ __all__ = ["FactBase", "ModuleIndex", "facts_for_module"]
 def facts_for_module(tree: ast.Module, source: str, path: str, config: Config) -> FactBase:
     """The fact base of one module under one config."""
     index = ModuleIndex(tree, source)
-    orders = orders_for(path, source, tree, config.naming.order)
-    return FactBase(index, config, path, orders)
+    orders, mixed = orders_for(path, source, tree, config.naming.order)
+    return FactBase(index, config, path, orders, order_names_mixed=mixed)

@@ -54,6 +54,11 @@ class Votes:
             self.composed_src + other.composed_src,
         )
 
+    @property
+    def mixed(self) -> bool:
+        """Declarations in both orders: a `T_a_b` name alone says nothing in this project."""
+        return bool(self.declared_dst and self.declared_src)
+
     def orders(self) -> tuple[str, ...]:
         """The readings left open by the evidence."""
         if self.declared_dst or self.declared_src:
@@ -166,12 +171,13 @@ def project_votes(root: Path) -> Votes:
     return total
 
 
-def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> tuple[str, ...]:
-    """The readings of `T_a_b` names open for this file: the config's, or what the project's code says."""
+def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> tuple[tuple[str, ...], bool]:
+    """The readings of `T_a_b` names open for this file (the config's, or what the project's code
+    says), and whether such names are mixed evidence (both orders declared: names alone say nothing)."""
     if setting == DST_FIRST:
-        return (DST_FIRST,)
+        return (DST_FIRST,), False
     if setting == SRC_FIRST:
-        return (SRC_FIRST,)
+        return (SRC_FIRST,), False
     root = project_root(path) if os.path.isfile(path) else None
     votes = project_votes(root) if root is not None else votes_of_source(source, tree)
-    return votes.orders()
+    return votes.orders(), votes.mixed

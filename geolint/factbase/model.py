@@ -180,12 +180,21 @@ def transposed_value(node: ast.AST) -> ast.expr | None:
 class FactBase:
     """What the expressions of one module are, under one config. Built once per file."""
 
-    def __init__(self, index: ModuleIndex, config: Config, path: str = "<string>", orders: tuple[str, ...] = (DST_FIRST, SRC_FIRST)) -> None:
+    def __init__(
+        self,
+        index: ModuleIndex,
+        config: Config,
+        path: str = "<string>",
+        orders: tuple[str, ...] = (DST_FIRST, SRC_FIRST),
+        order_names_mixed: bool = False,
+    ) -> None:
         self.index = index
         self.config = config
         self.path = path
         # the naming orders `T_a_b` may be read in; one when the project's convention is known
         self.orders = orders
+        # the project declares `T_a_b` names in both orders: such a name alone is no evidence
+        self.order_names_mixed = order_names_mixed
         self._memo: dict[tuple[str, int, str], object] = {}
         self._active: set[tuple[str, int, str]] = set()
 
@@ -610,12 +619,27 @@ class FactBase:
 
     def name_frames(self, name: str, order: str) -> FrameFact | None:
         """What a name states, read in `order` (only `T_a_b` / `R_a_b` depend on it)."""
+        if name in vocab.DECLARING_ATTRIBUTES:
+            return self._extrinsics_frames(name)
         stated = frames_of_name(name, self.config)
         if stated is None:
+            return self._extrinsics_frames(name)
+        if self.order_names_mixed and order_dependent(name):
             return None
         if order == SRC_FIRST and stated.is_operator and order_dependent(name):
             return FrameFact(stated.inverted(), (f"name `{name}` (src-first)",))
         return FrameFact(stated, (f"name `{name}`" + (" (dst-first)" if order_dependent(name) else ""),))
+
+    def _extrinsics_frames(self, name: str) -> FrameFact | None:
+        """`c2w`, `pose_w2c`, `"cam_R_w2c"`: a camera-extrinsics word that states its direction."""
+        declared = vocab.DECLARING_ATTRIBUTES.get(name)
+        if declared is not None:
+            return FrameFact(declared, (f"`{name}` ({vocab.DECLARING_ATTRIBUTE_SOURCES[name]})",), True)
+        parts = name.lower().split("_")
+        found = {vocab.EXTRINSICS_TOKENS[part] for part in parts if part in vocab.EXTRINSICS_TOKENS}
+        if len(found) == 1 and len(parts) <= 3:
+            return FrameFact(found.pop(), (f"`{name}` states camera extrinsics",))
+        return None
 
     def _frames(self, node: ast.AST, order: str) -> FrameFact | None:
         if isinstance(node, ast.Name):
@@ -633,6 +657,9 @@ class FactBase:
                 return FrameFact(declared, (f"`.{node.attr}` ({vocab.DECLARING_ATTRIBUTE_SOURCES[node.attr]})",), True)
             return self.name_frames(node.attr, order)
         if isinstance(node, ast.Subscript):
+            key = string(node.slice)
+            if key is not None:  # `meta["c2w"]`, `info["cam_R_w2c"]`: the key states the convention
+                return self.name_frames(key, order) if key.isidentifier() else None
             inner = self.frame_fact(node.value, order)
             if inner is None:
                 return None

@@ -63,6 +63,15 @@ DECLARING_ATTRIBUTES: dict[str, NameFrames] = {
     "cam_R_w2c": NameFrames(dst="camera", src="world", operator="rotation"),
     "cam_t_w2c": NameFrames(frame="camera"),
 }
+# Abbreviations NeRF, SLAM and dataset code uses for camera extrinsics, in names and dict keys
+# (`c2w`, `pose_c2w`, `meta["w2c"]`): the direction is in the word itself.
+EXTRINSICS_TOKENS: dict[str, NameFrames] = {
+    "c2w": NameFrames(dst="world", src="camera", operator="unknown"),
+    "w2c": NameFrames(dst="camera", src="world", operator="unknown"),
+    "cam2world": NameFrames(dst="world", src="camera", operator="unknown"),
+    "world2cam": NameFrames(dst="camera", src="world", operator="unknown"),
+}
+
 DECLARING_ATTRIBUTE_SOURCES = {
     "cam_from_world": "pycolmap: world to camera",
     "world_from_cam": "pycolmap: camera to world",

@@ -310,6 +310,8 @@ def _is_frame(word: str) -> bool:
     if re.fullmatch(_MONOGRAM_FRAME, word):
         return True
     lowered = word.lower()
+    if lowered in KNOWN_FRAMES and _FRAME_WORD.match(word):
+        return True  # `T_map_odom`: ROS's `map` is a frame even though `depth_map` is not geometry
     return bool(_FRAME_WORD.match(word)) and lowered not in NOT_A_FRAME and lowered not in NON_GEOMETRIC_TOKENS
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.factbase.model import walk_within
+from geolint.factbase.model import FactBase, last_name, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.semantic.names import NameFrames, same_frame
 from geolint.semantic.prefilter import Trigger, may_mislabel_frames
@@ -48,6 +48,9 @@ class FrameMismatchAssign(FactRule):
         Valid("p_world = T_world_cam @ p_base\n"),  # GEO201 flags the product; the result IS in world
         Valid("X_WC = X_WB @ X_BC\n"),
         Valid("p_world = compute(p_cam)\n"),
+        Valid("import numpy as np\nworld2cam = np.linalg.inv(world2cam)\n"),  # a name rebound to its own inverse
+        Valid("T_approach_obj = T_grasp_obj.copy()\nT_approach_obj.translation -= d\n"),  # copy, then edited
+        Valid('T_table_world = RigidTransform(R, t, from_frame="patch", to_frame="world")\n'),  # label words differ
     ]
     INVALID = [
         Invalid("p_world = T_cam_base @ p_base\n"),
@@ -69,11 +72,15 @@ class FrameMismatchAssign(FactRule):
         if not isinstance(target, ast.Name) or _mentions_name(value, target.id):
             return  # `world2cam = inv(world2cam)`, `T_a_b = T_a_b @ D`: a name updated from itself
         facts = self.facts
+        if _is_copy(facts, value) or _edited_in_place(facts, target):
+            return  # `T_new = T.copy(); T_new[:3, 3] -= d`: the name describes the value after the edit
         messages = []
         for order in facts.readings():
             stated, actual = facts.name_frames(target.id, order), facts.frame_fact(value, order)
             if stated is None or actual is None:
                 return
+            if actual.declared and not _reversed(stated.frames, actual.frames):
+                return  # labels and names use different words (`T_table_world` from "patch"): only a reversal counts
             message = self._problem(target.id, value, stated.frames, actual.frames)
             if message is None:
                 return
@@ -101,3 +108,24 @@ class FrameMismatchAssign(FactRule):
 
 def _mentions_name(value: ast.expr, name: str) -> bool:
     return any(isinstance(node, ast.Name) and node.id == name for node in walk_within(value))
+
+
+def _reversed(stated: NameFrames, declared: NameFrames) -> bool:
+    return bool(same_frame(stated.dst, declared.src)) and bool(same_frame(stated.src, declared.dst))
+
+
+def _is_copy(facts: FactBase, value: ast.expr) -> bool:
+    """`T.copy()`, `np.copy(T)`, `copy.deepcopy(T)`, `T.clone()`."""
+    if not isinstance(value, ast.Call):
+        return False
+    name = last_name(value.func)
+    return name in ("copy", "deepcopy", "clone") or facts.is_array_call(value.func, "array", "copy") and bool(value.args)
+
+
+def _edited_in_place(facts: FactBase, target: ast.Name) -> bool:
+    """Whether the scope writes into the target after binding it (`T[:3, 3] = t`, `T.translation -= d`, `T += D`)."""
+    scope = facts.index.scope_of(target)
+    name = target.id
+    if name in scope.subscript_stores or name in scope.augmented:
+        return True
+    return any(isinstance(stored.value, ast.Name) and stored.value.id == name for stored, _ in scope.attribute_stores)

@@ -68,6 +68,8 @@ class PointPlusPoint(FactRule):
     triggers = Trigger("a `+` whose operands both mention point-like names", may_add_points)
 
     VALID = [
+        Valid("target_arm_pos = processed_delta_pos + cur_arm_pos\n"),  # a displacement, joint space
+        Valid("agent.arm_motor_pos = delta_pos + agent.arm_motor_pos\n"),
         Valid("midpoint = (p_start + p_end) / 2\n"),
         Valid("mid = 0.5 * (point_a + point_b)\n"),
         Valid("x = (1 - s) * p_start + s * p_end\n"),
