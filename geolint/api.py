@@ -20,6 +20,7 @@ from geolint import config as config_module
 from geolint import engine
 from geolint.cache import FindingsCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
+from geolint.factbase.summaries import dependency_digest
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 
@@ -111,7 +112,8 @@ def lint_paths(
         except OSError as error:
             results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
             continue
-        digest = content_hash(data)
+        # the file's bytes and those of the project modules it imports (their summaries feed its findings)
+        digest = dependency_digest(str(source.path), data, content_hash)
         cached = cache.get(source.path.resolve(), digest, source.display) if cache else None
         if cached is not None:
             results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)

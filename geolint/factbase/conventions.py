@@ -142,6 +142,10 @@ def project_root(path: str) -> Path | None:
     return None
 
 
+def _is_project(folder: str) -> bool:
+    return any(os.path.exists(os.path.join(folder, marker)) for marker in ("pyproject.toml", "setup.py", "setup.cfg"))
+
+
 def project_votes(root: Path) -> Votes:
     """The votes of every Python file under `root` (cached per process)."""
     with _lock:
@@ -151,7 +155,13 @@ def project_votes(root: Path) -> Votes:
     total = Votes()
     count = 0
     for folder, dirnames, filenames in os.walk(root):
-        dirnames[:] = [d for d in dirnames if not d.startswith(".") and d not in ("node_modules", "__pycache__", "build", "dist")]
+        dirnames[:] = [
+            d
+            for d in dirnames
+            if not d.startswith(".")
+            and d not in ("node_modules", "__pycache__", "build", "dist")
+            and not _is_project(os.path.join(folder, d))  # a nested project has its own conventions
+        ]
         for filename in filenames:
             if not filename.endswith(".py"):
                 continue

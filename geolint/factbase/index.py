@@ -182,12 +182,14 @@ class ModuleIndex:
                 self.imported_modules.add(local)
                 scope.bind(local, OpaqueBinding())
         elif isinstance(node, ast.ImportFrom):
-            if node.module and not node.level:
+            # a relative import keeps its leading dots (`.utils.to_homogeneous`), resolved by summaries
+            module = "." * node.level + (node.module or "")
+            if module:
                 for alias in node.names:
                     if alias.name == "*":
                         continue
                     local = alias.asname or alias.name
-                    self.imports[local] = f"{node.module}.{alias.name}"
+                    self.imports[local] = f"{module}.{alias.name}" if node.module else f"{module}{alias.name}"
                     scope.bind(local, OpaqueBinding())
         return scope
 

@@ -24,7 +24,9 @@ from dataclasses import dataclass
 from typing import Callable, Iterator, TypeVar
 
 from geolint.algebra import FREE, Kind
+from geolint.factbase import summaries
 from geolint.factbase import vocabulary as vocab
+from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.index import (
     Binding,
     LoopBinding,
@@ -69,7 +71,7 @@ class Homogeneous:
     inner: ast.expr
     w: int
     construction: ast.expr
-    fixed: str
+    fixed: str | None  # None when the w is set elsewhere (inside a helper): no fix here
     # False when only the use can tell a homogeneous w from a padded coordinate
     # (`np.column_stack((xy, np.zeros(n)))` lifts 2D points to z = 0).
     explicit: bool = True
@@ -187,6 +189,7 @@ class FactBase:
         path: str = "<string>",
         orders: tuple[str, ...] = (DST_FIRST, SRC_FIRST),
         order_names_mixed: bool = False,
+        cross_module: bool = True,
     ) -> None:
         self.index = index
         self.config = config
@@ -195,6 +198,8 @@ class FactBase:
         self.orders = orders
         # the project declares `T_a_b` names in both orders: such a name alone is no evidence
         self.order_names_mixed = order_names_mixed
+        # whether helpers imported from other project modules are summarised (one level deep)
+        self.cross_module = cross_module
         self._memo: dict[tuple[str, int, str], object] = {}
         self._active: set[tuple[str, int, str]] = set()
 
@@ -415,17 +420,50 @@ class FactBase:
         library = vocab.LIBRARY_KINDS.get(qualified)
         if library is not None:
             return library
-        if isinstance(func, ast.Name) and func.id in self.index.functions:
-            return self._kind_of_helper(self.index.functions[func.id])
-        return None
+        summary = self.function_summary(node)
+        return None if summary is None else summary.returns
 
-    def _kind_of_helper(self, function: ast.AST) -> Kind | None:
-        """A module-level helper's kind when every `return` has the same kind."""
-        scope = self.index.scopes.get(function)
-        if scope is None or not scope.returns:
+    def function_summary(self, call: ast.Call) -> FunctionSummary | None:
+        """What the called helper does (a function of this module, or of a project module it imports)."""
+        return self._cached("summary", call, lambda: self._function_summary(call))
+
+    def _function_summary(self, call: ast.Call) -> FunctionSummary | None:
+        func = call.func
+        if isinstance(func, ast.Name) and func.id in self.index.functions:
+            return self._summary_of(self, self.index.functions[func.id])
+        if not self.cross_module:
             return None
-        kinds = {self.kind_of(value) for value in scope.returns}
-        return kinds.pop() if len(kinds) == 1 else None
+        head = func.id if isinstance(func, ast.Name) else dotted_name(func)
+        if head is None or head.split(".")[0] not in self.index.imports:
+            return None
+        qualified = self.qualified_name(func) or ""
+        module, _, name = qualified.rpartition(".")
+        if not module or not name:
+            return None
+        level = len(module) - len(module.lstrip("."))
+        file = summaries.module_file(module.lstrip("."), self.path, level)
+        if file is None:
+            return None
+        other = summaries.external_facts(file, self.config)
+        if other is None or name not in other.index.functions:
+            return None
+        return self._summary_of(other, other.index.functions[name])
+
+    @staticmethod
+    def _summary_of(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary | None:
+        cache = facts._memo
+        key = ("function-summary", id(function), "")
+        if key in cache:
+            return cache[key]  # type: ignore[return-value]
+        if key in facts._active:
+            return None  # recursion
+        facts._active.add(key)
+        try:
+            result = summaries.summarize(facts, function)
+        finally:
+            facts._active.discard(key)
+        cache[key] = result
+        return result
 
     def _kind_of_variable(self, name: ast.Name) -> Kind | None:
         stated = self._name_kind(name.id)
@@ -619,8 +657,6 @@ class FactBase:
 
     def name_frames(self, name: str, order: str) -> FrameFact | None:
         """What a name states, read in `order` (only `T_a_b` / `R_a_b` depend on it)."""
-        if name in vocab.DECLARING_ATTRIBUTES:
-            return self._extrinsics_frames(name)
         stated = frames_of_name(name, self.config)
         if stated is None:
             return self._extrinsics_frames(name)
@@ -659,6 +695,8 @@ class FactBase:
         if isinstance(node, ast.Subscript):
             key = string(node.slice)
             if key is not None:  # `meta["c2w"]`, `info["cam_R_w2c"]`: the key states the convention
+                if key in vocab.DECLARING_ATTRIBUTES:
+                    return self._extrinsics_frames(key)
                 return self.name_frames(key, order) if key.isidentifier() else None
             inner = self.frame_fact(node.value, order)
             if inner is None:
@@ -814,6 +852,12 @@ class FactBase:
 
     def _homogeneous_call(self, node: ast.Call) -> Homogeneous | None:
         positional = positional_args(node)
+        if isinstance(node.func, (ast.Name, ast.Attribute)) and not self.is_array_call(node.func, *_ARRAY_BUILDERS):
+            summary = self.function_summary(node)
+            if summary is not None and summary.homogenizes:
+                index, w = next(iter(summary.homogenizes.items()))
+                if index < len(positional):  # `to_homogeneous(normals)`: the helper appends w
+                    return Homogeneous(inner=positional[index], w=w, construction=node, fixed=None, explicit=True)
         if self.is_array_call(node.func, "append") and len(positional) == 2 and len(node.args) == 2:
             return self._with_w(node, positional[0], positional[1], explicit=False)
         if self.is_array_call(node.func, *vocab.STACKING_FUNCTIONS) and positional:
@@ -846,9 +890,7 @@ class FactBase:
         w, fixed_w = self._w_value(w_node)
         if w is None or fixed_w is None:
             return None
-        fixed = replace_span(self.index, construction, fixed_w)
-        if fixed is None:
-            return None
+        fixed = replace_span(self.index, construction, fixed_w)  # None when w is set outside the span
         return Homogeneous(inner=inner, w=w, construction=construction, fixed=fixed, explicit=explicit)
 
     def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[ast.AST, str]] | None]:
@@ -859,6 +901,10 @@ class FactBase:
             return int(literal), [(node, str(other) if isinstance(node.value, int) else f"{other}.0")]  # type: ignore[arg-type]
         if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 1:
             return self._w_value(node.elts[0])
+        if isinstance(node, ast.Name):  # `ones = np.ones((n, 1)); np.hstack([x, ones])`
+            bindings = self.bindings(node) or []
+            if len(bindings) == 1 and isinstance(bindings[0], ast.Call):
+                return self._w_value(bindings[0])
         if isinstance(node, ast.Call) and self.is_array_call(node.func, "ones", "zeros", "ones_like", "zeros_like"):
             w = 1 if last_name(node.func) in ("ones", "ones_like") else 0
             return w, [(_name_node_of(node.func), _SWAP[last_name(node.func) or ""])]
@@ -913,6 +959,7 @@ class FactBase:
         return bases[0] if len(codes) == 1 else None
 
 
+_ARRAY_BUILDERS = ("append", "hstack", "column_stack", "concatenate", "cat", "concat", "array", "asarray", "tensor", "as_tensor", "r_", "c_")
 _SWAP = {"ones": "zeros", "zeros": "ones", "ones_like": "zeros_like", "zeros_like": "ones_like"}
 
 

@@ -6,6 +6,7 @@ import ast
 from typing import Sequence
 
 from geolint.factbase.model import FactBase, MatMul
+from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.lint_types import Applicability
 from geolint.rules.base import AstRule
 from geolint.semantic.names import NameFrames, same_frame
@@ -15,6 +16,7 @@ class FactRule(AstRule):
     """An `AstRule` that reads the module's shared fact base (`self.facts`)."""
 
     needs_facts = True
+    triggers = GATE_TRIGGER
 
     @property
     def facts(self) -> FactBase:

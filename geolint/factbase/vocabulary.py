@@ -84,22 +84,47 @@ DECLARING_ATTRIBUTE_SOURCES = {
 _GATE_WORDS = sorted(
     names.DIRECTION_WORDS
     | names.POINT_WORDS
-    | names.TRANSFORM_WORDS
     | DIRECTION_ATTRIBUTES
     | POINT_ATTRIBUTES
     | UNIT_FUNCTIONS
-    | {"cross", "quat", "quaternion", "from_quat", "from_euler", "from_rotvec", "euler", "rpy", "sin", "cos", "tan"}
+    | set(EXTRINSICS_TOKENS)
+    | set(DECLARING_ATTRIBUTES)
+    | {"cross", "quat", "quaternion", "euler", "rpy", "rotvec", "axangle", "sin", "cos", "tan"}
     | {"transform_points", "vector_to_point", "vector_to_direction", "do_transform_cloud", "matrix_world"}
-    | {"from_frame", "to_frame", "as_frames", "lookup_transform", "Frame", "SE3", "Quaternion", "axangle"}
+    | {"from_frame", "to_frame", "as_frames", "lookup_transform", "lookupTransform", "Frame", "SE3", "Quaternion"}
+    | {"inv", "inverse", "pinv", "Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz"}
 )
-# Any of these (as a whole word, or a word part of a snake_case name), a `@`, or a frame-naming
-# shape (`T_a_b`, `a2b`, `a_from_b`, `p_world`) lets a file through to the analysis.
+# Structure every rule needs one of (a product, a transpose, a frame-naming shape: `T_a_b`, `a_T_b`,
+# `X_WB`, `a2b`, `a_from_b`, `p_world`), or one of the vocabulary's words as a word part of a name.
 GATE = re.compile(
-    r"@|\b[TRXH]_[A-Za-z0-9]|[a-z0-9]2[a-z]|_(?:from|to|in)_|\.dot\(|\.T\b|"
+    r"@|\.dot\(|matmul|\.T\b|\b[TRXH]_[A-Za-z0-9]|_[TRXH]_|[a-z0-9]2[a-z]|_(?:from|to|in)_|\b[pv]_[A-Za-z]|"
     r"(?:\b|_)(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_)",
 )
 
 
+class Gate:
+    """The rules' prefilter: a file the gate does not match holds nothing any fact rule reasons about.
+
+    Derived from the vocabulary above and `geolint.semantic.names` (never a second hand-synced list);
+    the config's extra point/direction names and frame aliases widen it.
+    """
+
+    description = "mentions geometry: a product, a transpose, a frame-naming shape or a geometry word"
+
+    def search(self, source: str) -> bool:
+        return GATE.search(source) is not None
+
+    def search_with(self, source: str, config: object) -> bool:
+        if self.search(source):
+            return True
+        extra = [*getattr(config, "extra_direction_names", ()), *getattr(config, "extra_point_names", ())]
+        extra += [word for pair in getattr(config, "frame_aliases", {}).items() for word in pair]
+        return any(word in source for word in extra)
+
+
+GATE_TRIGGER = Gate()
+
+
 def may_hold_geometry(source: str) -> bool:
     """The cheap gate: whether a module's text mentions anything the rules could reason about."""
-    return GATE.search(source) is not None
+    return GATE_TRIGGER.search(source)

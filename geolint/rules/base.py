@@ -87,7 +87,7 @@ class RuleAttributes:
     default_severity: ClassVar[Severity] = Severity.ERROR
     # A file this prefilter does not match cannot give the rule a finding, so the engine may
     # skip parsing it. None means "always run". A compiled regex works; the real rules use
-    # `geolint.semantic.prefilter.Trigger`, which also reads the config (`search_with`).
+    # `geolint.factbase.vocabulary.Gate`, which also reads the config (`search_with`).
     triggers: ClassVar[RuleTrigger | None] = None
     VALID: ClassVar[Sequence[Valid]] = ()
     INVALID: ClassVar[Sequence[Invalid]] = ()

@@ -78,3 +78,25 @@ def test_demo_shows_bugs_of_every_family(cli_findings: dict[str, list[dict]]) ->
     families = Counter(f["code"][:4] for f in demo)
     assert set(families) == {"GEO1", "GEO2", "GEO3"}, families
     assert len(demo) >= 6
+
+
+PROJECTS = sorted(path for path in (FIXTURES / "projects").iterdir() if path.is_dir())
+
+
+@pytest.mark.parametrize("project", PROJECTS, ids=lambda path: path.name)
+def test_project_fixture(project: Path) -> None:
+    """A multi-module project, linted on its own (its own config and naming order): exactly its annotations."""
+    result = subprocess.run(
+        [sys.executable, "-m", "geolint", "check", "--format", "json", "--no-cache", "--select", "GEO1,GEO2,GEO3", "."],
+        cwd=project,
+        capture_output=True,
+        text=True,
+    )
+    assert result.returncode in (0, 1), result.stderr
+    found = {(Path(f["path"]).as_posix(), f["line"], f["column"], f["code"]) for f in json.loads(result.stdout)}
+    expected = {
+        (path.relative_to(project).as_posix(), line, column, code)
+        for path in sorted(project.rglob("*.py"))
+        for line, column, code in expectations(path)
+    }
+    assert found == expected

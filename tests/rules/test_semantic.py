@@ -1,4 +1,4 @@
-"""Unit tests of the shared semantic model: names, kinds, frames, flow, homogeneous forms, prefilter."""
+"""Unit tests of the shared semantic model: names, kinds, frames, flow, homogeneous forms."""
 
 from __future__ import annotations
 
@@ -11,7 +11,6 @@ from geolint.factbase.index import ModuleIndex
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, FactBase
 from geolint.lint_types import Config, NamingConventions
 from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_name, same_frame
-from geolint.semantic.prefilter import summarize
 
 
 @pytest.mark.parametrize(
@@ -216,11 +215,3 @@ def test_ones_buffer_filled_with_xyz() -> None:
     model, module = model_of("import numpy as np\nh = np.ones(4)\nh[:3] = x\nh\n")
     found = model.homogeneous(last_value(module))
     assert found is not None and found.w == 1 and found.fixed == "np.zeros(4)"
-
-
-def test_prefilter_reads_code_not_docstrings() -> None:
-    prose = '"""Rotate the normal by T_world_cam and add p_world @ t."""\nimport numpy as np\nx = np.sum(a, axis=0)\n'
-    summary = summarize(prose)
-    assert "normal" not in summary.names and not summary.has_matmul
-    code = "y = T_world_cam @ p_base\n"
-    assert summarize(code).has_matmul

@@ -6,7 +6,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
 from geolint.factbase.rule_support import ProductRule
 from geolint.semantic.names import NameFrames, same_frame
-from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
 
 
 class FrameMismatchApply(ProductRule):
@@ -41,7 +40,6 @@ class FrameMismatchApply(ProductRule):
 
     code = "GEO201"
     name = "frame-mismatch-apply"
-    triggers = Trigger("a product and a transform name in a frame convention", may_mix_frames_in_product)
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),

@@ -6,7 +6,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
 from geolint.factbase.rule_support import ProductRule
 from geolint.semantic.names import NameFrames, same_frame
-from geolint.semantic.prefilter import Trigger, may_mix_frames_in_product
 
 
 class FrameMismatchCompose(ProductRule):
@@ -39,7 +38,6 @@ class FrameMismatchCompose(ProductRule):
 
     code = "GEO202"
     name = "frame-mismatch-compose"
-    triggers = Trigger("a product and a transform name in a frame convention", may_mix_frames_in_product)
 
     VALID = [
         Valid("T_world_tool = T_world_base @ T_base_tool\n"),

@@ -8,7 +8,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, last_name, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.semantic.names import NameFrames, same_frame
-from geolint.semantic.prefilter import Trigger, may_mislabel_frames
 
 
 class FrameMismatchAssign(FactRule):
@@ -39,7 +38,6 @@ class FrameMismatchAssign(FactRule):
 
     code = "GEO203"
     name = "frame-mismatch-assign"
-    triggers = Trigger("an assignment to a name that states frames", may_mislabel_frames)
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),

@@ -7,7 +7,6 @@ import re
 import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.semantic.prefilter import Trigger, may_transpose_transform
 from geolint.factbase.model import last_name, number
 from geolint.factbase.rule_support import FactRule
 
@@ -52,7 +51,6 @@ class TransposeAsInverse(FactRule):
 
     code = "GEO204"
     name = "transpose-as-inverse"
-    triggers = Trigger("`.T` of a transform name", may_transpose_transform)
 
     VALID = [
         Valid("R_cam_world = R_world_cam.T\n"),

@@ -9,7 +9,6 @@ from geolint.algebra import FREE
 from geolint.factbase.model import GEOMETRIC, keyword, last_name, last_name_target, positional_args, replace_span, transposed_value
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.semantic.names import Kind as NameKind, kind_of_name
-from geolint.semantic.prefilter import Trigger, may_translate_direction
 
 
 class DirectionTranslated(FactRule):
@@ -47,7 +46,6 @@ class DirectionTranslated(FactRule):
 
     code = "GEO101"
     name = "direction-translated"
-    triggers = Trigger("a direction-like value and a homogeneous construction, `<product> + t`, or a translating call", may_translate_direction)
 
     VALID = [
         Valid("import numpy as np\nnormal_h = np.append(normal, 0)\n"),
@@ -105,6 +103,25 @@ class DirectionTranslated(FactRule):
             self._check_homogeneous(node)  # type: ignore[arg-type]
             if isinstance(node, ast.Call):
                 self._check_library_call(node)
+                self._check_helper_call(node)
+
+    def _check_helper_call(self, node: ast.Call) -> None:
+        """`apply_pose(T, normals)` where the helper (here or in an imported project module) does `R @ x + t`."""
+        facts = self.facts
+        summary = facts.function_summary(node)
+        if summary is None or not summary.translates:
+            return
+        positional = positional_args(node)
+        for index in sorted(summary.translates):
+            if index < len(positional) and facts.is_free(positional[index]):
+                helper = self.code_of(node.func)
+                self.report(
+                    node,
+                    f"`{helper}` rotates and translates its parameter `{summary.parameters[index]}`, but "
+                    f"`{self.code_of(positional[index])}` is a direction; a direction only rotates",
+                    evidence=(f"summary of `{helper}`: translates parameter {index}",),
+                )
+                return
 
     def _check_homogeneous(self, node: ast.expr) -> None:
         facts = self.facts

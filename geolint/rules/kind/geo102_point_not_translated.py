@@ -10,7 +10,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.algebra import Kind
 from geolint.factbase.model import keyword, last_name, positional_args, transposed_value
 from geolint.factbase.rule_support import FactRule
-from geolint.semantic.prefilter import Trigger, may_drop_point_translation
 
 
 class PointNotTranslated(FactRule):
@@ -44,7 +43,6 @@ class PointNotTranslated(FactRule):
 
     code = "GEO102"
     name = "point-not-translated"
-    triggers = Trigger("a point-like value and a w = 0 construction, a rotation-block product, or translate=False", may_drop_point_translation)
 
     VALID = [
         Valid("import numpy as np\np_h = np.append(point, 1)\n"),

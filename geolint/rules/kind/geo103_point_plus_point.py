@@ -8,7 +8,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE, Kind
 from geolint.factbase.model import last_name, number
 from geolint.factbase.rule_support import FactRule
-from geolint.semantic.prefilter import Trigger, may_add_points
 
 _COLLECTION_WORDS = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
 # `delta_pos`, `pos_offset`, `displacement`: a displacement (a vector), never a point
@@ -65,7 +64,6 @@ class PointPlusPoint(FactRule):
 
     code = "GEO103"
     name = "point-plus-point"
-    triggers = Trigger("a `+` whose operands both mention point-like names", may_add_points)
 
     VALID = [
         Valid("target_arm_pos = processed_delta_pos + cur_arm_pos\n"),  # a displacement, joint space

@@ -12,7 +12,6 @@ from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import GEOMETRIC, last_name, transposed_value, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.semantic.names import tokens
-from geolint.semantic.prefilter import Trigger, may_leave_normals
 
 _NORMAL_TOKENS = frozenset({"normal", "normals", "nrm", "nrms"})
 _MENTIONS_NORMAL_FIELDS = re.compile(r"normal_x")
@@ -54,7 +53,6 @@ class NormalsLeftBehind(FactRule):
 
     code = "GEO104"
     name = "normals-left-behind"
-    triggers = Trigger("normals and transformed points, or do_transform_cloud", may_leave_normals)
 
     VALID = [
         Valid(

@@ -8,7 +8,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, positional_args, replace_span, string
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_order
 from geolint.factbase.rule_support import FactRule
-from geolint.semantic.prefilter import Trigger, may_pass_quaternion
 
 _COMPONENTS = "wxyz"
 
@@ -45,7 +44,6 @@ class QuaternionOrder(FactRule):
 
     code = "GEO301"
     name = "quaternion-order"
-    triggers = Trigger("a call to a quaternion API", may_pass_quaternion)
 
     VALID = [
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.x, q.y, q.z, q.w])\n"),

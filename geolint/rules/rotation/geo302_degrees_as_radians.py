@@ -10,7 +10,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
-from geolint.semantic.prefilter import Trigger, may_pass_degrees
 
 _TWO_PI = 2 * math.pi
 _SPATIALMATH_ANGLE_CALLS = frozenset(
@@ -49,7 +48,6 @@ class DegreesAsRadians(FactRule):
 
     code = "GEO302"
     name = "degrees-as-radians"
-    triggers = Trigger("a call to an angle API or trig of a literal", may_pass_degrees)
 
     VALID = [
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 90], degrees=True)\n'),
