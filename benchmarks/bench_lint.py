@@ -1,13 +1,15 @@
 """Linter throughput on a real source tree, side by side in one run (medians of repeats).
 
 Prints lines/s for: the `ast.parse` floor (read + decode + parse every file, one process),
-geolint cold with 1 job and with all cores (`--no-cache`), geolint warm (an unchanged tree,
-served from the cache), and `fixit lint` with its built-in rules. Every geolint and fixit
-figure is a real CLI run in a subprocess, start-up included.
+geolint cold with 1 job and with 2 jobs (`--no-cache`), geolint warm (an unchanged tree, served
+from the cache), `ruff check --select ALL --no-cache`, and optionally `fixit lint` with its
+built-in rules. Every geolint, ruff and fixit figure is a real CLI run in a subprocess, start-up
+included; geolint runs with the semantic rules only (`--select GEO1,GEO2,GEO3`), as the real-code
+benchmark does.
 
+    python benchmarks/bench_lint.py /work/realcode --repeats 3 --skip-fixit   # the real-code corpus
     python benchmarks/bench_lint.py                      # the installed numpy source tree
     python benchmarks/bench_lint.py PATH --repeats 3 --fixit-repeats 1
-    python benchmarks/bench_lint.py --skip-fixit         # fixit takes minutes on numpy
 """
 
 from __future__ import annotations
@@ -83,18 +85,28 @@ def main() -> int:
     workdir = Path(tempfile.mkdtemp(prefix="geolint-bench-"))  # no pyproject: default config
     env = {key: value for key, value in os.environ.items() if key not in ("NO_COLOR", "CI")}
     env["GEOLINT_CACHE_DIR"] = str(workdir / "cache")
-    geolint = [sys.executable, "-m", "geolint", "check", str(tree), "--exit-zero", "--quiet", "--format", "json"]
+    geolint = [
+        sys.executable, "-m", "geolint", "check", str(tree), "--exit-zero", "--quiet", "--format", "json",
+        "--select", "GEO1,GEO2,GEO3",
+    ]  # fmt: skip
 
     print(f"tree: {tree}")
     print(f"files: {len(files)}, lines: {lines}, cores: {jobs}, repeats: {args.repeats} (fixit: {args.fixit_repeats})")
+    print(f"date: {time.strftime('%Y-%m-%d %H:%M')} (figures are medians; a shared machine adds noise)")
     rows: list[tuple[str, float]] = []
 
     rows.append(("ast.parse floor (1 process)", median_of(args.repeats, lambda: time_ast_floor(files))))
     rows.append(("geolint cold, --jobs 1", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", "1"], workdir, env))))
-    rows.append((f"geolint cold, --jobs {jobs}", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", str(jobs)], workdir, env))))
+    rows.append(("geolint cold, --jobs 2", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", "2"], workdir, env))))
     shutil.rmtree(workdir / "cache", ignore_errors=True)
     time_command(geolint, workdir, env)  # fill the cache
     rows.append(("geolint warm (cache)", median_of(args.repeats, lambda: time_command(geolint, workdir, env))))
+    ruff = shutil.which("ruff", path=str(Path(sys.executable).parent)) or shutil.which("ruff")
+    if ruff is None:
+        print("ruff: not installed (pip install ruff), skipped")
+    else:
+        ruff_command = [ruff, "check", "--select", "ALL", "--no-cache", "--exit-zero", "--quiet", "--isolated", str(tree)]
+        rows.append(("ruff check --select ALL", median_of(args.repeats, lambda: time_command(ruff_command, workdir, env))))
     if not args.skip_fixit:
         fixit = shutil.which("fixit", path=str(Path(sys.executable).parent)) or shutil.which("fixit")
         if fixit is None:
@@ -108,6 +120,8 @@ def main() -> int:
     by_label = dict(rows)
     cold = by_label["geolint cold, --jobs 1"]
     print(f"warm / cold(jobs 1): {by_label['geolint warm (cache)'] / cold:.1%}")
+    print(f"cold(jobs 1) / ast.parse: {cold / by_label['ast.parse floor (1 process)']:.1f}x")
+    print(f"jobs 2 speed-up over jobs 1: {cold / by_label['geolint cold, --jobs 2']:.2f}x")
     if "fixit lint (built-in rules)" in by_label:
         print(f"geolint cold (jobs 1) vs fixit: {by_label['fixit lint (built-in rules)'] / cold:.1f}x faster")
     shutil.rmtree(workdir, ignore_errors=True)

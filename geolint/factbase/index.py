@@ -84,7 +84,7 @@ class ModuleIndex:
         self.imported_modules: set[str] = set()
         self.functions: dict[str, ast.FunctionDef | ast.AsyncFunctionDef] = {}  # module level
         self.methods: dict[str, list[ast.FunctionDef | ast.AsyncFunctionDef]] = {}  # by name, in classes
-        self.by_type: dict[type, list[ast.AST]] = {}
+        self.by_type: dict[type, list[ast.AST]] = {}  # in source (pre-)order
         self.self_attribute_stores: dict[str, list[ast.expr]] = {}  # `self.x = value` anywhere in a class
         self._lines: list[str] | None = None
         self._build()
@@ -96,10 +96,13 @@ class ModuleIndex:
         by_type = self.by_type
         parents = self.parents
         scope_of = self.scope_of_node
-        # (node, scope the node's code runs in)
+        record = self._record
+        iter_fields = ast.iter_fields
+        # (node, scope the node's code runs in); an explicit stack, so depth costs no recursion
         stack: list[tuple[ast.AST, Scope]] = [(self.tree, root)]
+        pop, push = stack.pop, stack.append
         while stack:
-            node, scope = stack.pop()
+            node, scope = pop()
             scope_of[node] = scope
             kind = type(node)
             bucket = by_type.get(kind)
@@ -107,12 +110,20 @@ class ModuleIndex:
                 by_type[kind] = [node]
             else:
                 bucket.append(node)
-            inner = self._record(node, scope)
-            for child in ast.iter_child_nodes(node):
+            inner = record(node, scope) if kind in _RECORDED else scope
+            makes_scope = kind in _SCOPE_MAKERS
+            children = []
+            for _, value in iter_fields(node):
+                if isinstance(value, list):
+                    for child in value:
+                        if isinstance(child, ast.AST) and type(child) not in _LEAVES:
+                            children.append(child)
+                elif isinstance(value, ast.AST) and type(value) not in _LEAVES:
+                    children.append(value)
+            # pushed last-first, so nodes come off the stack in source (pre-)order
+            for child in reversed(children):
                 parents[child] = node
-                stack.append((child, inner if _runs_in_inner_scope(node, child) else scope))
-        for bucket in by_type.values():  # source order, which the walk above does not keep
-            bucket.sort(key=_position)
+                push((child, inner if makes_scope and _runs_in_inner_scope(node, child) else scope))
 
     def _record(self, node: ast.AST, scope: Scope) -> Scope:
         """Record what `node` binds in `scope`; return the scope its body runs in."""
@@ -272,6 +283,20 @@ class ModuleIndex:
     def segment(self, node: ast.AST) -> str:
         """The exact source text of a node's span (what a replacement replaces)."""
         return ast.get_source_segment(self.source, node) or ""
+
+
+# Nodes nothing asks about (`Load`, `Add`...): not indexed, not walked.
+_LEAVES = frozenset(
+    {ast.Load, ast.Store, ast.Del, *ast.operator.__subclasses__(), *ast.unaryop.__subclasses__(),
+     *ast.cmpop.__subclasses__(), *ast.boolop.__subclasses__()}
+)  # fmt: skip
+_SCOPE_MAKERS = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
+# Nodes `_record` has something to say about.
+_RECORDED = _SCOPE_MAKERS | {
+    ast.Assign, ast.AnnAssign, ast.AugAssign, ast.NamedExpr, ast.For, ast.AsyncFor, ast.comprehension,
+    ast.withitem, ast.ExceptHandler, ast.BinOp, ast.Call, ast.Return, ast.Global, ast.Nonlocal, ast.Import,
+    ast.ImportFrom,
+}  # fmt: skip
 
 
 def _runs_in_inner_scope(node: ast.AST, child: ast.AST) -> bool:

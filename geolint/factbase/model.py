@@ -58,6 +58,7 @@ _NAME_KIND = {
     NameKind.ROTATION: Kind.ROTATION,
 }
 _MAX_DEPTH = 60
+_MISSING = object()
 
 
 @dataclass(frozen=True)
@@ -201,6 +202,7 @@ class FactBase:
         # whether helpers imported from other project modules are summarised (one level deep)
         self.cross_module = cross_module
         self._memo: dict[tuple[str, int, str], object] = {}
+        self._qualified: dict[int, object] = {}
         self._active: set[tuple[str, int, str]] = set()
 
     # -- plumbing -------------------------------------------------------------------------
@@ -229,6 +231,13 @@ class FactBase:
 
     def qualified_name(self, node: ast.AST) -> str | None:
         """The dotted name with its first component resolved through the module's imports."""
+        key = id(node)
+        known = self._qualified.get(key, _MISSING)
+        if known is _MISSING:
+            known = self._qualified[key] = self._qualify(node)
+        return known  # type: ignore[return-value]
+
+    def _qualify(self, node: ast.AST) -> str | None:
         dotted = dotted_name(node)
         if dotted is None:
             return None
@@ -438,7 +447,7 @@ class FactBase:
             return None
         qualified = self.qualified_name(func) or ""
         module, _, name = qualified.rpartition(".")
-        if not module or not name:
+        if not module or not name or module.split(".")[0] in vocab.THIRD_PARTY_ROOTS:
             return None
         level = len(module) - len(module.lstrip("."))
         file = summaries.module_file(module.lstrip("."), self.path, level)
@@ -852,12 +861,6 @@ class FactBase:
 
     def _homogeneous_call(self, node: ast.Call) -> Homogeneous | None:
         positional = positional_args(node)
-        if isinstance(node.func, (ast.Name, ast.Attribute)) and not self.is_array_call(node.func, *_ARRAY_BUILDERS):
-            summary = self.function_summary(node)
-            if summary is not None and summary.homogenizes:
-                index, w = next(iter(summary.homogenizes.items()))
-                if index < len(positional):  # `to_homogeneous(normals)`: the helper appends w
-                    return Homogeneous(inner=positional[index], w=w, construction=node, fixed=None, explicit=True)
         if self.is_array_call(node.func, "append") and len(positional) == 2 and len(node.args) == 2:
             return self._with_w(node, positional[0], positional[1], explicit=False)
         if self.is_array_call(node.func, *vocab.STACKING_FUNCTIONS) and positional:
@@ -872,6 +875,12 @@ class FactBase:
                 base = self._components_of_one_array(elements[:3])
                 if base is not None:
                     return self._with_w(node, base, elements[3])
+        if isinstance(node.func, (ast.Name, ast.Attribute)) and not self.is_array_call(node.func, *_ARRAY_BUILDERS):
+            summary = self.function_summary(node)
+            if summary is not None and summary.homogenizes:
+                index, w = next(iter(summary.homogenizes.items()))
+                if index < len(positional):  # `to_homogeneous(normals)`: the helper appends w
+                    return Homogeneous(inner=positional[index], w=w, construction=node, fixed=None, explicit=True)
         return None
 
     def _last_axis(self, call: ast.Call) -> bool:

@@ -16,6 +16,7 @@ import os
 import re
 import threading
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -57,8 +58,10 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
         if homogeneous is not None and isinstance(homogeneous.inner, ast.Name) and homogeneous.inner.id in params:
             summary.homogenizes[params.index(homogeneous.inner.id)] = homogeneous.w
     # `R @ x + t` (or row form `x @ R.T + t`) on a parameter x
-    for node in facts.index.nodes(ast.BinOp):
-        if not isinstance(node, ast.BinOp) or not isinstance(node.op, ast.Add) or facts.index.scope_of(node) is not scope:
+    from geolint.factbase.model import walk_within
+
+    for node in walk_within(function):
+        if not isinstance(node, ast.BinOp) or not isinstance(node.op, ast.Add):
             continue
         for rotated, other in ((node.left, node.right), (node.right, node.left)):
             inner = transposed_value(rotated) or rotated
@@ -81,10 +84,11 @@ _modules: dict[tuple[str, int, int, int], object] = {}
 
 
 def project_root(path: str) -> Path | None:
-    try:
-        folder = Path(path).resolve().parent
-    except (OSError, RuntimeError):
-        return None
+    return _root_of_folder(_folder_of(path))
+
+
+@lru_cache(maxsize=4096)
+def _root_of_folder(folder: Path) -> Path | None:
     for candidate in (folder, *folder.parents):
         if any((candidate / marker).exists() for marker in _PROJECT_MARKERS):
             return candidate
@@ -93,10 +97,16 @@ def project_root(path: str) -> Path | None:
 
 def module_file(module: str, importer: str, level: int = 0) -> Path | None:
     """The project file a module name resolves to from `importer` (absolute or relative), or None."""
-    try:
-        here = Path(importer).resolve().parent
-    except (OSError, RuntimeError):
-        return None
+    return _module_file_from(module, _folder_of(importer), level)
+
+
+@lru_cache(maxsize=4096)
+def _folder_of(path: str) -> Path:
+    return Path(os.path.dirname(os.path.abspath(path)))
+
+
+@lru_cache(maxsize=16384)
+def _module_file_from(module: str, here: Path, level: int) -> Path | None:
     parts = [part for part in module.split(".") if part]
     if level:
         base = here
@@ -104,7 +114,7 @@ def module_file(module: str, importer: str, level: int = 0) -> Path | None:
             base = base.parent
         candidates = [base]
     else:
-        root = project_root(importer)
+        root = _root_of_folder(here)
         if root is None:
             return None
         candidates = []

@@ -16,6 +16,16 @@ from geolint.semantic.names import NameFrames
 # Array libraries whose functions behave alike for our purposes (numpy's names).
 ARRAY_MODULES = frozenset({"numpy", "np", "torch", "jax.numpy", "jnp", "cupy", "cp"})
 ARRAY_ROOTS = frozenset({"numpy", "np", "torch", "jax", "jnp", "cupy", "cp"})
+# Packages that are never the project's own modules (no summary is looked for in them).
+THIRD_PARTY_ROOTS = frozenset(
+    {
+        "numpy", "torch", "jax", "cupy", "scipy", "math", "os", "sys", "re", "json", "typing", "collections",
+        "open3d", "trimesh", "cv2", "PIL", "matplotlib", "pytransform3d", "spatialmath", "transforms3d",
+        "PyKDL", "rospy", "rclpy", "tf", "tf2_ros", "tf_transformations", "geometry_msgs", "sensor_msgs",
+        "pycolmap", "autolab_core", "pydrake", "pyquaternion", "quaternion", "kornia", "pytorch3d",
+        "tensorflow", "sklearn", "pandas", "yaml", "logging", "pathlib", "functools", "itertools",
+    }
+)  # fmt: skip
 # Local names that mean a module by convention even when the import is not in this file.
 CONVENTIONAL_ALIASES = {"np": "numpy", "jnp": "jax.numpy", "cp": "cupy"}
 # Module aliases that are never geometric values themselves (`np.random.normal` is not a normal).

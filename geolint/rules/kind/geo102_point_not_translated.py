@@ -119,8 +119,7 @@ class PointNotTranslated(FactRule):
         or the same scope reads the matrix's translation column (added after a reduction)."""
         facts = self.facts
         scope = facts.index.scope_of(node)
-        column = rf"{re.escape(self.code_of(matrix))}\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]"
-        if re.search(column, _scope_text(facts, scope.node)):
+        if self._reads_translation_column(scope.node, self.code_of(matrix)):
             return True
         parent = facts.parent(node)
         while parent is not None and transposed_value(parent) is node:
@@ -133,6 +132,19 @@ class PointNotTranslated(FactRule):
                 if isinstance(target, ast.Name) and target.id in scope.augmented:
                     return True
         return not isinstance(parent, (ast.Assign, ast.Return, ast.Call, ast.AnnAssign, ast.List, ast.Tuple))
+
+    def _reads_translation_column(self, scope_node: ast.AST, matrix: str) -> bool:
+        """Whether the scope's text reads `matrix[:3, 3]` (one scan per scope, remembered)."""
+        cache = self.__dict__.setdefault("_columns", {})
+        read = cache.get(id(scope_node))
+        if read is None:
+            read = cache[id(scope_node)] = {m.group(1) for m in _TRANSLATION_COLUMN.finditer(_scope_text(self.facts, scope_node))}
+        if matrix in read:
+            return True
+        if re.fullmatch(r"[\w.]+", matrix):
+            return False
+        column = rf"{re.escape(matrix)}\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]"  # `poses[i][:3, 3]`
+        return re.search(column, _scope_text(self.facts, scope_node)) is not None
 
     def _check_library_call(self, node: ast.Call) -> None:
         facts = self.facts
@@ -155,6 +167,9 @@ class PointNotTranslated(FactRule):
                     f"`vector_to_direction` gives w = 0, but `{self.code_of(positional[0])}` is a point; "
                     "use `vector_to_point`",
                 )
+
+
+_TRANSLATION_COLUMN = re.compile(r"([\w.]+)\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]")
 
 
 def _scope_text(facts, scope_node: ast.AST) -> str:  # type: ignore[no-untyped-def]

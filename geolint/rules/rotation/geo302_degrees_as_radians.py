@@ -3,15 +3,19 @@
 from __future__ import annotations
 
 import math
+import re
 
 import ast
 
 from geolint.rules.base import Invalid, Valid
+from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
 
 _TWO_PI = 2 * math.pi
+_ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
+_RADIAN_NAME = re.compile(r"(?i)rad")
 _SPATIALMATH_ANGLE_CALLS = frozenset(
     {"Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz", "rpy2r", "eul2r", "rpy2tr", "eul2tr"}
 )
@@ -50,6 +54,15 @@ class DegreesAsRadians(FactRule):
     name = "degrees-as-radians"
 
     VALID = [
+        Valid(
+            "import numpy as np\n"
+            "class Orbit:\n"
+            "    def __init__(self, fovy=30):\n"
+            "        self.fovy = np.radians(fovy)\n"
+            "    def focal(self, height):\n"
+            "        return height / (2 * np.tan(self.fovy / 2))\n"
+        ),
+        Valid("import numpy as np\ndef f(fov_rad=30):\n    return np.tan(fov_rad / 2)\n"),
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 90], degrees=True)\n'),
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 1.57])\n'),
         Valid("import numpy as np\nc = np.cos(np.pi / 2)\n"),
@@ -59,6 +72,14 @@ class DegreesAsRadians(FactRule):
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("z", angle)\n'),
     ]
     INVALID = [
+        Invalid(
+            "import numpy as np\n"
+            "class Orbit:\n"
+            "    def __init__(self, fovy=30):\n"
+            "        self.fovy = fovy\n"
+            "    def focal(self, height):\n"
+            "        return height / (2 * np.tan(self.fovy / 2))\n"
+        ),
         Invalid(
             'from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 90])\n',
             expected_fix='from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 90], degrees=True)\n',
@@ -134,9 +155,44 @@ class DegreesAsRadians(FactRule):
             facts.is_array_call(func, *TRIG_FUNCTIONS) or qualified in {f"math.{fn}" for fn in TRIG_FUNCTIONS}
         ):
             value = number(positional[0])
+            if value is None:
+                value = self._angle_through_data(positional[0])
             if value is not None and value == int(value) and int(value) % 15 == 0 and abs(value) <= 720:
                 return [float(value)]
         return None
+
+    def _angle_through_data(self, node: ast.expr) -> float | None:
+        """`np.tan(self.fovy / 2)` where `fovy` only ever holds a literal (a default `fovy=30`): that
+        literal, when the name reads as an angle. Halving or doubling keeps the unit."""
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Div, ast.Mult)) and number(node.right) is not None:
+            node = node.left
+        name = node.attr if isinstance(node, ast.Attribute) else node.id if isinstance(node, ast.Name) else None
+        if name is None or not _ANGLE_NAME.search(name) or _RADIAN_NAME.search(name):
+            return None
+        values = {value for value in self._literal_sources(node, depth=0)}
+        return values.pop() if len(values) == 1 and None not in values else None
+
+    def _literal_sources(self, node: ast.expr, depth: int) -> list[float | None]:
+        facts = self.facts
+        if depth > 3:
+            return [None]
+        literal = number(node)
+        if literal is not None:
+            return [float(literal)]
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+            stores = facts.index.self_attribute_stores.get(node.attr, [])
+            return [found for value in stores for found in self._literal_sources(value, depth + 1)] or [None]
+        if isinstance(node, ast.Name):
+            found: list[float | None] = []
+            for binding in facts.bindings(node) or []:
+                if isinstance(binding, ParamBinding):
+                    found.append(float(number(binding.default)) if number(binding.default) is not None else None)  # type: ignore[arg-type]
+                elif isinstance(binding, ast.expr):
+                    found += self._literal_sources(binding, depth + 1)
+                else:
+                    found.append(None)
+            return found or [None]
+        return [None]
 
 
 def _literals(node: ast.AST) -> list[float]:
