@@ -206,6 +206,12 @@ def _severity(value: Any, source: Path | None, key: str) -> dict[str, Severity]:
     return result
 
 
+def _positive_int(value: Any, source: Path | None, key: str) -> int:
+    if not isinstance(value, int) or isinstance(value, bool) or value < 1:
+        raise ConfigError(source, key, f"must be a positive integer, got {_describe(value)}")
+    return value
+
+
 _READERS: dict[str, Callable[[Any, Path | None, str], Any]] = {
     "select": _selectors,
     "ignore": _selectors,
@@ -217,6 +223,8 @@ _READERS: dict[str, Callable[[Any, Path | None, str], Any]] = {
     "extra_direction_names": _identifiers,
     "extra_point_names": _identifiers,
     "severity": _severity,
+    "max_file_size": _positive_int,
+    "max_nesting_depth": _positive_int,
 }
 
 

@@ -24,7 +24,7 @@ from functools import lru_cache
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Iterable, Sequence
 
-from geolint import suppression
+from geolint import guards, suppression
 from geolint.config import enabled_codes
 from geolint.lint_types import Config, Edit, Finding, Fix, Severity
 
@@ -37,7 +37,7 @@ if TYPE_CHECKING:
 SYNTAX_ERROR = "GEO000"
 SYNTAX_ERROR_NAME = "syntax-error"
 # Pseudo-rules: documented like rules, but detected here rather than by visiting the tree.
-ENGINE_RULE_CODES = frozenset({SYNTAX_ERROR, suppression.UNUSED_SUPPRESSION})
+ENGINE_RULE_CODES = frozenset({SYNTAX_ERROR, guards.TOO_COMPLEX, suppression.UNUSED_SUPPRESSION})
 
 
 def registered_rules() -> tuple[AnyRule, ...]:
@@ -83,8 +83,13 @@ def _decode_problem(data: bytes, error: Exception) -> tuple[int, int, str]:
 
 def decode_source(data: bytes) -> tuple[str, str]:
     """The text of a Python file and the encoding it was read with (newlines kept as they are)."""
-    encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)  # "utf-8-sig" when there is a BOM
+    # The first two lines as Python counts them (a CR-only file's cookie is on its first line too).
+    first_lines = iter(_FIRST_TWO_LINES.match(data).group().splitlines(keepends=True))  # type: ignore[union-attr]
+    encoding, _ = tokenize.detect_encoding(lambda: next(first_lines, b""))  # "utf-8-sig" when there is a BOM
     return data.decode(encoding), encoding
+
+
+_FIRST_TWO_LINES = re.compile(rb"[^\r\n]*(?:\r\n|\r|\n)?[^\r\n]*(?:\r\n|\r|\n)?")
 
 
 def encode_source(text: str, encoding: str) -> bytes:
@@ -92,6 +97,7 @@ def encode_source(text: str, encoding: str) -> bytes:
     return text.encode(encoding)
 
 
+@guards.too_deep_becomes_a_finding
 def lint_source(
     source: str,
     path: str = "<string>",
@@ -110,11 +116,15 @@ def lint_source(
 
     module = None
     syntax_error = None
-    if SYNTAX_ERROR in on or visitors:
+    if SYNTAX_ERROR in on or guards.TOO_COMPLEX in on or visitors:
+        limit = guards.exceeded_limit(source, config)  # before any analysis and before libcst's parser
+        if limit is not None:
+            return guards.limit_finding(path, config, limit)
+        guards.make_room_for_recursion(config)
         syntax_error = _syntax_error(source)
         if syntax_error is not None:
             # only a libcst rule could still read what CPython rejects
-            if any(not _is_ast_rule(rule) for rule in visitors):
+            if any(not _is_ast_rule(rule) for rule in visitors) and guards.safe_for_libcst(source, syntax_error[2], config):
                 module, parse_error = _libcst_parse(source)
             if module is None:
                 line, column, message = syntax_error

@@ -86,13 +86,13 @@ def parses(source: str) -> bool:
     """Whether both CPython and libcst accept `source` (a fix must never break a file)."""
     try:
         ast.parse(source)
-    except (SyntaxError, ValueError):
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
         return False
     import libcst as cst
 
     try:
         cst.parse_module(source)
-    except cst.ParserSyntaxError:
+    except (cst.ParserSyntaxError, RecursionError):
         return False
     return True
 

@@ -98,6 +98,9 @@ class Config:
     extra_direction_names: tuple[str, ...] = ()
     extra_point_names: tuple[str, ...] = ()
     severity: Mapping[str, Severity] = field(default_factory=dict)
+    # Analysis limits (geolint.guards): a file past one gets a single GEO001 finding instead.
+    max_file_size: int = 1_000_000  # characters
+    max_nesting_depth: int = 150  # levels of the syntax tree
     source: Path | None = None
 
     def __hash__(self) -> int:  # mappings are not hashable; the repr is stable

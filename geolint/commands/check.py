@@ -106,7 +106,9 @@ def run(args: argparse.Namespace) -> int:
     if args.fix or args.diff:
         results, fixed_total, diffs = _fix(results, config, unsafe=args.unsafe_fixes, write=not args.diff)
         if args.diff:
-            sys.stdout.write("".join(diffs))
+            sys.stdout.flush()
+            sys.stdout.buffer.write(b"".join(diffs))  # each diff in its file's own encoding, as patch reads it
+            sys.stdout.buffer.flush()
             if not args.quiet:
                 _note(f"Would fix {fixed_total} finding{'s' * (fixed_total != 1)}." if fixed_total else "No fixes available.")
             return EXIT_ERROR if internal_errors else (EXIT_FINDINGS if diffs else EXIT_OK)
@@ -158,7 +160,7 @@ def run(args: argparse.Namespace) -> int:
             f"time: {time.perf_counter() - started:.2f}s"
         )
     if not args.quiet:
-        summary = _summary(findings, fixed_total, known)
+        summary = _summary(findings, fixed_total, known, internal_errors)
         if args.format == "text" and not to_file and not args.statistics:
             sys.stdout.write(summary + "\n")
             sys.stdout.flush()
@@ -199,14 +201,14 @@ def _common_folder(paths: Sequence[Path]) -> Path:
 
 def _fix(
     results: list[api.FileResult], config: Config, *, unsafe: bool, write: bool
-) -> tuple[list[api.FileResult], int, list[str]]:
+) -> tuple[list[api.FileResult], int, list[bytes]]:
     """Fix every file that has an applicable fix; returns new results, the count fixed, and diffs."""
     from geolint.engine import decode_source, encode_source
     from geolint.fixes import fix_source, fixable
 
     updated: list[api.FileResult] = []
     fixed_total = 0
-    diffs: list[str] = []
+    diffs: list[bytes] = []
     for result in results:
         if result.error or result.location is None or not any(fixable(f, unsafe=unsafe) for f in result.findings):
             updated.append(result)
@@ -216,10 +218,11 @@ def _fix(
             source, encoding = decode_source(data)
             outcome = fix_source(source, result.path, config, unsafe=unsafe)
             if outcome.changed:
+                fixed = encode_source(outcome.source, encoding)
                 if write:
-                    result.location.write_bytes(encode_source(outcome.source, encoding))
+                    result.location.write_bytes(fixed)
                 else:
-                    diffs.append(_unified_diff(result.path, source, outcome.source))
+                    diffs.append(_unified_diff(result.path, data, fixed))
                 fixed_total += outcome.fixed
                 updated.append(api.FileResult(result.path, outcome.remaining, location=result.location))
             else:
@@ -230,15 +233,29 @@ def _fix(
     return updated, fixed_total, diffs
 
 
-def _unified_diff(path: str, before: str, after: str) -> str:
+def _unified_diff(path: str, before: bytes, after: bytes) -> bytes:
+    """A unified diff of a file's bytes before and after `--fix`, as `patch` and `git apply` read one.
+
+    Lines end at \n only (a \r, a form feed stay inside their line, so CRLF and CR-only files
+    diff exactly); the bytes keep the file's own encoding and BOM; a last line without \n is
+    followed by the "\\ No newline at end of file" marker.
+    """
+    name = os.fsencode(path)
     absolute = os.path.isabs(path)
-    lines = difflib.unified_diff(
-        before.splitlines(keepends=True),
-        after.splitlines(keepends=True),
-        fromfile=path if absolute else f"a/{path}",
-        tofile=path if absolute else f"b/{path}",
+    lines = difflib.diff_bytes(
+        difflib.unified_diff,
+        _byte_lines(before),
+        _byte_lines(after),
+        fromfile=name if absolute else b"a/" + name,
+        tofile=name if absolute else b"b/" + name,
     )
-    return "".join(line if line.endswith("\n") else line + "\n\\ No newline at end of file\n" for line in lines)
+    return b"".join(line if line.endswith(b"\n") else line + b"\n\\ No newline at end of file\n" for line in lines)
+
+
+def _byte_lines(data: bytes) -> list[bytes]:
+    """The lines of `data`, each with its \n (the last one may have none)."""
+    lines = data.split(b"\n")
+    return [line + b"\n" for line in lines[:-1]] + ([lines[-1]] if lines[-1] else [])
 
 
 def _add_noqa(results: list[api.FileResult]) -> tuple[int, int]:
@@ -277,7 +294,7 @@ def _statistics(findings: Sequence[Finding], format_name: str) -> str:
     return "".join(f"{n:>{width}}\t{c}\t{'[*] ' if c in fixable else ''}{names[c]}\n" for c, n in rows)
 
 
-def _summary(findings: Sequence[Finding], fixed: int, known: int) -> str:
+def _summary(findings: Sequence[Finding], fixed: int, known: int, unchecked: int = 0) -> str:
     parts = []
     if fixed:
         parts.append(f"Fixed {fixed} finding{'s' * (fixed != 1)}.")
@@ -289,8 +306,10 @@ def _summary(findings: Sequence[Finding], fixed: int, known: int) -> str:
         if unsafe:
             hints.append(f"{unsafe} more with --fix --unsafe-fixes")
         parts.append(line + (f" ({', '.join(hints)})" if hints else "") + ".")
-    else:
+    elif not unchecked:  # only when every file was checked
         parts.append("All checks passed.")
+    if unchecked:
+        parts.append(f"{unchecked} file{'s' * (unchecked != 1)} could not be checked (internal error above).")
     if known:
         parts.append(f"({known} known finding{'s' * (known != 1)} hidden by the baseline.)")
     return " ".join(parts)
