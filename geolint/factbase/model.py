@@ -19,6 +19,7 @@ Every question answers None when the evidence is missing or contradictory.
 from __future__ import annotations
 
 import ast
+import sys
 import re
 from dataclasses import dataclass
 from typing import Callable, Iterator, TypeVar
@@ -125,7 +126,8 @@ def number(node: ast.AST | None) -> int | float | None:
         inner = number(node.operand)
         return None if inner is None else -inner
     if isinstance(node, ast.Constant) and type(node.value) in (int, float):
-        return node.value  # type: ignore[no-any-return]
+        # 1e999 is inf and a 400-digit integer overflows a float: no value to reason about.
+        return node.value if abs(node.value) <= sys.float_info.max else None  # type: ignore[no-any-return]
     return None
 
 
