@@ -19,7 +19,22 @@ import numpy as np
 from geolint.runtime.errors import GeometryTypeError, GeometryValueError
 from geolint.runtime.frames import Frame, frame_name
 
-__all__ = ["FramedKind", "is_frame_argument", "resolve_frame", "checked_array", "frozen", "format_array"]
+__all__ = [
+    "FramedKind",
+    "LARGEST_COORDINATE",
+    "ReadOnlyArray",
+    "is_frame_argument",
+    "resolve_frame",
+    "checked_array",
+    "checked_tolerance",
+    "frozen",
+    "read_only",
+    "format_array",
+]
+
+# Inputs beyond this magnitude are refused: squares (norms) and a few sums and products of such values
+# stay finite, so no operation of the runtime can overflow to inf without an error.
+LARGEST_COORDINATE = 1e150
 
 
 def is_frame_argument(item: object) -> bool:
@@ -134,8 +149,66 @@ def frozen(array: np.ndarray) -> np.ndarray:
     return array
 
 
-def checked_array(value: Any, shapes: tuple[tuple[int, ...], ...], what: str, owner: str) -> np.ndarray:
-    """A read-only float64 copy of ``value`` after checking its shape and that every entry is finite.
+class ReadOnlyArray(np.ndarray):
+    """The arrays a value hands out (``T.matrix``, ``p.xyz``...): writing into one says the value is immutable.
+
+    Results computed from one (``T.matrix * 2``) are plain, writeable ndarrays.
+    """
+
+    def __setitem__(self, index: Any, value: Any) -> None:
+        if not self.flags.writeable:
+            raise _immutable()
+        super().__setitem__(index, value)
+
+    def __array_wrap__(self, array: Any, context: Any = None, return_scalar: bool = False) -> Any:
+        if return_scalar:
+            return array[()]
+        return array.view(np.ndarray) if isinstance(array, np.ndarray) else array
+
+
+def _refuse_in_place(name: str) -> Any:
+    def in_place(self: ReadOnlyArray, other: Any) -> Any:
+        if not self.flags.writeable:
+            raise _immutable()
+        return getattr(np.ndarray, name)(self, other)
+
+    in_place.__name__ = name
+    return in_place
+
+
+for _name in ("__iadd__", "__isub__", "__imul__", "__itruediv__", "__ifloordiv__", "__imod__", "__ipow__",
+              "__imatmul__", "__iand__", "__ior__", "__ixor__", "__ilshift__", "__irshift__"):
+    setattr(ReadOnlyArray, _name, _refuse_in_place(_name))
+
+
+def _immutable() -> GeometryValueError:
+    return GeometryValueError(
+        "geolint values are immutable: this array is a read-only view of one; copy it first "
+        "(np.array(T.matrix), np.array(p.xyz)) or build a new value"
+    )
+
+
+def read_only(array: np.ndarray) -> ReadOnlyArray:
+    """``array`` frozen and viewed as a `ReadOnlyArray`, for an accessor to hand out."""
+    if array.flags.writeable:
+        array.flags.writeable = False
+    return array.view(ReadOnlyArray)
+
+
+def checked_tolerance(tolerance: Any, owner: str) -> float:
+    """A tolerance given by the user: a finite real number >= 0 (NaN would make every check pass)."""
+    if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float, np.integer, np.floating)):
+        raise GeometryTypeError(f"{owner}: tolerance must be a real number, got {type(tolerance).__name__}")
+    if not (0 <= tolerance < np.inf):
+        raise GeometryValueError(f"{owner}: tolerance must be a finite number >= 0, got {tolerance!r}")
+    return float(tolerance)
+
+
+def checked_array(
+    value: Any, shapes: tuple[tuple[int, ...], ...], what: str, owner: str, largest: float = LARGEST_COORDINATE
+) -> np.ndarray:
+    """A read-only float64 copy of ``value`` after checking its shape and that every entry is finite
+    with a magnitude of at most ``largest`` (default `LARGEST_COORDINATE`).
 
     Parameters
     ----------
@@ -161,10 +234,17 @@ def checked_array(value: Any, shapes: tuple[tuple[int, ...], ...], what: str, ow
         accepted = " or ".join(_shape_text(shape) for shape in shapes)
         raise GeometryValueError(f"{owner}: {what} must have shape {accepted}, got {array.shape}")
     array = np.array(array, dtype=np.float64, copy=True)
-    if not np.isfinite(array).all():
-        bad = np.argwhere(~np.isfinite(array))[0]
+    if not (np.abs(array) <= largest).all():  # one pass catches NaN, inf and overflow-prone magnitudes
+        if not np.isfinite(array).all():
+            bad = np.argwhere(~np.isfinite(array))[0]
+            raise GeometryValueError(
+                f"{owner}: {what} has a non-finite entry ({array[tuple(bad)]} at index {tuple(int(i) for i in bad)})"
+            )
+        bad = np.argwhere(np.abs(array) > largest)[0]
         raise GeometryValueError(
-            f"{owner}: {what} has a non-finite entry ({array[tuple(bad)]} at index {tuple(int(i) for i in bad)})"
+            f"{owner}: {what} has an entry of magnitude {abs(array[tuple(bad)]):.3g} at index "
+            f"{tuple(int(i) for i in bad)}, beyond {largest:g}; values that large overflow to inf in "
+            f"transforms and norms (rescale the units)"
         )
     array.flags.writeable = False
     return array

@@ -13,7 +13,7 @@ import numpy as np
 
 from geolint.runtime._framed import FramedKind, checked_array, frozen
 from geolint.runtime.errors import GeometryTypeError, GeometryValueError
-from geolint.runtime.primitives import Direction, Point, _unit, describe, register_kind
+from geolint.runtime.primitives import Direction, Point, _rescaled_unit, _unit, describe, register_kind
 
 if TYPE_CHECKING:
     from numpy.typing import ArrayLike, NDArray
@@ -49,12 +49,12 @@ class PointCloud(FramedKind, Generic[F]):
         if normals is None:
             self._normals = None
         else:
-            raw = checked_array(normals, ((-1, 3),), "normals", owner)
+            raw = checked_array(normals, ((-1, 3),), "normals", owner, float(np.finfo(np.float64).max))
             if raw.shape[0] != self._points.shape[0]:
                 raise GeometryValueError(
                     f"{owner}: {self._points.shape[0]} points but {raw.shape[0]} normals; give one normal per point"
                 )
-            self._normals = _unit(raw, f"{owner} normals")
+            self._normals = _rescaled_unit(raw, f"{owner} normals")
 
     @classmethod
     def _wrap(cls, frame: str, points: np.ndarray, normals: np.ndarray | None) -> Any:
@@ -112,7 +112,7 @@ class PointCloud(FramedKind, Generic[F]):
     def _moved_by(self, transform: Any) -> Any:
         # Step 8 of the design text: partition by kind, transform each part by its own rule, merge.
         points = transform.rotate(self._points)
-        points += transform.translation
+        points += transform._translation_block()
         normals = None
         if self._normals is not None:
             normals = _unit(transform.rotate(self._normals), "normals")

@@ -57,7 +57,7 @@ class _Edge:
     def at(self, stamp: float | None) -> np.ndarray:
         """The 4x4 matrix T_parent_child at ``stamp`` (interpolated between samples)."""
         if self.static is not None:
-            return self.static.matrix
+            return self.static._m
         if stamp is None:
             raise MissingStampError(
                 f"the edge {self.parent} -> {self.child} is time-stamped "
@@ -73,9 +73,9 @@ class _Edge:
             )
         i = bisect.bisect_left(self.stamps, stamp)
         if self.stamps[i] == stamp:
-            return self.samples[i].matrix
+            return self.samples[i]._m
         t0, t1 = self.stamps[i - 1], self.stamps[i]
-        return _interpolate(self.samples[i - 1].matrix, self.samples[i].matrix, (stamp - t0) / (t1 - t0))
+        return _interpolate(self.samples[i - 1]._m, self.samples[i]._m, (stamp - t0) / (t1 - t0))
 
 
 def _interpolate(m0: np.ndarray, m1: np.ndarray, fraction: float) -> np.ndarray:
@@ -128,8 +128,7 @@ class FrameTree:
             raise GeometryTypeError(f"FrameTree.add expects a Transform, got {describe(transform)}")
         if transform.is_batch:
             raise GeometryValueError("FrameTree.add takes one pose; add a batch as stamped samples one by one")
-        if stamp is not None and not (isinstance(stamp, (int, float, np.integer, np.floating)) and np.isfinite(stamp)):
-            raise GeometryValueError(f"a stamp must be a finite number, got {stamp!r}")
+        stamp = _checked_stamp(stamp, "FrameTree.add: stamp")
         parent, child = transform.dst, transform.src
         edge = self._edges.get(child)
         if edge is not None and edge.parent != parent:
@@ -220,6 +219,7 @@ class FrameTree:
         ------
         UnknownFrameError, DisconnectedFramesError, MissingStampError, ExtrapolationError
         """
+        at = _checked_stamp(at, "FrameTree.lookup: at")
         dst_name, src_name = self._known(dst), self._known(src)
         up_from_src = self._path_to_root(src_name)
         up_from_dst = self._path_to_root(dst_name)
@@ -296,6 +296,17 @@ class FrameTree:
 
     def __repr__(self) -> str:
         return f"FrameTree(<{len(self._frames)} frames, {len(self._edges)} edges>)"
+
+
+def _checked_stamp(stamp: Any, what: str) -> float | None:
+    """A time stamp given by the user: None, or a finite real number (not a bool, a string or a list)."""
+    if stamp is None:
+        return None
+    if isinstance(stamp, (bool, np.bool_)) or not isinstance(stamp, (int, float, np.integer, np.floating)):
+        raise GeometryTypeError(f"{what} must be a number (a time), got {type(stamp).__name__} {stamp!r}")
+    if not np.isfinite(stamp):
+        raise GeometryValueError(f"{what} must be a finite number (a time), got {stamp!r}")
+    return float(stamp)
 
 
 def _inverse(matrix: np.ndarray) -> np.ndarray:

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar, overload
 
 import numpy as np
 
-from geolint.runtime._framed import FramedKind, checked_array, format_array, frozen
+from geolint.runtime._framed import LARGEST_COORDINATE, FramedKind, checked_array, format_array, frozen, read_only
 from geolint.runtime.errors import FrameMismatchError, GeometryTypeError, GeometryValueError
 
 if TYPE_CHECKING:
@@ -84,6 +84,8 @@ class _Coordinates(FramedKind):
     __array_ufunc__ = None
     _frame: ClassVar[str]
     _xyz: np.ndarray
+    # Largest accepted input magnitude (a direction is rescaled, so any finite length will do).
+    _largest_input: ClassVar[float] = LARGEST_COORDINATE
 
     def __init__(self, xyz: ArrayLike) -> None:
         cls = type(self)
@@ -92,7 +94,7 @@ class _Coordinates(FramedKind):
                 f"{cls.__name__} needs a frame: write {cls.__name__}[World](xyz) with a Frame class, "
                 f"or {cls.__name__}['camera'](xyz) with a frame name"
             )
-        self._xyz = self._prepared(checked_array(xyz, _COORD_SHAPES, "xyz", cls.__name__))
+        self._xyz = self._prepared(checked_array(xyz, _COORD_SHAPES, "xyz", cls.__name__, self._largest_input))
 
     def _prepared(self, xyz: np.ndarray) -> np.ndarray:
         return xyz
@@ -124,7 +126,7 @@ class _Coordinates(FramedKind):
     @property
     def xyz(self) -> NDArray[np.float64]:
         """The coordinates, read-only, shape (3,) or (N, 3)."""
-        return frozen(self._xyz)
+        return read_only(self._xyz)
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -146,7 +148,15 @@ class _Coordinates(FramedKind):
             raise GeometryTypeError(
                 f"{describe(self)} is a single value; index its coordinates with np.asarray(value)[i]"
             )
-        return type(self)._wrap(self._frame, self._xyz[index])
+        if isinstance(index, tuple):
+            raise GeometryTypeError(
+                f"{describe(self)}[{', '.join(map(_index_text, index))}]: a batch is indexed by value only (b[i], b[a:b], b[mask]); "
+                f"index the coordinates with np.asarray(batch)[...]"
+            )
+        rows = self._xyz[index]
+        if rows.shape[-1:] != (3,) or rows.ndim > 2:  # e.g. b[None]
+            raise GeometryTypeError(f"{describe(self)}[{_index_text(index)}] does not select whole values")
+        return type(self)._wrap(self._frame, rows)
 
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
         def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
@@ -194,6 +204,14 @@ class _Coordinates(FramedKind):
 
     def __bool__(self) -> bool:
         raise GeometryTypeError(f"the truth value of {describe(self)} is ambiguous; compare np.asarray(value)")
+
+
+def _index_text(part: Any) -> str:
+    """An index as it was written: `:3`, `...`, `0`."""
+    if isinstance(part, slice):
+        text = ":".join("" if bound is None else repr(bound) for bound in (part.start, part.stop))
+        return text + (f":{part.step!r}" if part.step is not None else "")
+    return "..." if part is Ellipsis else repr(part)
 
 
 def _refuse_with_ndarray(value: Any, other: object, operation: str, wrap_as: str) -> GeometryTypeError:
@@ -319,16 +337,16 @@ class Vector(_Coordinates, Generic[F]):
 
     # A factor is a real scalar, or for a batch an (N,) array of per-row factors.
     def __mul__(self, factor: float | NDArray[Any]) -> Vector[F]:
-        return Vector._wrap(self._frame, self._xyz * _scalar_factor(factor, self, "*"))  # type: ignore[no-any-return]
+        return Vector._wrap(self._frame, _within_range(self._xyz * _scalar_factor(factor, self, "*"), self, "*"))  # type: ignore[no-any-return]
 
     def __rmul__(self, factor: float | NDArray[Any]) -> Vector[F]:
-        return Vector._wrap(self._frame, self._xyz * _scalar_factor(factor, self, "*"))  # type: ignore[no-any-return]
+        return self.__mul__(factor)
 
     def __truediv__(self, divisor: float | NDArray[Any]) -> Vector[F]:
         factor = _scalar_factor(divisor, self, "/")
         if np.any(factor == 0):
             raise GeometryValueError(f"{describe(self)} / 0: division by zero")
-        return Vector._wrap(self._frame, self._xyz / factor)  # type: ignore[no-any-return]
+        return Vector._wrap(self._frame, _within_range(self._xyz / factor, self, "/"))  # type: ignore[no-any-return]
 
     def norm(self) -> Any:
         """Euclidean length: a float for one vector, an (N,) array for a batch."""
@@ -355,6 +373,32 @@ class Vector(_Coordinates, Generic[F]):
         return Direction._wrap(self._frame, _unit(self._xyz, "Direction"))  # type: ignore[no-any-return]
 
 
+def _within_range(xyz: np.ndarray, owner: Any, operation: str) -> np.ndarray:
+    """``xyz`` if its magnitude stays within `LARGEST_COORDINATE` (scaling is how a value can grow past it)."""
+    if not (np.abs(xyz) <= LARGEST_COORDINATE).all():
+        raise GeometryValueError(
+            f"{describe(owner)} {operation} factor: the result would reach {np.abs(xyz).max():.3g}, beyond "
+            f"{LARGEST_COORDINATE:g}, where transforms and norms overflow to inf"
+        )
+    return xyz
+
+
+def _rescaled_unit(xyz: np.ndarray, owner: str) -> np.ndarray:
+    """`_unit` for user input of any finite magnitude: divided by its largest entry first, so squaring
+    neither overflows (1e200) nor underflows; the zero-length threshold applies to the true length."""
+    largest = np.abs(xyz).max(axis=-1, keepdims=True)
+    safe = np.where(largest > 0, largest, 1.0)
+    scaled = xyz / safe
+    scaled_lengths = np.linalg.norm(scaled, axis=-1, keepdims=True)
+    too_short = scaled_lengths < 1e-12 / safe  # the true length below 1e-12, without forming it
+    if np.any(too_short):
+        where = "" if xyz.ndim == 1 else f" (row {int(np.argmax(too_short[:, 0]))})"
+        raise GeometryValueError(f"{owner}: a zero-length vector has no direction{where}")
+    unit = scaled / scaled_lengths
+    unit.flags.writeable = False
+    return unit  # type: ignore[no-any-return]
+
+
 def _unit(xyz: np.ndarray, owner: str) -> np.ndarray:
     lengths = np.linalg.norm(xyz, axis=-1, keepdims=True)
     if np.any(lengths < 1e-12):
@@ -377,9 +421,10 @@ class Direction(Vector[F]):
     """
 
     __slots__ = ()
+    _largest_input = float(np.finfo(np.float64).max)
 
     def _prepared(self, xyz: np.ndarray) -> np.ndarray:
-        return _unit(xyz, type(self).__name__)
+        return _rescaled_unit(xyz, type(self).__name__)
 
     def __neg__(self) -> Direction[F]:
         # The opposite unit direction is still a unit direction (geolint.algebra.negate).

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 
 import numpy as np
 
-from geolint.runtime._framed import FramedKind, checked_array, format_array, frozen
+from geolint.runtime._framed import FramedKind, checked_array, checked_tolerance, format_array, frozen, read_only
 from geolint.runtime.errors import GeometryTypeError, GeometryValueError
 from geolint.runtime.primitives import Vector, check_same_frame, describe, register_kind
 
@@ -90,7 +90,7 @@ class _SixVector(FramedKind):
     def _moved_by(self, transform: Any) -> Any:
         second = transform.rotate(self._second)
         first = transform.rotate(self._first)
-        first += np.cross(transform.translation, second)
+        first += np.cross(transform._translation_block(), second)
         return type(self)._wrap(transform._dst, first, second)
 
     def __add__(self, other: Any) -> Any:
@@ -188,16 +188,27 @@ class Covariance(FramedKind, Generic[F]):
         if "_frames" not in cls.__dict__:
             raise GeometryTypeError("Covariance needs a frame: Covariance[World](matrix)")
         owner = self._describe()
+        tolerance = checked_tolerance(tolerance, owner)
         s = checked_array(matrix, ((3, 3), (-1, 3, 3)), "matrix", owner)
-        scale = max(float(np.abs(s).max()), 1.0)
-        asymmetry = float(np.abs(s - np.swapaxes(s, -1, -2)).max())
-        if asymmetry > tolerance * scale:
-            raise GeometryValueError(f"{owner}: a covariance is symmetric; max |S - S^T| = {asymmetry:.3g}")
-        lowest = float(np.linalg.eigvalsh(s).min())
-        if lowest < -tolerance * scale:
-            raise GeometryValueError(
-                f"{owner}: a covariance is positive semi-definite; its smallest eigenvalue is {lowest:.3g}"
-            )
+        if s.size:
+            # Relative to each matrix's own largest entry: one large covariance in a batch must not
+            # widen the tolerance for the others.
+            scale = np.maximum(np.abs(s).max(axis=(-2, -1)), 1.0)
+            asymmetry = np.abs(s - np.swapaxes(s, -1, -2)).max(axis=(-2, -1))
+            worst = np.atleast_1d(asymmetry / scale).argmax()
+            if np.atleast_1d(asymmetry)[worst] > tolerance * np.atleast_1d(scale)[worst]:
+                where = f" (matrix {worst} of the batch)" if s.ndim == 3 else ""
+                raise GeometryValueError(
+                    f"{owner}: a covariance is symmetric; max |S - S^T| = {np.atleast_1d(asymmetry)[worst]:.3g}{where}"
+                )
+            lowest = np.atleast_1d(np.linalg.eigvalsh(s).min(axis=-1) / scale)
+            worst = int(lowest.argmin())
+            if lowest[worst] < -tolerance:
+                where = f" (matrix {worst} of the batch)" if s.ndim == 3 else ""
+                raise GeometryValueError(
+                    f"{owner}: a covariance is positive semi-definite; its smallest eigenvalue is "
+                    f"{lowest[worst] * np.atleast_1d(scale)[worst]:.3g}{where}"
+                )
         self._s = s
 
     @classmethod
@@ -218,7 +229,7 @@ class Covariance(FramedKind, Generic[F]):
     @property
     def matrix(self) -> NDArray[np.float64]:
         """S, read-only, shape (3, 3) or (N, 3, 3)."""
-        return frozen(self._s)
+        return read_only(self._s)
 
     if not TYPE_CHECKING:  # see "Hidden from type checkers" in the module docstring
         def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
@@ -242,7 +253,7 @@ class Covariance(FramedKind, Generic[F]):
         return cls._wrap(frames[0], s)
 
     def _moved_by(self, transform: Any) -> Any:
-        r = transform.rotation
+        r = transform._rotation_block()
         moved = r @ self._s @ np.swapaxes(r, -1, -2)
         # Symmetrise: R S R^T is symmetric in exact arithmetic; keep it so in floating point.
         moved = 0.5 * (moved + np.swapaxes(moved, -1, -2))

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar, overload
 import numpy as np
 
 from geolint.runtime import rotation as _rotation
-from geolint.runtime._framed import FramedKind, checked_array, format_array, frozen
+from geolint.runtime._framed import FramedKind, checked_array, checked_tolerance, format_array, frozen, read_only
 from geolint.runtime.errors import FrameMismatchError, GeometryTypeError, GeometryValueError
 from geolint.runtime.frames import frame_name
 from geolint.runtime.primitives import Direction, Point, Vector, describe, register_kind
@@ -121,7 +121,8 @@ class Transform(FramedKind, Generic[Dst, Src]):
     def _checked_rotation(r: np.ndarray, tolerance: float | None, orthonormalize: bool, owner: str) -> np.ndarray:
         if orthonormalize:
             return _rotation.orthonormalize(r, owner)
-        _rotation.validate_rotation(r, _rotation.DEFAULT_TOLERANCE if tolerance is None else tolerance, owner)
+        tolerance = _rotation.DEFAULT_TOLERANCE if tolerance is None else checked_tolerance(tolerance, owner)
+        _rotation.validate_rotation(r, tolerance, owner)
         return r
 
     def _set_matrix(self, matrix: np.ndarray) -> None:
@@ -197,7 +198,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
         """
         owner = object.__new__(cls)._owner_name()
         q = checked_array(quat, ((4,), (-1, 4)), "quat", owner)
-        tol = _rotation.DEFAULT_TOLERANCE if tolerance is None else tolerance
+        tol = _rotation.DEFAULT_TOLERANCE if tolerance is None else checked_tolerance(tolerance, owner)
         r = _rotation.quat_to_matrix(q, order, tol, normalize, owner)
         return cls(rotation=r, translation=translation)
 
@@ -239,25 +240,32 @@ class Transform(FramedKind, Generic[Dst, Src]):
     @property
     def matrix(self) -> NDArray[np.float64]:
         """The homogeneous matrix, read-only, shape (4, 4) or (N, 4, 4)."""
-        return frozen(self._m)
+        return read_only(self._m)
 
     @property
     def rotation(self) -> NDArray[np.float64]:
         """R_dst_src, read-only, shape (3, 3) or (N, 3, 3)."""
-        try:
-            return frozen(self._r)
-        except AttributeError:
-            r = self._r = self._m[..., :3, :3]
-            return frozen(r)
+        return read_only(self._rotation_block())
 
     @property
     def translation(self) -> NDArray[np.float64]:
         """t_dst_src (the origin of Src in Dst), read-only, shape (3,) or (N, 3)."""
+        return read_only(self._translation_block())
+
+    def _rotation_block(self) -> np.ndarray:
+        """R as a plain view of the matrix, made once (the runtime's own arithmetic uses these)."""
         try:
-            return frozen(self._t)
+            return self._r
+        except AttributeError:
+            r = self._r = self._m[..., :3, :3]
+            return r
+
+    def _translation_block(self) -> np.ndarray:
+        try:
+            return self._t
         except AttributeError:
             t = self._t = self._m[..., :3, 3]
-            return frozen(t)
+            return t
 
     @property
     def is_batch(self) -> bool:
@@ -272,7 +280,15 @@ class Transform(FramedKind, Generic[Dst, Src]):
     def __getitem__(self, index: Any) -> Transform[Dst, Src]:
         if self._m.ndim != 3:
             raise GeometryTypeError(f"{self._describe()} is a single pose; only batches can be indexed")
-        return Transform._wrap(self._dst, self._src, self._m[index])  # type: ignore[no-any-return]
+        if isinstance(index, tuple):
+            raise GeometryTypeError(
+                f"{self._describe()}[{', '.join(map(_index_text, index))}]: a batch of poses is indexed by pose only "
+                f"(T[i], T[a:b], T[mask], T[[i, j]]); for the numbers use T.matrix[...], T.rotation or T.translation"
+            )
+        matrices = self._m[index]
+        if matrices.shape[-2:] != (4, 4) or matrices.ndim > 3:  # e.g. T[None]
+            raise GeometryTypeError(f"{self._describe()}[{_index_text(index)}] does not select whole poses")
+        return Transform._wrap(self._dst, self._src, matrices)  # type: ignore[no-any-return]
 
     def _describe(self) -> str:
         return f"Transform[{self._dst} <- {self._src}]"
@@ -281,7 +297,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
         head = f"Transform[{self._dst}, {self._src}]"
         if self._m.ndim == 3:
             return f"{head}(<batch of {self._m.shape[0]} poses>)"
-        return f"{head}(rotation={format_array(self.rotation)}, translation={format_array(self.translation)})"
+        return f"{head}(rotation={format_array(self._rotation_block())}, translation={format_array(self._translation_block())})"
 
     def __reduce__(self) -> tuple[Any, ...]:
         from geolint.runtime.primitives import _rebuild
@@ -302,7 +318,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
 
     def as_quat(self, order: QuatOrder) -> NDArray[np.float64]:
         """The rotation as unit quaternion(s) with non-negative scalar part, in the required ``order``."""
-        return _rotation.matrix_to_quat(self.rotation, order)
+        return _rotation.matrix_to_quat(self._rotation_block(), order)
 
     def as_scipy(self) -> Any:
         """A ``scipy.spatial.transform.RigidTransform`` (scipy >= 1.16) of the same pose(s)."""
@@ -360,6 +376,8 @@ class Transform(FramedKind, Generic[Dst, Src]):
                     matrix = self._m @ other._m
                 except ValueError:  # only batches of different sizes get here
                     raise self._batch_mismatch(other) from None
+                if matrix.ndim == 3 and self._m.ndim == other._m.ndim and self._m.shape[0] != other._m.shape[0]:
+                    raise self._batch_mismatch(other)  # numpy broadcast a batch of 1 against a batch of N
                 try:
                     cls = _TRANSFORM_CLASSES[(self._dst, other._src)]
                 except KeyError:
@@ -380,8 +398,8 @@ class Transform(FramedKind, Generic[Dst, Src]):
                     r = self._r
                     t = self._t
                 except AttributeError:
-                    r = self.rotation
-                    t = self.translation
+                    r = self._rotation_block()
+                    t = self._translation_block()
                 # (R @ X.T).T is numpy's fastest kernel for (N, 3) input (see benchmarks/bench_runtime.py).
                 out = r @ xyz if xyz.ndim == 1 else (r @ xyz.T).T
                 out += t
@@ -402,7 +420,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
     def rotate(self, xyz: np.ndarray) -> np.ndarray:
         """R x for coordinates of shape (3,) or (N, 3) (pose i to row i for a batch); no frame checks."""
         if self._m.ndim == 2:
-            r = self.rotation
+            r = self._rotation_block()
             return r @ xyz if xyz.ndim == 1 else (r @ xyz.T).T  # type: ignore[no-any-return]
         return self._apply_batch(xyz, translate=False)
 
@@ -454,6 +472,14 @@ class Transform(FramedKind, Generic[Dst, Src]):
         if (self._dst, self._src) != (other._dst, other._src):
             return False
         return bool(np.allclose(self._m, other._m, rtol=0.0, atol=atol))
+
+
+def _index_text(part: Any) -> str:
+    """An index as it was written: `:3`, `...`, `0`."""
+    if isinstance(part, slice):
+        text = ":".join("" if bound is None else repr(bound) for bound in (part.start, part.stop))
+        return text + (f":{part.step!r}" if part.step is not None else "")
+    return "..." if part is Ellipsis else repr(part)
 
 
 register_kind(Transform)
