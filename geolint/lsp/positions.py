@@ -7,18 +7,23 @@ breaks on form feeds and U+2028 and would shift every position after one.
 
 from __future__ import annotations
 
-import re
 from typing import Sequence
 
 from lsprotocol import types
 from pygls.workspace.position_codec import PositionCodec
 
-_LINE_BREAK = re.compile(r"\r\n|\r|\n")
+from geolint import engine
 
 
 def split_lines(source: str) -> list[str]:
-    """The lines of `source` without their line breaks (a trailing break gives a last empty line)."""
-    return _LINE_BREAK.split(source)
+    """The lines of `source` without their line breaks (a trailing break gives a last empty line).
+
+    The linter's `engine.split_lines` (which keeps the breaks and has no empty last line) is the rule.
+    """
+    lines = [line.rstrip("\r\n") for line in engine.split_lines(source)]
+    if not source or source.endswith(("\n", "\r")):
+        lines.append("")
+    return lines
 
 
 def to_lsp_position(lines: Sequence[str], codec: PositionCodec, line: int, column: int) -> types.Position:

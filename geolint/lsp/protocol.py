@@ -4,10 +4,15 @@ pygls turns the JSON of each message into typed objects as it parses it; when a 
 parameters have the wrong shape, that fails before any handler runs and pygls sends no response,
 so the client waits forever. Here such a request gets the JSON-RPC error it deserves
 (-32602 invalid params) and the message is then ignored; malformed notifications are just logged.
+
+pygls also keeps the future of every handler it runs in `_request_futures` (the table
+`$/cancelRequest` looks requests up in) and removes only those of requests: each notification,
+so each keystroke, left one behind for good. Here every future leaves the table when it is done.
 """
 
 from __future__ import annotations
 
+import functools
 import logging
 from typing import Any
 
@@ -36,6 +41,16 @@ class TolerantLanguageServerProtocol(LanguageServerProtocol):
             else:
                 logger.warning("ignored a malformed %r notification: %s", data.get("method"), error.__cause__ or error)
             return _Rejected()
+
+    def _execute_handler(self, msg_id: Any, handler: Any, callback: Any, args: Any = None, kwargs: Any = None) -> None:
+        super()._execute_handler(msg_id, handler, callback, args, kwargs)
+        future = self._request_futures.get(msg_id)
+        if future is not None:
+            future.add_done_callback(functools.partial(self._forget_future, msg_id))
+
+    def _forget_future(self, msg_id: Any, future: Any) -> None:
+        if self._request_futures.get(msg_id) is future:
+            del self._request_futures[msg_id]
 
     def handle_message(self, message: Any) -> None:
         if isinstance(message, _Rejected):

@@ -1,58 +1,86 @@
 """The language server: lint open documents through `geolint.api` and report over LSP.
 
-- Diagnostics on open, on change (debounced) and on save. They are pushed
-  (`textDocument/publishDiagnostics`) to clients that cannot pull, and always answered when
-  pulled (`textDocument/diagnostic`), so an editor never shows them twice.
-- Code actions: each fixable finding's fix (QuickFix), "ignore GEOxxx for this line", and
-  `source.fixAll.geolint` (safe fixes only, through `api.fix_text`).
-- Linting runs in worker threads, never on the protocol loop, so a large file does not freeze
-  the editor; a result for an outdated version of a document is thrown away.
+- The server's copy of each document counts lines the LSP way (`document.py`), so incremental
+  edits, positions and fixes agree with the editor whatever characters the file holds.
+- Diagnostics are pushed (`textDocument/publishDiagnostics`) to clients that cannot pull, and
+  answered when pulled (`textDocument/diagnostic`), never both. Either way one schedule decides
+  when a document is linted: `debounce` seconds after the last change, but no later than
+  `maxDelay` seconds after the first change not yet linted, so diagnostics keep coming while the
+  user types without pause. At most one lint per document runs at a time.
+- Linting runs in worker processes (`workers.py`), never on the protocol loop. A pull that the
+  client cancels (`$/cancelRequest`) stops the lint it was waiting for, if nothing else waits.
+  A result for an older version is moved onto the current text (`document.TextChange`):
+  what the user has edited since is dropped, the rest is shown where it now is.
+- Code actions come from the last lint, so they are answered at once even on large files:
+  each fixable finding's fix (QuickFix), "ignore GEOxxx for this line", and
+  `source.fixAll.geolint` (safe fixes, through `api.fix_text`), which is computed only when the
+  client resolves it (`codeAction/resolve`) or asks for that kind explicitly.
+- Config: the pyproject.toml files that could apply are checked (modification time) on every
+  request and notification; when a config really changed, open documents are linted again
+  (pushing clients) or the client is asked to pull again (`workspace/diagnostic/refresh`).
 - Nothing the client sends can stop the server: a bad request gets an error answer, a file that
   does not parse gets geolint's GEO000 finding, an unknown URI gets no diagnostics.
 
-Initialization options (all optional): `{"debounce": seconds}` (default 0.3).
+Initialization options (all optional): `{"debounce": seconds, "maxDelay": seconds}`
+(defaults 0.3 and 1.0).
 """
 
 from __future__ import annotations
 
 import asyncio
-import functools
 import logging
-import traceback
-from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Sequence
 from urllib.parse import urlparse
 
 from lsprotocol import types
+from pygls.exceptions import JsonRpcMethodNotFound
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 from pygls.workspace import TextDocument
 
-from geolint import api
 from geolint._version import __version__
 from geolint.engine import SYNTAX_ERROR
 from geolint.lint_types import Config, Edit, Finding
 from geolint.lsp.actions import FIX_ALL_KIND, changed_region_edit, ignore_edit
-from geolint.lsp.configs import ConfigCache
+from geolint.lsp.configs import CONFIG_FILE, ConfigCache
 from geolint.lsp.diagnostics import SOURCE, to_diagnostic
+from geolint.lsp.document import LspWorkspace, TextChange
 from geolint.lsp.positions import from_lsp_position, split_lines, to_lsp_range
 from geolint.lsp.protocol import TolerantLanguageServerProtocol
+from geolint.lsp.workers import WorkerFailed, WorkerPool
 
 logger = logging.getLogger(__name__)
 
 DEFAULT_DEBOUNCE_SECONDS = 0.3
-CONFIG_FILE = "pyproject.toml"
+DEFAULT_MAX_DELAY_SECONDS = 1.0
+# A request only tests use, to compare the server's copy of a document with the editor's.
+DOCUMENT_TEXT_REQUEST = "geolint/documentText"
 
 
 @dataclass(frozen=True)
 class LintResult:
-    """What one lint of one document version gave; code actions reuse it."""
+    """What one lint of one document text gave; diagnostics and code actions reuse it."""
 
     version: int | None
     source: str
     findings: tuple[Finding, ...]
+    config: Config
+
+
+@dataclass
+class _Track:
+    """The lint schedule and last result of one open document."""
+
+    result: LintResult | None = None
+    first_pending: float | None = None  # loop time of the first change no lint has started on
+    ready_at: float = 0.0  # loop time the last change has settled (its debounce is over)
+    timer: asyncio.TimerHandle | None = None
+    running: asyncio.Task[LintResult | None] | None = None
+    waiters: int = 0  # pull requests waiting for a lint
+    finished: asyncio.Event = field(default_factory=asyncio.Event)
+    moved: tuple[int | None, LintResult, LintResult] | None = None  # (version, result, moved result)
 
 
 class GeolintLanguageServer(LanguageServer):
@@ -64,11 +92,13 @@ class GeolintLanguageServer(LanguageServer):
             protocol_cls=TolerantLanguageServerProtocol,
         )
         self.configs = ConfigCache()
-        self.lint_pool = ThreadPoolExecutor(max_workers=2, thread_name_prefix="geolint-lint")
+        self.acted_on_generation = 0
+        self.workers = WorkerPool(2)
         self.debounce = DEFAULT_DEBOUNCE_SECONDS
-        self.pending: dict[str, asyncio.Task[None]] = {}
-        self.results: dict[str, LintResult] = {}
-        # uri -> (text, fixed text): editors ask for code actions on every cursor move.
+        self.max_delay = DEFAULT_MAX_DELAY_SECONDS
+        self.expose_document_text = False
+        self.tracks: dict[str, _Track] = {}
+        # uri -> (text, fixed text): computing fix-all is a full fix run.
         self.fixed: dict[str, tuple[str, str]] = {}
         self.reported_config_errors: set[str] = set()
 
@@ -91,7 +121,13 @@ class GeolintLanguageServer(LanguageServer):
         workspace = self.client_capabilities.workspace
         return bool(workspace and workspace.diagnostics and workspace.diagnostics.refresh_support)
 
-    # ---- documents, configs, linting ------------------------------------------------------------
+    def client_resolves_code_action_edits(self) -> bool:
+        text_document = self.client_capabilities.text_document
+        code_action = text_document.code_action if text_document else None
+        resolve = code_action.resolve_support if code_action else None
+        return resolve is not None and "edit" in resolve.properties
+
+    # ---- documents and configs ------------------------------------------------------------------
 
     def document_path(self, uri: str) -> Path | None:
         """The file a URI names, or None for URIs that are not files (untitled:, garbage)."""
@@ -111,109 +147,187 @@ class GeolintLanguageServer(LanguageServer):
                 self.window_show_message(types.ShowMessageParams(type=types.MessageType.Error, message=message))
             return Config()
 
-    def open_document(self, uri: str) -> TextDocument | None:
-        """The open document, or the file on disk for a file URI, or None for an unknown URI."""
-        document = self.workspace.text_documents.get(uri)
-        if document is not None:
-            return document
-        path = self.document_path(uri)
-        if path is None or not path.is_file():
-            return None
-        return self.workspace.get_text_document(uri)
+    def open_text(self, uri: str) -> TextDocument | None:
+        return self.workspace.text_documents.get(uri)
 
-    async def lint(self, uri: str) -> LintResult | None:
-        """Lint the current text of `uri` in a worker thread; None if it cannot be linted."""
-        document = self.open_document(uri)
-        if document is None:
-            return None
-        try:
-            source = document.source
-        except (OSError, ValueError) as error:  # unreadable, or not text (UnicodeDecodeError)
-            logger.warning("cannot read %s: %s", uri, error)
-            return None
-        version = document.version
-        cached = self.results.get(uri)
-        if cached is not None and cached.version == version and cached.source == source:
-            return cached
-        path = self.document_path(uri)
-        config = self.config_for(path)
-        loop = asyncio.get_running_loop()
-        try:
-            findings = await loop.run_in_executor(
-                self.lint_pool, api.lint_text, source, str(path) if path else uri, config
-            )
-        except Exception:  # the API promises not to raise for bad code; if it does, keep the editor alive
-            self.window_log_message(
-                types.LogMessageParams(
-                    type=types.MessageType.Error, message=f"geolint failed on {uri}:\n{traceback.format_exc()}"
-                )
-            )
-            return None
-        result = LintResult(version, source, tuple(findings))
-        if uri in self.workspace.text_documents:  # remember open documents only
-            self.results[uri] = result
-        return result
-
-    def diagnostics_for(self, uri: str, result: LintResult) -> list[types.Diagnostic]:
-        document = self.workspace.get_text_document(uri)
-        lines = split_lines(result.source)
-        return [to_diagnostic(finding, lines, document.position_codec) for finding in result.findings]
-
-    async def lint_and_publish(self, uri: str) -> None:
-        result = await self.lint(uri)
-        if result is None:
+    def check_configs(self, force: bool = False) -> None:
+        """Act on config files that really changed: lint again, or ask a pulling client to pull."""
+        if force:
+            self.configs.reload()
+        else:
+            self.configs.check()
+        if self.configs.generation == self.acted_on_generation:
             return
-        document = self.workspace.text_documents.get(uri)
-        if document is None or document.version != result.version:
-            return  # closed, or changed while we linted: the newer lint will publish
-        self.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri=uri, version=result.version, diagnostics=self.diagnostics_for(uri, result))
-        )
-
-    def schedule(self, uri: str, delay: float) -> None:
-        """(Re)start linting `uri` after `delay` seconds, replacing a lint that is still waiting."""
-        if self.client_pulls_diagnostics():
-            return  # the client asks when it wants them
-        waiting = self.pending.pop(uri, None)
-        if waiting is not None and not waiting.done():
-            waiting.cancel()
-
-        async def later() -> None:
-            if delay:
-                await asyncio.sleep(delay)
-            await self.lint_and_publish(uri)
-
-        task = asyncio.ensure_future(later())
-        self.pending[uri] = task
-        task.add_done_callback(functools.partial(self._forget, uri))
-
-    def _forget(self, uri: str, task: asyncio.Task[None]) -> None:
-        if self.pending.get(uri) is task:
-            del self.pending[uri]
-        if not task.cancelled() and task.exception() is not None:
-            logger.error("linting %s failed: %r", uri, task.exception())
-
-    def config_changed(self) -> None:
-        """A pyproject.toml changed: forget configs and results, lint open documents again."""
-        self.configs.clear()
-        self.results.clear()
-        self.fixed.clear()
+        self.acted_on_generation = self.configs.generation
         self.reported_config_errors.clear()
+        self.fixed.clear()
         if self.client_pulls_diagnostics():
             if self.client_refreshes_diagnostics():
                 self.workspace_diagnostic_refresh(None)
             return
-        for uri in list(self.workspace.text_documents):
-            self.schedule(uri, 0)
+        for uri, track in self.tracks.items():
+            if track.result is not None and track.result.config != self.config_for(self.document_path(uri)):
+                self.changed(uri, delay=0)
+
+    # ---- linting --------------------------------------------------------------------------------
+
+    async def lint_text(self, uri: str, version: int | None, source: str) -> LintResult | None:
+        path = self.document_path(uri)
+        config = self.config_for(path)
+        try:
+            findings = await self.workers.run("lint_text", source, str(path) if path else uri, config)
+        except WorkerFailed as error:  # the API promises not to raise for bad code; keep the editor alive
+            self.window_log_message(
+                types.LogMessageParams(type=types.MessageType.Error, message=f"geolint failed on {uri}:\n{error}")
+            )
+            return LintResult(version, source, (), config)
+        return LintResult(version, source, tuple(findings), config)
+
+    async def lint_file(self, uri: str) -> LintResult | None:
+        """A file that is not open (a pull for a file on disk): lint what is on disk, uncached."""
+        path = self.document_path(uri)
+        if path is None or not path.is_file():
+            return None
+        try:
+            source = self.workspace.get_text_document(uri).source
+        except (OSError, ValueError) as error:  # unreadable, or not text (UnicodeDecodeError)
+            logger.warning("cannot read %s: %s", uri, error)
+            return None
+        return await self.lint_text(uri, None, source)
+
+    def is_fresh(self, uri: str, result: LintResult | None, version: int | None) -> bool:
+        """Whether `result` covers `version` (or later) of the document, with the config in force now."""
+        if result is None or result.version is None or version is None or result.version < version:
+            return False
+        return result.config == self.config_for(self.document_path(uri))
+
+    def changed(self, uri: str, delay: float | None = None) -> None:
+        """`uri` needs a lint: after `delay` (default: the debounce) unless it changes again."""
+        track = self.tracks.setdefault(uri, _Track())
+        now = asyncio.get_running_loop().time()
+        track.ready_at = now + (self.debounce if delay is None else delay)
+        if track.first_pending is None:
+            track.first_pending = now
+        if not self.client_pulls_diagnostics() or track.waiters:
+            self.plan(uri)
+
+    def plan(self, uri: str) -> None:
+        """Start a lint of `uri` when it is due: when the last change has settled, but at most
+        `max_delay` after the first unlinted one. A running lint finishes first (it plans the next)."""
+        track = self.tracks.get(uri)
+        if track is None or track.running is not None:
+            return
+        loop = asyncio.get_running_loop()
+        if track.first_pending is None:
+            due = loop.time()
+        else:
+            due = min(track.ready_at, track.first_pending + self.max_delay)
+        if track.timer is not None:
+            track.timer.cancel()
+        track.timer = loop.call_at(due, self.start_lint, uri)
+
+    def start_lint(self, uri: str) -> None:
+        track = self.tracks.get(uri)
+        document = self.open_text(uri)
+        if track is None or document is None:
+            return
+        track.timer = None
+        track.first_pending = None
+        running = asyncio.ensure_future(self.lint_text(uri, document.version, document.source))
+        track.running = running
+        running.add_done_callback(lambda task: self.lint_finished(uri, task))
+
+    def lint_finished(self, uri: str, task: asyncio.Task[LintResult | None]) -> None:
+        track = self.tracks.get(uri)
+        if track is None or track.running is not task:
+            return
+        track.running = None
+        if task.cancelled():  # stopped: what it would have covered is pending again
+            if track.first_pending is None:
+                track.first_pending = asyncio.get_running_loop().time()
+        elif task.exception() is not None:
+            logger.error("linting %s failed: %r", uri, task.exception())
+        elif task.result() is not None:
+            track.result = task.result()
+            if not self.client_pulls_diagnostics():
+                self.publish(uri)
+        finished, track.finished = track.finished, asyncio.Event()
+        finished.set()
+        if track.first_pending is not None and (not self.client_pulls_diagnostics() or track.waiters):
+            self.plan(uri)
+
+    def stop(self, uri: str) -> None:
+        """Stop the waiting or running lint of `uri` (no one wants it any more)."""
+        track = self.tracks.get(uri)
+        if track is None:
+            return
+        if track.timer is not None:
+            track.timer.cancel()
+            track.timer = None
+        if track.running is not None:
+            track.running.cancel()
+
+    def current_result(self, uri: str) -> LintResult | None:
+        """The last result of an open document, moved onto its current text if it is older."""
+        track = self.tracks.get(uri)
+        document = self.open_text(uri)
+        if track is None or track.result is None or document is None:
+            return None
+        result = track.result
+        if result.version == document.version:
+            return result
+        if track.moved is not None and track.moved[0] == document.version and track.moved[1] is result:
+            return track.moved[2]
+        source = document.source
+        change = TextChange(result.source, source)
+        findings = tuple(moved for f in result.findings if (moved := change.move_finding(f)) is not None)
+        moved_result = LintResult(document.version, source, findings, result.config)
+        track.moved = (document.version, result, moved_result)
+        return moved_result
+
+    async def wait_for_result(self, uri: str) -> LintResult | None:
+        """A result covering the version of `uri` open now (debounced like pushes); cancellable."""
+        track = self.tracks.setdefault(uri, _Track())
+        document = self.open_text(uri)
+        target = document.version if document is not None else None
+        track.waiters += 1
+        try:
+            while not self.is_fresh(uri, track.result, target):
+                if self.open_text(uri) is None or self.tracks.get(uri) is not track:
+                    return None
+                finished = track.finished
+                if track.running is None and track.timer is None:
+                    if track.first_pending is None:  # nothing changed, yet not fresh (the config changed)
+                        self.changed(uri, delay=0)
+                    self.plan(uri)
+                await finished.wait()
+            return self.current_result(uri)
+        finally:
+            track.waiters -= 1
+            if track.waiters == 0 and self.client_pulls_diagnostics():
+                self.stop(uri)
+
+    def diagnostics_for(self, uri: str, result: LintResult) -> list[types.Diagnostic]:
+        codec = self.workspace.position_codec
+        lines = split_lines(result.source)
+        return [to_diagnostic(finding, lines, codec) for finding in result.findings]
+
+    def publish(self, uri: str) -> None:
+        result = self.current_result(uri)
+        if result is None:
+            return
+        self.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri=uri, version=result.version, diagnostics=self.diagnostics_for(uri, result))
+        )
 
     # ---- code actions ---------------------------------------------------------------------------
 
     def workspace_edit(self, uri: str, source: str, edits: Sequence[Edit]) -> types.WorkspaceEdit:
-        document = self.workspace.get_text_document(uri)
+        codec = self.workspace.position_codec
         lines = split_lines(source)
         text_edits = [
             types.TextEdit(
-                range=to_lsp_range(lines, document.position_codec, e.line, e.column, e.end_line, e.end_column),
+                range=to_lsp_range(lines, codec, e.line, e.column, e.end_line, e.end_column),
                 new_text=e.content,
             )
             for e in edits
@@ -224,22 +338,49 @@ class GeolintLanguageServer(LanguageServer):
         """One edit turning `old` into `new`, covering only the part that changed (the cursor stays put)."""
         return self.workspace_edit(uri, old, [changed_region_edit(old, new)])
 
+    async def fix_all(self, uri: str, source: str) -> str | None:
+        cached = self.fixed.get(uri)
+        if cached is not None and cached[0] == source:
+            return cached[1]
+        path = self.document_path(uri)
+        config = self.config_for(path)
+        try:
+            fixed, _remaining = await self.workers.run("fix_text", source, str(path) if path else uri, config, unsafe=False)
+        except WorkerFailed as error:
+            self.window_log_message(types.LogMessageParams(type=types.MessageType.Error, message=f"geolint fix failed:\n{error}"))
+            return None
+        if uri in self.workspace.text_documents:
+            self.fixed[uri] = (source, fixed)
+        return fixed  # type: ignore[no-any-return]
+
+    def close(self) -> None:
+        for uri in list(self.tracks):
+            self.stop(uri)
+        self.workers.close()
+
 
 server = GeolintLanguageServer()
 
 
 @server.feature(types.INITIALIZE)
 def initialize(ls: GeolintLanguageServer, params: types.InitializeParams) -> None:
+    # pygls made its Workspace before this handler runs; ours splits lines the LSP way.
+    ls.protocol._workspace = LspWorkspace.like(ls.workspace)
     options = params.initialization_options
     if isinstance(options, dict):
         debounce = options.get("debounce")
         if isinstance(debounce, (int, float)) and 0 <= debounce <= 10:
             ls.debounce = float(debounce)
+        max_delay = options.get("maxDelay")
+        if isinstance(max_delay, (int, float)) and 0 <= max_delay <= 60:
+            ls.max_delay = float(max_delay)
+        ls.expose_document_text = options.get("exposeDocumentText") is True
+    ls.workers.warm_up()
 
 
 @server.feature(types.INITIALIZED)
 async def initialized(ls: GeolintLanguageServer, params: types.InitializedParams) -> None:
-    # Ask the client to tell us when any pyproject.toml changes, so the config is re-read.
+    # Ask the client to tell us when any pyproject.toml changes (configs are also checked by mtime).
     workspace = ls.client_capabilities.workspace
     watched = workspace.did_change_watched_files if workspace else None
     if watched is not None and watched.dynamic_registration:
@@ -252,35 +393,48 @@ async def initialized(ls: GeolintLanguageServer, params: types.InitializedParams
         )
         try:
             await ls.client_register_capability_async(types.RegistrationParams(registrations=[registration]))
-        except Exception as error:  # the client said no: configs are still re-read by modification time
+        except Exception as error:  # the client said no: configs are still checked by modification time
             logger.info("file watcher registration refused: %s", error)
+
+
+@server.feature(types.SHUTDOWN)
+def shutdown(ls: GeolintLanguageServer, params: None) -> None:
+    ls.close()
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
 def did_open(ls: GeolintLanguageServer, params: types.DidOpenTextDocumentParams) -> None:
-    ls.schedule(params.text_document.uri, 0)
+    uri = params.text_document.uri
+    ls.stop(uri)
+    ls.tracks[uri] = _Track()
+    ls.check_configs()
+    ls.changed(uri, delay=0)
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
 def did_change(ls: GeolintLanguageServer, params: types.DidChangeTextDocumentParams) -> None:
-    ls.schedule(params.text_document.uri, ls.debounce)
+    if params.text_document.uri in ls.workspace.text_documents:
+        ls.changed(params.text_document.uri)
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
 def did_save(ls: GeolintLanguageServer, params: types.DidSaveTextDocumentParams) -> None:
-    if Path(params.text_document.uri).name == CONFIG_FILE:
-        ls.config_changed()
+    uri = params.text_document.uri
+    if Path(urlparse(uri).path).name == CONFIG_FILE:
+        ls.check_configs(force=True)
         return
-    ls.schedule(params.text_document.uri, 0)
+    ls.check_configs()
+    if uri in ls.tracks:
+        ls.changed(uri, delay=0)
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
 def did_close(ls: GeolintLanguageServer, params: types.DidCloseTextDocumentParams) -> None:
     uri = params.text_document.uri
-    waiting = ls.pending.pop(uri, None)
-    if waiting is not None:
-        waiting.cancel()
-    ls.results.pop(uri, None)
+    ls.stop(uri)
+    track = ls.tracks.pop(uri, None)
+    if track is not None:
+        track.finished.set()  # waiting pulls see the document is gone
     ls.fixed.pop(uri, None)
     if not ls.client_pulls_diagnostics():
         ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
@@ -289,12 +443,13 @@ def did_close(ls: GeolintLanguageServer, params: types.DidCloseTextDocumentParam
 @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
 def did_change_watched_files(ls: GeolintLanguageServer, params: types.DidChangeWatchedFilesParams) -> None:
     if any(Path(urlparse(change.uri).path).name == CONFIG_FILE for change in params.changes):
-        ls.config_changed()
+        ls.check_configs(force=True)
 
 
 @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
 def did_change_configuration(ls: GeolintLanguageServer, params: types.DidChangeConfigurationParams) -> None:
-    ls.config_changed()
+    # geolint reads no editor settings; this only re-checks the config files (usually: no change).
+    ls.check_configs()
 
 
 @server.feature(
@@ -305,7 +460,11 @@ async def pull_diagnostics(
     ls: GeolintLanguageServer, params: types.DocumentDiagnosticParams
 ) -> types.RelatedFullDocumentDiagnosticReport:
     uri = params.text_document.uri
-    result = await ls.lint(uri)
+    ls.check_configs()
+    if uri in ls.workspace.text_documents:
+        result = await ls.wait_for_result(uri)
+    else:
+        result = await ls.lint_file(uri)
     items = ls.diagnostics_for(uri, result) if result is not None else []
     return types.RelatedFullDocumentDiagnosticReport(items=items)
 
@@ -319,30 +478,34 @@ def _wants(only: Sequence[str] | None, kind: str) -> bool:
     return only is None or any(kind == k or kind.startswith(f"{k}.") for k in only)
 
 
+FIX_ALL_TITLE = "geolint: fix all safe fixes"
+
+
 @server.feature(
     types.TEXT_DOCUMENT_CODE_ACTION,
-    types.CodeActionOptions(
-        code_action_kinds=[types.CodeActionKind.QuickFix, FIX_ALL_KIND], resolve_provider=False
-    ),
+    types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, FIX_ALL_KIND], resolve_provider=True),
 )
 async def code_actions(ls: GeolintLanguageServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
     uri = params.text_document.uri
     if uri not in ls.workspace.text_documents:
         return None
-    result = await ls.lint(uri)
-    if result is None:
-        return None
-    document = ls.workspace.get_text_document(uri)
+    ls.check_configs()
+    result = ls.current_result(uri)
+    if result is None:  # never linted yet: wait for the first lint
+        result = await ls.wait_for_result(uri)
+        if result is None:
+            return None
+    codec = ls.workspace.position_codec
     lines = split_lines(result.source)
-    first = from_lsp_position(lines, document.position_codec, params.range.start)
-    last = from_lsp_position(lines, document.position_codec, params.range.end)
+    first = from_lsp_position(lines, codec, params.range.start)
+    last = from_lsp_position(lines, codec, params.range.end)
     only = params.context.only
     actions: list[types.CodeAction] = []
     if _wants(only, types.CodeActionKind.QuickFix):
         for finding in result.findings:
             if not _overlaps(finding, first, last):
                 continue
-            diagnostic = to_diagnostic(finding, lines, document.position_codec)
+            diagnostic = to_diagnostic(finding, lines, codec)
             if finding.fix is not None:
                 unsafe = " (unsafe)" if finding.fix.applicability == "unsafe" else ""
                 title = finding.fix.description or "apply the fix"
@@ -366,35 +529,48 @@ async def code_actions(ls: GeolintLanguageServer, params: types.CodeActionParams
                         edit=ls.workspace_edit(uri, result.source, [suppress]),
                     )
                 )
-    if _wants(only, FIX_ALL_KIND) and (only is not None or any(f.fix for f in result.findings)):
-        fixed = await _fix_all(ls, uri, result)
-        if fixed is not None and fixed != result.source:
-            actions.append(
-                types.CodeAction(
-                    title="geolint: fix all safe fixes",
-                    kind=FIX_ALL_KIND,
-                    edit=ls.replace_text_edit(uri, result.source, fixed),
-                )
-            )
+    explicit = only is not None and _wants(only, FIX_ALL_KIND)
+    fixable = any(f.fix is not None and f.fix.applicability == "safe" for f in result.findings)
+    if _wants(only, FIX_ALL_KIND) and (explicit or fixable):
+        if ls.client_resolves_code_action_edits():
+            # The fix-all is a whole fix run: computed only if the user picks it (codeAction/resolve).
+            actions.append(types.CodeAction(title=FIX_ALL_TITLE, kind=FIX_ALL_KIND, data={"uri": uri}))
+        elif explicit:  # asked for by name (a key binding, on save): worth the wait
+            action = await _resolved_fix_all(ls, uri)
+            if action is not None:
+                actions.append(action)
+        # else: a menu on a client that cannot resolve: not offered rather than computed every time
     return actions
 
 
-async def _fix_all(ls: GeolintLanguageServer, uri: str, result: LintResult) -> str | None:
-    cached = ls.fixed.get(uri)
-    if cached is not None and cached[0] == result.source:
-        return cached[1]
-    path = ls.document_path(uri)
-    config = ls.config_for(path)
-    loop = asyncio.get_running_loop()
-    try:
-        fixed, _remaining = await loop.run_in_executor(
-            ls.lint_pool, lambda: api.fix_text(result.source, str(path) if path else uri, config, unsafe=False)
-        )
-    except Exception:
-        ls.window_log_message(
-            types.LogMessageParams(type=types.MessageType.Error, message=f"geolint fix failed:\n{traceback.format_exc()}")
-        )
+async def _resolved_fix_all(ls: GeolintLanguageServer, uri: str) -> types.CodeAction | None:
+    document = ls.open_text(uri)
+    if document is None:
         return None
-    if uri in ls.workspace.text_documents:
-        ls.fixed[uri] = (result.source, fixed)
-    return fixed
+    source = document.source
+    fixed = await ls.fix_all(uri, source)
+    if fixed is None or fixed == source:
+        return None
+    return types.CodeAction(title=FIX_ALL_TITLE, kind=FIX_ALL_KIND, edit=ls.replace_text_edit(uri, source, fixed))
+
+
+@server.feature(types.CODE_ACTION_RESOLVE)
+async def resolve_code_action(ls: GeolintLanguageServer, action: types.CodeAction) -> types.CodeAction:
+    data = action.data
+    uri = data.get("uri") if isinstance(data, dict) else None
+    if action.kind != FIX_ALL_KIND or not isinstance(uri, str) or action.edit is not None:
+        return action
+    resolved = await _resolved_fix_all(ls, uri)
+    action.edit = resolved.edit if resolved is not None else types.WorkspaceEdit(changes={uri: []})
+    return action
+
+
+@server.feature(DOCUMENT_TEXT_REQUEST)
+def document_text(ls: GeolintLanguageServer, params: Any) -> str | None:
+    """The server's copy of an open document (only with the `exposeDocumentText` option: for tests)."""
+    if not ls.expose_document_text:
+        raise JsonRpcMethodNotFound.of(DOCUMENT_TEXT_REQUEST)
+    text_document = getattr(params, "text_document", None) or getattr(params, "textDocument", None)
+    uri = getattr(text_document, "uri", None)
+    document = ls.open_text(uri) if isinstance(uri, str) else None
+    return document.source if document is not None else None
