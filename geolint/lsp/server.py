@@ -28,14 +28,18 @@ Initialization options (all optional): `{"debounce": seconds, "maxDelay": second
 from __future__ import annotations
 
 import asyncio
+import json
 import logging
+import sys
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any, BinaryIO, Sequence
 from urllib.parse import urlparse
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcMethodNotFound
+from pygls.io_ import StdoutWriter
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 from pygls.workspace import TextDocument
@@ -46,6 +50,7 @@ from geolint.lint_types import Config, Edit, Finding
 from geolint.lsp.actions import FIX_ALL_KIND, changed_region_edit, ignore_edit
 from geolint.lsp.configs import CONFIG_FILE, ConfigCache
 from geolint.lsp.diagnostics import SOURCE, to_diagnostic
+from geolint.lsp.framing import FrameReader, stdin_chunks
 from geolint.lsp.document import LspWorkspace, TextChange
 from geolint.lsp.positions import from_lsp_position, split_lines, to_lsp_range
 from geolint.lsp.protocol import TolerantLanguageServerProtocol
@@ -101,6 +106,34 @@ class GeolintLanguageServer(LanguageServer):
         # uri -> (text, fixed text): computing fix-all is a full fix run.
         self.fixed: dict[str, tuple[str, str]] = {}
         self.reported_config_errors: set[str] = set()
+
+    def _start_io_async(self, stdin: BinaryIO | None = None, stdout: BinaryIO | None = None) -> None:
+        """pygls' stdio loop, with frames read by `framing.FrameReader` (a bad frame costs only itself)."""
+        self._stop_event = threading.Event()
+        self.protocol.set_writer(StdoutWriter(stdout or sys.stdout.buffer))
+        stdin_fd = (stdin or sys.stdin.buffer).fileno()
+
+        async def serve() -> None:
+            frames = FrameReader(stdin_chunks(stdin_fd))
+            while not self._stop_event.is_set():
+                body = await frames.next_body()
+                if body is None:
+                    break
+                try:
+                    message = json.loads(body, object_hook=self.protocol.structure_message)
+                    self.protocol.handle_message(message)
+                except Exception as error:
+                    logger.warning("ignored an unreadable message (%d bytes): %r", len(body), error)
+
+        try:
+            asyncio.run(serve())
+        except BrokenPipeError:
+            logger.error("the connection to the client is lost; shutting down")
+        except (KeyboardInterrupt, SystemExit):
+            pass
+        finally:
+            self.close()
+            self.shutdown()
 
     def report_server_error(self, error: Exception, source: Any) -> None:
         # pygls pops up "Error in server" for anything unexpected; a person typing should never see
