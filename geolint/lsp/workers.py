@@ -67,6 +67,7 @@ class WorkerPool:
     def __init__(self, size: int = 2) -> None:
         self.size = size
         self._idle: list[_Worker] = []
+        self._all: set[_Worker] = set()  # idle and busy: all are killed on close
         self._free = asyncio.Semaphore(size)
         self._threads = ThreadPoolExecutor(max_workers=size, thread_name_prefix="geolint-worker-io")
         self.killed = 0  # jobs stopped before they finished (for tests and logs)
@@ -74,11 +75,20 @@ class WorkerPool:
     def warm_up(self) -> None:
         """Start the workers now, so the first lint does not wait for Python to start."""
         while len(self._idle) < self.size:
-            self._idle.append(_Worker())
+            self._idle.append(self._new())
+
+    def _new(self) -> _Worker:
+        worker = _Worker()
+        self._all.add(worker)
+        return worker
+
+    def _discard(self, worker: _Worker) -> None:
+        worker.kill()
+        self._all.discard(worker)
 
     async def run(self, function: str, *args: Any, **kwargs: Any) -> Any:
         async with self._free:
-            worker = self._idle.pop() if self._idle else _Worker()
+            worker = self._idle.pop() if self._idle else self._new()
             loop = asyncio.get_running_loop()
             job = loop.run_in_executor(self._threads, worker.call, (function, args, kwargs))
             job.add_done_callback(_retrieve)  # a killed job ends in EOFError that nobody awaits
@@ -86,13 +96,13 @@ class WorkerPool:
                 status, value = await asyncio.shield(job)
             except asyncio.CancelledError:
                 self.killed += 1
-                worker.kill()  # unblocks the thread waiting on the worker (EOFError)
-                self._idle.append(_Worker())
+                self._discard(worker)  # unblocks the thread waiting on the worker (EOFError)
+                self._idle.append(self._new())
                 raise
             except (EOFError, pickle.UnpicklingError, OSError) as error:
                 code = worker.process.poll()
-                worker.kill()
-                self._idle.append(_Worker())
+                self._discard(worker)
+                self._idle.append(self._new())
                 raise WorkerFailed(f"the lint worker died (exit code {code}): {error!r}") from error
             self._idle.append(worker)
         if status != "ok":
@@ -100,7 +110,7 @@ class WorkerPool:
         return value
 
     def close(self) -> None:
-        for worker in self._idle:
-            worker.kill()
+        for worker in list(self._all):
+            self._discard(worker)
         self._idle.clear()
         self._threads.shutdown(wait=False)
