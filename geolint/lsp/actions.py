@@ -31,7 +31,8 @@ def _comments_on_line(source: str, line: int) -> _LineComments:
     try:
         comments = []
         ends_in_string = False
-        for token in tokenize.generate_tokens(io.StringIO(source).readline):
+        # newline=None: lines end at \r and \r\n too, so token line numbers are LSP's.
+        for token in tokenize.generate_tokens(io.StringIO(source, newline=None).readline):
             if token.type == tokenize.COMMENT and token.start[0] == line:
                 comments.append((token.start[1], token.string))
             elif token.type == tokenize.STRING and token.start[0] <= line < token.end[0]:

@@ -12,7 +12,7 @@ so each keystroke, left one behind for good. Here every future leaves the table 
 
 from __future__ import annotations
 
-import functools
+import asyncio
 import logging
 from typing import Any
 
@@ -46,9 +46,17 @@ class TolerantLanguageServerProtocol(LanguageServerProtocol):
         super()._execute_handler(msg_id, handler, callback, args, kwargs)
         future = self._request_futures.get(msg_id)
         if future is not None:
-            future.add_done_callback(functools.partial(self._forget_future, msg_id))
+            loop = asyncio.get_running_loop()
+            future.add_done_callback(lambda done: self._later(loop, msg_id, done))
+
+    def _later(self, loop: asyncio.AbstractEventLoop, msg_id: Any, future: Any) -> None:
+        try:
+            loop.call_soon_threadsafe(self._forget_future, msg_id, future)
+        except RuntimeError:  # the loop is closed: the server is exiting
+            pass
 
     def _forget_future(self, msg_id: Any, future: Any) -> None:
+        # Later, on the loop: pygls may be iterating the table when it cancels a future (shutdown).
         if self._request_futures.get(msg_id) is future:
             del self._request_futures[msg_id]
 

@@ -220,7 +220,7 @@ def cpu_seconds(pid: int) -> float:
 @pytest.mark.asyncio
 async def test_a_cancelled_pull_stops_its_lint(client: RecordingClient, tmp_path: Path) -> None:
     await start(client, PULL, debounce=0)
-    uri = open_doc(client, tmp_path / "big.py", source_with(300))
+    uri = open_doc(client, tmp_path / "big.py", source_with(600))
     request = asyncio.ensure_future(
         client.protocol.send_request_async(types.TEXT_DOCUMENT_DIAGNOSTIC, pull_params(uri), msg_id="big-pull")
     )

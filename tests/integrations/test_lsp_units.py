@@ -106,3 +106,11 @@ def test_ignore_edit_counts_lines_like_the_linter() -> None:
     # A form feed is not a line break for Python or LSP (str.splitlines would say it is).
     source = "a = 1\x0c  # page\nx = R @ n + t\n"
     assert apply_lsp_style(source, ignore_edit(source, 2, "GEO101")).endswith("x = R @ n + t  # geolint: ignore[GEO101]\n")
+
+
+def test_ignore_edit_finds_the_comment_on_a_line_that_ends_in_a_lone_cr() -> None:
+    for newline in ("\n", "\r\n", "\r"):
+        source = f"x = 1{newline}y = R @ n + t  # noqa: GEO201{newline}"
+        edit = ignore_edit(source, 2, "GEO101")
+        assert edit is not None
+        assert split_lines(apply_lsp_style(source, edit))[1] == "y = R @ n + t  # noqa: GEO201, GEO101"
