@@ -96,6 +96,10 @@ def test_the_summary_follows_the_findings_in_one_piped_log(tmp_path: Path) -> No
     assert [line.split(":")[0] for line in lines if ": GEO101 " in line] == ["a.py", "b.py"]
     assert lines[-1] == "Found 2 findings (2 fixable with --fix)."
     assert sum("Found 2 findings" in line for line in lines) == 1
+    # A CI runner that reads the two streams separately interleaves them by arrival: the summary
+    # is on stdout, behind the findings, so no interleaving can put it first.
+    separate = run_module("check", "--no-cache", cwd=tmp_path)
+    assert separate.stdout.splitlines()[-1] == "Found 2 findings (2 fixable with --fix)." and separate.stderr == ""
 
 
 def test_machine_formats_keep_stdout_machine_readable(tmp_path: Path) -> None:
