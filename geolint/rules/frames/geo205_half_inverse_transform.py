@@ -1,0 +1,179 @@
+"""GEO205 half-inverse-transform: a pose's rotation used one way and its translation the other."""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.rules.base import AstRule, Invalid, Valid
+from geolint.rules.pose_parts import (
+    MATMUL_TEXT,
+    POSE_PART_TEXT,
+    AllOf,
+    Application,
+    LocalValues,
+    application,
+    difference_with,
+    local_values,
+    matmul_operands,
+    pose_part,
+)
+
+
+class HalfInverseTransform(AstRule):
+    """A pose's rotation is inverted and its translation is not (or the reverse): neither T nor T⁻¹.
+
+    ## What it does
+    Flags a point mapped by the rotation R and the translation t of one pose (the same `T[:3, :3]`
+    and `T[:3, 3]`, `poses[:, :3, :3]` and `poses[:, :3, 3]`, `pose.rotation` and
+    `pose.translation`, `gt["cam_R_m2c"]` and `gt["cam_t_m2c"]`, or `R, t` unpacked from one
+    call) where one of them is inverted and the other is not:
+
+    - `R.T @ p + t` (or `- t`), row form `p @ R + t`: the inverse rotation with the forward
+      translation;
+    - `R @ (p - t)`, row form `(p - t) @ R.T`, and the batched torch form
+      `(x - poses[:, None, :3, 3]) @ poses[:, :3, :3].transpose(1, 2)`: the inverse translation
+      with the forward rotation.
+
+    The parts are followed through local names, copies, reshapes (`t[:, None]`) and transposes
+    (`.T`, `.mT`, `.transpose(1, 2)`, `.permute(0, 2, 1)`, `np.linalg.inv(R)`). The true forward
+    map `R @ p + t` / `p @ R.T + t` and the true inverse `R.T @ (p - t)` / `(p - t) @ R` are
+    silent, and so is a rotation about the pose's origin (`R @ (p - t) + t`).
+
+    ## Why is this bad?
+    For a pose T = (R, t) that maps frame b into frame a, `R p + t` moves a point from b to a and
+    `Rᵀ (p - t)` moves it back. Mixing the halves (`Rᵀ p + t`, `R (p - t)`) is neither: the
+    result is off by a rotation of the translation, so it looks right for poses near identity or
+    near the origin, and drifts everywhere else. It is the usual slip when an inverse is written
+    out by hand.
+
+    ## Example
+    ```python
+    def world_to_camera(points_world, T_world_cam):
+        R = T_world_cam[:3, :3]
+        t = T_world_cam[:3, 3]
+        return points_world @ R + t
+    ```
+
+    ## Use instead
+    ```python
+    def world_to_camera(points_world, T_world_cam):
+        R = T_world_cam[:3, :3]
+        t = T_world_cam[:3, 3]
+        return (points_world - t) @ R
+    ```
+
+    ## Fix safety
+    There is no automatic fix: only the author knows whether the forward map or the inverse
+    was meant.
+
+    ## Known problems
+    The rule needs evidence that R and t belong to one pose; rotations and translations passed in
+    separately (`def f(R, t, p)`) are not checked. A codebase that stores a camera *centre* under a
+    translation's name (`pose.t` = centre, so `R @ (p - pose.t)` is right) is flagged; such a
+    value is better named `center`.
+    """
+
+    code = "GEO205"
+    name = "half-inverse-transform"
+    triggers = AllOf(MATMUL_TEXT, POSE_PART_TEXT)
+
+    VALID = [
+        Valid("p_world = T[:3, :3] @ p_cam + T[:3, 3]\n"),
+        Valid("p_cam = T[:3, :3].T @ (p_world - T[:3, 3])\n"),
+        Valid("def f(pts, T):\n    R, t = T[:3, :3], T[:3, 3]\n    return (pts - t) @ R\n"),
+        Valid("def f(pts, T):\n    return pts @ T[:3, :3].T + T[:3, 3]\n"),
+        Valid("def f(R, t, p):\n    return R.T @ p + t\n"),  # no evidence R and t are one pose
+        Valid("def f(pose, p):\n    return pose.rotation @ (p - pose.translation) + pose.translation\n"),
+        Valid("center = -T[:3, :3].T @ T[:3, 3]\n"),
+        Valid("def f(T, S, p):\n    return T[:3, :3].T @ p + S[:3, 3]\n"),
+        Valid(
+            "def f(T, p):\n    R = T[:3, :3]\n    T = other_pose()\n    return R.T @ p + T[:3, 3]\n"
+        ),
+    ]
+    INVALID = [
+        Invalid("p_cam = T[:3, :3].T @ p_world + T[:3, 3]\n"),
+        Invalid("def f(pts, T):\n    R = T[:3, :3]\n    t = T[:3, 3]\n    return pts @ R + t\n"),
+        Invalid("def f(pose, p):\n    return pose.rotation @ (p - pose.translation)\n"),
+        Invalid("def f(pts, T):\n    R, t = T[:3, :3], T[:3, 3]\n    return (pts - t) @ R.T\n"),
+        Invalid(
+            "def to_cam(x, poses):\n"
+            "    x = x - poses[:, None, :3, 3]\n"
+            "    return x @ poses[:, :3, :3].transpose(1, 2)\n"
+        ),
+        Invalid("def f(gt, p):\n    return gt['cam_R_m2c'].T.dot(p) + gt['cam_t_m2c'].reshape(3, 1)\n"),
+        Invalid("def f(T, pts):\n    R, t = split_pose(T)\n    return (R.T @ pts.T).T + t\n"),
+    ]
+
+    def check(self, tree: ast.Module) -> None:
+        values = local_values(tree)
+        settled: set[ast.AST] = set()  # products already judged as part of a sum
+        for node in values.nodes:
+            if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+                self._check_sum(node, values, settled)
+        for node in values.nodes:
+            if node not in settled and matmul_operands(node) is not None:
+                applied = application(node, values)  # type: ignore[arg-type]
+                if applied is not None and applied.product is node:
+                    self._check_forward_of_difference(applied, values)
+
+    def _check_sum(self, node: ast.BinOp, values: LocalValues, settled: set[ast.AST]) -> None:
+        sides = [(node.left, node.right)]
+        if isinstance(node.op, ast.Add):
+            sides.append((node.right, node.left))
+        for applied_side, other in sides:
+            applied = application(applied_side, values)
+            if applied is None:
+                continue
+            translation = pose_part(other, values)
+            if translation is None or translation.kind != "translation" or translation.pose != applied.rotation.pose:
+                continue
+            settled.add(applied.product)
+            if not applied.inverse:
+                return  # R @ p + t, or R @ (p - t) + t (a rotation about the pose's origin)
+            removed = difference_with(applied.operand, values)
+            if removed is not None and removed[1].pose == translation.pose:
+                return  # R.T @ (p - t) + t: an un-rotation about the pose's origin
+            operand_part = pose_part(applied.operand, values)
+            if operand_part is not None and operand_part.kind == "translation":
+                return  # R.T @ t: a camera centre being computed, not a point mapped
+            sign = "+" if isinstance(node.op, ast.Add) else "-"
+            self.report(
+                node,
+                f"`{ast.unparse(node)}` applies the inverse rotation of a pose with its forward "
+                f"translation ({sign} t): neither the pose nor its inverse. The inverse is Rᵀ (p - t) "
+                "(rows: (p - t) @ R); the pose itself is R p + t (rows: p @ R.T + t)",
+            )
+            return
+
+    def _check_forward_of_difference(self, applied: Application, values: LocalValues) -> None:
+        if applied.inverse:
+            return  # Rᵀ (p - t): the true inverse
+        removed = difference_with(applied.operand, values)
+        if removed is None or removed[1].pose != applied.rotation.pose:
+            return
+        if self._adds_translation_back(applied, values):
+            return
+        self.report(
+            applied.product,
+            f"`{ast.unparse(applied.product)}` subtracts a pose's translation and then applies its "
+            "forward rotation: neither the pose nor its inverse. The inverse is Rᵀ (p - t) "
+            "(rows: (p - t) @ R)",
+        )
+
+    def _adds_translation_back(self, applied: Application, values: LocalValues) -> bool:
+        """`x = x - t; x = x @ R.T; x = x + t` (a rotation about the pose's origin, in steps)."""
+        scope = values.scope_of(applied.product)
+        if scope is None:
+            return False
+        start = (applied.product.lineno, applied.product.col_offset)  # type: ignore[attr-defined]
+        for node in ast.walk(scope):
+            if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add) and (node.lineno, node.col_offset) >= start:
+                for side in (node.left, node.right):
+                    part = pose_part(side, values)
+                    if part is not None and part.kind == "translation" and part.pose == applied.rotation.pose:
+                        return True
+            if isinstance(node, ast.AugAssign) and isinstance(node.op, ast.Add) and (node.lineno, node.col_offset) >= start:
+                part = pose_part(node.value, values)
+                if part is not None and part.kind == "translation" and part.pose == applied.rotation.pose:
+                    return True
+        return False
