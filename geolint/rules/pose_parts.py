@@ -125,6 +125,7 @@ class LocalValues:
         self.nodes: list[ast.AST] = [tree]  # every node, each after its parent
         self._assignments: dict[tuple[int, str], list[tuple[ast.stmt, ast.expr | Unpacked | None]]] = {}
         self._indexed: set[int] = set()
+        self._names_of_scope: dict[int, set[str]] = {}
         self.parameters: dict[tuple[int, str], ast.arg] = {}
         parents, nodes = self.parents, self.nodes
         position = 0
@@ -161,7 +162,9 @@ class LocalValues:
                     self._add(scope, name, statement, None)
             elif isinstance(node, ast.Lambda):
                 continue
-            stack.extend((child, statement) for child in ast.iter_child_nodes(node))
+            stack.extend((child, statement) for child in reversed(list(ast.iter_child_nodes(node))))
+        for name in self._names_of_scope.pop(id(scope), ()):
+            self._assignments[(id(scope), name)].sort(key=lambda assignment: (assignment[0].lineno, assignment[0].col_offset))
 
     def _record(self, statement: ast.stmt, scope: ScopeNode) -> None:
         if isinstance(statement, ast.Assign):
@@ -218,6 +221,7 @@ class LocalValues:
                 self._add(scope, name, statement, None)
 
     def _add(self, scope: ScopeNode, name: str, statement: ast.stmt, value: ast.expr | Unpacked | None) -> None:
+        self._names_of_scope.setdefault(id(scope), set()).add(name)
         self._assignments.setdefault((id(scope), name), []).append((statement, value))
 
     # -- queries -------------------------------------------------------------------------------
@@ -701,7 +705,7 @@ def difference_with(node: ast.expr, values: LocalValues, depth: int = 6) -> tupl
 _ROTATION_MAKERS = frozenset(
     {"quat2mat", "euler2mat", "axangle2mat", "quaternion_to_matrix", "euler_angles_to_matrix",
      "axis_angle_to_matrix", "matrix_from_quaternion", "matrix_from_euler", "active_matrix_from_angle",
-     "matrix_from_axis_angle", "rotation_matrix_from_quaternion"}
+     "matrix_from_axis_angle"}
 )  # fmt: skip
 _POSE_MAKERS = frozenset(
     {"quaternion_matrix", "euler_matrix", "translation_matrix", "rotation_matrix", "compose_matrix",
@@ -711,56 +715,86 @@ _SIZE_MAKERS = frozenset({"eye", "identity"})
 _FILLED_MAKERS = frozenset({"zeros", "ones", "empty", "full"})
 
 
-def matrix_shape(node: ast.expr, values: LocalValues, depth: int = 6) -> int | None:
-    """3 for an array certainly made as a single 3x3 rotation, 4 for a single 4x4 pose; else None.
+def matrix_shape(node: ast.expr, values: LocalValues) -> int | None:
+    """3 for an array certainly made as a single 3x3 matrix, 4 for a single 4x4; else None.
 
     Only makers that fix the shape count: `np.eye(3)`, a literal 3x3, `T[:3, :3]`,
-    transforms3d `quat2mat`, `cv2.Rodrigues(r)[0]`, pyquaternion `.rotation_matrix`
-    (3); `np.eye(4)`, `np.zeros((4, 4))`, tf `quaternion_matrix`, pyquaternion
+    transforms3d `quat2mat`, `cv2.Rodrigues(r)[0]`, pyquaternion `.rotation_matrix`,
+    `.reshape(3, 3)` (3); `np.eye(4)`, `np.zeros((4, 4))`, tf `quaternion_matrix`, pyquaternion
     `.transformation_matrix` (4). A copy or transpose keeps the shape.
     """
+    shape = square_shape(node, values)
+    return shape[0] if shape is not None and not shape[1] else None
+
+
+def square_shape(node: ast.expr, values: LocalValues, depth: int = 8) -> tuple[int, bool] | None:
+    """(3 or 4, stacked): the size of the last two axes of an array of square matrices, and whether
+    there are batch axes ahead of them (`np.zeros((n, 4, 4))`, `torch.eye(4).repeat(n, 1, 1)`)."""
     if depth <= 0:
         return None
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+        method = node.func.attr
+        if method in ("reshape", "view") and node.args:
+            sizes = [int_value(argument) for argument in node.args]
+            if len(sizes) == 1 and isinstance(node.args[0], (ast.Tuple, ast.List)):
+                sizes = [int_value(element) for element in node.args[0].elts]
+            return _square_of_sizes(sizes)
+        if method in ("repeat", "expand", "tile") or (method == "unsqueeze" and int_value(node.args[0] if node.args else None) == 0):
+            inner = square_shape(node.func.value, values, depth - 1)
+            return (inner[0], True) if inner is not None else None
+        if call_name(node) in ("tile", "repeat", "broadcast_to") and node.args and dotted(node.func.value) in ("np", "numpy", "torch"):
+            inner = square_shape(node.args[0], values, depth - 1)
+            return (inner[0], True) if inner is not None else None
+    if isinstance(node, ast.Subscript) and _is_broadcast_index(node) and int_value(subscript_indices(node)[0]) is None:
+        inner = square_shape(node.value, values, depth - 1)
+        return (inner[0], True) if inner is not None else None
     inner = peel_same_value(node)
     if inner is not node and not _reshapes(node):
-        return matrix_shape(inner, values, depth - 1)
+        return square_shape(inner, values, depth - 1)
     transposed = transposed_operand(node)
     if transposed is not None:
-        return matrix_shape(transposed, values, depth - 1)
+        return square_shape(transposed, values, depth - 1)
     if isinstance(node, ast.Name):
         value = values.resolve(node)
         if isinstance(value, Unpacked) or value is node:
             return None
-        return matrix_shape(value, values, depth - 1)
+        return square_shape(value, values, depth - 1)
+    if isinstance(node, (ast.List, ast.Tuple)):
+        size = _literal_square(node)
+        return (size, False) if size is not None else None
     if isinstance(node, ast.Subscript):
         indices = matrix_indices(node)
-        if indices is not None and not indices[0] and is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3):
-            return 3
+        if indices is not None and is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3):
+            return (3, bool(indices[0]))
         if call_name(node.value) == "Rodrigues" and int_value(node.slice) == 0:
-            return 3
+            return (3, False)
         return None
     if isinstance(node, ast.Attribute):
-        if _quaternion_of(node.value) is not None:
-            return {"rotation_matrix": 3, "transformation_matrix": 4}.get(node.attr)
+        if _quaternion_of(node.value) is not None and node.attr in ("rotation_matrix", "transformation_matrix"):
+            return (3 if node.attr == "rotation_matrix" else 4, False)
         return None
     if isinstance(node, ast.Call):
         name = call_name(node)
         if name in _SIZE_MAKERS and len(node.args) == 1:
             size = int_value(node.args[0])
-            return size if size in (3, 4) else None
+            return (size, False) if size in (3, 4) else None
         if name in _FILLED_MAKERS and node.args:
             shape = node.args[0]
-            if isinstance(shape, (ast.Tuple, ast.List)) and len(shape.elts) == 2:
-                sizes = {int_value(element) for element in shape.elts}
-                return sizes.pop() if len(sizes) == 1 and sizes <= {3, 4} else None
-            return None
-        if name in _ROTATION_MAKERS and name != "rotation_matrix":
-            return 3 if dotted(node.func) and not _stacks(node) else None
+            if isinstance(shape, (ast.Tuple, ast.List)):
+                return _square_of_sizes([int_value(element) for element in shape.elts])
+            return _square_of_sizes([int_value(argument) for argument in node.args])
+        if name in _ROTATION_MAKERS:
+            return (3, False) if not _stacks(node) else None
         if name in _POSE_MAKERS and _is_tf_style_maker(node):
-            return 4
-        if name in ("array", "asarray", "tensor") and node.args:
-            return _literal_square(node.args[0])
+            return (4, False)
     return None
+
+
+def _square_of_sizes(sizes: list[int | None]) -> tuple[int, bool] | None:
+    """(4, True) for sizes (n, 4, 4); (3, False) for (3, 3)."""
+    if len(sizes) < 2 or sizes[-1] != sizes[-2] or sizes[-1] not in (3, 4):
+        return None
+    return (sizes[-1], len(sizes) > 2)  # type: ignore[return-value]
 
 
 def _reshapes(node: ast.expr) -> bool:

@@ -1,0 +1,178 @@
+"""GEO206 caller-transform-mutated: a function rewrites part of a transform its caller passed in."""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from geolint.rules.base import AstRule, Invalid, Valid
+from geolint.rules.pose_parts import LocalValues, int_value, is_slice_upto, local_values, matrix_indices
+
+# Attribute words that name a part of a transform or pose message (geometry_msgs Transform/Pose).
+_PART_ATTRIBUTES = frozenset({"translation", "rotation", "position", "orientation"})
+# Function names that announce an in-place update.
+_MUTATOR_NAME = re.compile(r"^_*(set|update|apply|reset|zero|fill|write|assign|modify|normalize|init|populate)_|inplace|in_place|_$")
+
+
+class CallerTransformMutated(AstRule):
+    """A function rewrites the translation or rotation of a transform it received, without copying it.
+
+    ## What it does
+    Flags, inside a function that returns a value other than that parameter, an assignment into
+    the translation or rotation of one of its parameters (or of a local name that is still that
+    parameter):
+    `T[:3, 3] = 0`, `T[:3, :3] = R`, `T[2, 3] += dz`, `poses[:, :3, 3] -= center`,
+    `transform.transform.translation.x = 0.0`, `pose.orientation.w = 1.0`. A copy first
+    (`T = T.copy()`, `copy.deepcopy(transform)`, `np.array(T)`) makes it fine.
+
+    ## Why is this bad?
+    numpy arrays, tensors and ROS messages are passed by reference. A helper that zeroes the
+    translation of the transform it was given (to rotate a vector, to compare orientations, to
+    re-centre a scene) changes the caller's transform as well, and every later use of it by the
+    caller, or by the tf buffer or cache that handed it out, silently sees the edited value.
+
+    ## Example
+    ```python
+    def rotate_vector(vector, transform):
+        transform.transform.translation.x = 0.0
+        transform.transform.translation.y = 0.0
+        transform.transform.translation.z = 0.0
+        return do_transform_point(vector, transform)
+    ```
+
+    ## Use instead
+    ```python
+    def rotate_vector(vector, transform):
+        transform = copy.deepcopy(transform)
+        transform.transform.translation.x = 0.0
+        transform.transform.translation.y = 0.0
+        transform.transform.translation.z = 0.0
+        return do_transform_point(vector, transform)
+    ```
+
+    ## Fix safety
+    There is no automatic fix: copying changes what the caller sees, and some callers may rely
+    on the update.
+
+    ## Known problems
+    Functions that are meant to update their argument are recognised only by returning nothing,
+    by returning the argument itself, or by their name (`set_*`, `update_*`, `apply_*`, `*_inplace`, a trailing underscore); an
+    in-place helper that also returns a status value is flagged.
+    """
+
+    code = "GEO206"
+    name = "caller-transform-mutated"
+    triggers = re.compile(r"\.(?:translation|rotation|position|orientation)\.[xyzw]\s*[-+*/]?=|\[[^\]\n]*3\s*\]\s*[-+*/]?=")
+
+    VALID = [
+        Valid("def f(T, p):\n    T = T.copy()\n    T[:3, 3] = 0\n    return T @ p\n"),
+        Valid("def set_translation(T, t):\n    T[:3, 3] = t\n    return T\n"),
+        Valid("def center(T, c):\n    T[:3, 3] -= c\n"),  # returns nothing: an in-place helper
+        Valid("import copy\ndef f(tf, v):\n    tf = copy.deepcopy(tf)\n    tf.transform.translation.x = 0.0\n    return apply(tf, v)\n"),
+        Valid("import numpy as np\ndef f(R, t):\n    T = np.eye(4)\n    T[:3, 3] = t\n    return T\n"),
+        Valid("class Node:\n    def f(self, v):\n        self.pose.position.x = v\n        return self.pose\n"),
+        Valid("def f(K, s):\n    K[:2, 2] *= s\n    return K\n"),
+        Valid("def f(poses, c):\n    poses[:, :3, 3] -= c\n    return poses, c\n"),  # handed back: the caller rebinds
+        Valid("def snap(obj, y):\n    obj.translation = y\n    return True\n"),  # moving a simulated object
+    ]
+    INVALID = [
+        Invalid("def f(T, p):\n    T[:3, 3] = 0\n    return T @ p\n"),
+        Invalid(
+            "def rotate_only(vector, transform):\n    transform.transform.translation.x = 0.0\n"
+            "    return do_transform_vector3(vector, transform)\n"
+        ),
+        Invalid("def f(poses, center, pts):\n    out = poses\n    out[:, :3, 3] -= center\n    return pts @ out\n"),
+        Invalid("def heading(pose):\n    pose.pose.orientation.w = 1.0\n    return yaw_of(pose)\n"),
+    ]
+
+    def check(self, tree: ast.Module) -> None:
+        values: LocalValues | None = None
+        for function in ast.walk(tree):
+            if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                continue
+            if _MUTATOR_NAME.search(function.name) or not _returns_value(function):
+                continue
+            for statement in _own_statements(function):
+                targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target] if isinstance(statement, ast.AugAssign) else []
+                for target in targets:
+                    root = _transform_part_root(target)
+                    if root is None:
+                        continue
+                    values = values or local_values(tree)
+                    parameter = _parameter_read_by(root, values)
+                    if parameter is None or parameter in ("self", "cls") or _returns_name(function, {parameter, root.id}):
+                        continue  # returned: an update-and-return helper whose caller rebinds
+                    self.report(
+                        target,
+                        f"`{function.name}` rewrites part of the transform its caller passed as "
+                        f"`{parameter}` (`{ast.unparse(target)}`), so the caller's transform changes "
+                        f"too; copy it first (`{parameter}.copy()`, `copy.deepcopy({parameter})`)",
+                    )
+
+
+def _returns_value(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    return any(
+        isinstance(node, ast.Return) and node.value is not None and not (isinstance(node.value, ast.Constant) and node.value.value is None)
+        for node in _own_statements(function)
+    )
+
+
+def _returns_name(function: ast.FunctionDef | ast.AsyncFunctionDef, names: set[str]) -> bool:
+    """Some `return` hands back one of `names` (alone or in a tuple)."""
+    for statement in _own_statements(function):
+        if isinstance(statement, ast.Return) and statement.value is not None:
+            returned = statement.value.elts if isinstance(statement.value, (ast.Tuple, ast.List)) else [statement.value]
+            if any(isinstance(value, ast.Name) and value.id in names for value in returned):
+                return True
+    return False
+
+
+def _own_statements(function: ast.AST) -> list[ast.stmt]:
+    """The statements of a function, not of the functions and classes defined inside it."""
+    found: list[ast.stmt] = []
+    stack = list(getattr(function, "body", []))
+    while stack:
+        statement = stack.pop()
+        found.append(statement)
+        if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            continue
+        for field in ("body", "orelse", "finalbody", "handlers", "cases"):
+            stack.extend(getattr(statement, field, []))
+    return found
+
+
+def _transform_part_root(target: ast.expr) -> ast.Name | None:
+    """The name whose translation or rotation `target` writes: `T[:3, 3]`, `tf.transform.translation.x`."""
+    if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
+        indices = matrix_indices(target)
+        if indices is None:
+            return None
+        _, row, column = indices
+        translation_column = int_value(column) in (3, -1)
+        if is_slice_upto(row, 3) and (translation_column or is_slice_upto(column, 3)):
+            return target.value
+        if int_value(row) in (0, 1, 2) and translation_column:
+            return target.value
+        return None
+    # A component of a message field: `tf.transform.translation.x`, `pose.orientation.w`.
+    if not (isinstance(target, ast.Attribute) and target.attr in ("x", "y", "z", "w")):
+        return None
+    part = target.value
+    if not (isinstance(part, ast.Attribute) and part.attr in _PART_ATTRIBUTES):
+        return None
+    node = part.value
+    while isinstance(node, ast.Attribute):
+        node = node.value
+    return node if isinstance(node, ast.Name) else None
+
+
+def _parameter_read_by(name: ast.Name, values: LocalValues) -> str | None:
+    """The parameter `name` still is where it is written (through plain aliases `out = T`)."""
+    for _ in range(6):
+        if values.is_parameter(name):
+            return name.id
+        value = values.value_of(name)
+        if not isinstance(value, ast.Name):
+            return None
+        name = value
+    return None

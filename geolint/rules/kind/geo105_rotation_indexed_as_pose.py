@@ -1,0 +1,109 @@
+"""GEO105 rotation-indexed-as-pose: a 3x3 rotation matrix indexed as if it were a 4x4 pose."""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.rules.base import AstRule, Invalid, Valid
+from geolint.rules.pose_parts import AllOf, LocalValues, int_value, local_values, matrix_shape, subscript_indices
+
+
+class RotationIndexedAsPose(AstRule):
+    """A 3x3 rotation matrix is indexed as a 4x4 pose (its translation column or bottom row).
+
+    ## What it does
+    Flags `R[:3, 3]`, `R[3, :3]`, `R[:3, 3:]` or `R[3]` (read or written) where R is
+    certainly a single 3x3 matrix: made by `np.eye(3)` / `np.zeros((3, 3))`, a literal 3x3,
+    a `[:3, :3]` slice, `.reshape(3, 3)`, transforms3d `quat2mat` / `euler2mat`, pytransform3d
+    `matrix_from_quaternion`, pyquaternion `Quaternion(...).rotation_matrix` or
+    `cv2.Rodrigues(r)[0]`, with no reassignment in between.
+
+    ## Why is this bad?
+    A rotation has no translation column and no homogeneous row. Indexing past its third row or
+    column raises `IndexError` the first time the line runs, and a slice such as `R[:3, 3:]` is
+    silently empty, so the translation the code means to read or store goes nowhere. Usually the
+    code meant the 4x4 pose the rotation came from, or should build one (`T = np.eye(4);
+    T[:3, :3] = R; T[:3, 3] = t`).
+
+    ## Example
+    ```python
+    R = Quaternion(pose["rotation"]).rotation_matrix
+    R[:3, 3] = pose["translation"]
+    ```
+
+    ## Use instead
+    ```python
+    T = np.eye(4)
+    T[:3, :3] = Quaternion(pose["rotation"]).rotation_matrix
+    T[:3, 3] = pose["translation"]
+    ```
+
+    ## Fix safety
+    There is no automatic fix: the code needs a 4x4 array that does not exist yet.
+
+    ## Known problems
+    Only arrays whose maker fixes the shape are checked; a rotation that arrives as a parameter
+    or from a project function is not. An array resized in place (`R.resize((4, 4))`) is skipped.
+    """
+
+    code = "GEO105"
+    name = "rotation-indexed-as-pose"
+    triggers = AllOf(
+        r"eye\(\s*3|zeros\(\s*\(\s*3\s*,\s*3|\[\s*\[|:\s*3\s*,\s*:\s*3|reshape\(\s*3\s*,\s*3|2mat\(|matrix_from_|rotation_matrix|Rodrigues",
+        r"\[[^\]\n]*(?:\b3\s*[\],]|3\s*:)",
+    )
+
+    VALID = [
+        Valid("import numpy as np\nT = np.eye(4)\nT[:3, 3] = t\n"),
+        Valid("import numpy as np\nR = np.eye(3)\nR[:2, 2] = t\n"),  # a 2-D homogeneous transform
+        Valid("def f(R, t):\n    R[:3, 3] = t\n"),  # shape unknown
+        Valid("import numpy as np\nR = np.eye(3)\nR = np.hstack([R, t[:, None]])\nx = R[:3, 3]\n"),
+        Valid("def f(T):\n    R = T[:3, :3]\n    return T[:3, 3], R[2, 2]\n"),
+        Valid("import numpy as np\nR = np.eye(3)\nR.resize((4, 4), refcheck=False)\nR[3, 3] = 1\n"),
+        Valid("import numpy as np\nR = np.eye(3)\nblock = R[:4, :4]\n"),  # slicing past the end clamps
+        Valid("def f(poses):\n    R = poses[:, :3, :3]\n    return R[3]\n"),  # the fourth rotation of a stack
+    ]
+    INVALID = [
+        Invalid("import numpy as np\nR = np.eye(3)\nR[:3, 3] = t\n"),
+        Invalid("def f(pose):\n    R = Quaternion(pose['rotation']).rotation_matrix\n    return R[3, :3]\n"),
+        Invalid("def f(T):\n    R = T[:3, :3].copy()\n    return R[:3, 3:]\n"),
+        Invalid("from transforms3d.quaternions import quat2mat\nR = quat2mat(q)\nt = R[0:3, 3]\n"),
+        Invalid("import cv2\ndef f(rvec):\n    R = cv2.Rodrigues(rvec)[0]\n    return R[3, 3]\n"),
+    ]
+
+    def check(self, tree: ast.Module) -> None:
+        values: LocalValues | None = None
+        for node in ast.walk(tree):
+            if not isinstance(node, ast.Subscript) or not isinstance(node.value, ast.Name):
+                continue
+            indices = subscript_indices(node)
+            if not any(_past_third(index) for index in indices[:2]) or len(indices) > 2:
+                continue
+            values = values or local_values(tree)
+            if matrix_shape(node.value, values) != 3 or _resized_in_place(node.value, values):
+                continue
+            self.report(
+                node,
+                f"`{node.value.id}` is a 3x3 rotation, but `{ast.unparse(node)}` indexes it as a 4x4 pose "
+                "(there is no row or column 3): use the 4x4 pose it came from, or build one",
+            )
+
+
+def _past_third(index: ast.expr) -> bool:
+    """3 (or more), `3:`: an index that only exists in a 4x4 matrix (a slice past the end clamps)."""
+    value = int_value(index)
+    if value is not None:
+        return value >= 3
+    return isinstance(index, ast.Slice) and (int_value(index.lower) or 0) >= 3
+
+
+def _resized_in_place(name: ast.Name, values: LocalValues) -> bool:
+    scope = values.scope_of(name)
+    return scope is not None and any(
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Attribute)
+        and node.func.attr in ("resize", "resize_")
+        and isinstance(node.func.value, ast.Name)
+        and node.func.value.id == name.id
+        for node in ast.walk(scope)
+    )

@@ -1,0 +1,190 @@
+"""GEO303 translation-in-bottom-row: a translation written into the homogeneous row of a 4x4 pose."""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.rules.base import AstRule, Invalid, Valid
+from geolint.rules.pose_parts import (
+    AllOf,
+    LocalValues,
+    int_value,
+    is_slice_upto,
+    local_values,
+    matmul_operands,
+    matrix_indices,
+    pose_part,
+    same_code,
+    square_shape,
+    transposed_operand,
+)
+
+
+class TranslationInBottomRow(AstRule):
+    """A translation is written into the bottom (homogeneous) row of a 4x4 pose instead of column 3.
+
+    ## What it does
+    Flags an assignment into row 3, columns 0-2 of a 4x4 pose or a stack of them
+    (`T[3, :3] = t`, `T[3, 0] = x`, `poses[:, 3, :3] -= center`) when the array is certainly a
+    pose in the column-vector convention: it was made 4x4 (`np.eye(4)`, `np.zeros((4, 4))`,
+    `torch.eye(4).repeat(n, 1, 1)`, tf `quaternion_matrix`) and the same function reads or writes
+    its rotation block `[:3, :3]` or its translation column `[:3, 3]`. Reading the bottom row, and
+    writing zeros into it, are fine.
+
+    ## Why is this bad?
+    In the column-vector convention (`T @ [x, y, z, 1]`, what numpy, Open3D, trimesh, ROS and
+    most robotics code use) the translation lives in column 3 and the bottom row is
+    `[0, 0, 0, 1]`. A translation stored in the bottom row never moves a point; it changes the
+    w of every transformed point instead, so points are scaled by `1 / w` after dehomogenising,
+    or left untranslated when w is dropped.
+
+    ## Example
+    ```python
+    T = np.eye(4)
+    T[:3, :3] = R
+    T[3, :3] = t
+    ```
+
+    ## Use instead
+    ```python
+    T = np.eye(4)
+    T[:3, :3] = R
+    T[:3, 3] = t
+    ```
+
+    ## Fix safety
+    The fix swaps the two indices (`T[3, :3]` -> `T[:3, 3]`) and is unsafe: code written in the
+    row-vector convention (`points_h @ T`) keeps its translation in the bottom row on purpose.
+
+    ## Known problems
+    The row-vector convention is recognised only when the same function multiplies the array from
+    the right (`points_h @ T`, `np.dot(points_h, T)`) or transposes it (`M.T`); row-vector code
+    that passes the matrix elsewhere (DirectX/Unity-style engines, some OpenGL uniform builders)
+    can be flagged. A projective matrix is recognised by a corner `M[3, 3]` set to anything but 1.
+    """
+
+    code = "GEO303"
+    name = "translation-in-bottom-row"
+    triggers = AllOf(r"\[[^\]\n]*\b3\s*,\s*(?::\s*3|0\s*:\s*3|[012])\s*\]\s*[-+*/]?=", r"eye\(|zeros\(|empty\(|_matrix\(")
+
+    VALID = [
+        Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[:3, 3] = t\n"),
+        Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[3, :3] = 0\n"),
+        Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nt = T[3, :3]\n"),  # a read
+        Valid("import numpy as np\nP = np.zeros((4, 4))\nP[3, 2] = -1.0\n"),  # a projection matrix
+        Valid(
+            "import numpy as np\ndef f(R, t, pts_h):\n    M = np.eye(4)\n    M[:3, :3] = R.T\n"
+            "    M[3, :3] = t\n    return pts_h @ M\n"
+        ),  # the row-vector convention, applied as such
+        Valid("def f(M, t):\n    M[3, :3] = t\n"),  # nothing says M is a pose
+        Valid(
+            "import numpy as np\ndef f(R, t):\n    M = np.eye(4)\n    M[:3, :3] = R.T\n    M[3, :3] = -t\n"
+            "    return M.T\n"
+        ),  # built in row layout, returned transposed
+        Valid(
+            "import numpy as np\ndef projection(normal, point, d):\n    M = np.identity(4)\n"
+            "    M[:3, 3] = point\n    M[3, :3] = -normal\n    M[3, 3] = d\n    return M\n"
+        ),
+    ]
+    INVALID = [
+        Invalid(
+            "import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[3, :3] = t\n",
+            expected_fix="import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[:3, 3] = t\n",
+        ),
+        Invalid("import torch\ndef f(R, c, n):\n    poses = torch.eye(4).repeat(n, 1, 1)\n    poses[:, :3, :3] = R\n    poses[:, 3, :3] -= c\n    return poses\n"),
+        Invalid("import numpy as np\nT = np.zeros((4, 4))\nT[:3, :3] = R\nT[3, 0] = x\nT[3, 3] = 1\n"),
+    ]
+
+    def check(self, tree: ast.Module) -> None:
+        values: LocalValues | None = None
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Assign):
+                targets, value = node.targets, node.value
+            elif isinstance(node, ast.AugAssign):
+                targets, value = [node.target], node.value
+            else:
+                continue
+            for target in targets:
+                if not isinstance(target, ast.Subscript) or not isinstance(target.value, ast.Name):
+                    continue
+                indices = matrix_indices(target)
+                if indices is None or not _is_bottom_row_translation(indices[1], indices[2]) or _is_zero(value):
+                    continue
+                values = values or local_values(tree)
+                if self._is_column_convention_pose(target, bool(indices[0]), values):
+                    self._report(target, indices[1], indices[2])
+
+    def _is_column_convention_pose(self, target: ast.Subscript, stacked: bool, values: LocalValues) -> bool:
+        shape = square_shape(target.value, values)
+        if shape is None or shape[0] != 4 or (shape[1] and not stacked):
+            return False
+        scope = values.scope_of(target)
+        if scope is None:
+            return False
+        base = target.value
+        states_pose = False
+        for node in ast.walk(scope):
+            if isinstance(node, ast.Subscript) and node is not target and same_code(node.value, base):
+                part = pose_part(node, values)
+                states_pose = states_pose or part is not None
+                if _writes_projective_corner(node, values):
+                    return False  # M[3, 3] = d: a projection, whose bottom row is meant to be full
+            transposed = transposed_operand(node) if isinstance(node, ast.expr) else None
+            if transposed is not None and same_code(transposed, base):
+                return False  # built transposed (row-vector layout), then transposed into place
+            operands = matmul_operands(node)
+            if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], values):
+                return False  # points_h @ T: the row-vector convention
+        return states_pose
+
+    def _report(self, target: ast.Subscript, row: ast.expr, column: ast.expr) -> None:
+        replacement = None
+        if is_slice_upto(column, 3):
+            indices = subscript_indices_text(target)
+            replacement = f"{ast.unparse(target.value)}[{indices}:3, 3]"
+        self.report(
+            target,
+            f"`{ast.unparse(target)}` writes into the bottom (homogeneous) row of a 4x4 pose; its "
+            "translation belongs in column 3 (`[:3, 3]`), and the bottom row stays [0, 0, 0, 1]",
+            replacement=replacement,
+            applicability="unsafe",
+            fix_description="write the translation into column 3",
+        )
+
+
+def subscript_indices_text(target: ast.Subscript) -> str:
+    """The batch indices of a stacked pose subscript, as text with a trailing comma (`:, `)."""
+    indices = target.slice.elts if isinstance(target.slice, ast.Tuple) else [target.slice]
+    return "".join(f"{ast.unparse(index)}, " for index in indices[:-2])
+
+
+def _is_bottom_row_translation(row: ast.expr, column: ast.expr) -> bool:
+    if int_value(row) not in (3, -1):
+        return False
+    return is_slice_upto(column, 3) or int_value(column) in (0, 1, 2)
+
+
+def _is_zero(value: ast.expr) -> bool:
+    if isinstance(value, ast.Constant):
+        return value.value == 0
+    if isinstance(value, (ast.List, ast.Tuple)):
+        return all(_is_zero(element) for element in value.elts)
+    if isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute):
+        return value.func.attr in ("zeros", "zeros_like")
+    return False
+
+
+def _writes_projective_corner(node: ast.Subscript, values: LocalValues) -> bool:
+    """`M[3, 3] = value` with anything but 1: the matrix is projective, not a rigid pose."""
+    indices = matrix_indices(node)
+    if indices is None or int_value(indices[1]) not in (3, -1) or int_value(indices[2]) not in (3, -1):
+        return False
+    statement = values.parents.get(node)
+    if isinstance(statement, ast.Assign) and node in statement.targets:
+        return not (isinstance(statement.value, ast.Constant) and statement.value.value == 1)
+    return isinstance(statement, ast.AugAssign) and statement.target is node
+
+
+def _is_pose_like(node: ast.expr, values: LocalValues) -> bool:
+    shape = square_shape(node, values)
+    return shape is not None and shape[0] == 4
