@@ -739,11 +739,11 @@ def square_shape(node: ast.expr, values: LocalValues, depth: int = 8) -> tuple[i
             if len(sizes) == 1 and isinstance(node.args[0], (ast.Tuple, ast.List)):
                 sizes = [int_value(element) for element in node.args[0].elts]
             return _square_of_sizes(sizes)
-        if method in ("repeat", "expand", "tile") or (method == "unsqueeze" and int_value(node.args[0] if node.args else None) == 0):
-            inner = square_shape(node.func.value, values, depth - 1)
-            return (inner[0], True) if inner is not None else None
-        if call_name(node) in ("tile", "repeat", "broadcast_to") and node.args and dotted(node.func.value) in ("np", "numpy", "torch"):
+        if method in ("tile", "repeat", "broadcast_to") and node.args and dotted(node.func.value) in ("np", "numpy", "torch"):
             inner = square_shape(node.args[0], values, depth - 1)
+            return (inner[0], True) if inner is not None else None
+        if method in ("repeat", "expand") or (method == "unsqueeze" and int_value(node.args[0] if node.args else None) == 0):
+            inner = square_shape(node.func.value, values, depth - 1)
             return (inner[0], True) if inner is not None else None
     if isinstance(node, ast.Subscript) and _is_broadcast_index(node) and int_value(subscript_indices(node)[0]) is None:
         inner = square_shape(node.value, values, depth - 1)
