@@ -830,6 +830,19 @@ class AllOf:
     def search(self, source: str, /) -> bool:
         return all(pattern.search(source) for pattern in self.patterns)
 
+    def search_with(self, source: str, config: object, /) -> bool:
+        """The engine's prefilter entry point (no configuration read). Text that does not parse
+        passes, as with every trigger, so the engine reports it rather than skipping it."""
+        if self.search(source):
+            return True
+        from geolint.engine import cached_ast  # the engine's syntax check parsed this text already
+
+        try:
+            cached_ast(source)
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            return True
+        return False
+
 
 # Source text that can hold a pose's rotation or translation: a `[:3, 3]`-style slice, a part
 # attribute or key, or `R, t` unpacked together.

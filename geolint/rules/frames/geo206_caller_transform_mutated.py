@@ -6,7 +6,7 @@ import ast
 import re
 
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import LocalValues, int_value, is_slice_upto, local_values, matrix_indices
+from geolint.rules.pose_parts import AllOf, LocalValues, int_value, is_slice_upto, local_values, matrix_indices
 
 # Attribute words that name a part of a transform or pose message (geometry_msgs Transform/Pose).
 _PART_ATTRIBUTES = frozenset({"translation", "rotation", "position", "orientation"})
@@ -62,7 +62,7 @@ class CallerTransformMutated(AstRule):
 
     code = "GEO206"
     name = "caller-transform-mutated"
-    triggers = re.compile(r"\.(?:translation|rotation|position|orientation)\.[xyzw]\s*[-+*/]?=|\[[^\]\n]*3\s*\]\s*[-+*/]?=")
+    triggers = AllOf(r"\.(?:translation|rotation|position|orientation)\.[xyzw]\s*[-+*/]?=|\[[^\]\n]*3\s*\]\s*[-+*/]?=")
 
     VALID = [
         Valid("def f(T, p):\n    T = T.copy()\n    T[:3, 3] = 0\n    return T @ p\n"),
