@@ -159,37 +159,27 @@ def _lint_all(
                 progress(done, total)
         return results
 
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
+    from geolint.workers import run_in_workers
 
-    engine.registered_rules()  # import libcst and the rules once, so forked workers inherit them
-    methods = multiprocessing.get_all_start_methods()
-    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    engine.registered_rules()  # import the rules once, so forked workers inherit them
     # Big files first, so one large file does not finish alone at the end.
     order = sorted(range(len(work)), key=lambda index: -len(work[index][2]))
-    results_by_index: dict[int, FileResult] = {}
-    with ProcessPoolExecutor(max_workers=min(jobs, len(work)), mp_context=context) as pool:
-        futures = {pool.submit(_lint_batch, [work[i] for i in batch]): batch for batch in _batches(order, jobs)}
-        from concurrent.futures import as_completed
 
-        for future in as_completed(futures):
-            batch = futures[future]
-            for index, result in zip(batch, future.result()):
-                results_by_index[index] = result
-            done += len(batch)
-            if progress:
-                progress(done, total)
+    def finished(_: int) -> None:
+        nonlocal done
+        done += 1
+        if progress:
+            progress(done, total)
+
+    ordered = run_in_workers([work[i] for i in order], _lint_one, _crashed, jobs, finished)
+    results_by_index = dict(zip(order, ordered))
     return [results_by_index[index] for index in range(len(work))]
 
 
-def _batches(order: list[int], jobs: int) -> list[list[int]]:
-    """Round-robin the (size-sorted) files into a few batches per worker, for balance and low overhead."""
-    count = max(1, min(len(order), jobs * 8))
-    return [order[start::count] for start in range(count)]
-
-
-def _lint_batch(items: list[tuple[str, str, bytes, Config]]) -> list[FileResult]:
-    return [_lint_one(item) for item in items]
+def _crashed(item: tuple[str, str, bytes, Config], why: str) -> FileResult:
+    """The result of a file whose worker process died while checking it (the run goes on)."""
+    display, location, _, _ = item
+    return FileResult(display, (), f"{why}; the file was not checked", location=Path(location))
 
 
 def _lint_one(item: tuple[str, str, bytes, Config]) -> FileResult:

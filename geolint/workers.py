@@ -1,0 +1,144 @@
+"""Worker processes for linting many files: a file that kills its worker is reported, not the run.
+
+Each worker takes one file at a time. When a worker dies (a segfault in a native extension, the
+out-of-memory killer), the file it held gets an error result naming the signal, a fresh worker
+takes its place, and every other file is still checked. Workers exit with their parent: on Linux
+the kernel sends them SIGTERM when the parent dies (`PR_SET_PDEATHSIG`), elsewhere a watchdog
+thread notices the parent is gone; an interrupted parent terminates them on its way out.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+import sys
+import threading
+import time
+from multiprocessing.connection import Connection, wait
+from typing import Any, Callable, Sequence, TypeVar
+
+Item = TypeVar("Item")
+Result = TypeVar("Result")
+
+_PR_SET_PDEATHSIG = 1
+_WATCHDOG_SECONDS = 1.0
+
+
+def run_in_workers(
+    items: Sequence[Item],
+    work: Callable[[Item], Result],
+    crashed: Callable[[Item, str], Result],
+    jobs: int,
+    done: Callable[[int], None] | None = None,
+) -> list[Result]:
+    """``work(item)`` for every item across ``jobs`` processes, results in the items' order.
+
+    ``crashed(item, why)`` makes the result of an item whose worker died; ``done(index)`` is called
+    as each item finishes. ``work`` and the items must be picklable when processes are spawned.
+    """
+    methods = multiprocessing.get_all_start_methods()
+    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    results: dict[int, Result] = {}
+    pending = list(range(len(items)))
+    pending.reverse()  # pop() from the end takes them in the given order
+    workers: list[_Worker] = []
+    try:
+        for _ in range(min(jobs, len(items))):
+            workers.append(_Worker(context, work))
+        for worker in workers:
+            worker.give(pending, items)
+        while any(worker.busy is not None for worker in workers):
+            ready = wait([worker.connection for worker in workers if worker.busy is not None]
+                         + [worker.process.sentinel for worker in workers if worker.busy is not None])
+            for index, worker in enumerate(workers):
+                if worker.busy is None:
+                    continue
+                if worker.connection in ready or worker.process.sentinel in ready:
+                    finished = worker.busy
+                    try:
+                        results[finished] = worker.connection.recv()
+                    except Exception:  # EOF: the worker died holding this item
+                        results[finished] = crashed(items[finished], worker.death())
+                        worker.close()
+                        worker = workers[index] = _Worker(context, work)
+                    worker.busy = None
+                    if done is not None:
+                        done(finished)
+                    worker.give(pending, items)
+    finally:
+        for worker in workers:
+            worker.close()
+    return [results[index] for index in range(len(items))]
+
+
+class _Worker:
+    """One worker process and the pipe to it; ``busy`` is the index of the item it holds."""
+
+    def __init__(self, context: Any, work: Callable[[Any], Any]) -> None:
+        self.connection, child_end = context.Pipe()
+        self.process = context.Process(target=_serve, args=(child_end, work, os.getpid()), daemon=True)
+        self.process.start()
+        child_end.close()
+        self.busy: int | None = None
+
+    def give(self, pending: list[int], items: Sequence[Any]) -> None:
+        if pending:
+            self.busy = pending.pop()
+            self.connection.send(items[self.busy])
+
+    def death(self) -> str:
+        """Why the process ended, in words (it has ended, or is about to)."""
+        self.process.join(5)
+        code = self.process.exitcode
+        if code is not None and code < 0:
+            try:
+                name = signal.Signals(-code).name
+            except ValueError:
+                name = f"signal {-code}"
+            return f"the worker process checking this file was killed by {name}"
+        return f"the worker process checking this file exited unexpectedly (exit code {code})"
+
+    def close(self) -> None:
+        try:
+            self.connection.close()
+        except OSError:
+            pass
+        if self.process.is_alive():
+            self.process.terminate()
+            self.process.join(2)
+            if self.process.is_alive():
+                self.process.kill()
+                self.process.join()
+
+
+def _serve(connection: Connection, work: Callable[[Any], Any], parent: int) -> None:
+    """A worker's loop: take an item, send its result, until the pipe closes or the parent is gone."""
+    _exit_with_parent(parent)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the parent, which ends us
+    while True:
+        try:
+            item = connection.recv()
+        except (EOFError, OSError):
+            return
+        connection.send(work(item))
+
+
+def _exit_with_parent(parent: int) -> None:
+    if sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGTERM, 0, 0, 0)
+        except (OSError, AttributeError):
+            pass
+    if os.getppid() != parent:  # the parent died before the kernel was told to watch it
+        os._exit(1)
+    threading.Thread(target=_watch_parent, args=(parent,), daemon=True).start()
+
+
+def _watch_parent(parent: int) -> None:
+    while os.getppid() == parent:
+        time.sleep(_WATCHDOG_SECONDS)
+    os._exit(1)
