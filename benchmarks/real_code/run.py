@@ -8,15 +8,15 @@ MIRROR_DIR holds one checkout per manifest entry, named `<owner>+<repo>` (made b
 script never downloads anything). `--history` also needs each checkout's git history: a `.git`
 directory or a `.git` file (`gitdir: ...`) in the checkout.
 
-The ledger keys a finding by (repository, path, code, hash of the flagged expression with all
-whitespace removed), so a finding that only moved lines still matches its verdict. Exit status:
+The ledger keys a finding by (repository, path, code, hash of the flagged expression with whitespace,
+quote style and trailing commas normalised away), so a finding that only moved lines still matches
+its verdict. A checkout whose HEAD is not the manifest's commit is linted with a warning. Exit status:
 0 unless something went wrong (a missing checkout, a file geolint failed on); findings are data.
 """
 
 from __future__ import annotations
 
 import argparse
-import ast
 import hashlib
 import json
 import os
@@ -242,7 +242,6 @@ def compare(args: argparse.Namespace) -> int:
     status = 0
     rows = []
     all_new: list[Seen] = []
-    all_matched: list[tuple[Seen, Entry]] = []
     all_gone: list[Entry] = []
     header = f"{'repository':40} {'files':>6} {'lines':>7} {'find':>5} {'TP':>4} {'FP':>4} {'uncl':>4} {'new':>4} {'gone':>4} {'time s':>7} {'lines/s':>8}"
     print(header)
@@ -252,6 +251,7 @@ def compare(args: argparse.Namespace) -> int:
             print(f"{repo.name}: no checkout at {checkout}", file=sys.stderr)
             status = 2
             continue
+        warn_if_not_pinned(repo, checkout)
         run = lint_repo(repo, checkout, select, args.jobs)
         for error in run.errors:
             print(f"{repo.name}: geolint failed on {error}", file=sys.stderr)
@@ -260,7 +260,6 @@ def compare(args: argparse.Namespace) -> int:
         verdicts = Counter(entry.verdict for _, entry in matched)
         rows.append((repo, run, verdicts, len(new), len(gone)))
         all_new += new
-        all_matched += matched
         all_gone += gone
         print(
             f"{repo.name:40} {run.files:6d} {run.lines:7d} {len(run.findings):5d} {verdicts['TP']:4d} {verdicts['FP']:4d}"
@@ -317,6 +316,18 @@ def write_markdown(path: str, rows: list, total: Counter, seconds: float) -> Non
         f" {total['TP']} | {total['FP']} | {total['unclear']} |"
     )
     Path(path).write_text("\n".join(lines) + "\n")
+
+
+def warn_if_not_pinned(repo: Repo, checkout: Path) -> None:
+    """Verdicts were given at the manifest's commit; say so when the checkout is elsewhere."""
+    if not (checkout / ".git").exists():
+        return
+    try:
+        head = git(checkout, "rev-parse", "HEAD").strip()
+    except (subprocess.CalledProcessError, OSError):
+        return
+    if head != repo.commit:
+        print(f"{repo.name}: warning: checkout is at {head[:10]}, the manifest pins {repo.commit[:10]}", file=sys.stderr)
 
 
 def repo_commit(repos: list[Repo], name: str) -> str:
