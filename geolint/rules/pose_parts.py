@@ -95,12 +95,31 @@ def is_batch_index(node: ast.expr) -> bool:
     return is_full_slice(node) or (isinstance(node, ast.Constant) and (node.value is Ellipsis or node.value is None))
 
 
+def is_stack_index(node: ast.expr) -> bool:
+    """An index that picks among stacked matrices: `:`, `...`, `None`, `head:tail`, `i`, `0`."""
+    if isinstance(node, ast.Slice):
+        return node.step is None
+    if isinstance(node, ast.Constant):
+        return node.value is Ellipsis or node.value is None or type(node.value) is int
+    return isinstance(node, (ast.Name, ast.Attribute))
+
+
 def matrix_indices(node: ast.Subscript) -> tuple[list[ast.expr], ast.expr, ast.expr] | None:
     """(batch indices, row index, column index) of a subscript with at least two indices."""
     indices = subscript_indices(node)
-    if len(indices) < 2 or not all(is_batch_index(index) for index in indices[:-2]):
+    if len(indices) < 2 or not all(is_stack_index(index) for index in indices[:-2]):
         return None
     return indices[:-2], indices[-2], indices[-1]
+
+
+def stack_key(batch: list[ast.expr]) -> str:
+    """Which matrices of a stack the batch indices pick, as text: new axes dropped, `...` read as `:`."""
+    picked = []
+    for index in batch:
+        if isinstance(index, ast.Constant) and index.value is None:
+            continue
+        picked.append(":" if is_batch_index(index) else ast.unparse(index))
+    return ", ".join(picked)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -463,7 +482,8 @@ def _sliced_part(node: ast.Subscript, values: LocalValues) -> PosePart | None:
         kind = "translation"
     else:
         return None
-    return PosePart(kind, _pose_key(node.value, values), batched=bool(batch))
+    key = pose_key(node.value, values)
+    return PosePart(kind, f"{key}[{stack_key(batch)}]" if batch else key, batched=bool(batch))
 
 
 def _is_column_slice_from(node: ast.expr, start: int) -> bool:
@@ -483,9 +503,9 @@ def _keyed_part(node: ast.Subscript, values: LocalValues) -> PosePart | None:
 def _named_part(word: str, base: ast.expr, values: LocalValues) -> PosePart | None:
     """Split a name such as `cam_R_w2c` into its part word (R) and the rest (cam_w2c), which names the pose."""
     if word in _ROTATION_ATTRIBUTES:
-        return PosePart("rotation", _pose_key(base, values))
+        return PosePart("rotation", pose_key(base, values))
     if word in _TRANSLATION_ATTRIBUTES:
-        return PosePart("translation", _pose_key(base, values))
+        return PosePart("translation", pose_key(base, values))
     tokens = word.split("_")
     for position, token in enumerate(tokens):
         lowered = token if token in ("R", "t", "T") else token.lower()
@@ -496,7 +516,7 @@ def _named_part(word: str, base: ast.expr, values: LocalValues) -> PosePart | No
         )  # fmt: skip
         if kind is not None and len(tokens) > 1:
             rest = "_".join(tokens[:position] + ["*"] + tokens[position + 1 :])
-            return PosePart(kind, f"{_pose_key(base, values)}.{rest}")
+            return PosePart(kind, f"{pose_key(base, values)}.{rest}")
     return None
 
 
@@ -521,7 +541,7 @@ def _kind_of_local_name(name: str) -> str | None:
     return None
 
 
-def _pose_key(base: ast.expr, values: LocalValues) -> str:
+def pose_key(base: ast.expr, values: LocalValues) -> str:
     """Text of the pose expression, plus which assignment its root name reads (a rebound T is another pose)."""
     root = base
     while isinstance(root, (ast.Attribute, ast.Subscript)):
@@ -531,6 +551,58 @@ def _pose_key(base: ast.expr, values: LocalValues) -> str:
         if binding is not None:
             return f"{ast.unparse(base)}@{binding}"
     return ast.unparse(base)
+
+
+_AGGREGATES = frozenset({"mean", "median", "average", "nanmean"})
+
+
+def translation_source(node: ast.expr, values: LocalValues, depth: int = 8) -> PosePart | None:
+    """The pose translation a value is made of: the translation itself, its mean over a stack
+    (`poses[:, :3, 3].mean(0)`, `torch.mean(t, dim=0)`), its negation or a scaling of it. A local
+    name counts when every value it is ever given in its function is such a value or zeros."""
+    if depth <= 0:
+        return None
+    part = pose_part(node, values)
+    if part is not None:
+        return part if part.kind == "translation" else None
+    inner = peel_same_value(node)
+    if inner is not node:
+        return translation_source(inner, values, depth - 1)
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        return translation_source(node.operand, values, depth - 1)
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.Div)):
+        for side, other in ((node.left, node.right), (node.right, node.left)):
+            if isinstance(other, (ast.Constant, ast.Name, ast.Attribute)) and (side is node.left or isinstance(node.op, ast.Mult)):
+                found = translation_source(side, values, depth - 1)
+                if found is not None and pose_part(other, values) is None:
+                    return found
+        return None
+    if isinstance(node, ast.Call) and call_name(node) in _AGGREGATES:
+        func = node.func
+        if isinstance(func, ast.Attribute) and dotted(func.value) in ("np", "numpy", "torch", "jnp"):
+            return translation_source(node.args[0], values, depth - 1) if node.args else None
+        return translation_source(func.value, values, depth - 1) if isinstance(func, ast.Attribute) else None
+    if isinstance(node, ast.IfExp):
+        return _every_source([node.body, node.orelse], values, depth)
+    if isinstance(node, ast.Name):
+        scope = values.scope_of(node)
+        if scope is None:
+            return None
+        return _every_source([value for _, value in values.assignments(scope, node.id)], values, depth)
+    return None
+
+
+def _every_source(candidates: list, values: LocalValues, depth: int) -> PosePart | None:
+    """The translation all candidate values come from, zeros aside; None if one comes from elsewhere."""
+    found = None
+    for value in candidates:
+        if isinstance(value, ast.Call) and call_name(value) in ("zeros_like", "zeros"):
+            continue
+        source = translation_source(value, values, depth - 1) if isinstance(value, ast.expr) else None
+        if source is None:
+            return None
+        found = found or source
+    return found
 
 
 def peel_same_value(node: ast.expr) -> ast.expr:

@@ -1,4 +1,4 @@
-"""GEO303 translation-in-bottom-row: a translation written into the homogeneous row of a 4x4 pose."""
+"""GEO303 misplaced-translation: a translation written into the homogeneous row or the rotation block of a pose."""
 
 from __future__ import annotations
 
@@ -14,21 +14,27 @@ from geolint.rules.pose_parts import (
     matmul_operands,
     matrix_indices,
     pose_part,
+    pose_key,
     same_code,
     square_shape,
+    stack_key,
+    translation_source,
     transposed_operand,
 )
 
 
-class TranslationInBottomRow(AstRule):
-    """A translation is written into the bottom (homogeneous) row of a 4x4 pose instead of column 3.
+class MisplacedTranslation(AstRule):
+    """A translation is written into the bottom (homogeneous) row or the rotation block of a pose.
 
     ## What it does
     Flags an assignment into row 3, columns 0-2 of a 4x4 pose or a stack of them
     (`T[3, :3] = t`, `T[3, 0] = x`, `poses[:, 3, :3] -= center`) when the array is certainly a
-    pose in the column-vector convention: it was made 4x4 (`np.eye(4)`, `np.zeros((4, 4))`,
-    `torch.eye(4).repeat(n, 1, 1)`, tf `quaternion_matrix`) and the same function reads or writes
-    its rotation block `[:3, :3]` or its translation column `[:3, 3]`. Reading the bottom row, and
+    pose in the column-vector convention: either it was made 4x4 (`np.eye(4)`,
+    `np.zeros((4, 4))`, `torch.eye(4).repeat(n, 1, 1)`, tf `quaternion_matrix`) and the same
+    function reads or writes its rotation block `[:3, :3]` or its translation column `[:3, 3]`,
+    or the value written is (a mean, negation or scaling of) the same array's own translation
+    column `X[..., :3, 3]`. The same own-translation value written into the rotation block
+    (`poses[:, :3, :3] -= poses[:, :3, 3].mean(0)`) is flagged too. Reading the bottom row, and
     writing zeros into it, are fine.
 
     ## Why is this bad?
@@ -40,32 +46,32 @@ class TranslationInBottomRow(AstRule):
 
     ## Example
     ```python
-    T = np.eye(4)
-    T[:3, :3] = R
-    T[3, :3] = t
+    center = poses[:, :3, 3].mean(0)
+    poses[:, 3, :3] -= center
     ```
 
     ## Use instead
     ```python
-    T = np.eye(4)
-    T[:3, :3] = R
-    T[:3, 3] = t
+    center = poses[:, :3, 3].mean(0)
+    poses[:, :3, 3] -= center
     ```
 
     ## Fix safety
-    The fix swaps the two indices (`T[3, :3]` -> `T[:3, 3]`) and is unsafe: code written in the
-    row-vector convention (`points_h @ T`) keeps its translation in the bottom row on purpose.
+    The fix writes into the translation column instead (`T[3, :3]` -> `T[:3, 3]`,
+    `poses[:, :3, :3]` -> `poses[:, :3, 3]`) and is unsafe: code written in the row-vector
+    convention (`points_h @ T`) keeps its translation in the bottom row on purpose.
 
     ## Known problems
     The row-vector convention is recognised only when the same function multiplies the array from
-    the right (`points_h @ T`, `np.dot(points_h, T)`) or transposes it (`M.T`); row-vector code
+    the right (`points_h @ T`, `np.dot(points_h, T)`) or transposes it (`M.T`) and never reads
+    `M[:3, 3]` as a translation; row-vector code
     that passes the matrix elsewhere (DirectX/Unity-style engines, some OpenGL uniform builders)
     can be flagged. A projective matrix is recognised by a corner `M[3, 3]` set to anything but 1.
     """
 
     code = "GEO303"
-    name = "translation-in-bottom-row"
-    triggers = AllOf(r"\[[^\]\n]*\b3\s*,\s*(?::\s*3|0\s*:\s*3|[012])\s*\]\s*[-+*/]?=", r"eye\(|zeros\(|empty\(|_matrix\(")
+    name = "misplaced-translation"
+    triggers = AllOf(r"\[[^\]\n]*(?:\b3|:\s*3)\s*,\s*(?::\s*3|0\s*:\s*3|[012])\s*\]\s*[-+*/]?=")
 
     VALID = [
         Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[:3, 3] = t\n"),
@@ -93,6 +99,13 @@ class TranslationInBottomRow(AstRule):
         ),
         Invalid("import torch\ndef f(R, c, n):\n    poses = torch.eye(4).repeat(n, 1, 1)\n    poses[:, :3, :3] = R\n    poses[:, 3, :3] -= c\n    return poses\n"),
         Invalid("import numpy as np\nT = np.zeros((4, 4))\nT[:3, :3] = R\nT[3, 0] = x\nT[3, 3] = 1\n"),
+        Invalid("def center(poses):\n    c = poses[:, :3, 3].mean(0)\n    poses[:, :3, :3] -= c\n    return poses\n"),
+        Invalid(
+            "import torch\ndef orient(poses, center_poses):\n    translation = poses[..., :3, 3]\n"
+            "    mean_translation = torch.mean(translation, dim=0)\n    if center_poses:\n"
+            "        translation = mean_translation\n    else:\n        translation = torch.zeros_like(mean_translation)\n"
+            "    oriented = transform @ poses\n    poses[:, 3, :3] -= translation\n    return oriented\n"
+        ),
     ]
 
     def check(self, tree: ast.Module) -> None:
@@ -108,11 +121,35 @@ class TranslationInBottomRow(AstRule):
                 if not isinstance(target, ast.Subscript) or not isinstance(target.value, ast.Name):
                     continue
                 indices = matrix_indices(target)
-                if indices is None or not _is_bottom_row_translation(indices[1], indices[2]) or _is_zero(value):
+                if indices is None or _is_zero(value):
+                    continue
+                bottom_row = _is_bottom_row_translation(indices[1], indices[2])
+                rotation_block = is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)
+                if not bottom_row and not rotation_block:
                     continue
                 values = values or local_values(tree)
-                if self._is_column_convention_pose(target, bool(indices[0]), values):
-                    self._report(target, indices[1], indices[2])
+                from_translation = self._comes_from_own_translation(target, indices[0], value, values)
+                if bottom_row and (from_translation or self._is_column_convention_pose(target, bool(indices[0]), values)):
+                    self._report_bottom_row(target, indices[2])
+                elif rotation_block and from_translation:
+                    self.report(
+                        target,
+                        f"`{ast.unparse(target)}` is the rotation block, but the value written into it comes from "
+                        f"the same pose's translation column; the translation is `[..., :3, 3]`",
+                        replacement=f"{ast.unparse(target.value)}[{subscript_indices_text(target)}:3, 3]",
+                        applicability="unsafe",
+                        fix_description="write into the translation column",
+                    )
+
+    def _comes_from_own_translation(
+        self, target: ast.Subscript, batch: list[ast.expr], value: ast.expr, values: LocalValues
+    ) -> bool:
+        """The value is (a mean, negation or scaling of) the same array's translation column `X[..., :3, 3]`."""
+        key = pose_key(target.value, values)
+        source = translation_source(value, values)
+        if source is None:
+            return False
+        return source.pose in (key, f"{key}[{stack_key(batch)}]") or source.pose.startswith(f"{key}[")
 
     def _is_column_convention_pose(self, target: ast.Subscript, stacked: bool, values: LocalValues) -> bool:
         shape = square_shape(target.value, values)
@@ -123,21 +160,24 @@ class TranslationInBottomRow(AstRule):
             return False
         base = target.value
         states_pose = False
+        reads_translation_column = False
+        row_layout = False
         for node in ast.walk(scope):
             if isinstance(node, ast.Subscript) and node is not target and same_code(node.value, base):
                 part = pose_part(node, values)
                 states_pose = states_pose or part is not None
+                reads_translation_column = reads_translation_column or (part is not None and part.kind == "translation")
                 if _writes_projective_corner(node, values):
                     return False  # M[3, 3] = d: a projection, whose bottom row is meant to be full
             transposed = transposed_operand(node) if isinstance(node, ast.expr) else None
             if transposed is not None and same_code(transposed, base):
-                return False  # built transposed (row-vector layout), then transposed into place
+                row_layout = True  # built transposed (row-vector layout), then transposed into place
             operands = matmul_operands(node)
             if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], values):
-                return False  # points_h @ T: the row-vector convention
-        return states_pose
+                row_layout = True  # points_h @ T: the row-vector convention
+        return states_pose and (reads_translation_column or not row_layout)
 
-    def _report(self, target: ast.Subscript, row: ast.expr, column: ast.expr) -> None:
+    def _report_bottom_row(self, target: ast.Subscript, column: ast.expr) -> None:
         replacement = None
         if is_slice_upto(column, 3):
             indices = subscript_indices_text(target)
