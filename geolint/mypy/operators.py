@@ -137,19 +137,33 @@ def _affine_outcome(api: CheckerPluginInterface, combination: affine.Combination
     return verdict
 
 
+class _LastAnswer:
+    """mypy asks the signature hook once per overload item of the same operation (the runtime's ``__matmul__``
+    has about ten): the answer for the previous item, reused while the operation is the same objects."""
+
+    key: tuple[object, ...] = ()
+    answer: tuple[Outcome | None, Type | None] = (None, None)
+
+
 def signature_hook(operator: str) -> Callable[[MethodSigContext], FunctionLike]:
     def hook(ctx: MethodSigContext) -> FunctionLike:
         operand_expr = _single_operand(ctx.args)
         if operand_expr is None and operator != "__neg__":
             return ctx.default_signature
         operand = _operand_type(ctx.api, operand_expr) if operand_expr is not None else None
-        receiver_is_left = _receiver_is_left(ctx.api, ctx.context, operand_expr, ctx.type)
-        result = outcome(operator, ctx.type, operand, receiver_is_left, ctx.context, ctx.api)
+        key = (ctx.context, operator, ctx.type, operand)
+        if len(key) == len(_LastAnswer.key) and all(a is b for a, b in zip(key, _LastAnswer.key)):
+            result, built = _LastAnswer.answer
+        else:
+            receiver_is_left = _receiver_is_left(ctx.api, ctx.context, operand_expr, ctx.type)
+            result = outcome(operator, ctx.type, operand, receiver_is_left, ctx.context, ctx.api)
+            built = geometry.build(ctx.api, result.result) if result is not None and result.result else None
+            _LastAnswer.key, _LastAnswer.answer = key, (result, built)
         if result is None or result.result is None and result.problem is None:
             return ctx.default_signature
         # Only rewrite when both operands are framed: then the plugin owns the answer (and its error).
         if operator not in SCALING_OPERATORS or result.problem is not None:
-            return _accepting(ctx.default_signature, operand, _built(ctx.api, result, ctx.default_signature))
+            return _accepting(ctx.default_signature, operand, built or _built(ctx.api, result, ctx.default_signature))
         return ctx.default_signature
 
     return hook
