@@ -295,7 +295,7 @@ class LocalValues:
         if len(found) > 1:
             if not self._dominates(statement, use):
                 return None
-            if any(self._reaches_back(other, use) for other, _ in found if not _ends_before(other, use)):
+            if any(self._reaches_back(other, use, statement) for other, _ in found if not _ends_before(other, use)):
                 return None
         return value
 
@@ -330,12 +330,14 @@ class LocalValues:
         block_owner = self.parents.get(statement)
         return block_owner is not None and any(ancestor is block_owner for ancestor in self.ancestors(use))
 
-    def _reaches_back(self, later: ast.stmt, use: ast.stmt) -> bool:
-        """A later assignment in a loop around `use` reaches it on the next iteration."""
+    def _reaches_back(self, later: ast.stmt, use: ast.stmt, chosen: ast.stmt) -> bool:
+        """A later assignment in a loop around `use` reaches it on the next iteration, unless the
+        chosen assignment (which dominates `use`) sits in that loop too and overwrites it first."""
         for loop in self.ancestors(use):
             if isinstance(loop, (ast.For, ast.AsyncFor, ast.While)):
                 if any(ancestor is loop for ancestor in self.ancestors(later)) or later is loop:
-                    return True
+                    if not any(ancestor is loop for ancestor in self.ancestors(chosen)):
+                        return True
         return False
 
 

@@ -85,6 +85,14 @@ def test_a_later_assignment_in_the_loop_reaches_the_next_iteration() -> None:
     assert values.value_of(read) is None
 
 
+def test_an_assignment_that_dominates_the_read_inside_the_loop_kills_the_back_edge() -> None:
+    source = "def f(T, xs):\n    for x in xs:\n        y = x - T[:3, 3]\n        y = y @ T[:3, :3]\n    return y\n"
+    tree = ast.parse(source)
+    values = LocalValues(tree)
+    read = tree.body[0].body[0].body[1].value.left  # type: ignore[attr-defined]
+    assert isinstance(values.value_of(read), ast.BinOp)
+
+
 def test_augmented_assignment_is_a_difference_of_the_previous_value() -> None:
     source = "def f(x, T):\n    x -= T[:3, 3]\n    return x\n"
     node, values = last_expression(source)
