@@ -293,7 +293,7 @@ class LocalValues:
             return None
         statement, value = before[-1]
         if len(found) > 1:
-            if not self._dominates(statement, use):
+            if not self.dominates(statement, use):
                 return None
             if any(self._reaches_back(other, use, statement) for other, _ in found if not _ends_before(other, use)):
                 return None
@@ -309,7 +309,7 @@ class LocalValues:
         before = [statement for statement, _ in found if _ends_before(statement, use)]
         if not before:
             return ("param", id(scope), name.id) if (id(scope), name.id) in self.parameters else ("free", name.id)
-        if len(found) == 1 or self._dominates(before[-1], use):
+        if len(found) == 1 or self.dominates(before[-1], use):
             return id(before[-1])
         return None
 
@@ -325,7 +325,7 @@ class LocalValues:
             depth -= 1
         return node
 
-    def _dominates(self, statement: ast.stmt, use: ast.stmt) -> bool:
+    def dominates(self, statement: ast.stmt, use: ast.stmt) -> bool:
         """`statement` runs whenever `use` does: it sits in a block that encloses `use`."""
         block_owner = self.parents.get(statement)
         return block_owner is not None and any(ancestor is block_owner for ancestor in self.ancestors(use))

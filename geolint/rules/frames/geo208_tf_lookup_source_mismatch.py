@@ -1,0 +1,152 @@
+"""GEO208 tf-lookup-source-mismatch: a looked-up transform applied to a message from another frame."""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.rules.base import AstRule, Invalid, Valid
+from geolint.rules.pose_parts import AllOf, LocalValues, call_name, local_values
+
+
+class TfLookupSourceMismatch(AstRule):
+    """A transform from `lookup_transform(target, source)` is applied to a message stamped in another frame.
+
+    ## What it does
+    Flags `do_transform_point/vector3/pose/pose_stamped/cloud(msg, transform)` where `transform`
+    comes from `buffer.lookup_transform(target, source, ...)` (tf2_ros `Buffer`) and the function
+    set `msg.header.frame_id` to a literal frame that is not `source`. Frames are compared as
+    literals (or module constants holding literals), leading slashes ignored.
+
+    ## Why is this bad?
+    `lookup_transform(target, source)` returns the transform that maps data expressed in `source`
+    into `target`. `do_transform_*` does not check the message's `header.frame_id`: it applies the
+    transform whatever frame the data is in and stamps the result with `target`, so data in any
+    other frame comes out silently wrong. Swapped target and source arguments are the usual cause.
+
+    ## Example
+    ```python
+    goal.header.frame_id = "base_link"
+    transform = buffer.lookup_transform("base_link", "map", rclpy.time.Time())
+    goal_in_map = do_transform_pose_stamped(goal, transform)
+    ```
+
+    ## Use instead
+    ```python
+    goal.header.frame_id = "base_link"
+    transform = buffer.lookup_transform("map", "base_link", rclpy.time.Time())
+    goal_in_map = do_transform_pose_stamped(goal, transform)
+    ```
+
+    ## Fix safety
+    There is no automatic fix: either the lookup's arguments or the message's frame is wrong.
+
+    ## Known problems
+    Only frames stated as literals in the same function are compared; a message received from a
+    topic, or frames read from parameters, are not checked. Prefer `buffer.transform(msg,
+    target)`, which looks up the message's own frame.
+    """
+
+    code = "GEO208"
+    name = "tf-lookup-source-mismatch"
+    triggers = AllOf(r"lookup_transform", r"do_transform_")
+
+    VALID = [
+        Valid(
+            "def f(buffer, p):\n    p.header.frame_id = 'camera'\n"
+            "    t = buffer.lookup_transform('map', 'camera', 0)\n    return do_transform_point(p, t)\n"
+        ),
+        Valid("def f(buffer, p):\n    t = buffer.lookup_transform('map', 'camera', 0)\n    return do_transform_point(p, t)\n"),
+        Valid(
+            "def f(buffer, p, frame):\n    p.header.frame_id = frame\n"
+            "    t = buffer.lookup_transform('map', 'camera', 0)\n    return do_transform_point(p, t)\n"
+        ),
+        Valid(
+            "def f(buffer, p):\n    p.header.frame_id = '/camera'\n"
+            "    t = buffer.lookup_transform('map', 'camera', 0)\n    return do_transform_point(p, t)\n"
+        ),
+    ]
+    INVALID = [
+        Invalid(
+            "def f(buffer, goal):\n    goal.header.frame_id = 'base_link'\n"
+            "    t = buffer.lookup_transform('base_link', 'map', 0)\n    return do_transform_pose_stamped(goal, t)\n"
+        ),
+        Invalid(
+            "CAMERA = 'camera_optical'\nMAP = 'map'\ndef f(buffer, p):\n    p.header.frame_id = CAMERA\n"
+            "    t = buffer.lookup_transform(MAP, 'camera_link', 0)\n    return tf2_geometry_msgs.do_transform_point(p, t)\n"
+        ),
+    ]
+
+    def check(self, tree: ast.Module) -> None:
+        values = local_values(tree)
+        for node in values.nodes:
+            if not (isinstance(node, ast.Call) and (call_name(node) or "").startswith("do_transform_") and len(node.args) >= 2):
+                continue
+            message, transform = node.args[0], node.args[1]
+            if not isinstance(message, ast.Name) or not isinstance(transform, ast.Name):
+                continue
+            lookup = values.resolve(transform)
+            if not (isinstance(lookup, ast.Call) and call_name(lookup) == "lookup_transform" and len(lookup.args) >= 2):
+                continue
+            source = _literal(lookup.args[1], values)
+            stamped = self._frame_set_before(message, node, values)
+            if source is None or stamped is None or stamped.lstrip("/") == source.lstrip("/"):
+                continue
+            target = _literal(lookup.args[0], values)
+            self.report(
+                node,
+                f"`{message.id}` is stamped in {stamped!r}, but `{transform.id}` is "
+                f"lookup_transform({target!r}, {source!r}): it maps data from {source!r}, so "
+                f"`{call_name(node)}` moves `{message.id}` from the wrong frame (swapped lookup arguments?)",
+            )
+
+    def _frame_set_before(self, message: ast.Name, call: ast.Call, values: LocalValues) -> str | None:
+        """The literal of the last `message.header.frame_id = ...` before the call, in its function."""
+        scope = values.scope_of(call)
+        if scope is None:
+            return None
+        position = (call.lineno, call.col_offset)
+        found: tuple[tuple[int, int], ast.expr] | None = None
+        for node in ast.walk(scope):
+            if not isinstance(node, ast.Assign) or len(node.targets) != 1:
+                continue
+            target = node.targets[0]
+            if (
+                isinstance(target, ast.Attribute)
+                and target.attr == "frame_id"
+                and isinstance(target.value, ast.Attribute)
+                and target.value.attr == "header"
+                and isinstance(target.value.value, ast.Name)
+                and target.value.value.id == message.id
+                and (node.lineno, node.col_offset) < position
+                and values.scope_of(node) is scope
+            ):
+                if found is None or (node.lineno, node.col_offset) > found[0]:
+                    found = ((node.lineno, node.col_offset), node.value)
+        if found is None or values.statement_of(call) is None:
+            return None
+        # The assignment must run whenever the call does (same block or an enclosing one).
+        assignment = values.statement_of(found[1])
+        if assignment is None or not values.dominates(assignment, values.statement_of(call)):
+            return None
+        return _literal(found[1], values)
+
+
+def _literal(node: ast.expr, values: LocalValues) -> str | None:
+    """A string literal, or a name that certainly holds one (a module constant)."""
+    if isinstance(node, ast.Name):
+        resolved = values.resolve(node)
+        if isinstance(resolved, ast.Name):
+            resolved = _module_constant(node, values)
+        node = resolved if isinstance(resolved, ast.expr) else node
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    return None
+
+
+def _module_constant(name: ast.Name, values: LocalValues) -> ast.expr | None:
+    """A module-level name assigned exactly once."""
+    module = values.nodes[0]
+    found = values.assignments(module, name.id)  # type: ignore[arg-type]
+    if len(found) == 1 and isinstance(found[0][1], ast.expr):
+        return found[0][1]
+    return None
