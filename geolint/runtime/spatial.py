@@ -195,11 +195,12 @@ class Covariance(FramedKind, Generic[F]):
             # widen the tolerance for the others.
             scale = np.maximum(np.abs(s).max(axis=(-2, -1)), 1.0)
             asymmetry = np.abs(s - np.swapaxes(s, -1, -2)).max(axis=(-2, -1))
-            worst = np.atleast_1d(asymmetry / scale).argmax()
-            if np.atleast_1d(asymmetry)[worst] > tolerance * np.atleast_1d(scale)[worst]:
-                where = f" (matrix {worst} of the batch)" if s.ndim == 3 else ""
+            most_asymmetric = int(np.atleast_1d(asymmetry / scale).argmax())
+            if np.atleast_1d(asymmetry)[most_asymmetric] > tolerance * np.atleast_1d(scale)[most_asymmetric]:
+                where = f" (matrix {most_asymmetric} of the batch)" if s.ndim == 3 else ""
                 raise GeometryValueError(
-                    f"{owner}: a covariance is symmetric; max |S - S^T| = {np.atleast_1d(asymmetry)[worst]:.3g}{where}"
+                    f"{owner}: a covariance is symmetric; max |S - S^T| = "
+                    f"{np.atleast_1d(asymmetry)[most_asymmetric]:.3g}{where}"
                 )
             lowest = np.atleast_1d(np.linalg.eigvalsh(s).min(axis=-1) / scale)
             worst = int(lowest.argmin())
