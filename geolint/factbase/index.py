@@ -272,7 +272,7 @@ class ModuleIndex:
 
     def code_of(self, node: ast.AST) -> str:
         """The source text of a node (normalised to one line when it spans several)."""
-        segment = ast.get_source_segment(self.source, node) if hasattr(node, "lineno") else None
+        segment = self._source_segment(node)
         if segment is None:
             try:
                 return ast.unparse(node)
@@ -282,7 +282,30 @@ class ModuleIndex:
 
     def segment(self, node: ast.AST) -> str:
         """The exact source text of a node's span (what a replacement replaces)."""
-        return ast.get_source_segment(self.source, node) or ""
+        return self._source_segment(node) or ""
+
+    def _source_segment(self, node: ast.AST) -> str | None:
+        """`ast.get_source_segment` on lines split once per module (it re-splits the whole source on
+        every call, which made a module with many findings quadratic in its size)."""
+        try:
+            first, last = node.lineno - 1, node.end_lineno - 1  # type: ignore[attr-defined, operator]
+            start, end = node.col_offset, node.end_col_offset  # type: ignore[attr-defined]
+        except (AttributeError, TypeError):
+            return None
+        if end is None:
+            return None
+        lines = self.__dict__.get("_lines")
+        if lines is None:
+            from geolint.engine import split_lines  # \n, \r\n and \r, not \f: as ast counts lines
+
+            lines = self.__dict__["_lines"] = split_lines(self.source)
+        if not 0 <= first <= last < len(lines):
+            return None
+        if first == last:
+            return lines[first].encode()[start:end].decode(errors="replace")
+        head = lines[first].encode()[start:].decode(errors="replace")
+        tail = lines[last].encode()[:end].decode(errors="replace")
+        return "".join([head, *lines[first + 1 : last], tail])
 
 
 # Nodes nothing asks about (`Load`, `Add`...): not indexed, not walked.

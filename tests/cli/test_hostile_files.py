@@ -114,3 +114,22 @@ def test_no_all_checks_passed_after_an_internal_error(cli):
     assert "internal error" in result.stderr
     assert "All checks passed." not in result.stderr + result.stdout
     assert "1 file could not be checked" in result.stderr + result.stdout
+
+
+def test_analysis_time_grows_linearly_with_the_file():
+    """Four copies of the fixtures cost about four times one copy (it was quadratic: 10x)."""
+    from pathlib import Path
+
+    from geolint import api
+
+    fixtures = Path(__file__).resolve().parents[2] / "fixtures"
+    unit = "\n".join(path.read_text(encoding="utf-8") for path in sorted(fixtures.glob("*.py")))
+
+    def cpu_seconds(text: str) -> float:
+        started = time.process_time()
+        api.lint_text(text, "copies.py")
+        return time.process_time() - started
+
+    cpu_seconds(unit)  # warm up: imports, caches
+    once, four_times = cpu_seconds(unit), cpu_seconds(unit * 4)
+    assert four_times < 7 * once, f"1 copy {once:.2f} s, 4 copies {four_times:.2f} s"
