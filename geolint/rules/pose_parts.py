@@ -776,7 +776,7 @@ def difference_with(node: ast.expr, values: LocalValues, depth: int = 6) -> tupl
 # Matrix shapes
 
 
-_ROTATION_MAKERS = frozenset(
+ROTATION_MAKERS = frozenset(
     {"quat2mat", "euler2mat", "axangle2mat", "quaternion_to_matrix", "euler_angles_to_matrix",
      "axis_angle_to_matrix", "matrix_from_quaternion", "matrix_from_euler", "active_matrix_from_angle",
      "matrix_from_axis_angle"}
@@ -857,7 +857,7 @@ def square_shape(node: ast.expr, values: LocalValues, depth: int = 8) -> tuple[i
             if isinstance(shape, (ast.Tuple, ast.List)):
                 return _square_of_sizes([int_value(element) for element in shape.elts])
             return _square_of_sizes([int_value(argument) for argument in node.args])
-        if name in _ROTATION_MAKERS:
+        if name in ROTATION_MAKERS:
             return (3, False) if not _stacks(node) else None
         if name in _POSE_MAKERS and _is_tf_style_maker(node):
             return (4, False)

@@ -56,7 +56,7 @@ class InvalidTfFrameId(AstRule):
 
     code = "GEO207"
     name = "invalid-tf-frame-id"
-    triggers = AllOf(r"\btf2_ros\b|\brclpy\b", r"frame|lookup_transform|can_transform")
+    triggers = AllOf(r"tf2_ros|rclpy", r"frame|lookup_transform|can_transform")
 
     VALID = [
         Valid("import tf2_ros\nt = buffer.lookup_transform('map', 'base_link', stamp)\n"),

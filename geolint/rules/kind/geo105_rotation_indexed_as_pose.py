@@ -5,7 +5,16 @@ from __future__ import annotations
 import ast
 
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import AllOf, LocalValues, int_value, local_values, matrix_shape, subscript_indices
+from geolint.rules.pose_parts import (
+    ROTATION_MAKERS,
+    AllOf,
+    LocalValues,
+    call_name,
+    int_value,
+    local_values,
+    matrix_shape,
+    subscript_indices,
+)
 
 
 class RotationIndexedAsPose(AstRule):
@@ -73,11 +82,18 @@ class RotationIndexedAsPose(AstRule):
 
     def check(self, tree: ast.Module) -> None:
         values: LocalValues | None = None
+        candidates: list[ast.Subscript] = []
+        square_names: set[str] = set()  # names some assignment may make 3x3 (a cheap first cut)
         for node in ast.walk(tree):
+            if isinstance(node, ast.Assign) and _may_make_square(node.value):
+                square_names.update(target.id for target in node.targets if isinstance(target, ast.Name))
             if not isinstance(node, ast.Subscript) or not isinstance(node.value, ast.Name):
                 continue
             indices = subscript_indices(node)
-            if not any(_past_third(index) for index in indices[:2]) or len(indices) > 2:
+            if len(indices) <= 2 and any(_past_third(index) for index in indices[:2]):
+                candidates.append(node)
+        for node in candidates:
+            if node.value.id not in square_names:  # type: ignore[attr-defined]
                 continue
             values = values or local_values(tree)
             if matrix_shape(node.value, values) != 3 or _resized_in_place(node.value, values):
@@ -87,6 +103,22 @@ class RotationIndexedAsPose(AstRule):
                 f"`{node.value.id}` is a 3x3 rotation, but `{ast.unparse(node)}` indexes it as a 4x4 pose "
                 "(there is no row or column 3): use the 4x4 pose it came from, or build one",
             )
+
+
+_SQUARE_CALLS = frozenset({"eye", "identity", "zeros", "empty", "array", "asarray", "tensor", "reshape", "Rodrigues"}) | ROTATION_MAKERS
+
+
+def _may_make_square(value: ast.expr) -> bool:
+    """A cheap first cut of `matrix_shape`: a 3x3 maker, a copy or transpose of one, a slice, a literal, an alias."""
+    while isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute) and call_name(value) not in _SQUARE_CALLS:
+        value = value.func.value  # R.copy(), R.T.astype(...)
+    while isinstance(value, ast.Attribute) and value.attr in ("T", "mT"):
+        value = value.value
+    if isinstance(value, ast.Call):
+        return call_name(value) in _SQUARE_CALLS
+    if isinstance(value, ast.Attribute):
+        return value.attr == "rotation_matrix"
+    return isinstance(value, (ast.Subscript, ast.List, ast.Name))
 
 
 def _past_third(index: ast.expr) -> bool:
