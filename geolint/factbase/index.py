@@ -97,7 +97,7 @@ class ModuleIndex:
         parents = self.parents
         scope_of = self.scope_of_node
         record = self._record
-        iter_fields = ast.iter_fields
+        child_fields = _CHILD_FIELDS
         # (node, scope the node's code runs in); an explicit stack, so depth costs no recursion
         stack: list[tuple[ast.AST, Scope]] = [(self.tree, root)]
         pop, push = stack.pop, stack.append
@@ -110,11 +110,19 @@ class ModuleIndex:
                 by_type[kind] = [node]
             else:
                 bucket.append(node)
+            if kind in _NO_CHILDREN:
+                continue
             inner = record(node, scope) if kind in _RECORDED else scope
             makes_scope = kind in _SCOPE_MAKERS
             children = []
-            for _, value in iter_fields(node):
-                if isinstance(value, list):
+            fields = child_fields.get(kind)
+            if fields is None:
+                fields = child_fields[kind] = tuple(f for f in kind._fields if f not in _NOT_CHILD_FIELDS)
+            for name in fields:
+                value = getattr(node, name, None)
+                if value is None:
+                    continue
+                if type(value) is list:
                     for child in value:
                         if isinstance(child, ast.AST) and type(child) not in _LEAVES:
                             children.append(child)
@@ -313,6 +321,13 @@ _LEAVES = frozenset(
     {ast.Load, ast.Store, ast.Del, *ast.operator.__subclasses__(), *ast.unaryop.__subclasses__(),
      *ast.cmpop.__subclasses__(), *ast.boolop.__subclasses__()}
 )  # fmt: skip
+# Nodes without child nodes worth walking (`Name`'s only child is its `Load`).
+_NO_CHILDREN = frozenset({ast.Name, ast.Constant, ast.alias, ast.Pass, ast.Break, ast.Continue})
+# Fields that never hold a node (or hold only `_LEAVES`): skipped without a look.
+_NOT_CHILD_FIELDS = frozenset(
+    {"ctx", "op", "id", "attr", "arg", "name", "kind", "type_comment", "level", "module", "asname", "is_async", "conversion", "simple"}
+)
+_CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
 _SCOPE_MAKERS = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 # Nodes `_record` has something to say about.
 _RECORDED = _SCOPE_MAKERS | {

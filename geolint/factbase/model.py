@@ -434,11 +434,24 @@ class FactBase:
         summary = self.function_summary(node)
         return None if summary is None else summary.returns
 
+    def may_have_summary(self, call: ast.Call) -> bool:
+        """A cheap test: whether the callee can be a function of this module or of a project module."""
+        func = call.func
+        if isinstance(func, ast.Name):
+            return func.id in self.index.functions or (self.cross_module and func.id in self.index.imports)
+        head = dotted_name(func)
+        if head is None or not self.cross_module:
+            return False
+        root = head.split(".")[0]
+        return root in self.index.imports and self.index.imports[root].split(".")[0] not in vocab.THIRD_PARTY_ROOTS
+
     def function_summary(self, call: ast.Call) -> FunctionSummary | None:
         """What the called helper does (a function of this module, or of a project module it imports)."""
         return self._cached("summary", call, lambda: self._function_summary(call))
 
     def _function_summary(self, call: ast.Call) -> FunctionSummary | None:
+        if not self.may_have_summary(call):
+            return None
         func = call.func
         if isinstance(func, ast.Name) and func.id in self.index.functions:
             return self._summary_of(self, self.index.functions[func.id])
@@ -877,13 +890,34 @@ class FactBase:
                 base = self._components_of_one_array(elements[:3])
                 if base is not None:
                     return self._with_w(node, base, elements[3])
-        if isinstance(node.func, (ast.Name, ast.Attribute)) and not self.is_array_call(node.func, *_ARRAY_BUILDERS):
+        if (
+            isinstance(node.func, (ast.Name, ast.Attribute))
+            and self._feeds_a_product(node)  # only then is a helper's w worth looking up
+            and not self.is_array_call(node.func, *_ARRAY_BUILDERS)
+        ):
             summary = self.function_summary(node)
             if summary is not None and summary.homogenizes:
                 index, w = next(iter(summary.homogenizes.items()))
                 if index < len(positional):  # `to_homogeneous(normals)`: the helper appends w
                     return Homogeneous(inner=positional[index], w=w, construction=node, fixed=None, explicit=True)
         return None
+
+    def _feeds_a_product(self, node: ast.AST) -> bool:
+        """Whether a value is a matrix product's operand, directly (through `.T`) or through the
+        name it is assigned to, or is stored under a homogeneous name (`p_h`)."""
+        parent = self.parent(node)
+        while parent is not None and transposed_value(parent) is node:
+            node, parent = parent, self.parent(parent)
+        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
+            return True
+        if isinstance(parent, ast.Call) and self.matmul(parent) is not None:
+            return True
+        if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name):
+            target = parent.targets[0].id
+            if set(target.lower().split("_")) & {"h", "hom", "homog", "homogeneous", "homo"}:
+                return True
+            return target in self.index.scope_of(parent).matmul_operands
+        return False
 
     def _last_axis(self, call: ast.Call) -> bool:
         """Whether a concatenation joins along the last axis (`axis=-1`/`dim=-1`/`axis=1`, or hstack/column_stack)."""

@@ -108,10 +108,14 @@ class DirectionTranslated(FactRule):
     def _check_helper_call(self, node: ast.Call) -> None:
         """`apply_pose(T, normals)` where the helper (here or in an imported project module) does `R @ x + t`."""
         facts = self.facts
+        if not facts.may_have_summary(node):
+            return
+        positional = positional_args(node)
+        if not any(facts.is_free(arg) for arg in positional[:4]):
+            return  # only a direction passed in makes the helper's body worth reading
         summary = facts.function_summary(node)
         if summary is None or not summary.translates:
             return
-        positional = positional_args(node)
         for index in sorted(summary.translates):
             if index < len(positional) and facts.is_free(positional[index]):
                 helper = self.code_of(node.func)
@@ -198,6 +202,8 @@ class DirectionTranslated(FactRule):
     def _check_library_call(self, node: ast.Call) -> None:
         facts = self.facts
         name = last_name(node.func)
+        if name not in ("transform_points", "vector_to_point"):
+            return
         positional = positional_args(node)
         if not positional or not facts.is_free(positional[0]):
             return

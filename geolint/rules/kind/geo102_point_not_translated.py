@@ -149,6 +149,8 @@ class PointNotTranslated(FactRule):
     def _check_library_call(self, node: ast.Call) -> None:
         facts = self.facts
         name = last_name(node.func)
+        if name not in ("transform_points", "vector_to_direction"):
+            return
         positional = positional_args(node)
         if not positional or facts.kind_of(positional[0]) != Kind.POINT:
             return
