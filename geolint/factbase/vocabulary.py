@@ -92,23 +92,25 @@ DECLARING_ATTRIBUTE_SOURCES = {
 # --- the gate ---------------------------------------------------------------------------------
 
 _GATE_WORDS = sorted(
-    names.DIRECTION_WORDS
-    | names.POINT_WORDS
-    | DIRECTION_ATTRIBUTES
+    # point names: GEO103 needs nothing but `+` of two of them, GEO102 a w = 0 pad of one;
+    # direction names need a product, a `_h` name or a library call, all gated on their own
+    names.POINT_WORDS
     | POINT_ATTRIBUTES
-    | UNIT_FUNCTIONS
     | set(EXTRINSICS_TOKENS)
     | set(DECLARING_ATTRIBUTES)
-    | {"cross", "quat", "quaternion", "euler", "rpy", "rotvec", "axangle", "sin", "cos", "tan"}
-    | {"transform_points", "vector_to_point", "vector_to_direction", "do_transform_cloud", "matrix_world"}
-    | {"from_frame", "to_frame", "as_frames", "lookup_transform", "lookupTransform", "Frame", "SE3", "Quaternion"}
-    | {"inv", "inverse", "pinv", "Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz"}
+    | {"quat", "quaternion", "euler", "rotvec", "axangle", "rpy", "Quaternion", "Rx", "Ry", "Rz", "RPY", "Eul"}
+    | {"rotx", "roty", "rotz", "transform_points", "vector_to_point", "vector_to_direction", "do_transform_cloud"}
+    | {"matrix_world", "from_frame", "to_frame", "as_frames", "lookup_transform", "lookupTransform", "Frame", "SE3"}
 )
-# Structure every rule needs one of (a product, a transpose, a frame-naming shape: `T_a_b`, `a_T_b`,
-# `X_WB`, `a2b`, `a_from_b`, `p_world`), or one of the vocabulary's words as a word part of a name.
+_FRAME_WORDS = "|".join(sorted(names.KNOWN_FRAMES | {"c", "w", "cam"}))
+# Structure every rule needs one of: a matrix product (not a decorator), a transpose, a frame-naming
+# shape built from the known frame words (`T_a_b`, `a_T_b`, `X_WB`, `cam2world`, `world_from_cam`,
+# `p_world`), a homogeneous name (`p_h`), trig of something, or one of the words above in a name.
 GATE = re.compile(
-    r"@|\.dot\(|matmul|\.T\b|\b[TRXH]_[A-Za-z0-9]|_[TRXH]_|[a-z0-9]2[a-z]|_(?:from|to|in)_|\b[pv]_[A-Za-z]|"
-    r"(?:\b|_)(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_)",
+    r"[\w)\]]\s*@=?\s*[\w(\[-]|\.dot\(|matmul|\.m?T\b|\b[TRXH]_[A-Za-z0-9]|_[TRXH]_|"
+    rf"\b(?:{_FRAME_WORDS})[0-9]*(?:2|_to_|_from_|_in_)(?:{_FRAME_WORDS})|\b[pv]_(?:{_FRAME_WORDS})\b|"
+    r"_h\b|_hom|homog|\b(?:sin|cos|tan)\(|euler2|axangle2|_from_angle\(|"
+    r"(?:\b|_)(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_|s\b)",
 )
 
 

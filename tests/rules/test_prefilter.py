@@ -63,8 +63,16 @@ def test_gate_is_derived_from_the_vocabulary() -> None:
     from geolint.factbase import vocabulary
     from geolint.semantic import names
 
-    for word in (*vocabulary.UNIT_FUNCTIONS, *names.DIRECTION_WORDS, *names.POINT_WORDS, *vocabulary.EXTRINSICS_TOKENS):
+    for word in (*names.POINT_WORDS, *vocabulary.POINT_ATTRIBUTES, *vocabulary.EXTRINSICS_TOKENS):
         assert vocabulary.may_hold_geometry(f"x = {word}\n"), word
+    for shape in ("T_world_cam", "world_T_cam", "cam2world", "world_from_cam", "p_world", "normal_h", "a @ b"):
+        assert vocabulary.may_hold_geometry(f"x = {shape}\n"), shape
+
+
+def test_decorators_and_conv2d_are_not_geometry() -> None:
+    from geolint.factbase import vocabulary
+
+    assert not vocabulary.may_hold_geometry("@property\ndef f(self):\n    return nn.Conv2d(3, 8, 3)(x)\n")
 
 
 def test_config_words_widen_the_gate() -> None:

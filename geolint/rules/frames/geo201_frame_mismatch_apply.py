@@ -36,6 +36,10 @@ class FrameMismatchApply(ProductRule):
 
     ## Options
     `naming` switches conventions on and off; `frame-aliases` declares synonyms (cam = camera).
+    `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` reads (dst-first maps b into a,
+    src-first maps a into b); `"auto"`, the default, learns it from the project's `from_frame=`/
+    `to_frame=` declarations and compositions. Where nothing decides, only what is wrong in both
+    readings is reported; where the project declares both orders, such names alone are no evidence.
     """
 
     code = "GEO201"

@@ -32,6 +32,15 @@ class FrameMismatchAssign(FactRule):
     T_cam_world = np.linalg.inv(T_world_cam)
     ```
 
+    ## Options
+    `[tool.geolint] naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read:
+    dst-first maps b into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"`
+    (the default) the order is learned from the project: `from_frame=`/`to_frame=` declarations
+    bound to such names, then the consistency of its compositions. Where nothing decides, the rule
+    reports only what is wrong in both readings; where the project declares both orders, such names
+    alone are not evidence. Names whose direction is in words (`a_from_b`, `a2b`, `c2w`, `X_AB`) and
+    explicit declarations (`from_frame=`, `lookup_transform(target, source, t)`) always count.
+
     ## Fix safety
     No fix is offered.
     """
