@@ -123,8 +123,16 @@ class Gate:
 
     description = "mentions geometry: a product, a transpose, a frame-naming shape or a geometry word"
 
+    def __init__(self) -> None:
+        self._last: tuple[str, bool] | None = None  # every rule asks about the same text in a row
+
     def search(self, source: str) -> bool:
-        return GATE.search(source) is not None
+        last = self._last
+        if last is not None and last[0] is source:
+            return last[1]
+        found = GATE.search(source) is not None
+        self._last = (source, found)
+        return found
 
     def search_with(self, source: str, config: object) -> bool:
         if self.search(source):

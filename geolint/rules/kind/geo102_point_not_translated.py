@@ -143,8 +143,11 @@ class PointNotTranslated(FactRule):
             return True
         if re.fullmatch(r"[\w.]+", matrix):
             return False
-        column = rf"{re.escape(matrix)}\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]"  # `poses[i][:3, 3]`
-        return re.search(column, _scope_text(self.facts, scope_node)) is not None
+        key = (id(scope_node), matrix)
+        if key not in cache:
+            column = rf"{re.escape(matrix)}\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]"  # `poses[i][:3, 3]`
+            cache[key] = re.search(column, _scope_text(self.facts, scope_node)) is not None
+        return cache[key]  # type: ignore[no-any-return]
 
     def _check_library_call(self, node: ast.Call) -> None:
         facts = self.facts
