@@ -114,26 +114,3 @@ def test_no_all_checks_passed_after_an_internal_error(cli):
     assert "internal error" in result.stderr
     assert "All checks passed." not in result.stderr + result.stdout
     assert "1 file could not be checked" in result.stderr + result.stdout
-
-
-def test_analysis_time_grows_linearly_with_the_file():
-    """Six copies of the fixtures cost about six times one copy (it was quadratic: about 25x)."""
-    from pathlib import Path
-
-    from geolint import api
-
-    fixtures = Path(__file__).resolve().parents[2] / "fixtures"
-    unit = "\n".join(path.read_text(encoding="utf-8") for path in sorted(fixtures.glob("*.py")))
-
-    runs = iter(range(100))
-
-    def cpu_seconds(text: str) -> float:
-        text += f"\n# run {next(runs)}\n"  # a new text each time: nothing answered from a cache
-        started = time.process_time()  # this process's CPU only: other load on the machine does not count
-        api.lint_text(text, "copies.py")
-        return time.process_time() - started
-
-    cpu_seconds(unit)  # warm up: imports
-    once = min(cpu_seconds(unit) for _ in range(3))
-    six_times = cpu_seconds(unit * 6)
-    assert six_times < 12 * once, f"1 copy {once:.2f} s, 6 copies {six_times:.2f} s"
