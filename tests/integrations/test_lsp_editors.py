@@ -207,7 +207,9 @@ def cpu_seconds(pid: int) -> float:
 @pytest.mark.asyncio
 async def test_a_cancelled_pull_stops_its_lint(client: RecordingClient, tmp_path: Path) -> None:
     await start(client, PULL, debounce=0)
-    uri = open_doc(client, tmp_path / "big.py", source_with(600))
+    # About 900,000 characters (under the default max-file-size): a lint of a couple of seconds on
+    # an idle machine, so it is still running when the cancel arrives.
+    uri = open_doc(client, tmp_path / "big.py", source_with(5000))
     request = asyncio.ensure_future(
         client.protocol.send_request_async(types.TEXT_DOCUMENT_DIAGNOSTIC, pull_params(uri), msg_id="big-pull")
     )
