@@ -912,12 +912,17 @@ class FactBase:
             return True
         if isinstance(parent, ast.Call) and self.matmul(parent) is not None:
             return True
-        if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name):
-            target = parent.targets[0].id
-            if set(target.lower().split("_")) & {"h", "hom", "homog", "homogeneous", "homo"}:
-                return True
-            return target in self.index.scope_of(parent).matmul_operands
-        return False
+        return self._stored_for_a_product(parent)
+
+    def _stored_for_a_product(self, parent: ast.AST | None) -> bool:
+        """Whether `parent` assigns a value to one name that says it is homogeneous (`p_h`) or that
+        its scope later uses as a matrix product's operand."""
+        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+            return False
+        target = parent.targets[0].id
+        if set(target.lower().split("_")) & {"h", "hom", "homog", "homogeneous", "homo"}:
+            return True
+        return target in self.index.scope_of(parent).matmul_operands
 
     def _last_axis(self, call: ast.Call) -> bool:
         """Whether a concatenation joins along the last axis (`axis=-1`/`dim=-1`/`axis=1`, or hstack/column_stack)."""
@@ -971,12 +976,7 @@ class FactBase:
             return True
         if isinstance(parent, ast.Call) and node in parent.args and self.matmul(parent) is not None:
             return True
-        if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name):
-            target = parent.targets[0].id
-            if set(target.lower().split("_")) & {"h", "hom", "homog", "homogeneous", "homo"}:
-                return True
-            return target in self.index.scope_of(parent).matmul_operands
-        return False
+        return self._stored_for_a_product(parent)
 
     def _filled_buffer(self, name: ast.Name, value: ast.expr) -> Homogeneous | None:
         """`h = np.ones(4); h[:3] = x` (or `np.ones((n, 4)); h[:, :3] = x`): homogeneous x with w = 1."""
