@@ -381,11 +381,10 @@ async def test_a_large_file_is_linted_off_the_main_loop(client: RecordingClient,
     await start(client, PULL)
     big_text = BUGGY + "".join(
         f"\n\ndef step_{i}(R_world_cam, normal_cam, t_world_cam):\n    return R_world_cam @ normal_cam + t_world_cam\n"
-        for i in range(1200)
+        for i in range(6000)
     )
     small = open_doc(client, tmp_path / "small.py", CLEAN)
     big = open_doc(client, tmp_path / "big.py", big_text)
-    started = time.monotonic()
     big_request = asyncio.ensure_future(
         client.text_document_diagnostic_async(
             types.DocumentDiagnosticParams(text_document=types.TextDocumentIdentifier(uri=big))
@@ -395,13 +394,13 @@ async def test_a_large_file_is_linted_off_the_main_loop(client: RecordingClient,
     small_report = await client.text_document_diagnostic_async(
         types.DocumentDiagnosticParams(text_document=types.TextDocumentIdentifier(uri=small))
     )
-    small_done = time.monotonic() - started
+    # The behaviour under test is the order of the answers: the small file's comes back
+    # while the big one is still being linted. No wall-clock ratio, which a loaded CI
+    # machine makes flaky.
     assert not big_request.done(), "the big file linted too fast to tell anything; make it bigger"
     big_report = await big_request
-    big_done = time.monotonic() - started
     assert list(small_report.items) == []
-    assert len([d for d in big_report.items if d.code == "GEO101"]) >= 1200
-    assert small_done < big_done / 2
+    assert len([d for d in big_report.items if d.code == "GEO101"]) >= 6000
 
 
 @needs_rules
