@@ -552,6 +552,8 @@ class FactBase:
             qualified = self.qualified_name(binding.func) or ""
             if name in ("len", "int", "float", "str", "bool", "range", "round", "abs", "sum", "max", "min"):
                 return isinstance(binding.func, ast.Name)
+            if qualified in vocab.FEATURE_FUNCTIONS:
+                return True  # a feature map sampled at points, not their coordinates
             return ".random." in f".{qualified}." or qualified.startswith("random.")
         if isinstance(binding, ast.BinOp) and isinstance(binding.op, (ast.Div, ast.Mult, ast.FloorDiv, ast.Mod, ast.Pow)):
             # `velocity = distance / dt`: a ratio of two things that are not geometry

@@ -52,6 +52,18 @@ INVERSE_METHODS = frozenset({"inv", "inverse", "Inverse", "inverted", "inverse_t
 # Joins along the last axis that can append a w column (`torch.cat([x, ones], dim=-1)`).
 STACKING_FUNCTIONS = frozenset({"hstack", "column_stack", "concatenate", "cat", "concat"})
 
+# Learned-feature operations: their results are feature maps sampled at or pooled over points,
+# never coordinates, whatever the variable is called (`tpv_pts = F.grid_sample(plane, loc)`).
+FEATURE_FUNCTIONS = frozenset(
+    f"torch.nn.functional.{name}"
+    for name in (
+        "grid_sample", "interpolate", "conv1d", "conv2d", "conv3d", "conv_transpose2d", "linear", "relu",
+        "leaky_relu", "gelu", "silu", "sigmoid", "softmax", "log_softmax", "embedding", "layer_norm",
+        "batch_norm", "group_norm", "dropout", "max_pool1d", "max_pool2d", "max_pool3d", "avg_pool2d",
+        "adaptive_avg_pool2d", "adaptive_max_pool1d", "scaled_dot_product_attention",
+    )
+)  # fmt: skip
+
 # Library calls whose result kind is fixed, by qualified name.
 LIBRARY_KINDS: dict[str, Kind] = {
     "scipy.spatial.transform.Rotation.as_matrix": Kind.ROTATION,

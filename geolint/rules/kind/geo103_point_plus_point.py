@@ -22,7 +22,10 @@ def _name_tokens(node: ast.AST) -> set[str]:
 
 
 def _is_collection(node: ast.AST) -> bool:
-    """`points`, `mesh.vertices`, `pts_world`: many positions, not one."""
+    """`points`, `mesh.vertices`, `pts_world`: many positions, not one. `grid_points[0]` is one of
+    them (an anchor such as a grid's corner: `local + grid_points[0]` moves local coordinates)."""
+    if isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Constant) and isinstance(node.slice.value, int):
+        return False
     return bool(_COLLECTION_WORDS & _name_tokens(node))
 
 
@@ -79,6 +82,14 @@ class PointPlusPoint(FactRule):
         Valid("mirrored = current_pos + current_pos - last_control\n"),  # 2a - b: an affine reflection
         Valid("rotated = points[start:] + points[:start]\n"),  # sequence concatenation
         Valid("curve = current_pt + points\n"),  # a collection and a position: concatenation or offset
+        Valid("verts = marching_verts + grid_points[0]\n"),  # local coordinates moved to the grid's corner
+        Valid(
+            "import torch.nn.functional as F\n"
+            "def fuse(plane_a, plane_b, loc):\n"
+            "    a_pts = F.grid_sample(plane_a, loc)\n"
+            "    b_pts = F.grid_sample(plane_b, loc)\n"
+            "    return a_pts + b_pts\n"
+        ),  # features sampled at points, summed: not coordinates
         Valid("self._pos = max(0, self._pos + pos)\n"),  # a file offset
         Valid("point = expr.point + point\n"),  # sympy: tuples of coordinates, concatenated
     ]
