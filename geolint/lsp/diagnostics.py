@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from typing import Sequence
 
 from lsprotocol import types
@@ -25,7 +26,29 @@ def finding_range(finding: Finding, lines: Sequence[str], codec: PositionCodec) 
     return to_lsp_range(lines, codec, finding.line, finding.column, finding.end_line, finding.end_column)
 
 
-def to_diagnostic(finding: Finding, lines: Sequence[str], codec: PositionCodec) -> types.Diagnostic:
+_AT_LINE = re.compile(r"\bat line (\d+)\b")
+
+
+def evidence_information(
+    finding: Finding, uri: str, lines: Sequence[str], codec: PositionCodec
+) -> list[types.DiagnosticRelatedInformation] | None:
+    """Why the rule believes it, as related information: an item that names a line ("from_frame=
+    'obj' at line 12") points there, the others at the finding itself."""
+    if not finding.evidence:
+        return None
+    related = []
+    for item in finding.evidence:
+        stated = _AT_LINE.search(item)
+        line = int(stated.group(1)) if stated else 0
+        if 1 <= line <= len(lines):
+            where = to_lsp_range(lines, codec, line, 1, line, len(lines[line - 1].rstrip("\r\n")) + 1)
+        else:
+            where = finding_range(finding, lines, codec)
+        related.append(types.DiagnosticRelatedInformation(location=types.Location(uri=uri, range=where), message=item))
+    return related
+
+
+def to_diagnostic(finding: Finding, lines: Sequence[str], codec: PositionCodec, uri: str | None = None) -> types.Diagnostic:
     return types.Diagnostic(
         range=finding_range(finding, lines, codec),
         message=finding.message,
@@ -35,4 +58,5 @@ def to_diagnostic(finding: Finding, lines: Sequence[str], codec: PositionCodec) 
         source=SOURCE,
         # Lets a client (or our code-action handler) tell fixable findings apart without re-linting.
         data={"name": finding.name, "fixable": finding.fix is not None},
+        related_information=evidence_information(finding, uri, lines, codec) if uri is not None else None,
     )

@@ -343,7 +343,7 @@ class GeolintLanguageServer(LanguageServer):
     def diagnostics_for(self, uri: str, result: LintResult) -> list[types.Diagnostic]:
         codec = self.workspace.position_codec
         lines = split_lines(result.source)
-        return [to_diagnostic(finding, lines, codec) for finding in result.findings]
+        return [to_diagnostic(finding, lines, codec, uri) for finding in result.findings]
 
     def publish(self, uri: str) -> None:
         result = self.current_result(uri)
@@ -538,7 +538,7 @@ async def code_actions(ls: GeolintLanguageServer, params: types.CodeActionParams
         for finding in result.findings:
             if not _overlaps(finding, first, last):
                 continue
-            diagnostic = to_diagnostic(finding, lines, codec)
+            diagnostic = to_diagnostic(finding, lines, codec, params.text_document.uri)
             if finding.fix is not None:
                 unsafe = " (unsafe)" if finding.fix.applicability == "unsafe" else ""
                 title = finding.fix.description or "apply the fix"

@@ -1,4 +1,5 @@
-"""`--format text` (the default): `path:line:col: CODE message`, then the source line and a caret.
+"""`--format text` (the default): `path:line:col: CODE message`, then the source line and a caret,
+then the evidence the finding stands on (`  = evidence: ...`) when the rule recorded any.
 
 The first line of each finding is the grep/editor-friendly form every linter prints; the
 source excerpt under it shows what was flagged. Source lines are read from the findings'
@@ -28,7 +29,7 @@ def _finding_block(finding: Finding, color: bool) -> str:
     )
     line_text = _source_line(finding.path, finding.line)
     if line_text is None:
-        return header
+        return header + _evidence_line(finding, color)
     stripped = line_text.lstrip(" \t")
     indent = len(line_text) - len(stripped)
     start = max(finding.column - 1 - indent, 0)
@@ -38,7 +39,15 @@ def _finding_block(finding: Finding, color: bool) -> str:
     prefix = stripped[:start].replace("\t", TAB)
     marked = stripped[start:end].replace("\t", TAB)
     caret = " " * len(prefix) + "^" * max(len(marked), 1)
-    return f"{header}{paint('  | ', DIM, color=color)}{shown}\n{paint('  | ', DIM, color=color)}{paint(caret, CYAN if not color else severity_style, color=color)}\n"
+    excerpt = f"{paint('  | ', DIM, color=color)}{shown}\n{paint('  | ', DIM, color=color)}{paint(caret, CYAN if not color else severity_style, color=color)}\n"
+    return f"{header}{excerpt}{_evidence_line(finding, color)}"
+
+
+def _evidence_line(finding: Finding, color: bool) -> str:
+    """`  = evidence: ...`: why the rule believes it, strongest first (like rustc's `= note:`)."""
+    if not finding.evidence:
+        return ""
+    return f"{paint('  = evidence: ', DIM, color=color)}{'; '.join(finding.evidence)}\n"
 
 
 def _source_line(path: str, line: int) -> str | None:

@@ -75,6 +75,21 @@ def test_text_format_shows_location_source_line_and_caret(cli):
     assert result.stderr == ""
 
 
+def test_text_format_says_what_evidence_a_finding_stands_on(cli_real):
+    cli_real.write(
+        "node.py",
+        "def wrong_source(buffer, stamp, p_camera):\n"
+        "    T_lookup = buffer.lookup_transform('map', 'base_link', stamp)\n"
+        "    return T_lookup @ p_camera\n",
+    )
+    result = cli_real("check", "--no-cache")
+    assert result.returncode == 1
+    lines = result.stdout.splitlines()
+    assert lines[0].startswith("node.py:3:12: GEO201")
+    evidence = lines[3]
+    assert evidence.startswith("  = evidence: ") and "line 2" in evidence and "p_camera" in evidence
+
+
 def test_output_file_and_statistics(cli, tmp_path):
     cli.write("a.py", "x = bad_thing\ny = bad_thing\nz = risky_thing\n")
     report = tmp_path / "report.json"

@@ -48,6 +48,7 @@ COVERED: dict[tuple[str, str, int], str] = {
     ("docs/frames.md", "Picture the frames: `geolint frames`", 0): "test_command_lines_run",
     ("docs/linter.md", "`geolint check`: command line and configuration", 0): "test_command_lines_run",
     ("docs/linter.md", "text", 0): ILLUSTRATION,  # sample output of the text format
+    ("docs/linter.md", "text", 1): "test_evidence_sample_is_what_geolint_prints",
     ("docs/linter.md", "Configuration: `[tool.geolint]`", 0): "test_geolint_config_snippets_are_accepted",
     ("docs/linter.md", "Suppressing a finding", 0): ILLUSTRATION,  # comment placements, not a program
     ("docs/linter.md", "Adopting geolint on an existing codebase", 0): "test_command_lines_run",
@@ -101,6 +102,16 @@ def test_demo_output_is_what_the_readme_shows(tmp_path: Path) -> None:
     assert result.returncode == 1
     assert result.stdout == expected  # the findings, then the summary line, in the order a log shows them
     assert result.stderr == ""
+
+
+def test_evidence_sample_is_what_geolint_prints() -> None:
+    shown = block("docs/linter.md", "text", 1).body.splitlines()
+    result = bash("geolint check --no-cache tf_node", REPO_ROOT / "fixtures" / "projects" / "ros_tf_node")
+    assert result.returncode == 1, result.stderr
+    printed = result.stdout.splitlines()
+    # the fixture's line carries an `# expect:` comment the page leaves out; header and evidence agree
+    assert printed[0] == shown[0] and printed[3] == shown[3]
+    assert printed[1].startswith(shown[1]) and printed[2] == shown[2]
 
 
 @pytest.mark.parametrize("where", [("README.md", "A tour of the runtime"), ("docs/runtime.md", "Tour")])

@@ -186,6 +186,25 @@ async def test_open_pushes_the_linters_findings_with_code_link_and_severity(clie
     assert "t_world_cam" in line[geo101.range.start.character : geo101.range.end.character + 1] or geo101.range.end.line > geo101.range.start.line
 
 
+@needs_rules
+@pytest.mark.asyncio
+async def test_a_diagnostic_carries_its_evidence_as_related_information(client: RecordingClient, tmp_path: Path) -> None:
+    await start(client)
+    source = (
+        "def wrong_source(buffer, stamp, p_camera):\n"
+        "    T_lookup = buffer.lookup_transform('map', 'base_link', stamp)\n"
+        "    return T_lookup @ p_camera\n"
+    )
+    uri = open_doc(client, tmp_path / "node.py", source)
+    await eventually(lambda: uri in client.diagnostics)
+    (diagnostic,) = [d for d in client.diagnostics[uri] if d.code == "GEO201"]
+    related = diagnostic.related_information or []
+    # the lookup states the frames on line 2 (LSP line 1); the name `p_camera` is evidence at the finding
+    stated = [r for r in related if "lookup_transform" in r.message]
+    assert stated and stated[0].location.uri == uri and stated[0].location.range.start.line == 1
+    assert any("p_camera" in r.message and r.location.range == diagnostic.range for r in related)
+
+
 @pytest.mark.asyncio
 async def test_columns_are_utf16_code_units(client: RecordingClient, tmp_path: Path) -> None:
     await start(client)
