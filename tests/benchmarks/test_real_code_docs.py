@@ -35,7 +35,7 @@ def test_every_true_positive_and_historical_bug_is_explained_on_the_page() -> No
     for entry in [*LEDGER.findings, *HELDOUT_LEDGER.findings]:
         if entry.verdict == "TP":
             assert f"{entry.path}:{entry.line}" in DOC, entry
-    for bug in LEDGER.history:
+    for bug in [*LEDGER.history, *HELDOUT_LEDGER.history]:
         assert bug.fix_commit[:10] in DOC and f"{bug.path}:{bug.line}" in DOC, bug
 
 

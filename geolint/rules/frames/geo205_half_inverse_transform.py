@@ -16,7 +16,11 @@ from geolint.rules.pose_parts import (
     local_values,
     matmul_operands,
     pose_part,
+    same_code,
 )
+
+# A product, or a transpose/inverse written into a pose's rotation block.
+_PRODUCT_OR_TRANSPOSE_TEXT = MATMUL_TEXT + r"|\.m?T\b|\.transpose\(|\binv\("
 
 
 class HalfInverseTransform(AstRule):
@@ -38,6 +42,13 @@ class HalfInverseTransform(AstRule):
     (`.T`, `.mT`, `.transpose(1, 2)`, `.permute(0, 2, 1)`, `np.linalg.inv(R)`). The true forward
     map `R @ p + t` / `p @ R.T + t` and the true inverse `R.T @ (p - t)` / `(p - t) @ R` are
     silent, and so is a rotation about the pose's origin (`R @ (p - t) + t`).
+
+    Two more ways to write the same slip are flagged:
+
+    - an inverse assembled block by block with the rotation inverted and the translation only
+      negated: `M[:3, :3] = R.T` then `M[:3, 3] = -t` (the inverse's translation is `-R.T @ t`);
+    - the row form in place, over two statements: `x[:, :3] = x[:, :3] @ R` then
+      `x[:, :3] -= t` (that is `Rᵀ p - t`; the inverse is `(p - t) @ R`).
 
     ## Why is this bad?
     For a pose T = (R, t) that maps frame b into frame a, `R p + t` moves a point from b to a and
@@ -75,7 +86,7 @@ class HalfInverseTransform(AstRule):
 
     code = "GEO205"
     name = "half-inverse-transform"
-    triggers = AllOf(MATMUL_TEXT, POSE_PART_TEXT)
+    triggers = AllOf(_PRODUCT_OR_TRANSPOSE_TEXT, POSE_PART_TEXT)
 
     VALID = [
         Valid("p_world = T[:3, :3] @ p_cam + T[:3, 3]\n"),
@@ -88,6 +99,26 @@ class HalfInverseTransform(AstRule):
         Valid("def f(T, S, p):\n    return T[:3, :3].T @ p + S[:3, 3]\n"),
         Valid(
             "def f(T, p):\n    R = T[:3, :3]\n    T = other_pose()\n    return R.T @ p + T[:3, 3]\n"
+        ),
+        Valid(
+            "def invert(info):\n"
+            "    M = np.eye(4)\n"
+            "    M[:3, :3] = info['sensor2lidar_rotation'].T\n"
+            "    M[:3, 3] = -info['sensor2lidar_rotation'].T @ info['sensor2lidar_translation']\n"
+            "    return M\n"
+        ),
+        Valid("def g(T, S):\n    M = np.eye(4)\n    M[:3, :3] = T[:3, :3].T\n    M[:3, 3] = -S[:3, 3]\n    return M\n"),
+        Valid(
+            "def to_sensor(points, T):\n"
+            "    points[:, :3] = points[:, :3] @ T[:3, :3].T\n"
+            "    points[:, :3] += T[:3, 3]\n"
+            "    return points\n"
+        ),
+        Valid(
+            "def to_sensor(points, T):\n"
+            "    points[:, :3] -= T[:3, 3]\n"
+            "    points[:, :3] = points[:, :3] @ T[:3, :3]\n"
+            "    return points\n"
         ),
     ]
     INVALID = [
@@ -102,6 +133,20 @@ class HalfInverseTransform(AstRule):
         ),
         Invalid("def f(gt, p):\n    return gt['cam_R_m2c'].T.dot(p) + gt['cam_t_m2c'].reshape(3, 1)\n"),
         Invalid("def f(T, pts):\n    R, t = split_pose(T)\n    return (R.T @ pts.T).T + t\n"),
+        Invalid(
+            "def invert(info):\n"
+            "    M = np.eye(4)\n"
+            "    M[:3, :3] = info['sensor2lidar_rotation'].T\n"
+            "    M[:3, 3] = -info['sensor2lidar_translation']\n"
+            "    return M\n"
+        ),
+        Invalid(
+            "def to_lidar(points, sweep):\n"
+            "    T = np.array(sweep['lidar2sensor'])\n"
+            "    points[:, :3] = points[:, :3] @ T[:3, :3]\n"
+            "    points[:, :3] -= T[:3, 3]\n"
+            "    return points\n"
+        ),
     ]
 
     def check(self, tree: ast.Module) -> None:
@@ -115,6 +160,86 @@ class HalfInverseTransform(AstRule):
                 applied = application(node, values)  # type: ignore[arg-type]
                 if applied is not None and applied.product is node:
                     self._check_forward_of_difference(applied, values)
+        for node in values.nodes:
+            if isinstance(node, ast.Assign):
+                self._check_block_write(node, values)
+            elif isinstance(node, ast.AugAssign) and isinstance(node.op, (ast.Add, ast.Sub)):
+                self._check_in_place_row_form(node, values)
+
+    def _check_block_write(self, node: ast.Assign, values: LocalValues) -> None:
+        """`M[:3, 3] = -t` (or `t`) after `M[:3, :3] = R.T`, with R and t one pose's parts."""
+        if len(node.targets) != 1:
+            return
+        target = node.targets[0]
+        written = pose_part(target, values) if isinstance(target, ast.Subscript) else None
+        if written is None or written.kind != "translation":
+            return
+        value = node.value.operand if isinstance(node.value, ast.UnaryOp) and isinstance(node.value.op, ast.USub) else node.value
+        translation = pose_part(value, values)
+        if translation is None or translation.kind != "translation" or translation.pose == written.pose:
+            return
+        rotation_write = self._earlier_rotation_write(node, target, values)
+        if rotation_write is None:
+            return
+        rotation = pose_part(rotation_write.value, values)
+        if rotation is None or rotation.kind != "rotation" or rotation.pose != translation.pose or not rotation.transposed:
+            return
+        self.report(
+            node,
+            f"`{ast.unparse(target.value)}` gets the inverse rotation of a pose (line {rotation_write.lineno}) "  # type: ignore[attr-defined]
+            f"but `{ast.unparse(node.value)}` as its translation: neither the pose nor its inverse. "
+            "The inverse's translation is -Rᵀ t",
+        )
+
+    def _earlier_rotation_write(self, node: ast.Assign, target: ast.Subscript, values: LocalValues) -> ast.Assign | None:
+        """The last `M[:3, :3] = ...` before this statement in the same block, for the same M."""
+        block = self._block_of(node, values)
+        found = None
+        for statement in block:
+            if statement is node:
+                return found
+            if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+                other = statement.targets[0]
+                if isinstance(other, ast.Subscript) and same_code(other.value, target.value):
+                    part = pose_part(other, values)
+                    if part is not None and part.kind == "rotation":
+                        found = statement
+        return None
+
+    def _check_in_place_row_form(self, node: ast.AugAssign, values: LocalValues) -> None:
+        """`x[:, :3] = x[:, :3] @ R` then `x[:, :3] -= t`: Rᵀ p - t, over two statements."""
+        translation = pose_part(node.value, values)
+        if translation is None or translation.kind != "translation" or translation.transposed:
+            return
+        block = self._block_of(node, values)
+        position = next((i for i, statement in enumerate(block) if statement is node), 0)
+        if position == 0:
+            return
+        previous = block[position - 1]
+        if not (isinstance(previous, ast.Assign) and len(previous.targets) == 1 and same_code(previous.targets[0], node.target)):
+            return
+        applied = application(previous.value, values)
+        if applied is None or not applied.inverse or applied.rotation.pose != translation.pose:
+            return
+        if not same_code(applied.operand, node.target):
+            return  # `x = y @ R; x -= t`: not a point moved in place
+        sign = "+" if isinstance(node.op, ast.Add) else "-"
+        self.report(
+            node,
+            f"`{ast.unparse(node.target)}` was given the inverse rotation of a pose on line {previous.lineno} "
+            f"and now its forward translation ({sign}= t): neither the pose nor its inverse. The inverse "
+            "is Rᵀ (p - t) (rows: (p - t) @ R)",
+        )
+
+    @staticmethod
+    def _block_of(node: ast.stmt, values: LocalValues) -> list[ast.stmt]:
+        """The statement list holding `node` (a function body, a loop or branch body, the module)."""
+        parent = next(iter(values.ancestors(node)), None)
+        for field in ("body", "orelse", "finalbody", "handlers"):
+            block = getattr(parent, field, None)
+            if isinstance(block, list) and any(statement is node for statement in block):
+                return block
+        return [node]
 
     def _check_sum(self, node: ast.BinOp, values: LocalValues, settled: set[ast.AST]) -> None:
         sides = [(node.left, node.right)]

@@ -8,6 +8,7 @@ from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.pose_parts import (
     AllOf,
     LocalValues,
+    call_name,
     int_value,
     is_slice_upto,
     local_values,
@@ -35,7 +36,9 @@ class MisplacedTranslation(AstRule):
     or the value written is (a mean, negation or scaling of) the same array's own translation
     column `X[..., :3, 3]`. The same own-translation value written into the rotation block
     (`poses[:, :3, :3] -= poses[:, :3, 3].mean(0)`) is flagged too. Reading the bottom row, and
-    writing zeros into it, are fine.
+    writing zeros into it, are fine. The mirror slip is flagged as well: a pose's rotation block
+    given to a call that translates (`box.translate(-cam2ego[:3, :3])`, `translation_matrix(T[:3, :3])`),
+    where the translation column `[:3, 3]` was meant.
 
     ## Why is this bad?
     In the column-vector convention (`T @ [x, y, z, 1]`, what numpy, Open3D, trimesh, ROS and
@@ -71,7 +74,10 @@ class MisplacedTranslation(AstRule):
 
     code = "GEO303"
     name = "misplaced-translation"
-    triggers = AllOf(r"\[[^\]\n]*(?:\b3|:\s*3)\s*,\s*(?::\s*3|0\s*:\s*3|[012])\s*\]\s*[-+*/]?=")
+    triggers = AllOf(
+        r"\[[^\]\n]*(?:\b3|:\s*3)\s*,\s*(?::\s*3|0\s*:\s*3|[012])\s*\]\s*[-+*/]?="
+        r"|(?:translate|translation_matrix|set_translation|from_translation)\("
+    )
 
     VALID = [
         Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[:3, 3] = t\n"),
@@ -83,6 +89,7 @@ class MisplacedTranslation(AstRule):
             "    M[3, :3] = t\n    return pts_h @ M\n"
         ),  # the row-vector convention, applied as such
         Valid("def f(M, t):\n    M[3, :3] = t\n"),  # nothing says M is a pose
+        Valid("def to_camera(box, cam2ego):\n    box.translate(-cam2ego[:3, 3])\n    box.rotate(cam2ego[:3, :3].T)\n"),
         Valid(
             "import numpy as np\ndef f(R, t):\n    M = np.eye(4)\n    M[:3, :3] = R.T\n    M[3, :3] = -t\n"
             "    return M.T\n"
@@ -101,6 +108,10 @@ class MisplacedTranslation(AstRule):
         Invalid("import numpy as np\nT = np.zeros((4, 4))\nT[:3, :3] = R\nT[3, 0] = x\nT[3, 3] = 1\n"),
         Invalid("def center(poses):\n    c = poses[:, :3, 3].mean(0)\n    poses[:, :3, :3] -= c\n    return poses\n"),
         Invalid(
+            "def to_camera(box, info):\n    cam2ego = np.array(info['cam2ego'])\n    box.translate(-cam2ego[:3, :3])\n",
+            expected_fix="def to_camera(box, info):\n    cam2ego = np.array(info['cam2ego'])\n    box.translate(-cam2ego[:3, 3])\n",
+        ),
+        Invalid(
             "import torch\ndef orient(poses, center_poses):\n    translation = poses[..., :3, 3]\n"
             "    mean_translation = torch.mean(translation, dim=0)\n    if center_poses:\n"
             "        translation = mean_translation\n    else:\n        translation = torch.zeros_like(mean_translation)\n"
@@ -111,6 +122,9 @@ class MisplacedTranslation(AstRule):
     def check(self, tree: ast.Module) -> None:
         values: LocalValues | None = None
         for node in ast.walk(tree):
+            if isinstance(node, ast.Call) and call_name(node) in _TRANSLATING_CALLS:
+                self._check_translation_argument(node)
+                continue
             if isinstance(node, ast.Assign):
                 targets, value = node.targets, node.value
             elif isinstance(node, ast.AugAssign):
@@ -140,6 +154,25 @@ class MisplacedTranslation(AstRule):
                         applicability="unsafe",
                         fix_description="write into the translation column",
                     )
+
+    def _check_translation_argument(self, call: ast.Call) -> None:
+        """`box.translate(-T[:3, :3])`: a 3x3 rotation block where a 3-vector translation goes."""
+        arguments = call.args[:1] + [k.value for k in call.keywords if k.arg in ("translation", "t", "x", "vector")]
+        for argument in arguments:
+            block = argument.operand if isinstance(argument, ast.UnaryOp) and isinstance(argument.op, ast.USub) else argument
+            if not isinstance(block, ast.Subscript):
+                continue
+            indices = matrix_indices(block)
+            if indices is None or not (is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)):
+                continue
+            self.report(
+                block,
+                f"`{call_name(call)}` takes a translation, but `{ast.unparse(block)}` is the rotation block of "
+                "a pose; its translation is the column `[:3, 3]`",
+                replacement=f"{ast.unparse(block.value)}[{subscript_indices_text(block)}:3, 3]",
+                applicability="unsafe",
+                fix_description="pass the translation column",
+            )
 
     def _comes_from_own_translation(
         self, target: ast.Subscript, batch: list[ast.expr], value: ast.expr, values: LocalValues
@@ -190,6 +223,10 @@ class MisplacedTranslation(AstRule):
             applicability="unsafe",
             fix_description="write the translation into column 3",
         )
+
+
+# Calls whose argument is a translation (nuScenes/pyquaternion boxes, trimesh, Open3D, spatialmath).
+_TRANSLATING_CALLS = frozenset({"translate", "translation_matrix", "set_translation", "from_translation"})
 
 
 def subscript_indices_text(target: ast.Subscript) -> str:
