@@ -1,4 +1,4 @@
-"""The pose rules (GEO105, GEO205, GEO206, GEO303) GEO106, GEO207 and GEO208 add no finding on installed real code.
+"""The pose rules (GEO105, GEO205, GEO206, GEO303), GEO106, GEO107, GEO207 and GEO208 add no finding on installed real code.
 
 These rules judge the algebra itself (a rotation inverted while its translation is not, a 3x3
 indexed as a 4x4, a translation in the homogeneous row, a caller's transform rewritten), so a
@@ -18,7 +18,7 @@ import pytest
 
 SITE = Path(sysconfig.get_paths()["purelib"])
 PACKAGES = ("numpy", "scipy", "trimesh", "pytransform3d", "spatialmath", "matplotlib", "mpl_toolkits", "PIL")
-CODES = "GEO105,GEO106,GEO205,GEO206,GEO207,GEO208,GEO303"
+CODES = "GEO105,GEO106,GEO107,GEO205,GEO206,GEO207,GEO208,GEO303"
 
 
 def findings_on(paths: list[Path]) -> list[dict]:

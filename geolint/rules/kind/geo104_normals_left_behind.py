@@ -137,8 +137,8 @@ class NormalsLeftBehind(FactRule):
                 for stored, _ in scope.attribute_stores
             ):
                 continue
-            if self._scope_calls_method(scope.node, base, "transform"):
-                continue
+            if self._scope_calls_method(scope.node, base, "(?:transform|rotate)"):
+                continue  # Open3D's transform/rotate move the normals with the points
             self.report(
                 store,
                 f"`{base}.points` move to a new frame here, but `{base}.normals` stay in the old one",
