@@ -171,3 +171,18 @@ def test_open3d_whole_object_move_is_silent() -> None:
         return pcd, pcd.normals, track.velocity
     """
     assert codes(source) == []
+
+
+def test_a_property_write_counts_for_its_private_backing_attribute() -> None:
+    source = """
+    class Mesh:
+        def __init__(self, vertices, normals):
+            self.vertices_ = vertices
+            self.normals_ = normals
+
+        def align(self, R_pc_obj):
+            self.vertices = (R_pc_obj.T.dot(self.vertices.T)).T
+            if self.normals_ is not None:
+                self.normals = (R_pc_obj.T.dot(self.normals.T)).T
+    """
+    assert codes(source) == []

@@ -303,7 +303,10 @@ class FreeVectorsLeftBehind(FactRule):
         if moved.name is not None:
             candidates = self._named_members(moved, function, body)
             for name, role in candidates:
-                if any(m.name == name for m in written) or (moved.owner, name) in touched:
+                # `self.normals = ...` (a property) writes `self.normals_`/`self._normals` too
+                if any(m.name is not None and m.name.strip("_") == name.strip("_") for m in written):
+                    continue
+                if any(owner == moved.owner and isinstance(member, str) and member.strip("_") == name.strip("_") for owner, member in touched):
                     continue
                 if moved.name in ("points",) and name in ("normals", "vertex_normals"):
                     continue  # GEO104's case
