@@ -11,7 +11,9 @@ from geolint.factbase.rule_support import FactRule
 
 _COLLECTION_WORDS = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
 # `delta_pos`, `pos_offset`, `displacement`: a displacement (a vector), never a point
-_DISPLACEMENT_WORDS = frozenset({"delta", "d", "offset", "offsets", "displacement", "disp", "shift", "step", "increment", "inc"})
+_DISPLACEMENT_WORDS = frozenset(
+    {"delta", "d", "diff", "difference", "offset", "offsets", "displacement", "disp", "shift", "step", "increment", "inc"}
+)
 # joint-space "positions" (`arm_motor_pos`, `joint_pos`, `qpos`) are not Euclidean points
 _JOINT_SPACE_WORDS = frozenset({"joint", "joints", "motor", "motors", "qpos", "arm", "actuator", "servo", "gripper_pos"})
 
@@ -71,6 +73,7 @@ class PointPlusPoint(FactRule):
     VALID = [
         Valid("target_arm_pos = processed_delta_pos + cur_arm_pos\n"),  # a displacement, joint space
         Valid("agent.arm_motor_pos = delta_pos + agent.arm_motor_pos\n"),
+        Valid("pos, quat = get_ee_pose(q)\ntarget = (pos + pos_diff_goal, quat)\n"),  # a difference, named so
         Valid("midpoint = (p_start + p_end) / 2\n"),
         Valid("mid = 0.5 * (point_a + point_b)\n"),
         Valid("x = (1 - s) * p_start + s * p_end\n"),
