@@ -49,7 +49,126 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
         return SCALAR_FIRST
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and "quaternion" in name:
         return SCALAR_LAST
-    return None
+    if name in _PYBULLET_CONSUMERS:  # on the module or on a BulletClient
+        return SCALAR_LAST
+    return _DATA_CONSUMERS.get(_library_key(qualified, name))
+
+
+def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
+    """The one argument of a quaternion consumer that holds the whole quaternion (a 4-vector or a
+    stack of them), or None: the call spells components out, or the API takes no quaternion first."""
+    func = call.func
+    positional = [arg for arg in call.args if not isinstance(arg, ast.Starred)]
+    if len(positional) != len(call.args):
+        return None
+    if is_scipy_rotation_method(facts, func, "from_quat"):
+        given = keyword(call, "quat")
+        return positional[0] if positional else given.value if given is not None else None
+    qualified = facts.qualified_name(func) or ""
+    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
+    if qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion"):
+        given = keyword(call, "array")
+        if given is not None and not positional:
+            return given.value
+        return positional[0] if len(positional) == 1 and not call.keywords else None
+    if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name not in _TF_QUATERNION_INPUTS:
+        return None  # quaternion_from_euler & co take angles or matrices
+    if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
+        return positional[0] if len(positional) == 1 and not call.keywords else None
+    return positional[0] if positional else None
+
+
+def quaternion_producer(facts: FactBase, call: ast.Call) -> str | None:
+    """The component order of the quaternion a library call returns, or None if unknown."""
+    func = call.func
+    if isinstance(func, ast.Attribute) and func.attr == "as_quat":
+        scalar_first = keyword(call, "scalar_first")
+        if scalar_first is not None:
+            value = scalar_first.value
+            if isinstance(value, ast.Constant) and value.value in (True, False):
+                return SCALAR_FIRST if value.value else SCALAR_LAST
+            return None
+        return SCALAR_LAST if is_scipy_rotation_value(facts, func.value) else None
+    qualified = facts.qualified_name(func) or ""
+    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
+    if name in _PYBULLET_QUATERNIONS:  # camelCase pybullet names, on the module or a client object
+        return SCALAR_LAST
+    if qualified.startswith("transforms3d.") and (name.endswith("2quat") or name in ("qmult", "qconjugate", "qinverse", "qeye")):
+        return SCALAR_FIRST
+    if qualified.startswith("pytransform3d.") and name.startswith("quaternion_from_"):
+        return SCALAR_FIRST
+    if qualified.startswith("pytorch3d.") and (name.endswith("_to_quaternion") or name in _PYTORCH3D_QUATERNIONS):
+        return SCALAR_FIRST
+    if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name in _GOHLKE_PRODUCERS:
+        return SCALAR_LAST
+    if qualified.startswith("trimesh.transformations.") and name in _GOHLKE_PRODUCERS:
+        return SCALAR_FIRST
+    if qualified.startswith("spatialmath") and name == "r2q" and keyword(call, "order") is None:
+        return SCALAR_FIRST
+    return _DATA_PRODUCERS.get(_library_key(qualified, name))
+
+
+def is_scipy_rotation_value(facts: FactBase, node: ast.AST) -> bool:
+    """Whether `node` is a scipy `Rotation` object: `Rotation.from_*(...)` (possibly `.inv()`-ed),
+    or a name bound only to one. The method name alone (`r.as_quat()`) is no evidence."""
+    for _ in range(8):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+            if is_scipy_rotation_method(facts, node.func, *_SCIPY_CONSTRUCTORS):
+                return True
+            if node.func.attr in ("inv", "__mul__") or node.func.attr == "reduce":
+                node = node.func.value
+                continue
+            return False
+        if isinstance(node, ast.Name):
+            bound = facts.bindings(node) or []
+            values = [binding for binding in bound if isinstance(binding, ast.expr)]
+            if not values or len(values) != len(bound):
+                return False
+            return all(is_scipy_rotation_value(facts, value) for value in values if value is not node)
+        return False
+    return False
+
+
+def _library_key(qualified: str, name: str) -> str:
+    """`pytorch3d.transforms.rotation_conversions.quaternion_to_matrix` -> `pytorch3d.quaternion_to_matrix`."""
+    return f"{qualified.split('.', 1)[0]}.{name}" if qualified else ""
+
+
+_SCIPY_CONSTRUCTORS = (
+    "from_quat", "from_matrix", "from_euler", "from_rotvec", "from_mrp", "from_davenport", "from_dcm",
+    "random", "identity", "concatenate",
+)  # fmt: skip
+# pybullet (x, y, z, w) quaternions, called on the module or on a BulletClient.
+_PYBULLET_QUATERNIONS = frozenset({"getQuaternionFromEuler", "getQuaternionFromAxisAngle", "getDifferenceQuaternion"})
+# Christoph Gohlke's transformations.py: (w, x, y, z) as trimesh ships it, (x, y, z, w) in ROS tf.
+_GOHLKE_PRODUCERS = frozenset(
+    {"quaternion_from_matrix", "quaternion_from_euler", "quaternion_about_axis", "random_quaternion",
+     "quaternion_multiply", "quaternion_conjugate", "quaternion_inverse", "quaternion_slerp"}
+)  # fmt: skip
+_TF_QUATERNION_INPUTS = frozenset(
+    {"quaternion_matrix", "euler_from_quaternion", "quaternion_multiply", "quaternion_conjugate",
+     "quaternion_inverse", "quaternion_slerp", "quaternion_real", "quaternion_imag"}
+)  # fmt: skip
+_PYTORCH3D_QUATERNIONS = frozenset(
+    {"quaternion_multiply", "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion", "random_quaternions"}
+)
+# Consumers and producers keyed by `<top package>.<function>` (any submodule).
+_DATA_CONSUMERS = {
+    **{f"trimesh.{name}": SCALAR_FIRST for name in _TF_QUATERNION_INPUTS},
+    **{f"pytorch3d.{name}": SCALAR_FIRST for name in (
+        "quaternion_to_matrix", "quaternion_to_axis_angle", "quaternion_apply", "quaternion_multiply",
+        "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion")},
+    "quaternion.from_float_array": SCALAR_FIRST,  # numpy-quaternion
+    "quaternion.as_quat_array": SCALAR_FIRST,
+    "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_FIRST,
+    "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_LAST,
+}  # fmt: skip
+_PYBULLET_CONSUMERS = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
+_DATA_PRODUCERS = {
+    "quaternion.as_float_array": SCALAR_FIRST,  # numpy-quaternion
+    "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_FIRST,
+    "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_LAST,
+}
 
 
 def api_label(order: str) -> str:

@@ -5,22 +5,51 @@ from __future__ import annotations
 import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.factbase.model import FactBase, positional_args, replace_span, string
-from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_order
+from geolint.factbase.model import FactBase, last_name, positional_args, replace_span, string, subscript_parts
+from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
+from geolint.rules.rotation.quaternion_flow import (
+    COMPONENTS,
+    STANDARD_ORDERS,
+    QuaternionFlow,
+    Reorder,
+    convention,
+    label,
+    permutation_between,
+    permuted,
+    same_base,
+    spelled_components,
+)
 
 _COMPONENTS = "wxyz"
+_LETTERS = frozenset(_COMPONENTS)
 
 
 class QuaternionOrder(FactRule):
-    """Quaternion components are listed in the order of the other convention.
+    """Quaternion components are listed, reordered or read in the order of the other convention.
 
     ## What it does
     Flags a quaternion spelled out component by component (`[q.w, q.x, q.y, q.z]`,
     `[qx, qy, qz, qw]`) and passed to an API that expects the other order: scipy
     `Rotation.from_quat` (x, y, z, w unless `scalar_first=True`), transforms3d `quat2*`,
     pytransform3d `*_from_quaternion`, pyquaternion `Quaternion` and spatialmath
-    `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` (x, y, z, w).
+    `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` (x, y, z, w); also trimesh's
+    `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array` and pybullet
+    `get*FromQuaternion`. Through data it also flags:
+
+    - a reorder that goes the wrong way for the API, whatever the data: `from_quat(X[..., [3, 0, 1, 2]])`
+      or `from_quat(np.roll(q, 1))` (scalar-last to scalar-first, then read as scalar-last), and
+      `Quaternion(q[..., [1, 2, 3, 0]])` for a scalar-first API; directly or through a variable;
+    - a value whose order is known, passed to an API of the other order: from a producer
+      (`mat2quat`, `euler2quat`, numpy-quaternion `as_float_array`, pyquaternion `.elements`,
+      mujoco `xquat`, pytorch3d `matrix_to_quaternion`: scalar-first; scipy `as_quat()`, pybullet
+      `getQuaternionFromEuler`, ROS `tf.transformations`: scalar-last), a spelled-out
+      `np.array([o.w, o.x, o.y, o.z])`, or a name that states it (`quat_wxyz`), followed through
+      local variables, `self` attributes, and record fields filled by keyword in the same module
+      (`Label(quaternion=q)` read back as `label.quaternion` from a parameter annotated `Label`);
+    - a dict, keyword call or message filled component by component from such a value in the
+      wrong order: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
+      scalar-last one.
 
     ## Why is this bad?
     Both orders give a valid unit quaternion, so nothing fails: the rotation is just wrong (the
@@ -30,16 +59,29 @@ class QuaternionOrder(FactRule):
     ## Example
     ```python
     rotation = Rotation.from_quat([msg.w, msg.x, msg.y, msg.z])
+    yaws = Rotation.from_quat(quats_wxyz[:, [3, 0, 1, 2]]).as_euler("xyz")[:, 2]
     ```
 
     ## Use instead
     ```python
     rotation = Rotation.from_quat([msg.x, msg.y, msg.z, msg.w])
+    yaws = Rotation.from_quat(quats_wxyz[:, [1, 2, 3, 0]]).as_euler("xyz")[:, 2]
     ```
 
     ## Fix safety
-    Reordering the components to the API's convention is safe: the spelled-out names say which
-    component is which.
+    Reordering spelled-out components to the API's convention is safe: the names say which
+    component is which. Correcting a reorder or a component read is safe when the producer is
+    in the same function, and unsafe otherwise (a wrong-way reorder of data whose order nobody
+    states is fixed on the assumption that the data is in the other convention). A value passed
+    whole gets no fix.
+
+    ## Known problems
+    A wrong-way reorder of data whose order nothing states is not flagged in a module that also
+    stores data reordered the opposite way (two rolls that cancel are correct, and the module may
+    hold such non-standard data). Evidence is followed within one module only: a record field filled in another module, or a
+    parameter, has no known order and stays silent. A producer table entry is trusted over the
+    variable name it is stored in only when both agree; when a name (`quat_xyzw`) and its value
+    (`mat2quat(R)`) disagree the rule says nothing.
     """
 
     code = "GEO301"
@@ -56,6 +98,19 @@ class QuaternionOrder(FactRule):
         Valid("from geometry_msgs.msg import Quaternion\nq2 = Quaternion(q.x, q.y, q.z, q.w)\n"),
         Valid("from pyquaternion import Quaternion as PQ\nq2 = PQ(q.w, q.x, q.y, q.z)\n"),
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([a, b, c, d])\n"),
+        Valid("from scipy.spatial.transform import Rotation\ndef f(q_wxyz):\n    return Rotation.from_quat(q_wxyz[..., [1, 2, 3, 0]])\n"),
+        Valid("from transforms3d.quaternions import quat2mat\nimport numpy as np\ndef f(q):\n    return quat2mat(np.roll(q, 1))\n"),
+        Valid("from scipy.spatial.transform import Rotation\ndef f(X):\n    return Rotation.from_quat(X[:, [3, 0, 1, 2]], scalar_first=True)\n"),
+        Valid("def f(rec):\n    return {'x': rec.q[0], 'y': rec.q[1], 'z': rec.q[2], 'w': rec.q[3]}\n"),
+        Valid(
+            "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
+            "def f(R):\n    quat_xyzw = mat2quat(R)\n    return Rotation.from_quat(quat_xyzw)\n"
+        ),  # the name and the producer disagree: silence
+        Valid(
+            "import numpy as np\nimport torch\nimport trimesh.transformations as tra\n"
+            "def load(data):\n    return {'quat': torch.roll(data[:, 3:7], 1, -1)}\n"
+            "def show(orientation):\n    return tra.quaternion_matrix(np.roll(orientation, -1))\n"
+        ),  # the module stores data rolled the other way: the second roll may undo the first
     ]
     INVALID = [
         Invalid(
@@ -78,14 +133,46 @@ class QuaternionOrder(FactRule):
             "import pytransform3d.rotations as pr\nm = pr.matrix_from_quaternion([ori.x, ori.y, ori.z, ori.w])\n",
             expected_fix="import pytransform3d.rotations as pr\nm = pr.matrix_from_quaternion([ori.w, ori.x, ori.y, ori.z])\n",
         ),
+        Invalid(
+            "from scipy.spatial.transform import Rotation as R\nimport numpy as np\ndef yaws(X):\n"
+            "    return R.from_quat(np.vstack(X)[:, [3, 0, 1, 2]]).as_euler('xyz')[:, 2]\n",
+            expected_fix="from scipy.spatial.transform import Rotation as R\nimport numpy as np\ndef yaws(X):\n"
+            "    return R.from_quat(np.vstack(X)[:, [1, 2, 3, 0]]).as_euler('xyz')[:, 2]\n",
+        ),
+        Invalid("from scipy.spatial.transform import Rotation\ndef f(X):\n    q = X[:, [3, 0, 1, 2]]\n    return Rotation.from_quat(q)\n"),
+        Invalid("from pyquaternion import Quaternion\nimport numpy as np\ndef f(q):\n    return Quaternion(np.roll(q, -1))\n"),
+        Invalid(
+            "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
+            "def f(R):\n    q = mat2quat(R)\n    return Rotation.from_quat(q[[1, 2, 3, 0]][[3, 0, 1, 2]])\n",
+        ),
+        Invalid(
+            "import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef f(o):\n"
+            "    quat = np.array([o.w, o.x, o.y, o.z])\n    return Rotation.from_quat(quat)\n"
+        ),
+        Invalid(
+            "import quaternion\nfrom typing import List\nclass Label:\n    pass\n"
+            "def make(q):\n    return Label(quaternion=quaternion.as_float_array(q))\n"
+            "def save(labels: List[Label]):\n"
+            "    return [{'x': l.quaternion[0], 'y': l.quaternion[1], 'z': l.quaternion[2], 'w': l.quaternion[3]} for l in labels]\n",
+            expected_fix="import quaternion\nfrom typing import List\nclass Label:\n    pass\n"
+            "def make(q):\n    return Label(quaternion=quaternion.as_float_array(q))\n"
+            "def save(labels: List[Label]):\n"
+            "    return [{'x': l.quaternion[1], 'y': l.quaternion[2], 'z': l.quaternion[3], 'w': l.quaternion[0]} for l in labels]\n",
+        ),
+        Invalid(
+            "from scipy.spatial.transform import Rotation\ndef f(msg, yaw):\n    q = Rotation.from_euler('z', yaw).as_quat()\n"
+            "    msg.w = q[0]\n    msg.x = q[1]\n    msg.y = q[2]\n    msg.z = q[3]\n"
+        ),
     ]
 
     def run(self) -> None:
         facts = self.facts
+        flow = QuaternionFlow(facts)
         for node in facts.index.nodes(ast.Call):
-            self._check(node)  # type: ignore[arg-type]
+            self._check(node, flow)  # type: ignore[arg-type]
+        self._check_component_writes(flow)
 
-    def _check(self, node: ast.Call) -> None:
+    def _check(self, node: ast.Call, flow: QuaternionFlow) -> None:
         facts = self.facts
         expected = quaternion_order(facts, node)
         if expected is None:
@@ -95,17 +182,22 @@ class QuaternionOrder(FactRule):
             order = _order(facts, positional)
             if order is not None and order != expected and _is_other_convention(order, expected):
                 self._report(node, node, positional, order, expected)
+            elif order is None:
+                spelled = same_base(facts, positional)  # `Quaternion(q[1], q[2], q[3], q[0])`
+                if spelled is not None and sorted(spelled[1]) == [0, 1, 2, 3] and spelled[1] != [0, 1, 2, 3]:
+                    self._check_reorder(node, node, Reorder(node, spelled[0], tuple(spelled[1]), "arguments"), expected, flow)
             return
-        if not positional or not isinstance(positional[0], (ast.List, ast.Tuple)):
-            return
-        sequence = positional[0]
-        elements = list(sequence.elts)
-        if len(elements) != 4 or any(isinstance(element, ast.Starred) for element in elements):
-            return
-        order = _order(facts, elements)
-        if order is None or order == expected or not _is_other_convention(order, expected):
-            return
-        self._report(sequence, node, elements, order, expected)
+        if positional and isinstance(positional[0], (ast.List, ast.Tuple)):
+            elements = list(positional[0].elts)
+            if len(elements) == 4 and not any(isinstance(element, ast.Starred) for element in elements):
+                order = _order(facts, elements)
+                if order is not None:
+                    if order != expected and _is_other_convention(order, expected):
+                        self._report(positional[0], node, elements, order, expected)
+                    return
+        argument = quaternion_argument(facts, node)
+        if argument is not None:
+            self._check_value(node, argument, expected, flow)
 
     def _report(self, reported: ast.expr, call: ast.Call, items: list[ast.expr], order: str, expected: str) -> None:
         by_component = {component: item for component, item in zip(order, items)}
@@ -116,6 +208,161 @@ class QuaternionOrder(FactRule):
             f"`{self.code_of(call.func)}` expects {api_label(expected)}",
             replacement=replace_span(self.facts.index, reported, edits),  # type: ignore[arg-type]
             fix_description=f"reorder to {', '.join(expected)}",
+        )
+
+    # -- through data: reorders and producers ----------------------------------------------
+    def _check_value(self, call: ast.Call, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
+        reorder = flow.reorder_of(argument)
+        if reorder is not None:
+            self._check_reorder(call, argument, reorder, expected, flow)
+            return
+        order = flow.order_of(argument)
+        if order is None or order.batch and not _takes_stacks(call) or order.order not in STANDARD_ORDERS or order.order == expected:
+            return
+        self.report(
+            argument,
+            f"`{self.code_of(argument)}` is {convention(order.order)} ({order.evidence}), but "
+            f"`{self.code_of(call.func)}` expects {api_label(expected)}",
+            evidence=(order.evidence,),
+        )
+
+    def _check_reorder(self, call: ast.Call, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
+        facts = self.facts
+        other = SCALAR_FIRST if expected == SCALAR_LAST else SCALAR_LAST
+        base = flow.order_of(reorder.base)
+        if base is not None and (base.order not in STANDARD_ORDERS or base.batch and reorder.spelling in ("spelled", "arguments")):
+            return  # rows of a stack picked one by one, or an unusual order: not a component reorder we can judge
+        shown, func = facts.code_of(reorder.node), self.code_of(call.func)
+        if base is not None:
+            result = permuted(base.order, reorder.permutation)
+            if result == expected:
+                return
+            message = (
+                f"`{facts.code_of(reorder.base)}` is {convention(base.order)} ({base.evidence}); `{shown}` makes it "
+                f"{label(result)}, but `{func}` expects {api_label(expected)}"
+            )
+            right = permutation_between(base.order, expected)
+            applicability = "safe" if base.local else "unsafe"
+            evidence: tuple[str, ...] = (base.evidence,)
+        else:
+            if permuted(expected, reorder.permutation) != other:
+                return  # the reorder turns the other convention into this one: what the API wants
+            if flow.module_applies(permutation_between(permuted("wxyz", reorder.permutation), "wxyz")):
+                # the module also applies the inverse reorder somewhere: the data may carry a
+                # non-standard order that this reorder undoes (two rolls that cancel)
+                return
+            message = (
+                f"`{shown}` turns {label(expected)} into {label(other)}, but `{func}` expects {api_label(expected)}: "
+                f"the reorder goes the wrong way (in either convention the result is not {label(expected)})"
+            )
+            right = permutation_between(other, expected)
+            applicability = "unsafe"  # right only if the data really is in the other convention
+            evidence = ()
+        direct = flow.reorder_of(reported, through_names=False)
+        replacement = self._reorder_fix(reorder, right) if direct is not None and direct.node is reorder.node else None
+        self.report(
+            reported,
+            message,
+            replacement=None if replacement is None else replace_span(facts.index, reported, [(reorder.node, replacement)]),
+            applicability=applicability,  # type: ignore[arg-type]
+            fix_description="drop the reorder" if right == (0, 1, 2, 3) else f"reorder with {list(right)}",
+            evidence=evidence,
+        )
+
+    def _reorder_fix(self, reorder: Reorder, right: tuple[int, ...]) -> str | None:
+        """The reorder node's text with the right permutation (or just its base when none is needed)."""
+        index = self.facts.index
+        base_text = index.segment(reorder.base)
+        if not base_text:
+            return None
+        if right == (0, 1, 2, 3):
+            return base_text if reorder.spelling in ("index", "roll") else None
+        if reorder.spelling == "index":
+            text = index.segment(reorder.node)
+            old = index.segment(_last_index(reorder.node))  # type: ignore[arg-type]
+            position = text.rfind(old)
+            return text[:position] + repr(list(right)) + text[position + len(old) :] if old and position > 0 else None
+        if reorder.spelling == "roll" and right in ((3, 0, 1, 2), (1, 2, 3, 0)):
+            call = reorder.node
+            shift = call.args[1] if isinstance(call, ast.Call) and len(call.args) > 1 else None
+            if shift is None:
+                return None
+            text = index.segment(call)
+            start = _offset_in(call, shift, index)
+            if start is None:
+                return None
+            old = index.segment(shift)
+            return text[:start] + ("1" if right == (3, 0, 1, 2) else "-1") + text[start + len(old) :]
+        if reorder.spelling == "spelled":
+            elements = spelled_components(self.facts, reorder.node)
+            if elements is None:
+                return None
+            by_index = {component: element for component, element in zip(reorder.permutation, elements)}
+            edits = [(element, index.segment(by_index[component])) for element, component in zip(elements, right)]
+            return replace_span(index, reorder.node, edits)  # type: ignore[arg-type]
+        return None
+
+    # -- components written one by one: dicts, keyword arguments, message fields ----------------
+    def _check_component_writes(self, flow: QuaternionFlow) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.Dict):
+            mapping = {string(key): value for key, value in zip(node.keys, node.values) if string(key) in _LETTERS}  # type: ignore[attr-defined]
+            if len(mapping) == 4:
+                self._check_components(node, mapping, flow, '`"{letter}": {value}`')  # type: ignore[arg-type]
+        for node in facts.index.nodes(ast.Call):
+            mapping = {given.arg: given.value for given in node.keywords if given.arg in _LETTERS}  # type: ignore[attr-defined]
+            if len(mapping) == 4:
+                self._check_components(node, mapping, flow, "`{letter}={value}`")  # type: ignore[arg-type]
+        for scope in facts.index.scopes.values():
+            groups: dict[str, dict[str, tuple[ast.Attribute, ast.expr]]] = {}
+            for target, value in scope.attribute_stores:
+                if target.attr in _LETTERS and isinstance(facts.parent(target), ast.Assign):
+                    groups.setdefault(ast.dump(target.value), {})[target.attr] = (target, value)
+            for group in groups.values():
+                if len(group) == 4:
+                    first = min((target for target, _ in group.values()), key=lambda t: (t.lineno, t.col_offset))
+                    owner = facts.code_of(first.value)
+                    values = {letter: value for letter, (_, value) in group.items()}
+                    self._check_components(first, values, flow, f"`{owner}.{{letter}} = {{value}}`", fixable=False)
+
+    def _check_components(
+        self, reported: ast.AST, mapping: dict[str, ast.expr], flow: QuaternionFlow, shape: str, fixable: bool = True
+    ) -> None:
+        facts = self.facts
+        spelled = same_base(facts, [mapping[letter] for letter in COMPONENTS])
+        if spelled is None or sorted(spelled[1]) != [0, 1, 2, 3]:
+            return
+        base, indices = spelled
+        order = flow.order_of(base)
+        if order is None or order.order not in STANDARD_ORDERS:
+            return
+        if order.batch and any(not isinstance(mapping[letter].slice, ast.Tuple) for letter in COMPONENTS):  # type: ignore[attr-defined]
+            return  # `xquat[3]` is a row of the stack, not a component
+        wrong = [letter for letter, position in zip(COMPONENTS, indices) if order.order.index(letter) != position]
+        if not wrong:
+            return
+        letter = "w" if "w" in wrong else wrong[0]
+        value = mapping[letter]
+        written = shape.format(letter=letter, value=facts.code_of(value))
+        right = order.order.index(letter)
+        edits = []
+        for component in COMPONENTS:
+            element = mapping[component]
+            text = facts.index.segment(element)
+            old = facts.index.segment(_last_index(element))  # type: ignore[arg-type]
+            position = text.rfind(old)
+            if not fixable or not old or position <= 0:
+                edits = []
+                break
+            edits.append((element, text[:position] + str(order.order.index(component)) + text[position + len(old) :]))
+        self.report(
+            reported,
+            f"{written} reads component {indices[COMPONENTS.index(letter)]} as {letter}, but `{facts.code_of(base)}` is "
+            f"{convention(order.order)} ({order.evidence}): {letter} is component {right}",
+            replacement=replace_span(facts.index, reported, edits) if edits else None,  # type: ignore[arg-type]
+            applicability="safe" if order.local else "unsafe",
+            fix_description=f"read the components in {convention(order.order)} order",
+            evidence=(order.evidence,),
         )
 
 
@@ -153,3 +400,22 @@ def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
         if lowered.startswith(prefix) and len(rest) == 1 and rest in _COMPONENTS:
             return rest, prefix
     return None
+
+
+def _takes_stacks(call: ast.Call) -> bool:
+    """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion)."""
+    name = last_name(call.func) or ""
+    return name in ("from_quat", "from_float_array", "as_quat_array") or name.startswith("quaternion_")
+
+
+def _last_index(node: ast.AST) -> ast.expr:
+    parts = subscript_parts(node)  # type: ignore[arg-type]
+    return parts[-1]
+
+
+def _offset_in(outer: ast.AST, inner: ast.AST, index: object) -> int | None:
+    """Where `inner` starts within the text of `outer` (both on one line only)."""
+    if getattr(outer, "lineno", None) != getattr(inner, "end_lineno", None) or outer.lineno != inner.lineno:  # type: ignore[attr-defined]
+        return None
+    line = index.source.splitlines()[outer.lineno - 1].encode()  # type: ignore[attr-defined]
+    return len(line[outer.col_offset : inner.col_offset].decode(errors="replace"))  # type: ignore[attr-defined]

@@ -12,6 +12,7 @@ from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits
 
 _TWO_PI = 2 * math.pi
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
@@ -29,25 +30,39 @@ class DegreesAsRadians(FactRule):
     `Rotation.from_euler` / `from_rotvec` without `degrees=True`, transforms3d `euler2*` and
     `axangle2*`, pytransform3d `*_from_euler` / `*_from_angle`, spatialmath `SE3.Rx` and friends
     without `unit="deg"`, ROS `quaternion_from_euler`, and `np.sin`/`math.cos` of a whole
-    multiple of 15 degrees (`np.cos(90)`).
+    multiple of 15 degrees (`np.cos(90)`). Through data it also flags a value the code itself
+    puts in degrees passed to those APIs (and to `np.degrees` / `np.rad2deg`): a name that says
+    so (`yaw_deg`, `fov_degrees`, `tiltDeg`), the result of `np.degrees` / `np.rad2deg` /
+    `math.degrees` or of scipy `as_euler(..., degrees=True)`, followed through local variables,
+    `self` attributes, elements (`angles[2]`), negation, halving and sums of degrees; and a
+    parameter whose only value is a literal default above 2 pi (`fovy=30`).
 
     ## Why is this bad?
     90 radians is about 5157 degrees, i.e. 117 degrees after wrapping: a valid, silently wrong
-    rotation. No real pose needs a literal angle above 2 pi.
+    rotation. No real pose needs a literal angle above 2 pi, and a value named or computed in
+    degrees is degrees wherever it goes.
 
     ## Example
     ```python
     R_base_tool = Rotation.from_euler("xyz", [0, 0, 90]).as_matrix()
+    focal = height / (2 * np.tan(fov_deg / 2))
     ```
 
     ## Use instead
     ```python
     R_base_tool = Rotation.from_euler("xyz", [0, 0, 90], degrees=True).as_matrix()
+    focal = height / (2 * np.tan(np.deg2rad(fov_deg) / 2))
     ```
 
     ## Fix safety
-    Adding `degrees=True` to a scipy call is safe: an angle above 2 pi written as a literal is a
-    degree value. Other APIs get no automatic fix.
+    Adding `degrees=True` to a scipy call is safe when the angles are literals above 2 pi or
+    values computed in degrees (`np.degrees(...)`), and unsafe when only a name says degrees.
+    Other APIs get no automatic fix.
+
+    ## Known problems
+    All-caps names (`DEG`, `DEG2RAD`) and a bare `deg` are read as conversion factors, not angles,
+    so `np.sin(30 * DEG)` stays silent; a `*_deg` name that actually holds radians (a stale
+    name) is flagged. A value mixed with radians evidence in the same argument is left alone.
     """
 
     code = "GEO302"
@@ -70,6 +85,9 @@ class DegreesAsRadians(FactRule):
         Valid('from spatialmath import SE3\nT = SE3.Rx(90, unit="deg")\n'),
         Valid("from spatialmath import SE3\nT = SE3.Rx(90, 'deg')\n"),
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("z", angle)\n'),
+        Valid("import numpy as np\ndef f(h, fov_deg):\n    return h / (2 * np.tan(np.deg2rad(fov_deg) / 2))\n"),
+        Valid("import numpy as np\ndef f(x):\n    return np.sin(30 * DEG) + np.cos(x * DEG2RAD)\n"),
+        Valid("import numpy as np\ndef f(yaw_deg_per_s, dt):\n    return np.cos(yaw_deg_per_s * dt)\n"),
     ]
     INVALID = [
         Invalid(
@@ -93,33 +111,89 @@ class DegreesAsRadians(FactRule):
         Invalid("from spatialmath import SE3\nT = SE3.Rz(90)\n"),
         Invalid("import numpy as np\ny = np.sin(90)\n"),
         Invalid("import pytransform3d.rotations as pr\nm = pr.active_matrix_from_angle(2, 90)\n"),
+        Invalid("import numpy as np\ndef f(h, fov_deg):\n    return h / (2 * np.tan(fov_deg / 2))\n"),
+        Invalid(
+            "import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef f(dx, dy):\n"
+            "    heading = np.degrees(np.arctan2(dy, dx))\n    return Rotation.from_euler('z', heading)\n",
+            expected_fix="import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef f(dx, dy):\n"
+            "    heading = np.degrees(np.arctan2(dy, dx))\n    return Rotation.from_euler('z', heading, degrees=True)\n",
+        ),
+        Invalid("from transforms3d.euler import euler2mat\ndef f(tilt_degrees):\n    return euler2mat(0, tilt_degrees, 0)\n"),
+        Invalid("import numpy as np\ndef f(r):\n    angles = r.as_euler('xyz', degrees=True)\n    return np.cos(angles[2])\n"),
     ]
 
     def run(self) -> None:
+        units = AngleUnits(self.facts)
         for node in self.facts.index.nodes(ast.Call):
-            self._check(node)  # type: ignore[arg-type]
+            self._check(node, units)  # type: ignore[arg-type]
 
-    def _check(self, node: ast.Call) -> None:
+    def _check(self, node: ast.Call, units: AngleUnits) -> None:
         angles = self._radian_angles(node)
-        if angles is None:
+        if angles is not None:
+            too_big = [value for value in angles if abs(value) > _TWO_PI]
+            if too_big:
+                shown = _format(too_big[0])
+                fix = None
+                if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
+                    fix = with_keyword(self.facts.index.segment(node), "degrees=True")
+                self.report(
+                    node,
+                    f"`{self.code_of(node.func)}` takes radians, but the literal angle {shown} is above 2 pi: "
+                    "it looks like degrees",
+                    replacement=fix,
+                    fix_description="pass degrees=True",
+                )
+                return
+        self._check_units(node, units)
+
+    def _check_units(self, node: ast.Call, units: AngleUnits) -> None:
+        """A value the code itself puts in degrees (`yaw_deg`, `np.degrees(...)`) passed as radians."""
+        arguments = self._radian_arguments(node)
+        if not arguments:
             return
-        too_big = [value for value in angles if abs(value) > _TWO_PI]
-        if not too_big:
-            return
-        shown = _format(too_big[0])
+        elements = [element for argument in arguments for element in _elements(argument)]
+        in_degrees = [(element, unit) for element in elements if (unit := units.unit_of(element)) is not None and unit.unit == DEGREES]
+        if not in_degrees or any(unit.unit == RADIANS for element in elements if (unit := units.unit_of(element)) is not None):
+            return  # nothing in degrees, or radians beside it: mixed evidence, say nothing
+        element, unit = in_degrees[0]
         fix = None
+        applicability = "unsafe" if any(found.by_name for _, found in in_degrees) else "safe"
         if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
-            fix = with_keyword(self.facts.index.segment(node), "degrees=True")
+            degree_nodes = {id(found) for found, _ in in_degrees}
+            if all(id(other) in degree_nodes or number(other) == 0 for other in elements):
+                fix = with_keyword(self.facts.index.segment(node), "degrees=True")
         self.report(
-            node,
-            f"`{self.code_of(node.func)}` takes radians, but the literal angle {shown} is above 2 pi: "
-            "it looks like degrees",
+            node if fix is not None else element,  # the fix rewrites the whole call
+            f"`{self.code_of(node.func)}` takes radians, but `{self.code_of(element)}` is in degrees ({unit.evidence})",
             replacement=fix,
+            applicability=applicability,  # type: ignore[arg-type]
             fix_description="pass degrees=True",
+            evidence=(unit.evidence,),
         )
 
     def _radian_angles(self, node: ast.Call) -> list[float] | None:
         """The literal angles of a call to a radian API, or None when the call is not one (or opted into degrees)."""
+        facts = self.facts
+        func = node.func
+        positional = positional_args(node)
+        name = last_name(func) or ""
+        qualified = facts.qualified_name(func) or ""
+        if name in TRIG_FUNCTIONS and len(positional) == 1 and (
+            facts.is_array_call(func, *TRIG_FUNCTIONS) or qualified in {f"math.{fn}" for fn in TRIG_FUNCTIONS}
+        ):
+            value = number(positional[0])
+            if value is None:
+                value = self._angle_through_data(positional[0])
+            if value is not None and value == int(value) and int(value) % 15 == 0 and abs(value) <= 720:
+                return [float(value)]
+            return None
+        arguments = self._radian_arguments(node)
+        if arguments is None or _is_trig_or_conversion(facts, node):
+            return None
+        return _literals_of(arguments)
+
+    def _radian_arguments(self, node: ast.Call) -> list[ast.expr] | None:
+        """The angle arguments of a call to a radian API, or None when the call is not one (or opted into degrees)."""
         facts = self.facts
         func = node.func
         positional = positional_args(node)
@@ -132,33 +206,27 @@ class DegreesAsRadians(FactRule):
                 angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
             else:
                 angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
-            return _literals(angles) if angles is not None else None
+            return [angles] if angles is not None else None
         qualified = facts.qualified_name(func) or ""
         name = qualified.rsplit(".", 1)[-1] if qualified else name  # through `import ... as`
         if qualified.startswith("transforms3d."):
             if name.startswith("euler2"):
-                return _literals_of(positional[:3])
+                return positional[:3]
             if name.startswith("axangle2") and len(positional) > 1:
-                return _literals(positional[1])
+                return [positional[1]]
         if qualified.startswith("pytransform3d."):
             if name.endswith("_from_euler") and positional:
-                return _literals(positional[0])
+                return [positional[0]]
             if name.endswith("_from_angle") and len(positional) > 1:
-                return _literals(positional[1])
+                return [positional[1]]
         if qualified.startswith("spatialmath") and name in _SPATIALMATH_ANGLE_CALLS:
             if keyword(node, "unit") is not None or any(string(value) is not None for value in positional[1:]):
                 return None
-            return _literals_of(positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3])
+            return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
         if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
-            return _literals_of(positional[:3])
-        if name in TRIG_FUNCTIONS and len(positional) == 1 and (
-            facts.is_array_call(func, *TRIG_FUNCTIONS) or qualified in {f"math.{fn}" for fn in TRIG_FUNCTIONS}
-        ):
-            value = number(positional[0])
-            if value is None:
-                value = self._angle_through_data(positional[0])
-            if value is not None and value == int(value) and int(value) % 15 == 0 and abs(value) <= 720:
-                return [float(value)]
+            return positional[:3]
+        if _is_trig_or_conversion(facts, node):
+            return positional[:1]
         return None
 
     def _angle_through_data(self, node: ast.expr) -> float | None:
@@ -209,6 +277,27 @@ def _literals(node: ast.AST) -> list[float]:
 
 def _literals_of(nodes: list[ast.expr]) -> list[float]:
     return [found for node in nodes for found in _literals(node)]
+
+
+def _elements(node: ast.expr) -> list[ast.expr]:
+    """The angles of an angle argument: the elements of a literal list, else the argument itself."""
+    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and len(node.args) == 1:
+        node = node.args[0]
+    if isinstance(node, (ast.List, ast.Tuple)):
+        return [found for element in node.elts for found in _elements(element)]
+    return [node]
+
+
+def _is_trig_or_conversion(facts: object, node: ast.Call) -> bool:
+    """`np.sin(x)`, `math.cos(x)`, and `np.degrees(x)` / `np.rad2deg(x)` (which read radians too)."""
+    func = node.func
+    qualified = facts.qualified_name(func) or ""  # type: ignore[attr-defined]
+    module, _, name = qualified.rpartition(".")
+    if len(positional_args(node)) != 1:
+        return False
+    if name in TRIG_FUNCTIONS:
+        return facts.is_array_call(func, *TRIG_FUNCTIONS) or module == "math"  # type: ignore[attr-defined]
+    return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
 
 
 def _format(value: float) -> str:

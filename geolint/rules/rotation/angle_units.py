@@ -1,0 +1,193 @@
+"""Which unit an angle expression is in, from what the code says about it.
+
+GEO302 (degrees passed as radians) and GEO305 (radians passed as degrees) ask `unit_of(x)`:
+"deg" or "rad" with the evidence, or None. Evidence, strongest first:
+
+- a call that returns the unit: `np.degrees(x)` / `np.rad2deg(x)` (degrees), `np.arctan2(y, x)`,
+  `math.acos(c)`, `np.radians(x)` / `np.deg2rad(x)` (radians), scipy `as_euler(seq)` (radians,
+  degrees with `degrees=True`);
+- `np.pi` (times or over a number);
+- a name or attribute whose words say it: `yaw_deg`, `fov_degrees`, `angleDeg`; `theta_rad`,
+  `roll_radians`;
+- arithmetic that keeps the unit: `-x`, `x / 2`, `x * 0.5`, `a + b` when both sides agree.
+
+Names are followed through their bindings in the same scope (every binding must agree with the
+name itself); any conflict gives None.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from dataclasses import dataclass
+
+from geolint.factbase.index import ParamBinding
+from geolint.factbase.model import FactBase, keyword, number, positional_args
+
+DEGREES, RADIANS = "deg", "rad"
+_DEGREE_WORDS = frozenset({"deg", "degs", "degree", "degrees"})
+_RADIAN_WORDS = frozenset({"rad", "rads", "radian", "radians"})
+# words that turn a unit word into something else (`deg_per_s` is a rate, `rad2deg` a factor)
+_NOT_AN_ANGLE = frozenset({"per", "to", "s", "sec", "rate", "vel", "velocity", "speed", "factor", "scale", "step", "tol", "thresh", "threshold", "eps", "err", "error", "std", "sigma", "noise"})
+_TO_DEGREES = frozenset({"degrees", "rad2deg"})
+_TO_RADIANS = frozenset({"radians", "deg2rad"})
+_INVERSE_TRIG = frozenset({"arctan2", "arctan", "arcsin", "arccos", "atan2", "atan", "asin", "acos"})
+_ANGLE_MODULES = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"})
+_MAX_DEPTH = 10
+
+
+@dataclass(frozen=True)
+class Unit:
+    unit: str  # DEGREES or RADIANS
+    evidence: str
+    by_name: bool  # decided by a name alone (a fix must not rely on it)
+
+
+def name_unit(name: str) -> str | None:
+    """`yaw_deg` -> deg, `theta_rad` -> rad; None for `deg2rad`, `deg_per_sec`, `rad_to_deg` or no unit word."""
+    if name.isupper():
+        return None  # `DEG`, `DEG2RAD`, `RAD_PER_DEG`: constants are conversion factors more often than angles
+    words = [word.lower() for word in re.findall(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|\d+", name)]
+    if len(words) < 2 or any(word in _NOT_AN_ANGLE for word in words):
+        return None  # a bare `deg` / `rad` is as often a unit factor (`30 * deg`) as an angle
+    degree = any(word in _DEGREE_WORDS for word in words)
+    radian = any(word in _RADIAN_WORDS for word in words)
+    if degree == radian:
+        return None
+    return DEGREES if degree else RADIANS
+
+
+class AngleUnits:
+    """`unit_of` on one module's fact base (memoised per node)."""
+
+    def __init__(self, facts: FactBase) -> None:
+        self.facts = facts
+        self._memo: dict[int, Unit | None] = {}
+        self._active: set[int] = set()
+
+    def converts(self, call: ast.Call) -> str | None:
+        """For `np.radians(x)` / `np.deg2rad(x)`, RADIANS (the unit it returns); DEGREES for
+        `np.degrees` / `np.rad2deg`; None for anything else."""
+        qualified = self.facts.qualified_name(call.func) or ""
+        module, _, name = qualified.rpartition(".")
+        if module not in _ANGLE_MODULES or len(positional_args(call)) != 1:
+            return None
+        return RADIANS if name in _TO_RADIANS else DEGREES if name in _TO_DEGREES else None
+
+    def unit_of(self, node: ast.expr) -> Unit | None:
+        key = id(node)
+        if key in self._memo:
+            return self._memo[key]
+        if key in self._active or len(self._active) > _MAX_DEPTH:
+            return None
+        self._active.add(key)
+        try:
+            found = self._unit(node)
+        finally:
+            self._active.discard(key)
+        self._memo[key] = found
+        return found
+
+    def _unit(self, node: ast.expr) -> Unit | None:
+        facts = self.facts
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            return self.unit_of(node.operand)
+        if isinstance(node, ast.BinOp):
+            return self._unit_of_arithmetic(node)
+        if isinstance(node, ast.Call):
+            return self._unit_of_call(node)
+        if self._is_pi(node):
+            return Unit(RADIANS, f"`{facts.code_of(node)}` is an angle in radians", False)
+        if isinstance(node, ast.Name):
+            return self._unit_of_name(node)
+        if isinstance(node, ast.Attribute):
+            stated = name_unit(node.attr)
+            by_name = Unit(stated, f"the name `{node.attr}` says {_word(stated)}", True) if stated else None
+            if isinstance(node.value, ast.Name) and node.value.id == "self":
+                stores = facts.index.self_attribute_stores.get(node.attr, [])
+                return self._agree(by_name, [self.unit_of(store) for store in stores] if stores else [])
+            return by_name
+        if isinstance(node, ast.Subscript) and isinstance(node.value, (ast.Name, ast.Attribute)):
+            return self.unit_of(node.value)  # `angles_deg[0]`: an element of an array of angles has its unit
+        return None
+
+    def _unit_of_arithmetic(self, node: ast.BinOp) -> Unit | None:
+        if isinstance(node.op, (ast.Mult, ast.Div)):
+            # halving or scaling by a plain number keeps the unit; anything else may convert it
+            if number(node.right) is not None and not _is_conversion_factor(number(node.right)):
+                return self.unit_of(node.left)
+            if isinstance(node.op, ast.Mult) and number(node.left) is not None and not _is_conversion_factor(number(node.left)):
+                return self.unit_of(node.right)
+            return None
+        if isinstance(node.op, (ast.Add, ast.Sub)):
+            left = None if number(node.left) is not None else self.unit_of(node.left)
+            right = None if number(node.right) is not None else self.unit_of(node.right)
+            if number(node.left) is not None:
+                return right
+            if number(node.right) is not None:
+                return left
+            if left is not None and right is not None and left.unit == right.unit:
+                return left
+        return None
+
+    def _unit_of_call(self, call: ast.Call) -> Unit | None:
+        facts = self.facts
+        converted = self.converts(call)
+        if converted is not None:
+            return Unit(converted, f"`{facts.code_of(call.func)}` returns {_word(converted)}", False)
+        qualified = facts.qualified_name(call.func) or ""
+        module, _, name = qualified.rpartition(".")
+        if module in _ANGLE_MODULES and name in _INVERSE_TRIG:
+            return Unit(RADIANS, f"`{facts.code_of(call.func)}` returns radians", False)
+        if isinstance(call.func, ast.Attribute) and call.func.attr in ("as_euler", "magnitude") and not call.keywords:
+            from geolint.factbase.rotations import is_scipy_rotation_value
+
+            if is_scipy_rotation_value(facts, call.func.value):
+                return Unit(RADIANS, f"scipy's `{call.func.attr}` returns radians", False)
+        if isinstance(call.func, ast.Attribute) and call.func.attr == "as_euler":
+            degrees = keyword(call, "degrees")
+            if degrees is not None and isinstance(degrees.value, ast.Constant) and degrees.value.value is True:
+                return Unit(DEGREES, "`as_euler(..., degrees=True)` returns degrees", False)
+        return None
+
+    def _unit_of_name(self, node: ast.Name) -> Unit | None:
+        facts = self.facts
+        stated = name_unit(node.id)
+        by_name = Unit(stated, f"the name `{node.id}` says {_word(stated)}", True) if stated else None
+        bound = facts.bindings(node) or []
+        scope = facts.index.scope_of(node)
+        if node.id in scope.augmented:
+            return None  # `angle *= ...`: its unit may change along the way
+        found: list[Unit | None] = []
+        for binding in bound:
+            if isinstance(binding, ast.expr):
+                found.append(self.unit_of(binding))
+            elif isinstance(binding, ParamBinding):
+                found.append(None)
+            else:
+                found.append(None)
+        return self._agree(by_name, found)
+
+    @staticmethod
+    def _agree(by_name: Unit | None, found: list[Unit | None]) -> Unit | None:
+        """The name's unit unless a binding contradicts it; else the bindings' common unit."""
+        known = [unit for unit in found if unit is not None]
+        units = {unit.unit for unit in known}
+        if by_name is not None:
+            return by_name if units <= {by_name.unit} else None
+        if found and len(known) == len(found) and len(units) == 1:
+            return known[0]
+        return None
+
+    def _is_pi(self, node: ast.AST) -> bool:
+        qualified = self.facts.qualified_name(node) or ""
+        return qualified in ("numpy.pi", "math.pi", "torch.pi")
+
+
+def _is_conversion_factor(value: float | None) -> bool:
+    """pi / 180 and 180 / pi written as numbers (and 180 itself, as in `x / 180 * pi`)."""
+    return value is not None and (abs(abs(value) - 0.0174533) < 1e-4 or abs(abs(value) - 57.29578) < 1e-2 or abs(value) == 180)
+
+
+def _word(unit: str | None) -> str:
+    return "degrees" if unit == DEGREES else "radians"

@@ -1,0 +1,177 @@
+"""GEO304 quaternion-component-reused: a quaternion rebuilt from another one uses a component twice."""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from geolint.factbase.model import replace_span, subscript_parts
+from geolint.factbase.rotations import quaternion_argument, quaternion_order
+from geolint.factbase.rule_support import FactRule
+from geolint.rules.base import Invalid, Valid
+from geolint.rules.pose_parts import AllOf
+from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base, spelled_components
+
+# Words that make a name a quaternion on their own, and `q`, which needs a second witness
+# (in robotics `q` is just as often a joint configuration).
+_STRONG = frozenset({"quat", "quats", "quaternion", "quaternions", "qvec", "qvecs", "quatern", "orientation", "orientations", "rotq"})
+_WEAK = frozenset({"q", "qs"})
+_CYCLES = ((0, 1, 2, 3), (1, 2, 3, 0), (3, 0, 1, 2))
+
+
+class QuaternionComponentReused(FactRule):
+    """A quaternion is rebuilt from another one with a component used twice and another dropped.
+
+    ## What it does
+    Flags a 4-vector spelled out from the components of one quaternion
+    (`np.array([q[1], q[2], q[2], q[0]])`, `[o.x, o.y, o.y, o.w]`) when one component appears
+    twice and another never, and the code says it is a quaternion: the source or target name
+    (`quat`, `quaternion`, `qvec`, `orientation`; `q` when both sides or the function say it),
+    or the value is passed straight to a quaternion API (scipy `from_quat`, transforms3d
+    `quat2mat`, pyquaternion `Quaternion`...).
+
+    ## Why is this bad?
+    Converting between the scalar-first and scalar-last conventions moves each of the four
+    components exactly once. A repeated index is a typo: the result is not a rotation of the
+    original at all (and usually not even unit length), and nothing downstream notices.
+
+    ## Example
+    ```python
+    def wxyz_to_xyzw(q_wxyz):
+        q_xyzw = np.array([q_wxyz[1], q_wxyz[2], q_wxyz[2], q_wxyz[0]])
+        return q_xyzw
+    ```
+
+    ## Use instead
+    ```python
+    def wxyz_to_xyzw(q_wxyz):
+        q_xyzw = np.array([q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0]])
+        return q_xyzw
+    ```
+
+    ## Fix safety
+    When replacing one of the two repeated indices by the missing one gives a cyclic reorder
+    (`[1, 2, 3, 0]`, `[3, 0, 1, 2]` or the identity), that replacement is offered as an unsafe
+    fix: the intended order is a guess, however likely.
+
+    ## Known problems
+    A 4-vector that is not a quaternion but is named like one, and deliberately repeats a
+    component, is flagged. Names with a bare `q` alone (a joint configuration in most robot
+    code) are not enough: a second name must say quaternion too.
+    """
+
+    code = "GEO304"
+    name = "quaternion-component-reused"
+    # an indexed component followed by another element (`q[2], `), or a `.w` component
+    triggers = AllOf(r"\w\s*\[[^\[\]\n]*\d\s*\]\s*,|\.w\b")
+
+    VALID = [
+        Valid("import numpy as np\ndef f(q_wxyz):\n    q_xyzw = np.array([q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0]])\n    return q_xyzw\n"),
+        Valid("import numpy as np\ndef f(q):\n    coupled = np.array([q[0], q[1], q[1], q[2]])\n    return coupled\n"),  # joints
+        Valid("import numpy as np\ndef f(box):\n    corners = np.array([box[0], box[1], box[1], box[2]])\n    return corners\n"),
+        Valid("def f(o):\n    return [o.x, o.y, o.z, o.w]\n"),
+    ]
+    INVALID = [
+        Invalid(
+            "import numpy as np\ndef core_to_ros(q_core):\n    q_ros = np.array([q_core[1], q_core[2], q_core[2], q_core[0]])\n    return q_ros\n",
+            expected_fix="import numpy as np\ndef core_to_ros(q_core):\n    q_ros = np.array([q_core[1], q_core[2], q_core[3], q_core[0]])\n    return q_ros\n",
+        ),
+        Invalid("import numpy as np\ndef f(quat):\n    return np.array([quat[3], quat[0], quat[0], quat[2]])\n"),
+        Invalid("from scipy.spatial.transform import Rotation\ndef f(v):\n    return Rotation.from_quat([v[1], v[1], v[3], v[0]])\n"),
+        Invalid("def f(pose):\n    orientation = [pose.x, pose.y, pose.y, pose.w]\n    return orientation\n"),
+    ]
+
+    def run(self) -> None:
+        facts = self.facts
+        for node in facts.index.nodes(ast.List, ast.Tuple):
+            elements = list(node.elts)  # type: ignore[attr-defined]
+            if len(elements) != 4 or any(isinstance(element, ast.Starred) for element in elements):
+                continue
+            self._check(node, elements)  # type: ignore[arg-type]
+
+    def _check(self, node: ast.expr, elements: list[ast.expr]) -> None:
+        facts = self.facts
+        by_index = same_base(facts, elements)
+        if by_index is not None:
+            base, positions = by_index
+            components = [str(position) for position in positions]
+            universe = ["0", "1", "2", "3"]
+        else:
+            attributes = [element for element in elements if isinstance(element, ast.Attribute) and element.attr in COMPONENTS]
+            if len(attributes) != 4 or len({ast.dump(attribute.value) for attribute in attributes}) != 1:
+                return
+            base = attributes[0].value
+            components = [attribute.attr for attribute in attributes]
+            universe = list(COMPONENTS)
+            if "w" not in components:
+                return  # x, y, z plus one more: a 3-vector written out, not a quaternion
+        if len(set(components)) != 3:
+            return
+        repeated = next(component for component in components if components.count(component) == 2)
+        missing = next(component for component in universe if component not in components)
+        if not self._says_quaternion(node, base):
+            return
+        second = [i for i, component in enumerate(components) if component == repeated][1]
+        shown = facts.code_of(elements[second])
+        fix = self._fix(node, elements, components, repeated, missing) if by_index is not None else None
+        self.report(
+            elements[second],
+            f"`{shown}` repeats a component of `{facts.code_of(base)}` and component {missing} is never used: "
+            "a reorder of a quaternion uses each of its four components once",
+            replacement=fix,
+            applicability="unsafe",
+            fix_description=f"use component {missing}",
+        )
+
+    def _fix(self, node: ast.expr, elements: list[ast.expr], components: list[str], repeated: str, missing: str) -> str | None:
+        """Replace the one occurrence of the repeated index that makes the reorder a cycle."""
+        facts = self.facts
+        for position, component in enumerate(components):
+            if component != repeated:
+                continue
+            candidate = tuple(int(missing if i == position else c) for i, c in enumerate(components))
+            if candidate in _CYCLES:
+                element = elements[position]
+                text = facts.index.segment(element)
+                old = facts.index.segment(subscript_parts(element)[-1])  # type: ignore[arg-type]
+                at = text.rfind(old)
+                if not old or at <= 0:
+                    return None
+                return replace_span(facts.index, element, [(element, text[:at] + missing + text[at + len(old) :])])
+        return None
+
+    def _says_quaternion(self, node: ast.expr, base: ast.expr) -> bool:
+        """Whether names around the 4-vector, or the API it goes to, make it a quaternion."""
+        facts = self.facts
+        outer: ast.AST = node
+        parent = facts.parent(node)
+        if isinstance(parent, ast.Call) and len(parent.args) == 1 and facts.is_array_call(parent.func, "array", "asarray", "tensor"):
+            outer, parent = parent, facts.parent(parent)  # np.array([...])
+        if isinstance(parent, ast.Call) and quaternion_order(facts, parent) is not None and quaternion_argument(facts, parent) is outer:
+            return True
+        witnesses = [_name_of(base)]
+        if isinstance(parent, (ast.Assign, ast.AnnAssign)):
+            targets = parent.targets if isinstance(parent, ast.Assign) else [parent.target]
+            witnesses += [_name_of(target) for target in targets]
+        function = parent
+        while function is not None and not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            function = facts.parent(function)
+        if function is not None:
+            witnesses.append(function.name)  # type: ignore[attr-defined]
+        words = [_words(name) for name in witnesses if name]
+        if any(word in _STRONG or word.startswith("quat") for found in words for word in found):
+            return True
+        return sum(1 for found in words if any(word in _WEAK for word in found)) >= 2
+
+
+def _name_of(node: ast.AST) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    return None
+
+
+def _words(name: str) -> list[str]:
+    """`q_core` -> [q, core]; `coreQToRosQ` -> [core, q, to, ros, q]; `quat2mat` -> [quat, 2, mat]."""
+    return [word.lower() for word in re.findall(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|\d+", name)]

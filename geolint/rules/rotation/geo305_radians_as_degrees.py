@@ -1,0 +1,119 @@
+"""GEO305 radians-as-degrees: an angle already in radians converted again, or passed where degrees are expected."""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.factbase.model import keyword, positional_args
+from geolint.factbase.rotations import is_scipy_rotation_method
+from geolint.factbase.rule_support import FactRule
+from geolint.rules.base import Invalid, Valid
+from geolint.rules.pose_parts import AllOf
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits
+
+
+class RadiansAsDegrees(FactRule):
+    """An angle the code already has in radians is converted from degrees again, or passed as degrees.
+
+    ## What it does
+    Flags `np.deg2rad` / `np.radians` / `math.radians` / `torch.deg2rad` applied to a value that
+    is already in radians, and scipy `Rotation.from_euler(..., degrees=True)` given one. Radians
+    are known from the code itself: an inverse trigonometric function (`np.arctan2`,
+    `math.acos`), a previous `np.radians`, scipy's `as_euler` without `degrees=True`, `np.pi`,
+    or a name that says so (`theta_rad`, `yaw_radians`), followed through local variables and
+    halving or negation.
+
+    ## Why is this bad?
+    Converting radians "to radians" divides the angle by about 57.3: a 90 degree heading becomes
+    1.6 degrees. The result is a valid, silently wrong angle; nothing raises.
+
+    ## Example
+    ```python
+    heading = np.deg2rad(np.arctan2(dy, dx))
+    ```
+
+    ## Use instead
+    ```python
+    heading = np.arctan2(dy, dx)
+    ```
+
+    ## Fix safety
+    Dropping the conversion (`np.deg2rad(x)` -> `x`) is offered as an unsafe fix: when the
+    evidence is a name, the name may be the mistake.
+
+    ## Known problems
+    A variable named `*_rad` that actually holds degrees (a stale name) is flagged where it is
+    converted; rename it. Names alone never decide when the same name is also bound to a value
+    in degrees in the same scope.
+    """
+
+    code = "GEO305"
+    name = "radians-as-degrees"
+    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True")
+
+    VALID = [
+        Valid("import numpy as np\ndef f(heading_deg):\n    return np.deg2rad(heading_deg)\n"),
+        Valid("import numpy as np\ndef f(dy, dx):\n    return np.degrees(np.arctan2(dy, dx))\n"),
+        Valid("import math\ndef f(angle):\n    return math.radians(angle)\n"),
+        Valid(
+            "from scipy.spatial.transform import Rotation\ndef f(yaw_deg):\n"
+            "    return Rotation.from_euler('z', yaw_deg, degrees=True)\n"
+        ),
+        Valid("import numpy as np\ndef f(x):\n    theta_rad = np.degrees(x)\n    return np.radians(theta_rad)\n"),  # conflicting
+    ]
+    INVALID = [
+        Invalid(
+            "import numpy as np\ndef f(dy, dx):\n    return np.deg2rad(np.arctan2(dy, dx))\n",
+            expected_fix="import numpy as np\ndef f(dy, dx):\n    return np.arctan2(dy, dx)\n",
+        ),
+        Invalid("import math\ndef f(theta_rad):\n    return math.radians(theta_rad)\n"),
+        Invalid("import numpy as np\ndef f(c):\n    half = np.arccos(c) / 2\n    return np.radians(half)\n"),
+        Invalid(
+            "import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef f(dy, dx):\n"
+            "    yaw = np.arctan2(dy, dx)\n    return Rotation.from_euler('z', yaw, degrees=True)\n"
+        ),
+    ]
+
+    def run(self) -> None:
+        units = AngleUnits(self.facts)
+        for node in self.facts.index.nodes(ast.Call):
+            self._check(node, units)  # type: ignore[arg-type]
+
+    def _check(self, node: ast.Call, units: AngleUnits) -> None:
+        facts = self.facts
+        if units.converts(node) == RADIANS:
+            argument = positional_args(node)[0]
+            unit = units.unit_of(argument)
+            if unit is None or unit.unit != RADIANS:
+                return
+            self.report(
+                node,
+                f"`{self.code_of(node.func)}` converts degrees to radians, but `{self.code_of(argument)}` is already in "
+                f"radians ({unit.evidence})",
+                replacement=facts.index.segment(argument) or None,
+                applicability="unsafe",
+                fix_description="drop the conversion",
+                evidence=(unit.evidence,),
+            )
+            return
+        if not is_scipy_rotation_method(facts, node.func, "from_euler"):
+            return
+        degrees = keyword(node, "degrees")
+        if degrees is None or not (isinstance(degrees.value, ast.Constant) and degrees.value.value is True):
+            return
+        positional = positional_args(node)
+        angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
+        if angles is None:
+            return
+        elements = list(angles.elts) if isinstance(angles, (ast.List, ast.Tuple)) else [angles]
+        found = [(element, units.unit_of(element)) for element in elements]
+        in_radians = [(element, unit) for element, unit in found if unit is not None and unit.unit == RADIANS]
+        if not in_radians or any(unit is not None and unit.unit == DEGREES for _, unit in found):
+            return
+        element, unit = in_radians[0]
+        self.report(
+            element,
+            f"`{self.code_of(node.func)}(..., degrees=True)` reads degrees, but `{self.code_of(element)}` is in radians "
+            f"({unit.evidence})",
+            evidence=(unit.evidence,),
+        )

@@ -1,0 +1,486 @@
+"""Where a quaternion's component order comes from: producers, reorders and the values in between.
+
+GEO301 (quaternion order) and GEO304 (repeated component) ask two questions of an expression:
+
+- `order_of(x)`: which order its four components are in (`wxyz` from `mat2quat`, `xyzw` from
+  scipy's `as_quat()`, a spelled-out `[o.w, o.x, o.y, o.z]`, a name `quat_wxyz`), followed
+  through names bound in the same scope, `self.attr` stores, record attributes filled by keyword
+  (`Record(quaternion=q)` read back as `record.quaternion`), pass-through calls and reorders.
+  Conflicting or missing evidence anywhere on the way gives None.
+- `reorder_of(x)`: whether it is a reorder of another 4-vector (`q[..., [3, 0, 1, 2]]`,
+  `np.roll(q, 1)`, `[q[3], q[0], q[1], q[2]]`) and by which permutation.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from dataclasses import dataclass
+
+from geolint.factbase.index import LoopBinding, ParamBinding, UnpackBinding
+from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts
+from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, quaternion_producer
+from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
+
+COMPONENTS = "wxyz"
+STANDARD_ORDERS = (SCALAR_FIRST, SCALAR_LAST)
+# mujoco's quaternion arrays (w, x, y, z), one row per body/geom/site/camera.
+_MUJOCO_ATTRIBUTES = frozenset({"xquat", "body_xquat", "body_quat", "geom_quat", "site_quat", "cam_quat", "body_iquat"})
+_MUJOCO_GETTERS = frozenset({"get_body_xquat", "get_site_xquat", "get_geom_xquat"})
+_MUJOCO_MODULES = ("mujoco", "mujoco_py", "dm_control")
+# pybullet calls returning (position, orientation): the orientation is (x, y, z, w).
+_PYBULLET_PAIRS = frozenset({"getBasePositionAndOrientation", "multiplyTransforms", "invertTransform"})
+_PYQUATERNION = ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion")
+_TYPING_WORDS = frozenset(
+    {"List", "Sequence", "Iterable", "Iterator", "Optional", "Tuple", "Dict", "Union", "Set", "Collection", "Mapping", "Any", "Type"}
+)
+_NAME_ORDER = re.compile(r"(?i)(?:^|_|\d)(wxyz|xyzw)(?:$|_|s\b)")
+_MAX_DEPTH = 12
+
+
+@dataclass(frozen=True)
+class Order:
+    """The component order of a quaternion value and why it is known.
+
+    `local` is True when code in the same function decides it (a fix may rely on it); `batch`
+    when the value is a stack of quaternions (indexing one row keeps the order).
+    """
+
+    order: str
+    evidence: str
+    local: bool = True
+    batch: bool = False
+
+
+@dataclass(frozen=True)
+class Reorder:
+    """`node` rearranges the last axis of `base`: component i of the result is `base[..., permutation[i]]`."""
+
+    node: ast.expr
+    base: ast.expr
+    permutation: tuple[int, ...]
+    spelling: str  # "index" (`q[..., [3, 0, 1, 2]]`), "roll" or "spelled" (`[q[3], q[0], ...]`)
+
+
+def permuted(order: str, permutation: tuple[int, ...]) -> str:
+    return "".join(order[index] for index in permutation)
+
+
+def permutation_between(source: str, target: str) -> tuple[int, ...]:
+    """The index list that turns components in `source` order into `target` order."""
+    return tuple(source.index(letter) for letter in target)
+
+
+def label(order: str) -> str:
+    return f"({', '.join(order)})"
+
+
+def name_order(name: str) -> str | None:
+    """`quat_wxyz`, `orientations_quat_xyzw`: the order a name states in so many words."""
+    found = {match.lower() for match in _NAME_ORDER.findall(name)}
+    return found.pop() if len(found) == 1 else None
+
+
+def component_index(node: ast.expr) -> tuple[ast.expr, int] | None:
+    """`q[3]`, `q[:, 3]`, `q[..., 3]`: (q, 3) for an integer last index after full slices only."""
+    if not isinstance(node, ast.Subscript):
+        return None
+    parts = subscript_parts(node)
+    *leading, last = parts
+    if not all(is_full_slice(part) or _is_ellipsis(part) for part in leading):
+        return None
+    value = number(last)
+    if not isinstance(value, int) or isinstance(value, bool) or not -4 <= value <= 3:
+        return None
+    return node.value, value % 4
+
+
+def spelled_components(facts: FactBase, node: ast.expr) -> list[ast.expr] | None:
+    """The four elements of `[a, b, c, d]`, `(a, b, c, d)` or `np.array([a, b, c, d])`."""
+    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor", "as_tensor") and len(node.args) == 1:
+        if facts.is_array_call(node.func, "array", "asarray", "tensor", "as_tensor"):
+            node = node.args[0]
+    if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 4 and not any(isinstance(e, ast.Starred) for e in node.elts):
+        return list(node.elts)
+    return None
+
+
+def same_base(facts: FactBase, elements: list[ast.expr]) -> tuple[ast.expr, list[int]] | None:
+    """`[q[1], q[2], q[3], q[0]]` -> (q, [1, 2, 3, 0]): integer components of one base expression."""
+    found = [component_index(element) for element in elements]
+    if any(item is None for item in found):
+        return None
+    bases = {ast.dump(item[0]) for item in found}  # type: ignore[index]
+    if len(bases) != 1:
+        return None
+    return found[0][0], [item[1] for item in found]  # type: ignore[index]
+
+
+def _is_ellipsis(node: ast.AST) -> bool:
+    return isinstance(node, ast.Constant) and node.value is Ellipsis
+
+
+def _words(name: str) -> list[str]:
+    return [word.lower() for word in re.findall(r"[A-Z]?[a-z0-9]+|[A-Z]+(?![a-z])", name)]
+
+
+class QuaternionFlow:
+    """The order and reorder questions, answered on one module's fact base (memoised per node)."""
+
+    def __init__(self, facts: FactBase) -> None:
+        self.facts = facts
+        self._orders: dict[int, Order | None] = {}
+        self._active: set[int] = set()
+        self._keyword_stores: dict[tuple[str, str], list[ast.expr | None]] | None = None
+        self._module_permutations: set[tuple[int, ...]] | None = None
+
+    # -- reorders ------------------------------------------------------------------------
+    def reorder_of(self, node: ast.expr, through_names: bool = True) -> Reorder | None:
+        facts = self.facts
+        node = self._strip(node)
+        if isinstance(node, ast.Subscript):
+            parts = subscript_parts(node)
+            *leading, last = parts
+            if all(is_full_slice(part) or _is_ellipsis(part) for part in leading):
+                permutation = _index_list(facts, last)
+                if permutation is not None:
+                    return Reorder(node, node.value, permutation, "index")
+            return None
+        if isinstance(node, ast.Call):
+            rolled = self._roll(node)
+            if rolled is not None:
+                return rolled
+        elements = spelled_components(facts, node)
+        if elements is not None:
+            spelled = same_base(facts, elements)
+            if spelled is not None and sorted(spelled[1]) == [0, 1, 2, 3] and spelled[1] != [0, 1, 2, 3]:
+                return Reorder(node, spelled[0], tuple(spelled[1]), "spelled")
+            return None
+        if through_names and isinstance(node, ast.Name):
+            bound = facts.bindings(node) or []
+            if len(bound) == 1 and isinstance(bound[0], ast.expr) and not self._modified(node):
+                return self.reorder_of(bound[0], through_names=False)
+        return None
+
+    def _roll(self, call: ast.Call) -> Reorder | None:
+        facts = self.facts
+        if not facts.is_array_call(call.func, "roll"):
+            return None
+        positional = positional_args(call)
+        if not positional:
+            return None
+        shift_node = positional[1] if len(positional) > 1 else getattr(keyword(call, "shift") or keyword(call, "shifts"), "value", None)
+        axis_node = positional[2] if len(positional) > 2 else getattr(keyword(call, "axis") or keyword(call, "dims"), "value", None)
+        shift = number(shift_node)
+        if not isinstance(shift, int) or shift % 4 not in (1, 3):
+            return None
+        if axis_node is not None and number(axis_node) not in (-1, 1):
+            return None
+        permutation = (3, 0, 1, 2) if shift % 4 == 1 else (1, 2, 3, 0)
+        return Reorder(call, positional[0], permutation, "roll")
+
+    def module_applies(self, permutation: tuple[int, ...]) -> bool:
+        """Whether the module stores data reordered by `permutation` (an index list, a roll, a
+        spelled-out list whose result is kept rather than handed straight to a quaternion API)."""
+        if self._module_permutations is None:
+            found: set[tuple[int, ...]] = set()
+            for node in self.facts.index.nodes(ast.Subscript, ast.Call, ast.List, ast.Tuple):
+                reorder = self.reorder_of(node, through_names=False)  # type: ignore[arg-type]
+                if reorder is not None and not self._consumed_directly(reorder.node):
+                    found.add(reorder.permutation)
+            self._module_permutations = found
+        return permutation in self._module_permutations
+
+    def _consumed_directly(self, node: ast.expr) -> bool:
+        from geolint.factbase.rotations import quaternion_argument, quaternion_order
+
+        parent = self.facts.parent(node)
+        return isinstance(parent, ast.Call) and quaternion_order(self.facts, parent) is not None and quaternion_argument(self.facts, parent) is node
+
+    # -- orders --------------------------------------------------------------------------
+    def order_of(self, node: ast.expr) -> Order | None:
+        key = id(node)
+        if key in self._orders:
+            return self._orders[key]
+        if key in self._active or len(self._active) > _MAX_DEPTH:
+            return None
+        self._active.add(key)
+        try:
+            found = self._order(node)
+        finally:
+            self._active.discard(key)
+        self._orders[key] = found
+        return found
+
+    def _order(self, node: ast.expr) -> Order | None:
+        facts = self.facts
+        node = self._strip(node)
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            return self.order_of(node.operand)
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Div, ast.Mult)):
+            # `q / np.linalg.norm(q)`, `q * sign`: scaling keeps the order
+            if facts.is_norm_call(node.right) or number(node.right) is not None:
+                return self.order_of(node.left)
+            return None
+        reorder = self.reorder_of(node, through_names=False)
+        if reorder is not None:
+            base = self.order_of(reorder.base)
+            if base is None or base.batch and reorder.spelling == "spelled":  # rows of a stack, not components
+                return None
+            return Order(permuted(base.order, reorder.permutation), base.evidence, base.local)
+        if isinstance(node, ast.Call):
+            return self._order_of_call(node)
+        if isinstance(node, ast.Name):
+            return self._order_of_name(node)
+        if isinstance(node, ast.Attribute):
+            return self._order_of_attribute(node)
+        if isinstance(node, ast.Subscript):
+            return self._order_of_row(node)
+        elements = spelled_components(facts, node)
+        if elements is not None:
+            order = _spelled_order(elements)
+            if order is not None:
+                return Order(order, f"from components spelled out at line {node.lineno}")
+        return None
+
+    def _order_of_call(self, call: ast.Call) -> Order | None:
+        facts = self.facts
+        produced = quaternion_producer(facts, call)
+        if produced is not None:
+            return Order(produced, f"from `{facts.code_of(call)}`, line {call.lineno}")
+        name = last_name(call.func)
+        if name in _MUJOCO_GETTERS and self._imports(*_MUJOCO_MODULES):
+            return Order(SCALAR_FIRST, f"from mujoco's `{name}`, line {call.lineno}")
+        elements = spelled_components(facts, call)
+        if elements is not None:
+            order = _spelled_order(elements)
+            if order is not None:
+                return Order(order, f"from components spelled out at line {call.lineno}")
+        return None
+
+    def _order_of_row(self, node: ast.Subscript) -> Order | None:
+        """`data.xquat[body_id]` (one row of a stack) and pybullet's `getBasePositionAndOrientation(i)[1]`."""
+        index = node.slice
+        if isinstance(node.value, ast.Call) and last_name(node.value.func) in _PYBULLET_PAIRS and number(index) == 1:
+            return Order(SCALAR_LAST, f"from pybullet's `{last_name(node.value.func)}`, line {node.lineno}")
+        if isinstance(index, (ast.Slice, ast.Tuple, ast.List, ast.Starred)):
+            return None
+        base = self.order_of(node.value)
+        if base is not None and base.batch:
+            return Order(base.order, base.evidence, base.local)
+        return None
+
+    def _order_of_name(self, node: ast.Name) -> Order | None:
+        facts = self.facts
+        stated = name_order(node.id)
+        by_name = Order(stated, f"from its name `{node.id}`", local=True) if stated else None
+        bound = facts.bindings(node)
+        by_value: Order | None = None
+        if bound and not self._modified(node):
+            found = [self._order_of_binding(binding) for binding in bound]
+            if all(item is not None for item in found):
+                orders = {item.order for item in found}  # type: ignore[union-attr]
+                if len(orders) == 1:
+                    first = found[0]
+                    by_value = Order(first.order, first.evidence, all(item.local for item in found), all(item.batch for item in found))  # type: ignore[union-attr]
+        if by_name is not None and by_value is not None:
+            return by_value if by_value.order == by_name.order else None  # names and code disagree: silence
+        return by_value or by_name
+
+    def _order_of_binding(self, binding: object) -> Order | None:
+        if isinstance(binding, ast.expr):
+            return self.order_of(binding)
+        if isinstance(binding, UnpackBinding) and binding.position == 1 and isinstance(binding.value, ast.Call):
+            if last_name(binding.value.func) in _PYBULLET_PAIRS:
+                return Order(SCALAR_LAST, f"from pybullet's `{last_name(binding.value.func)}`, line {binding.value.lineno}")
+        if isinstance(binding, LoopBinding) and binding.position is None:
+            rows = self.order_of(binding.iterable)
+            if rows is not None and rows.batch:
+                return Order(rows.order, rows.evidence, rows.local)
+        return None
+
+    def _order_of_attribute(self, node: ast.Attribute) -> Order | None:
+        facts = self.facts
+        attr = node.attr
+        if attr in _MUJOCO_ATTRIBUTES and self._imports(*_MUJOCO_MODULES):
+            return Order(SCALAR_FIRST, f"from mujoco's `{attr}`", batch=True)
+        if attr in ("elements", "q") and self._is_pyquaternion(node.value):
+            return Order(SCALAR_FIRST, f"from pyquaternion's `.{attr}`")
+        stated = name_order(attr)
+        by_name = Order(stated, f"from its name `{attr}`", local=False) if stated else None
+        if isinstance(node.value, ast.Name) and node.value.id == "self":
+            stores: list[ast.expr | None] = list(facts.index.self_attribute_stores.get(attr, []))
+            where = f"`self.{attr}`"
+        else:
+            cls = self._class_of(node.value)
+            stores = self._record_stores(cls, attr) if cls is not None else []
+            where = f"`{cls}.{attr}`"
+        by_value: Order | None = None
+        if stores and all(store is not None for store in stores):
+            found = [self.order_of(store) for store in stores]  # type: ignore[arg-type]
+            if all(item is not None for item in found) and len({item.order for item in found}) == 1:  # type: ignore[union-attr]
+                first = found[0]
+                by_value = Order(first.order, f"{where} is set {first.evidence}", local=False, batch=first.batch)  # type: ignore[union-attr]
+        if by_name is not None and by_value is not None:
+            return by_value if by_value.order == by_name.order else None
+        return by_value or by_name
+
+    # -- records: `Record(quaternion=q)` read back as `record.quaternion` ------------------------
+    def _class_of(self, node: ast.expr) -> str | None:
+        """The class of a name's value when every binding says it: a constructor call, a parameter
+        annotated with one class (`label: Record`, `labels: List[Record]`), or a loop over such a parameter."""
+        if not isinstance(node, ast.Name):
+            return None
+        bound = self.facts.bindings(node) or []
+        found = {self._class_of_binding(binding) for binding in bound}
+        return found.pop() if len(found) == 1 and None not in found else None
+
+    def _class_of_binding(self, binding: object) -> str | None:
+        if isinstance(binding, ast.Call):
+            name = last_name(binding.func)
+            return name if name and name[:1].isupper() else None
+        if isinstance(binding, ParamBinding) and binding.arg.annotation is not None:
+            classes = {
+                sub.id if isinstance(sub, ast.Name) else sub.attr
+                for sub in ast.walk(binding.arg.annotation)
+                if isinstance(sub, (ast.Name, ast.Attribute)) and not (isinstance(sub, ast.Name) and sub.id in _TYPING_WORDS)
+                and not isinstance(self.facts.parent(sub), ast.Attribute)
+            }
+            classes |= {value for sub in ast.walk(binding.arg.annotation) if (value := string(sub)) is not None}
+            classes = {name for name in classes if name[:1].isupper() and name not in _TYPING_WORDS}
+            return classes.pop() if len(classes) == 1 else None
+        if isinstance(binding, LoopBinding) and binding.position is None and isinstance(binding.iterable, ast.Name):
+            return self._class_of(binding.iterable)
+        return None
+
+    def _record_stores(self, cls: str, attr: str) -> list[ast.expr | None]:
+        """Every value the module stores into `<cls instance>.attr`; None for a store whose value is
+        unknown (a positional argument, a receiver of another or unknown class)."""
+        if self._keyword_stores is None:
+            self._keyword_stores = {}
+            facts = self.facts
+            for call in facts.index.nodes(ast.Call):
+                name = last_name(call.func)  # type: ignore[attr-defined]
+                if not name or not name[:1].isupper():
+                    continue
+                for given in call.keywords:  # type: ignore[attr-defined]
+                    if given.arg is not None:
+                        self._keyword_stores.setdefault((name, given.arg), []).append(given.value)
+                if call.args:  # type: ignore[attr-defined]
+                    self._keyword_stores.setdefault((name, "*"), []).append(None)
+            for scope in facts.index.scopes.values():
+                for target, value in scope.attribute_stores:
+                    owner = target.value
+                    if isinstance(owner, ast.Name) and owner.id == "self":
+                        enclosing = scope.node
+                        while enclosing is not None and not isinstance(enclosing, ast.ClassDef):
+                            enclosing = facts.parent(enclosing)  # type: ignore[assignment]
+                        owner_class = enclosing.name if isinstance(enclosing, ast.ClassDef) else None
+                    else:
+                        owner_class = self._class_of(owner) if isinstance(owner, ast.Name) else None
+                    self._keyword_stores.setdefault((owner_class or "?", target.attr), []).append(value if owner_class else None)
+        stores = list(self._keyword_stores.get((cls, attr), []))
+        if (cls, "*") in self._keyword_stores or ("?", attr) in self._keyword_stores:
+            stores.append(None)  # set positionally, or on a receiver of unknown class: not all stores are known
+        return stores
+
+    # -- helpers -------------------------------------------------------------------------
+    def _strip(self, node: ast.expr) -> ast.expr:
+        """Look through calls that keep the values: `np.asarray(q)`, `q.copy()`, `list(q)`, `q.astype(float)`."""
+        facts = self.facts
+        for _ in range(8):
+            if not isinstance(node, ast.Call):
+                return node
+            func = node.func
+            positional = positional_args(node)
+            if isinstance(func, ast.Name) and func.id in ("list", "tuple") and len(node.args) == 1 and func.id not in facts.index.imports:
+                node = node.args[0]
+            elif (
+                isinstance(func, ast.Attribute)
+                and len(positional) == 1
+                and not isinstance(positional[0], (ast.List, ast.Tuple))
+                and facts.is_array_call(func, *PASSTHROUGH_FUNCTIONS)
+            ):
+                node = positional[0]
+            elif isinstance(func, ast.Attribute) and (func.attr in PASSTHROUGH_METHODS or func.attr == "tolist") and not facts.is_module_like(func.value):
+                if func.attr in ("reshape", "view") and any(number(arg) not in (-1, 4, 1) for arg in node.args):
+                    return node
+                node = func.value
+            else:
+                return node
+        return node
+
+    def _modified(self, name: ast.Name) -> bool:
+        """`q[0] = ...` / `q += ...` in the name's scope: its components may have been rewritten."""
+        scope = self.facts.index.scope_of(name)
+        return name.id in scope.subscript_stores or name.id in scope.augmented
+
+    def _is_pyquaternion(self, node: ast.expr) -> bool:
+        facts = self.facts
+        for _ in range(6):
+            if isinstance(node, ast.Call):
+                func = node.func
+                qualified = facts.qualified_name(func) or ""
+                if qualified in _PYQUATERNION or qualified.rsplit(".", 1)[0] in _PYQUATERNION:
+                    return True
+                return False
+            if isinstance(node, ast.Name):
+                bound = facts.bindings(node) or []
+                return bool(bound) and all(isinstance(b, ast.expr) and self._is_pyquaternion(b) for b in bound)
+            if isinstance(node, ast.Attribute) and node.attr in ("normalised", "unit", "inverse", "conjugate"):
+                node = node.value
+                continue
+            return False
+        return False
+
+    def _imports(self, *modules: str) -> bool:
+        imported = self.facts.index.imports.values()
+        return any(name.split(".")[0] in modules for name in imported)
+
+
+def _index_list(facts: FactBase, node: ast.AST) -> tuple[int, ...] | None:
+    """`[3, 0, 1, 2]` (or `np.array([...])`) as an index: a non-identity permutation of 0..3."""
+    if isinstance(node, ast.Call) and facts.is_array_call(node.func, "array", "asarray", "tensor") and len(node.args) == 1:
+        node = node.args[0]
+    if not isinstance(node, ast.List) or len(node.elts) != 4:
+        return None
+    values = [number(element) for element in node.elts]
+    if any(not isinstance(value, int) or isinstance(value, bool) for value in values):
+        return None
+    permutation = tuple(value % 4 for value in values if -4 <= value <= 3)  # type: ignore[operator]
+    if len(permutation) != 4 or sorted(permutation) != [0, 1, 2, 3] or permutation == (0, 1, 2, 3):
+        return None
+    return permutation
+
+
+def _spelled_order(elements: list[ast.expr]) -> str | None:
+    """'wxyz' for `[q.w, q.x, q.y, q.z]` or `[qw, qx, qy, qz]` (one owner, each component once)."""
+    letters = []
+    owners = set()
+    for element in elements:
+        if isinstance(element, ast.Attribute) and element.attr in COMPONENTS:
+            letters.append(element.attr)
+            owners.add(ast.dump(element.value))
+        elif isinstance(element, ast.Subscript) and string(element.slice) in tuple(COMPONENTS):
+            letters.append(string(element.slice))
+            owners.add(ast.dump(element.value))
+        elif isinstance(element, ast.Name):
+            lowered = element.id.lower()
+            for prefix in ("q_", "quat_", "q", "quat", "rot_", "orientation_", "ori_", ""):
+                rest = lowered[len(prefix) :]
+                if lowered.startswith(prefix) and len(rest) == 1 and rest in COMPONENTS:
+                    letters.append(rest)
+                    owners.add(prefix)
+                    break
+            else:
+                return None
+        else:
+            return None
+    order = "".join(letters)  # type: ignore[arg-type]
+    if len(owners) != 1 or sorted(order) != sorted(COMPONENTS) or order not in STANDARD_ORDERS:
+        return None
+    return order
+
+
+def convention(order: str) -> str:
+    return "scalar-first (w, x, y, z)" if order == SCALAR_FIRST else "scalar-last (x, y, z, w)" if order == SCALAR_LAST else label(order)
