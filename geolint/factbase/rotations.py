@@ -49,6 +49,8 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
         return SCALAR_FIRST
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and "quaternion" in name:
         return SCALAR_LAST
+    if qualified.startswith("geometry_msgs.") and name == "Quaternion":
+        return SCALAR_LAST  # ROS 1 messages take positional fields in declaration order: x, y, z, w
     if name in _PYBULLET_CONSUMERS:  # on the module or on a BulletClient
         return SCALAR_LAST
     return _DATA_CONSUMERS.get(_library_key(qualified, name))
@@ -71,6 +73,8 @@ def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         if given is not None and not positional:
             return given.value
         return positional[0] if len(positional) == 1 and not call.keywords else None
+    if qualified.startswith("geometry_msgs."):
+        return None  # a message takes its components one by one
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name not in _TF_QUATERNION_INPUTS:
         return None  # quaternion_from_euler & co take angles or matrices
     if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):

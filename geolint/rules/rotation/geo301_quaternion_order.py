@@ -33,7 +33,8 @@ class QuaternionOrder(FactRule):
     `[qx, qy, qz, qw]`) and passed to an API that expects the other order: scipy
     `Rotation.from_quat` (x, y, z, w unless `scalar_first=True`), transforms3d `quat2*`,
     pytransform3d `*_from_quaternion`, pyquaternion `Quaternion` and spatialmath
-    `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` (x, y, z, w); also trimesh's
+    `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` and ROS 1 `geometry_msgs.msg.Quaternion`
+    (x, y, z, w); also trimesh's
     `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array` and pybullet
     `get*FromQuaternion`. Through data it also flags:
 
@@ -47,9 +48,10 @@ class QuaternionOrder(FactRule):
       `np.array([o.w, o.x, o.y, o.z])`, or a name that states it (`quat_wxyz`), followed through
       local variables, `self` attributes, and record fields filled by keyword in the same module
       (`Label(quaternion=q)` read back as `label.quaternion` from a parameter annotated `Label`);
-    - a dict, keyword call or message filled component by component from such a value in the
-      wrong order: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
-      scalar-last one.
+    - a dict, keyword call or message filled component by component with the scalar part in the
+      wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
+      scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
+      among themselves with w in place is an axis change and stays silent.
 
     ## Why is this bad?
     Both orders give a valid unit quaternion, so nothing fails: the rotation is just wrong (the
@@ -102,6 +104,11 @@ class QuaternionOrder(FactRule):
         Valid("from transforms3d.quaternions import quat2mat\nimport numpy as np\ndef f(q):\n    return quat2mat(np.roll(q, 1))\n"),
         Valid("from scipy.spatial.transform import Rotation\ndef f(X):\n    return Rotation.from_quat(X[:, [3, 0, 1, 2]], scalar_first=True)\n"),
         Valid("def f(rec):\n    return {'x': rec.q[0], 'y': rec.q[1], 'z': rec.q[2], 'w': rec.q[3]}\n"),
+        Valid("def enu_to_ned(q):\n    return {'x': q.y, 'y': q.x, 'z': -q.z, 'w': q.w}\n"),  # an axis change
+        Valid(
+            "from transforms3d.quaternions import mat2quat\ndef f(R):\n    q = mat2quat(R)\n"
+            "    return {'x': q[2], 'y': q[1], 'z': q[3], 'w': q[0]}\n"
+        ),  # w in place, x and y swapped: an axis change
         Valid(
             "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
             "def f(R):\n    quat_xyzw = mat2quat(R)\n    return Rotation.from_quat(quat_xyzw)\n"
@@ -162,6 +169,11 @@ class QuaternionOrder(FactRule):
         Invalid(
             "from scipy.spatial.transform import Rotation\ndef f(msg, yaw):\n    q = Rotation.from_euler('z', yaw).as_quat()\n"
             "    msg.w = q[0]\n    msg.x = q[1]\n    msg.y = q[2]\n    msg.z = q[3]\n"
+        ),
+        Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
+        Invalid(
+            "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
+            expected_fix="from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.x, o.y, o.z, o.w)\n",
         ),
     ]
 
@@ -235,8 +247,8 @@ class QuaternionOrder(FactRule):
         shown, func = facts.code_of(reorder.node), self.code_of(call.func)
         if base is not None:
             result = permuted(base.order, reorder.permutation)
-            if result == expected:
-                return
+            if result.index("w") == expected.index("w"):
+                return  # right, or x, y, z permuted among themselves: an axis change, not a convention slip
             message = (
                 f"`{facts.code_of(reorder.base)}` is {convention(base.order)} ({base.evidence}); `{shown}` makes it "
                 f"{label(result)}, but `{func}` expects {api_label(expected)}"
@@ -329,6 +341,17 @@ class QuaternionOrder(FactRule):
         self, reported: ast.AST, mapping: dict[str, ast.expr], flow: QuaternionFlow, shape: str, fixable: bool = True
     ) -> None:
         facts = self.facts
+        named = {letter: _component(facts, value) for letter, value in mapping.items()}
+        if all(found is not None and found[1] for found in named.values()) and len({found[1] for found in named.values()}) == 1:  # type: ignore[index]
+            source = named["w"][0]  # type: ignore[index]
+            if sorted(found[0] for found in named.values()) == sorted(COMPONENTS) and source != "w":  # type: ignore[index]
+                written = shape.format(letter="w", value=facts.code_of(mapping["w"]))
+                self.report(
+                    reported,
+                    f"{written} writes the {source} component into w: a quaternion's scalar part never moves to an axis "
+                    "slot (component names are the same in every convention)",
+                )
+            return
         spelled = same_base(facts, [mapping[letter] for letter in COMPONENTS])
         if spelled is None or sorted(spelled[1]) != [0, 1, 2, 3]:
             return
@@ -338,10 +361,9 @@ class QuaternionOrder(FactRule):
             return
         if order.batch and any(not isinstance(mapping[letter].slice, ast.Tuple) for letter in COMPONENTS):  # type: ignore[attr-defined]
             return  # `xquat[3]` is a row of the stack, not a component
-        wrong = [letter for letter, position in zip(COMPONENTS, indices) if order.order.index(letter) != position]
-        if not wrong:
-            return
-        letter = "w" if "w" in wrong else wrong[0]
+        if indices[0] == order.order.index("w"):
+            return  # w is read where it is; x, y, z permuted among themselves is an axis change
+        letter = "w"
         value = mapping[letter]
         written = shape.format(letter=letter, value=facts.code_of(value))
         right = order.order.index(letter)

@@ -86,6 +86,8 @@ def component_index(node: ast.expr) -> tuple[ast.expr, int] | None:
     if not isinstance(node, ast.Subscript):
         return None
     parts = subscript_parts(node)
+    if not parts:
+        return None  # `x[()]`
     *leading, last = parts
     if not all(is_full_slice(part) or _is_ellipsis(part) for part in leading):
         return None
@@ -140,6 +142,8 @@ class QuaternionFlow:
         node = self._strip(node)
         if isinstance(node, ast.Subscript):
             parts = subscript_parts(node)
+            if not parts:
+                return None  # `x[()]`
             *leading, last = parts
             if all(is_full_slice(part) or _is_ellipsis(part) for part in leading):
                 permutation = _index_list(facts, last)

@@ -1,0 +1,88 @@
+"""The rotation rules that follow data (GEO301 through reorders and producers, GEO302 through degree
+values, GEO304, GEO305): no finding on installed real code, no crash on odd subscripts, and the
+evidence chain they report is the one in the code. All through the real CLI."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import sysconfig
+from pathlib import Path
+
+import pytest
+
+SITE = Path(sysconfig.get_paths()["purelib"])
+CODES = "GEO301,GEO302,GEO304,GEO305"
+
+
+def check(paths: list[str], cwd: Path | None = None) -> list[dict]:
+    result = subprocess.run(
+        [sys.executable, "-m", "geolint", "check", "--select", CODES, "--format", "json", "--no-cache", *paths],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+    )
+    assert result.returncode in (0, 1), result.stderr
+    assert "internal error" not in result.stderr and "Traceback" not in result.stderr, result.stderr
+    return json.loads(result.stdout)
+
+
+@pytest.mark.slow
+def test_no_finding_on_all_installed_packages() -> None:
+    """Every installed distribution (numpy, scipy, trimesh, pytransform3d, spatialmath, matplotlib,
+    mypy's typeshed stubs...): mature code where a finding of these rules would be false."""
+    assert check([str(SITE)]) == []
+
+
+def test_no_finding_on_scipy_and_pytransform3d_quickly() -> None:
+    present = [str(SITE / name) for name in ("scipy/spatial/transform", "pytransform3d") if (SITE / name).exists()]
+    if not present:
+        pytest.skip("neither scipy nor pytransform3d is installed")
+    assert check(present) == []
+
+
+def test_odd_subscripts_and_shapes_do_not_crash(tmp_path: Path) -> None:
+    (tmp_path / "odd.py").write_text(
+        "import numpy as np\nfrom scipy.spatial.transform import Rotation\n"
+        "x = y[()]\n"
+        "d = {'x': a[()], 'y': a[1], 'z': a[2], 'w': a[3]}\n"
+        "v = [q[()], q[1], q[2], q[3]]\n"
+        "r = Rotation.from_quat(q[..., []])\n"
+        "s = Rotation.from_quat(np.roll(q, shift=n))\n"
+        "t = Rotation.from_quat(*qs)\n"
+        "u = np.cos(np.degrees())\n"
+        "w = np.radians()\n"
+    )
+    assert check(["odd.py"], cwd=tmp_path) == []
+
+
+def test_the_reported_evidence_names_the_producer_and_its_line(tmp_path: Path) -> None:
+    (tmp_path / "labels.py").write_text(
+        "from typing import List\n"
+        "import quaternion\n"
+        "class Label:\n"
+        "    pass\n"
+        "def make(q):\n"
+        "    return Label(quaternion=quaternion.as_float_array(q))\n"
+        "def save(labels: List[Label]):\n"
+        "    out = []\n"
+        "    for label in labels:\n"
+        "        out.append({'x': label.quaternion[0], 'y': label.quaternion[1],\n"
+        "                    'z': label.quaternion[2], 'w': label.quaternion[3]})\n"
+        "    return out\n"
+    )
+    (finding,) = check(["labels.py"], cwd=tmp_path)
+    assert finding["code"] == "GEO301" and finding["line"] == 10
+    assert "`Label.quaternion` is set from `quaternion.as_float_array(q)`, line 6" in finding["message"]
+    assert "w is component 0" in finding["message"]
+
+
+def test_a_record_filled_elsewhere_stays_silent(tmp_path: Path) -> None:
+    """The same writer with the record built in another module: no producer in sight, no finding."""
+    (tmp_path / "writer.py").write_text(
+        "from typing import List\nfrom records import Label\n"
+        "def save(labels: List[Label]):\n"
+        "    return [{'x': l.quaternion[0], 'y': l.quaternion[1], 'z': l.quaternion[2], 'w': l.quaternion[3]} for l in labels]\n"
+    )
+    assert check(["writer.py"], cwd=tmp_path) == []
