@@ -186,3 +186,25 @@ def test_a_property_write_counts_for_its_private_backing_attribute() -> None:
                 self.normals = (R_pc_obj.T.dot(self.normals.T)).T
     """
     assert codes(source) == []
+
+
+def test_stored_together_into_one_object() -> None:
+    source = """
+    import open3d as o3d
+
+    def cloud_in_base(xyz_cam, normals, T_base_cam):
+        xyz_base = xyz_cam @ T_base_cam[:3, :3].T + T_base_cam[:3, 3]
+        cloud = o3d.geometry.PointCloud()
+        cloud.points = o3d.utility.Vector3dVector(xyz_base)
+        cloud.normals = o3d.utility.Vector3dVector(normals)
+        return cloud
+
+    def cloud_in_base_fixed(xyz_cam, normals, T_base_cam):
+        xyz_base = xyz_cam @ T_base_cam[:3, :3].T + T_base_cam[:3, 3]
+        normals_base = normals @ T_base_cam[:3, :3].T
+        cloud = o3d.geometry.PointCloud()
+        cloud.points = o3d.utility.Vector3dVector(xyz_base)
+        cloud.normals = o3d.utility.Vector3dVector(normals_base)
+        return cloud
+    """
+    assert codes(source) == [(5, "GEO107")]

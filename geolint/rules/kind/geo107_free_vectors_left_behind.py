@@ -11,8 +11,8 @@ from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import OPERATORS, last_name, positional_args, string, transposed_value, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.kind.geo104_normals_left_behind import _TransformFinder
-from geolint.semantic.names import NON_GEOMETRIC_TOKENS, POINT_WORDS, frames_of_name, tokens
+from geolint.rules.kind.geo104_normals_left_behind import _returned_names, _TransformFinder, _uses_outside_returns
+from geolint.semantic.names import KNOWN_FRAMES, NON_GEOMETRIC_TOKENS, NOT_A_FRAME, POINT_WORDS, frames_of_name, tokens
 
 # Members (attributes, dict keys) that hold positions of an object: rotated AND translated.
 _POSITION_WORDS = POINT_WORDS | {
@@ -82,8 +82,11 @@ class FreeVectorsLeftBehind(FactRule):
       velocity-named slice of it (`vel = gt_boxes[:, 7:9]`): `gt_boxes[:, :3]` rotated (or one of
       its position columns mirrored, `gt_boxes[:, 1] = -gt_boxes[:, 1]`) while the velocity or
       heading columns are never written;
-    - values returned (or stacked into one array) together: `return points_world, normals` where
-      `points_world` is a rotated position and `normals` a free vector the function never rotates.
+    - values returned, stacked into one array, or stored into one object together:
+      `return points_world, normals`, `np.hstack([points_world, normals])`,
+      `cloud.points = Vector3dVector(points_world)` next to `cloud.normals = Vector3dVector(normals)`,
+      where `points_world` is a rotated position and `normals` a free vector the function never
+      rotates.
 
     The rule stays silent when the free vector is written, rotated, or handed to any other call in
     the function, when the whole object is passed on or moved by a library (`pcd.transform(T)`,
@@ -365,14 +368,26 @@ class FreeVectorsLeftBehind(FactRule):
                 seen.setdefault(member.name, role)
         return sorted(seen.items())
 
-    def _touched(self, body: list[ast.AST], skip_stackers: bool = False) -> set[tuple[str, str | int | None]]:
+    def _unwrapped(self, value: ast.expr) -> tuple[ast.expr, ast.Call | None]:
+        """`Vector3dVector(x)`, `np.asarray(x)`, `torch.from_numpy(x).float()` -> x and the wrapping call
+        (a call of one argument that neither rotates nor multiplies); anything else as it is."""
+        inner = _peel(value)
+        if isinstance(inner, ast.Name):
+            return inner, value if isinstance(value, ast.Call) else None
+        if isinstance(value, ast.Call) and len(value.args) == 1 and not value.keywords and not self._rotating_call(value):
+            argument = _peel(value.args[0])
+            if isinstance(argument, ast.Name) and self.facts.matmul(value) is None:
+                return argument, value
+        return value, None
+
+    def _touched(self, body: list[ast.AST], skip_stackers: bool = False, skip_calls: set[int] = frozenset()) -> set[tuple[str, str | int | None]]:  # type: ignore[assignment]
         """(owner, member) pairs handed to a call or a product in the function (maybe rotated there):
         a member by name or column number, a whole value with None."""
         facts = self.facts
         found: set[tuple[str, str | int | None]] = set()
         for node in body:
             operands: list[ast.AST] = []
-            if isinstance(node, ast.Call) and last_name(node.func) not in _READERS:
+            if isinstance(node, ast.Call) and last_name(node.func) not in _READERS and id(node) not in skip_calls:
                 if not (skip_stackers and facts.is_array_call(node.func, *_STACKERS)):
                     operands = [*node.args, *(keyword.value for keyword in node.keywords)]
                     if isinstance(node.func, ast.Attribute):
@@ -440,7 +455,20 @@ class FreeVectorsLeftBehind(FactRule):
                 arguments = positional_args(node)
                 if arguments and isinstance(arguments[0], (ast.List, ast.Tuple)):
                     groups.append(list(arguments[0].elts))
-        touched = self._touched(body, skip_stackers=True)
+        # stored into members of one object: `pcd.points = Vector3dVector(pts_world)`, `pcd.normals = ...`
+        wrappers: set[int] = set()
+        by_owner: dict[str, list[ast.expr]] = {}
+        for node in body:
+            if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], (ast.Attribute, ast.Subscript)):
+                member = self._member(node.targets[0])
+                if member is None or member.columns is not None:
+                    continue
+                value, wrapper = self._unwrapped(node.value)
+                if wrapper is not None:
+                    wrappers.add(id(wrapper))
+                by_owner.setdefault(member.owner, []).append(value)
+        groups += [values for values in by_owner.values() if len(values) > 1]
+        touched = self._touched(body, skip_stackers=True, skip_calls=wrappers)
         for group in groups:
             names = [element for element in group if isinstance(element, ast.Name)]
             moved = [(name, site) for name in names for site in [self._moved_position(name, scope)] if site is not None]
@@ -502,9 +530,14 @@ class FreeVectorsLeftBehind(FactRule):
                     return False  # computed from the moved positions
             elif not isinstance(binding, ParamBinding):
                 return False
-        if all(isinstance(binding, ParamBinding) for binding in bindings) and {"normal", "normals", "nrm", "nrms"} & set(tokens(vector.id)):
-            if _TransformFinder(self, params_only=scope.bindings).first(function, body_only=True) is not None:  # type: ignore[arg-type]
-                return False  # GEO104 reports it
+        if (
+            all(isinstance(binding, ParamBinding) for binding in bindings)
+            and {"normal", "normals", "nrm", "nrms"} & set(tokens(vector.id))
+            and vector.id in _returned_names(scope.returns)
+            and not _uses_outside_returns(function, vector.id)
+            and _TransformFinder(self, params_only=scope.bindings).first(function, body_only=True) is not None  # type: ignore[arg-type]
+        ):
+            return False  # GEO104 reports it
         return True
 
 
@@ -517,9 +550,11 @@ def _role(word: str) -> str | None:
         return None
     if word.lower() in _ORIENTATION_WORDS or parts[-1] in _ORIENTATION_WORDS:
         return "orientation"
-    if parts[-1] in _FREE_WORDS:
+    # the head noun, before a frame or qualifier suffix (`xyz_cam`, `points_world`, `vel_new`)
+    head = parts[-2] if len(parts) >= 2 and (parts[-1] in KNOWN_FRAMES or parts[-1] in NOT_A_FRAME) else parts[-1]
+    if head in _FREE_WORDS:
         return "free"
-    if parts[-1] in _POSITION_WORDS:
+    if head in _POSITION_WORDS:
         return "position"
     return None
 
