@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import ast
+import re
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, last_name, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
+from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.rotation.quaternion_flow import (
     COMPONENTS,
     STANDARD_ORDERS,
@@ -15,6 +17,7 @@ from geolint.rules.rotation.quaternion_flow import (
     Reorder,
     convention,
     label,
+    name_order,
     permutation_between,
     permuted,
     same_base,
@@ -22,6 +25,21 @@ from geolint.rules.rotation.quaternion_flow import (
 )
 
 _COMPONENTS = "wxyz"
+
+
+class _GateOrOrderName:
+    """The fact rules' gate, or a name that states a component order (`q_wxyz`, `quats_xyzw`)."""
+
+    _ORDER = re.compile(r"(?i)wxyz|xyzw")
+
+    def search(self, source: str, /) -> bool:
+        return bool(GATE_TRIGGER.search(source) or self._ORDER.search(source))
+
+    def search_with(self, source: str, config: object, /) -> bool:
+        return GATE_TRIGGER.search_with(source, config) or bool(self._ORDER.search(source))
+
+
+_GATE_OR_ORDER_NAME = _GateOrOrderName()
 _LETTERS = frozenset(_COMPONENTS)
 
 
@@ -48,6 +66,8 @@ class QuaternionOrder(FactRule):
       `np.array([o.w, o.x, o.y, o.z])`, or a name that states it (`quat_wxyz`), followed through
       local variables, `self` attributes, and record fields filled by keyword in the same module
       (`Label(quaternion=q)` read back as `label.quaternion` from a parameter annotated `Label`);
+    - a name that states an order (`quat_xyzw`, `q_wxyz`) bound to data in another one
+      (`quat_xyzw = mat2quat(R)`, `q_xyzw = (q_wxyz[3], q_wxyz[0], q_wxyz[1], q_wxyz[2])`);
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -81,13 +101,14 @@ class QuaternionOrder(FactRule):
     A wrong-way reorder of data whose order nothing states is not flagged in a module that also
     stores data reordered the opposite way (two rolls that cancel are correct, and the module may
     hold such non-standard data). Evidence is followed within one module only: a record field filled in another module, or a
-    parameter, has no known order and stays silent. A producer table entry is trusted over the
-    variable name it is stored in only when both agree; when a name (`quat_xyzw`) and its value
-    (`mat2quat(R)`) disagree the rule says nothing.
+    parameter, has no known order and stays silent. When a name (`quat_xyzw`) and its value
+    (`mat2quat(R)`) disagree, the binding is flagged once and the later uses of the name are not
+    judged.
     """
 
     code = "GEO301"
     name = "quaternion-order"
+    triggers = _GATE_OR_ORDER_NAME
 
     VALID = [
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.x, q.y, q.z, q.w])\n"),
@@ -104,15 +125,12 @@ class QuaternionOrder(FactRule):
         Valid("from transforms3d.quaternions import quat2mat\nimport numpy as np\ndef f(q):\n    return quat2mat(np.roll(q, 1))\n"),
         Valid("from scipy.spatial.transform import Rotation\ndef f(X):\n    return Rotation.from_quat(X[:, [3, 0, 1, 2]], scalar_first=True)\n"),
         Valid("def f(rec):\n    return {'x': rec.q[0], 'y': rec.q[1], 'z': rec.q[2], 'w': rec.q[3]}\n"),
+        Valid("def f(q_wxyz):\n    q_xyzw = (q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0])\n    return q_xyzw\n"),
         Valid("def enu_to_ned(q):\n    return {'x': q.y, 'y': q.x, 'z': -q.z, 'w': q.w}\n"),  # an axis change
         Valid(
             "from transforms3d.quaternions import mat2quat\ndef f(R):\n    q = mat2quat(R)\n"
             "    return {'x': q[2], 'y': q[1], 'z': q[3], 'w': q[0]}\n"
         ),  # w in place, x and y swapped: an axis change
-        Valid(
-            "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
-            "def f(R):\n    quat_xyzw = mat2quat(R)\n    return Rotation.from_quat(quat_xyzw)\n"
-        ),  # the name and the producer disagree: silence
         Valid(
             "import numpy as np\nimport torch\nimport trimesh.transformations as tra\n"
             "def load(data):\n    return {'quat': torch.roll(data[:, 3:7], 1, -1)}\n"
@@ -170,6 +188,11 @@ class QuaternionOrder(FactRule):
             "from scipy.spatial.transform import Rotation\ndef f(msg, yaw):\n    q = Rotation.from_euler('z', yaw).as_quat()\n"
             "    msg.w = q[0]\n    msg.x = q[1]\n    msg.y = q[2]\n    msg.z = q[3]\n"
         ),
+        Invalid(
+            "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
+            "def f(R):\n    quat_xyzw = mat2quat(R)\n    return Rotation.from_quat(quat_xyzw)\n"
+        ),  # once, at the binding: the name and the producer disagree, so the call itself is not judged
+        Invalid("def f(q_wxyz):\n    q_xyzw = (q_wxyz[3], q_wxyz[0], q_wxyz[1], q_wxyz[2])\n    return q_xyzw\n"),
         Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
         Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
@@ -183,6 +206,37 @@ class QuaternionOrder(FactRule):
         for node in facts.index.nodes(ast.Call):
             self._check(node, flow)  # type: ignore[arg-type]
         self._check_component_writes(flow)
+        for node in facts.index.nodes(ast.Assign):
+            self._check_named_target(node, flow)  # type: ignore[arg-type]
+
+    def _check_named_target(self, node: ast.Assign, flow: QuaternionFlow) -> None:
+        """`quat_xyzw = mat2quat(R)`: a name that states an order, bound to data in the other one."""
+        if len(node.targets) != 1 or not isinstance(node.targets[0], (ast.Name, ast.Attribute)):
+            return
+        target = node.targets[0]
+        stated = name_order(target.id if isinstance(target, ast.Name) else target.attr)
+        if stated is None:
+            return
+        order = flow.order_of(node.value)
+        if order is None or order.order.index("w") == stated.index("w"):
+            return
+        self.report(
+            node.value,
+            f"`{self.code_of(target)}` says {convention(stated)}, but the value is in {convention(order.order)} order "
+            f"({order.evidence})",
+            evidence=(order.evidence,),
+        )
+
+    def _name_contradicted(self, name: ast.Name, flow: QuaternionFlow) -> bool:
+        stated = name_order(name.id)
+        if stated is None:
+            return False
+        for binding in self.facts.bindings(name) or []:
+            if isinstance(binding, ast.expr):
+                order = flow.order_of(binding)
+                if order is not None and order.order.index("w") != stated.index("w"):
+                    return True
+        return False
 
     def _check(self, node: ast.Call, flow: QuaternionFlow) -> None:
         facts = self.facts
@@ -224,6 +278,8 @@ class QuaternionOrder(FactRule):
 
     # -- through data: reorders and producers ----------------------------------------------
     def _check_value(self, call: ast.Call, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
+        if isinstance(argument, ast.Name) and self._name_contradicted(argument, flow):
+            return  # reported once, where the name is bound
         reorder = flow.reorder_of(argument)
         if reorder is not None:
             self._check_reorder(call, argument, reorder, expected, flow)

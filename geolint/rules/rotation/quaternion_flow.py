@@ -231,7 +231,10 @@ class QuaternionFlow:
             base = self.order_of(reorder.base)
             if base is None or base.batch and reorder.spelling == "spelled":  # rows of a stack, not components
                 return None
-            return Order(permuted(base.order, reorder.permutation), base.evidence, base.local)
+            shown = self.facts.code_of(reorder.node)
+            if len(shown) > 60:
+                shown = f"{list(reorder.permutation)}"
+            return Order(permuted(base.order, reorder.permutation), f"{base.evidence}, reordered by `{shown}`", base.local)
         if isinstance(node, ast.Call):
             return self._order_of_call(node)
         if isinstance(node, ast.Name):
