@@ -174,7 +174,7 @@ def project_votes(root: Path) -> Votes:
                 text = data.decode("utf-8", errors="replace")
             except OSError:
                 continue
-            if "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text):
+            if "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
                 total = total + votes_of_source(text)
     with _lock:
         _project_votes[root] = total

@@ -1,0 +1,529 @@
+"""Camera extrinsics conventions stated by data: which way a camera pose maps, world to camera
+(w2c) or camera to world (c2w), and which part of it a value is (the pose, its rotation, its
+translation).
+
+Evidence, strongest first:
+
+1. data conventions: string keys of datasets and file formats (BOP `"cam_R_w2c"` / `"cam_t_w2c"`,
+   NeRF transforms.json `"transform_matrix"`, `meta["c2w"]`), library attributes (pycolmap
+   `image.cam_from_world`, `image.projection_center()`, COLMAP `image.qvec` / `image.tvec` /
+   `image.qvec2rotmat()`), followed through local data flow (flow-sensitive: a name rebound to
+   its own inverse holds the inverse from there on), inverses, transposes of rotations, blocks
+   written into a 4x4 (`T = np.eye(4); T[:3, :3] = R; T[:3, 3] = t`), `[R | t]` concatenations
+   and the hand-written inverse translation `-R.T @ t`;
+2. names whose direction is in the word itself (`c2w`, `pose_w2c`, `world_to_camera`,
+   `cam_from_world`, ORB-SLAM's `Tcw` / `Twc`): order-independent;
+3. `T_a_b` names with one camera frame, read in the project's naming order (`geolint.factbase.conventions`):
+   only when every open reading agrees.
+
+A pycolmap attribute's frames belong to its owner (`image1.cam_from_world` is camera 1's), but
+its direction does not: every `cam_from_world` maps world into a camera. This module answers only
+the direction, so two owners never conflict here.
+
+Every question answers None when the evidence is missing or contradictory.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from geolint.factbase.model import number, string
+
+if TYPE_CHECKING:
+    from geolint.factbase.model import FactBase, FrameFact
+    from geolint.rules.pose_parts import LocalValues
+
+W2C = "w2c"
+C2W = "c2w"
+POSE = "pose"
+ROTATION = "rotation"
+TRANSLATION = "translation"
+
+# How strong the evidence is: data conventions, an order-independent name, a `T_a_b` name.
+DATA = "data"
+NAME = "name"
+ORDERED_NAME = "ordered-name"
+
+DIRECTION_WORDS = {W2C: "world-to-camera", C2W: "camera-to-world"}
+
+# String keys of datasets and file formats that state a convention: (direction, part, where from).
+EXTRINSIC_KEYS: dict[str, tuple[str, str, str]] = {
+    "cam_R_w2c": (W2C, ROTATION, "BOP scene_camera.json"),
+    "cam_t_w2c": (W2C, TRANSLATION, "BOP scene_camera.json"),
+    "transform_matrix": (C2W, POSE, "NeRF transforms.json"),
+    "c2w": (C2W, POSE, "key"),
+    "w2c": (W2C, POSE, "key"),
+    "cam2world": (C2W, POSE, "key"),
+    "world2cam": (W2C, POSE, "key"),
+    "camera_to_world": (C2W, POSE, "key"),
+    "world_to_camera": (W2C, POSE, "key"),
+    "cam_to_world": (C2W, POSE, "key"),
+    "world_to_cam": (W2C, POSE, "key"),
+}
+# Attributes with a library's meaning (COLMAP's `Image` namedtuple, pycolmap's `Image`).
+EXTRINSIC_ATTRIBUTES: dict[str, tuple[str, str, str]] = {
+    "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world"),
+    "qvec": (W2C, ROTATION, "COLMAP Image.qvec"),
+    "tvec": (W2C, TRANSLATION, "COLMAP Image.tvec"),
+}
+# Methods called without arguments: (direction, part, where from).
+EXTRINSIC_METHODS: dict[str, tuple[str, str, str]] = {
+    "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world()"),
+    "qvec2rotmat": (W2C, ROTATION, "COLMAP Image.qvec2rotmat()"),
+    "projection_center": (C2W, TRANSLATION, "pycolmap Image.projection_center()"),
+}
+# Direction words inside names (`pose_c2w`, `R_w2c`) and phrases (`world_to_camera`).
+_NAME_TOKENS = {
+    "c2w": C2W, "w2c": W2C, "cam2world": C2W, "world2cam": W2C, "camera2world": C2W, "world2camera": W2C,
+    "cam2w": C2W, "w2cam": W2C,
+}  # fmt: skip
+_PHRASE = re.compile(r"(?:^|_)(cam|camera|world)_(to|from)_(cam|camera|world)(?:_|$)")
+_COMPACT = re.compile(r"^_*(?:self\.)?([TRt]|pose)_?(cw|wc)$")  # ORB-SLAM's Tcw (camera from world), Twc
+_CAMERA_FRAME = re.compile(r"(?:cam|camera)[0-9]*[a-z]?|c[0-9]*")
+_ROTATION_TOKENS = frozenset({"R", "rot", "rotation", "rotmat", "Rot"})
+_TRANSLATION_TOKENS = frozenset({"t", "trans", "translation", "tvec", "transl"})
+_BLOCK_MAKERS = frozenset({"eye", "identity", "zeros", "empty"})
+_INVERSES = frozenset({"inv", "inverse", "pinv", "Inverse", "inverted"})
+_JOINS = frozenset({"concatenate", "hstack", "vstack", "column_stack", "cat", "concat", "row_stack"})
+_PASS_ON = frozenset({"tolist", "matrix"})
+
+
+def flip(direction: str) -> str:
+    return W2C if direction == C2W else C2W
+
+
+def is_camera_frame(word: str | None) -> bool:
+    return word is not None and _CAMERA_FRAME.fullmatch(word.lower()) is not None
+
+
+@dataclass(frozen=True)
+class Extrinsic:
+    """A value that is (part of) a camera pose: `direction` w2c or c2w, `part` pose/rotation/translation."""
+
+    direction: str
+    part: str
+    evidence: tuple[str, ...]
+    strength: str = DATA
+
+    def inverted(self, how: str) -> Extrinsic:
+        return Extrinsic(flip(self.direction), self.part, (*self.evidence, how), self.strength)
+
+    def as_part(self, part: str, how: str = "") -> Extrinsic:
+        return Extrinsic(self.direction, part, (*self.evidence, how) if how else self.evidence, self.strength)
+
+    @property
+    def description(self) -> str:
+        what = {POSE: "pose", ROTATION: "rotation", TRANSLATION: "translation"}[self.part]
+        return f"{DIRECTION_WORDS[self.direction]} {what}"
+
+    @property
+    def explicit(self) -> bool:
+        """Data, or a name that says its direction in so many words (never a `T_a_b` reading)."""
+        return self.strength in (DATA, NAME)
+
+
+def _part_of_tokens(tokens: list[str]) -> str:
+    if any(token in _ROTATION_TOKENS for token in tokens):
+        return ROTATION
+    if any(token in _TRANSLATION_TOKENS for token in tokens):
+        return TRANSLATION
+    return POSE
+
+
+def name_extrinsic(facts: FactBase, name: str) -> Extrinsic | None:
+    """What a name states about camera extrinsics, or None (also when the readings disagree)."""
+    bare = name.strip("_")
+    compact = _COMPACT.match(bare)
+    if compact:
+        letter, frames = compact.groups()
+        part = ROTATION if letter == "R" else TRANSLATION if letter == "t" else POSE
+        return Extrinsic(W2C if frames == "cw" else C2W, part, (f"name `{name}` (ORB-SLAM: T_cw maps world into camera)",), NAME)
+    tokens = bare.split("_")
+    lowered = [token.lower() for token in tokens]
+    directions = {_NAME_TOKENS[token.rstrip("s")] for token in lowered if token.rstrip("s") in _NAME_TOKENS}
+    phrase = _PHRASE.search(bare.lower())
+    if phrase:
+        first, word, last = phrase.groups()
+        src, dst = (first, last) if word == "to" else (last, first)
+        if is_camera_frame(src) != is_camera_frame(dst):
+            directions.add(C2W if is_camera_frame(src) else W2C)
+    if directions:
+        if len(directions) != 1 or len(tokens) > 4:
+            return None
+        return Extrinsic(directions.pop(), _part_of_tokens(tokens), (f"name `{name}`",), NAME)
+    found: set[tuple[str, str] | None] = set()
+    evidence: tuple[str, ...] = ()
+    for order in facts.readings():
+        fact = facts.name_frames(name, order) or _camera_pose_name(facts, bare, order)
+        if fact is None or not fact.frames.is_operator:
+            return None
+        frames = fact.frames
+        if is_camera_frame(frames.dst) == is_camera_frame(frames.src):
+            return None
+        direction = W2C if is_camera_frame(frames.dst) else C2W
+        found.add((direction, ROTATION if frames.operator == "rotation" else POSE))
+        evidence = fact.evidence
+    if len(found) != 1:
+        return None
+    direction, part = found.pop()  # type: ignore[misc]
+    return Extrinsic(direction, part, evidence, ORDERED_NAME)
+
+
+def _camera_pose_name(facts: FactBase, name: str, order: str) -> FrameFact | None:
+    """`H_camZ_V`, `T_camL_world`: a `T_a_b` name whose camera word carries a suffix the general
+    name reader does not take as a frame (a capital letter), read in `order`."""
+    from geolint.factbase.model import DST_FIRST, FrameFact
+    from geolint.semantic.names import NameFrames, ROTATION_LETTERS, TRANSFORM_LETTERS
+
+    tokens = name.split("_")
+    if len(tokens) != 3 or tokens[0] not in TRANSFORM_LETTERS | ROTATION_LETTERS or facts.order_names_mixed:
+        return None
+    first, second = tokens[1], tokens[2]
+    if is_camera_frame(first) == is_camera_frame(second):
+        return None
+    if not all(re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", word) for word in (first, second)):
+        return None
+    dst, src = (first, second) if order == DST_FIRST else (second, first)
+    operator = "rotation" if tokens[0] in ROTATION_LETTERS else "transform"
+    return FrameFact(NameFrames(dst=dst.lower(), src=src.lower(), operator=operator), (f"name `{name}` ({order})",))
+
+
+def key_extrinsic(key: str) -> Extrinsic | None:
+    """What a string key states (`"cam_R_w2c"`, `"transform_matrix"`, `"c2w"`)."""
+    known = EXTRINSIC_KEYS.get(key)
+    if known is None:
+        return None
+    direction, part, source = known
+    return Extrinsic(direction, part, (f"key {key!r} ({source}: {DIRECTION_WORDS[direction]})",), DATA)
+
+
+class ExtrinsicsEvidence:
+    """The extrinsics facts of one module: `of(node)` says which camera pose (part) an expression
+    is, from data first and names last. Built on the fact base (names, readings, imports) and the
+    flow-sensitive local values of `geolint.rules.pose_parts`."""
+
+    def __init__(self, facts: FactBase, values: LocalValues) -> None:
+        self.facts = facts
+        self.values = values
+        self._memo: dict[int, Extrinsic | None] = {}
+        self._active: set[int] = set()
+
+    def of(self, node: ast.AST) -> Extrinsic | None:
+        key = id(node)
+        if key in self._memo:
+            return self._memo[key]
+        if key in self._active or len(self._active) > 40:
+            return None
+        self._active.add(key)
+        try:
+            found = self._of(node)
+        finally:
+            self._active.discard(key)
+        self._memo[key] = found
+        return found
+
+    # -- the evaluation ------------------------------------------------------------------------
+    def _of(self, node: ast.AST) -> Extrinsic | None:
+        from geolint.rules.pose_parts import peel_same_value
+
+        if not isinstance(node, ast.expr):
+            return None
+        peeled = peel_same_value(node)
+        if peeled is not node:
+            return self.of(peeled)
+        if isinstance(node, ast.Name):
+            return self._of_name(node)
+        if isinstance(node, ast.Attribute):
+            return self._of_attribute(node)
+        if isinstance(node, ast.Subscript):
+            return self._of_subscript(node)
+        if isinstance(node, ast.Call):
+            return self._of_call(node)
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            return self._of_product(node.operand, negated=True)
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
+            return self._of_product(node, negated=False)
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.Div)):
+            # a translation in other units (`t * 0.001`, `t / 1000.0`) is the same translation
+            scaled = node.left if number(node.right) is not None else node.right if number(node.left) is not None and isinstance(node.op, ast.Mult) else None
+            found = self.of(scaled) if scaled is not None else None
+            return found if found is not None and found.part == TRANSLATION else None
+        return None
+
+    def _of_name(self, node: ast.Name) -> Extrinsic | None:
+        from geolint.rules.pose_parts import Unpacked
+
+        value = self.values.value_of(node)
+        if isinstance(value, ast.expr):
+            found = self.of(value)
+            if found is not None:
+                return found
+            built = self.built_from_blocks(node, value)
+            if built is not None:
+                return built
+        elif isinstance(value, Unpacked):
+            return None
+        return name_extrinsic(self.facts, node.id)
+
+    def _of_attribute(self, node: ast.Attribute) -> Extrinsic | None:
+        if node.attr in ("T", "mT"):
+            return self._transposed(node.value, f"`.{node.attr}`")
+        if self.facts.is_module_like(node.value):
+            return None
+        known = EXTRINSIC_ATTRIBUTES.get(node.attr)
+        if known is not None:
+            direction, part, source = known
+            return Extrinsic(direction, part, (f"`.{node.attr}` ({source}: {DIRECTION_WORDS[direction]})",), DATA)
+        if node.attr in ("rotation", "translation"):
+            owner = self.of(node.value)
+            if owner is not None and owner.part == POSE:
+                return owner.as_part(ROTATION if node.attr == "rotation" else TRANSLATION)
+            return None
+        return name_extrinsic(self.facts, node.attr)
+
+    def _of_subscript(self, node: ast.Subscript) -> Extrinsic | None:
+        from geolint.rules.pose_parts import int_value, is_full_slice, is_slice_upto, matrix_indices
+
+        key = string(node.slice)
+        if key is not None:
+            return key_extrinsic(key)
+        base = self.of(node.value)
+        if base is None or base.part != POSE:
+            return None
+        indices = matrix_indices(node)
+        if indices is None:
+            index = node.slice
+            if isinstance(index, ast.Slice) and is_slice_upto(index, 3) or isinstance(index, ast.List):
+                return base  # `[:3]` drops the bottom row; `[[1, 0, 2, 3]]` permutes world axes
+            return None
+        _, row, column = indices
+        rows_of_pose = is_slice_upto(row, 3) or is_slice_upto(row, 4) or is_full_slice(row) or isinstance(row, ast.List)
+        if is_slice_upto(row, 3) and is_slice_upto(column, 3):
+            return base.as_part(ROTATION)
+        if is_slice_upto(row, 3) and (int_value(column) in (3, -1) if not isinstance(column, ast.Slice) else _from_column(column, 3)):
+            return base.as_part(TRANSLATION)
+        if rows_of_pose and (is_slice_upto(column, 4) or is_full_slice(column) or isinstance(column, ast.List)):
+            return base
+        return None
+
+    def _of_call(self, node: ast.Call) -> Extrinsic | None:
+        from geolint.rules.pose_parts import call_name, transposed_operand
+
+        func = node.func
+        name = call_name(node)
+        if isinstance(func, ast.Attribute) and not node.args and not node.keywords:
+            known = EXTRINSIC_METHODS.get(func.attr)
+            if known is not None and not self.facts.is_module_like(func.value):
+                direction, part, source = known
+                return Extrinsic(direction, part, (f"`.{func.attr}()` ({source}: {DIRECTION_WORDS[direction]})",), DATA)
+            if func.attr in _PASS_ON:
+                return self.of(func.value)
+        operand = transposed_operand(node)
+        if operand is not None:
+            return self._transposed(operand, f"`{name}`", inverse=name in _INVERSES)
+        if name in ("qvec2rotmat", "quat2mat", "quaternion_to_matrix") and len(node.args) == 1:
+            inner = self.of(node.args[0])
+            return inner if inner is not None and inner.part == ROTATION else None
+        if name in _JOINS and node.args and isinstance(node.args[0], (ast.List, ast.Tuple)):
+            return self._joined(node.args[0].elts)
+        if self.facts.matmul(node) is not None:
+            return self._of_product(node, negated=False)
+        return None
+
+    def _transposed(self, operand: ast.expr, how: str, inverse: bool = False) -> Extrinsic | None:
+        """A transpose inverts a rotation; an inverse inverts a rotation or a pose."""
+        inner = self.of(operand)
+        if inner is None or inner.part == TRANSLATION or inner.part == POSE and not inverse:
+            return None
+        return inner.inverted(f"inverted by {how}")
+
+    def _joined(self, elements: list[ast.expr]) -> Extrinsic | None:
+        """`[R | t]` (and `[[R | t]; bottom]`): a pose when its known parts agree."""
+        parts = [self.of(element) for element in elements if not isinstance(element, ast.Starred)]
+        known = [part for part in parts if part is not None]
+        if not known or len({part.direction for part in known}) != 1:
+            return None
+        kinds = {part.part for part in known}
+        if kinds == {ROTATION, TRANSLATION} or kinds == {POSE} and len(known) == 1:
+            first = known[0]
+            return Extrinsic(first.direction, POSE, tuple(e for part in known for e in part.evidence), _weakest(known))
+        return None
+
+    def _of_product(self, node: ast.AST, negated: bool) -> Extrinsic | None:
+        """`-R.T @ t` with R and t of one direction is the translation of the inverse pose
+        (the camera centre when R, t are world-to-camera); row form `-t @ R` likewise."""
+        from geolint.rules.pose_parts import matmul_operands
+
+        while isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            node, negated = node.operand, not negated
+        operands = matmul_operands(node)
+        if operands is None:
+            return None
+        left, right = operands
+        while isinstance(left, ast.UnaryOp) and isinstance(left.op, ast.USub):
+            left, negated = left.operand, not negated
+        while isinstance(right, ast.UnaryOp) and isinstance(right.op, ast.USub):
+            right, negated = right.operand, not negated
+        if not negated:
+            return None
+        first, second = self.of(left), self.of(right)
+        if first is None or second is None:
+            return None
+        if first.part == ROTATION and second.part == TRANSLATION and first.direction != second.direction:
+            rotation, translation = first, second  # column form: -(R_c2w) t_w2c
+        elif first.part == TRANSLATION and second.part == ROTATION and first.direction == second.direction:
+            rotation, translation = second.inverted("row form"), first  # `-t @ R` is -(R.T t)
+        else:
+            return None
+        return Extrinsic(
+            rotation.direction, TRANSLATION, (*translation.evidence, "inverse translation -R.T @ t"), _weakest([rotation, translation])
+        )
+
+    # -- a 4x4 assembled from blocks -------------------------------------------------------------
+    def block_stores(
+        self, name: ast.Name, before: ast.stmt | None = None, binding: object = None
+    ) -> list[tuple[ast.Subscript, ast.expr]]:
+        """`T[:3, :3] = ...` / `T[:3, 3] = ...` writes into the value `name` reads (the same binding;
+        for an assignment's own target, pass `binding=id(statement)`), in its function, before
+        `before` when given."""
+        values = self.values
+        scope = values.scope_of(name)
+        if binding is None:
+            binding = values.binding_of(name)
+        if scope is None or binding is None:
+            return []
+        stores = []
+        for statement, _ in _subscript_assignments(values, scope, name.id):
+            target = statement.targets[0]
+            assert isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name)
+            if before is not None and (statement.lineno, statement.col_offset) >= (before.lineno, before.col_offset):
+                continue
+            if values.binding_of(target.value) == binding:
+                stores.append((target, statement.value))
+        return stores
+
+    def built_from_blocks(self, name: ast.Name, value: ast.expr) -> Extrinsic | None:
+        """`T = np.eye(4)` whose rotation and translation blocks are then written: the pose the
+        blocks state, when every known block agrees."""
+        if not is_blank_matrix(value):
+            return None
+        parts = self.block_parts(self.block_stores(name, self.values.statement_of(name)))
+        if not parts:
+            return None
+        directions = {part.direction for _, part in parts}
+        if len(directions) != 1:
+            return None
+        known = [part for _, part in parts]
+        return Extrinsic(directions.pop(), POSE, tuple(e for part in known for e in part.evidence), _weakest(known))
+
+    def block_parts(self, stores: list[tuple[ast.Subscript, ast.expr]]) -> list[tuple[ast.expr, Extrinsic]]:
+        """The rotation and translation blocks among `stores` whose values are known extrinsics parts."""
+        from geolint.rules.pose_parts import int_value, is_slice_upto, matrix_indices
+
+        found = []
+        for target, value in stores:
+            indices = matrix_indices(target)
+            if indices is None or indices[0] or not is_slice_upto(indices[1], 3):
+                continue
+            column = indices[2]
+            if is_slice_upto(column, 3):
+                wanted = ROTATION
+            elif not isinstance(column, ast.Slice) and int_value(column) in (3, -1):
+                wanted = TRANSLATION
+            else:
+                continue
+            part = self.of(value)
+            if part is not None and part.part == wanted:
+                found.append((value, part))
+        return found
+
+
+def _weakest(parts: list[Extrinsic]) -> str:
+    order = (ORDERED_NAME, NAME, DATA)
+    return min((part.strength for part in parts), key=order.index)
+
+
+def _from_column(node: ast.Slice, start: int) -> bool:
+    from geolint.rules.pose_parts import int_value
+
+    if node.step is not None or int_value(node.lower) != start:
+        return False
+    return node.upper is None or int_value(node.upper) == start + 1
+
+
+def is_blank_matrix(value: ast.expr) -> bool:
+    """`np.eye(4)`, `np.identity(4)`, `torch.eye(4)`, `np.zeros((4, 4))`."""
+    from geolint.rules.pose_parts import call_name, int_value
+
+    if not isinstance(value, ast.Call) or call_name(value) not in _BLOCK_MAKERS or not value.args:
+        return False
+    size = value.args[0]
+    if isinstance(size, (ast.Tuple, ast.List)):
+        return [int_value(element) for element in size.elts] in ([4, 4], [3, 4])
+    return int_value(size) == 4
+
+
+def _subscript_assignments(values: LocalValues, scope: ast.AST, name: str) -> list[tuple[ast.Assign, ast.Subscript]]:
+    """Every `name[...] = value` statement directly in `scope` (cached per scope)."""
+    cache = values.__dict__.setdefault("_extrinsics_subscript_stores", {})
+    per_scope = cache.get(id(scope))
+    if per_scope is None:
+        per_scope = {}
+        stack = list(ast.iter_child_nodes(scope))
+        while stack:
+            node = stack.pop()
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
+                continue
+            if (
+                isinstance(node, ast.Assign)
+                and len(node.targets) == 1
+                and isinstance(node.targets[0], ast.Subscript)
+                and isinstance(node.targets[0].value, ast.Name)
+            ):
+                per_scope.setdefault(node.targets[0].value.id, []).append((node, node.targets[0]))
+            stack.extend(ast.iter_child_nodes(node))
+        for stores in per_scope.values():
+            stores.sort(key=lambda store: (store[0].lineno, store[0].col_offset))
+        cache[id(scope)] = per_scope
+    return per_scope.get(name, [])  # type: ignore[no-any-return]
+
+
+_CAMERA_CLOUD_MAKERS = frozenset({"create_from_rgbd_image", "create_from_depth_image"})
+_CLOUD_MOVES = frozenset({"transform", "rotate", "translate", "scale"})
+
+
+def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: ast.AST) -> str | None:
+    """Why `receiver` is an Open3D point cloud still in the camera frame where `use` runs: made by
+    `PointCloud.create_from_rgbd_image` / `create_from_depth_image` without an extrinsic (with one,
+    Open3D puts the cloud in the world frame), and not moved since. None otherwise."""
+    from geolint.rules.pose_parts import call_name
+
+    if not isinstance(receiver, ast.Name):
+        return None
+    values = evidence.values
+    made = values.value_of(receiver)
+    if not isinstance(made, ast.Call) or call_name(made) not in _CAMERA_CLOUD_MAKERS:
+        return None
+    if "PointCloud" not in (evidence.facts.qualified_name(made.func) or ""):
+        return None
+    if len(made.args) >= 3 or any(keyword.arg in ("extrinsic", "extrinsics") for keyword in made.keywords):
+        return None
+    binding = values.binding_of(receiver)
+    made_at = values.statement_of(made)
+    used_at = values.statement_of(use)
+    if made_at is None or used_at is None or binding is None:
+        return None
+    start, end = (made_at.lineno, made_at.col_offset), (used_at.lineno, used_at.col_offset)
+    for call in evidence.facts.index.nodes(ast.Call):
+        func = call.func  # type: ignore[attr-defined]
+        if not (isinstance(func, ast.Attribute) and func.attr in _CLOUD_MOVES and isinstance(func.value, ast.Name)):
+            continue
+        if func.value.id != receiver.id or call is use:
+            continue
+        position = (call.lineno, call.col_offset)  # type: ignore[attr-defined]
+        if start < position < end and values.binding_of(func.value) == binding:
+            return None  # moved in between: its frame is no longer the camera's for sure
+    return f"`{receiver.id}` is an Open3D cloud in the camera frame (`{call_name(made)}` at line {made.lineno}, no extrinsic)"

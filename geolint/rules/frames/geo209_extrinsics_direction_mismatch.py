@@ -1,0 +1,263 @@
+"""GEO209 extrinsics-direction-mismatch: world-to-camera data used as camera-to-world, or the reverse."""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from geolint.factbase.extrinsics import (
+    DATA,
+    POSE,
+    Extrinsic,
+    ExtrinsicsEvidence,
+    W2C,
+    camera_frame_cloud,
+    key_extrinsic,
+    name_extrinsic,
+    DIRECTION_WORDS,
+    is_blank_matrix,
+)
+from geolint.factbase.model import string, walk_within
+from geolint.factbase.rule_support import FactRule
+from geolint.rules.base import Invalid, Valid
+from geolint.rules.pose_parts import local_values
+
+TRIGGER = re.compile(
+    r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
+    r"create_from_(?:rgbd|depth)_image|\b[TR]_?(?:cw|wc)\b"
+)
+
+
+class ExtrinsicsDirectionMismatch(FactRule):
+    """World-to-camera extrinsics are used where camera-to-world ones are expected, or the reverse.
+
+    ## What it does
+    Follows camera poses whose direction the data states and flags where one meets a place that
+    states the other direction. Directions come from, strongest first:
+
+    - dataset and file-format keys: BOP `"cam_R_w2c"` / `"cam_t_w2c"` (world to camera), NeRF
+      transforms.json `"transform_matrix"` (camera to world), `meta["c2w"]`, `meta["w2c"]`;
+    - library attributes: pycolmap `image.cam_from_world` and COLMAP `image.qvec` / `image.tvec` /
+      `image.qvec2rotmat()` (world to camera), pycolmap `image.projection_center()` (the camera
+      centre, i.e. the camera-to-world translation);
+    - names that say their direction in the word: `c2w`, `pose_w2c`, `R_c2w`, `world_to_camera`,
+      `cam_from_world`, ORB-SLAM's `Tcw` / `Twc`; a `T_a_b` name with one camera frame only where
+      the project's naming order is known.
+
+    Values are followed through local data flow (a name rebound to its own inverse holds the
+    inverse from there on), `np.linalg.inv` / `.inverse()`, rotation transposes, `[R | t]`
+    concatenations, 4x4 blocks (`T = np.eye(4); T[:3, :3] = R; T[:3, 3] = t`) and the
+    hand-written inverse translation `-R.T @ t`.
+
+    Flagged: a 4x4 assembled from blocks whose direction contradicts the matrix's name (the usual
+    shape: world-to-camera data inverted by hand into a camera-from-world target); a value stored
+    under a name, attribute or key (`frame["transform_matrix"] = ...`, `{"cam_R_w2c": ...}`) of the
+    other direction; an argument passed to a parameter or keyword of the other direction
+    (`render(c2w=w2c)`); and an Open3D cloud in the camera frame (`create_from_rgbd_image` /
+    `create_from_depth_image` without an extrinsic) moved by a world-to-camera matrix, which only
+    a camera-to-world one can take to the world.
+
+    ## Why is this bad?
+    A world-to-camera pose and its camera-to-world inverse are both 4x4 rigid transforms with
+    plausible numbers; nothing fails when one is used for the other. The points come out
+    mirrored about the camera, renders look at the wrong place, and merged clouds smear, usually
+    in a way that is only obvious for cameras far from the world origin.
+
+    ## Example
+    ```python
+    import numpy as np
+
+    def camera_from_world(cam_info):
+        R = np.array(cam_info["cam_R_w2c"]).reshape(3, 3)
+        t = np.array(cam_info["cam_t_w2c"])
+        T_cam_world = np.eye(4)
+        T_cam_world[:3, :3] = R.T
+        T_cam_world[:3, 3] = -R.T @ t
+        return T_cam_world
+    ```
+
+    ## Use instead
+    ```python
+    import numpy as np
+
+    def camera_from_world(cam_info):
+        T_cam_world = np.eye(4)
+        T_cam_world[:3, :3] = np.array(cam_info["cam_R_w2c"]).reshape(3, 3)
+        T_cam_world[:3, 3] = np.array(cam_info["cam_t_w2c"])
+        return T_cam_world
+    ```
+
+    ## Fix safety
+    No fix is offered: either the value or the name that receives it is wrong, and only the
+    author knows which.
+
+    ## Known problems
+    Only conventions stated in the code are used: a pose loaded from a file without a telling key
+    (`np.loadtxt(pose_path)`) has no direction. A `T_a_b` target is read in the project's naming
+    order and is skipped where the project does not settle it. Plain name-to-name assignments
+    (`c2w = w2c`) are GEO203's; this rule takes what GEO203 cannot see (blocks, keys, arguments,
+    library data, Open3D clouds). A "world" that is another camera (a stereo pair's left camera)
+    still reads as a world here.
+    """
+
+    code = "GEO209"
+    name = "extrinsics-direction-mismatch"
+    triggers = TRIGGER
+
+    VALID = [
+        Valid(
+            "import numpy as np\ndef f(info):\n    T_cam_world = np.eye(4)\n"
+            "    T_cam_world[:3, :3] = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
+            "    T_cam_world[:3, 3] = np.array(info['cam_t_w2c'])\n    return T_cam_world @ T_cam_world\n"
+        ),
+        Valid("import numpy as np\ndef f(frame):\n    c2w = np.array(frame['transform_matrix'])\n    return c2w\n"),
+        Valid("import numpy as np\ndef f(image):\n    w2c = image.cam_from_world.matrix()\n    return w2c\n"),
+        Valid(
+            "import numpy as np\nimport open3d as o3d\ndef f(rgbd, K, info):\n"
+            "    pcd = o3d.geometry.PointCloud.create_from_rgbd_image(rgbd, K)\n"
+            "    world2cam = np.eye(4)\n    world2cam[:3, :3] = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
+            "    world2cam[:3, 3] = np.array(info['cam_t_w2c'])\n    world2cam = np.linalg.inv(world2cam)\n"
+            "    return pcd.transform(world2cam)\n"
+        ),
+        Valid("def f(image, render):\n    return render(c2w=image.cam_from_world.inverse().matrix())\n"),
+        # a `T_a_b` target in a project whose naming order nothing settles: no claim
+        Valid(
+            "import numpy as np\ndef f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
+            "    H_cam_world = np.eye(4)\n    H_cam_world[:3, :3] = R.T\n    return H_cam_world\n"
+        ),
+    ]
+    INVALID = [
+        Invalid(
+            "import numpy as np\ndef f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
+            "    t = np.array(info['cam_t_w2c'])\n    w2c = np.eye(4)\n    w2c[:3, :3] = R.T\n"
+            "    w2c[:3, 3] = -R.T @ t\n    return w2c\n"
+        ),
+        Invalid("import numpy as np\ndef f(frame):\n    frame['pose'].c2w = np.linalg.inv(np.array(frame['transform_matrix']))\n"),
+        Invalid("def f(image, frames):\n    frames.append({'transform_matrix': image.cam_from_world.matrix().tolist()})\n"),
+        Invalid("def f(image, render):\n    return render(c2w=image.cam_from_world.matrix())\n"),
+        Invalid(
+            "import open3d as o3d\ndef f(depth, K, image):\n"
+            "    pcd = o3d.geometry.PointCloud.create_from_depth_image(depth, K)\n"
+            "    return pcd.transform(image.cam_from_world.matrix())\n"
+        ),
+        # the composition settles dst-first naming: H_cam_world maps world into the camera
+        Invalid(
+            "import numpy as np\ndef f(info, H_world_obj):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
+            "    t = np.array(info['cam_t_w2c'])\n    H_cam_world = np.eye(4)\n    H_cam_world[:3, :3] = R.T\n"
+            "    H_cam_world[:3, 3] = -R.T @ t\n    return H_cam_world @ H_world_obj\n"
+        ),
+    ]
+
+    def run(self) -> None:
+        facts = self.facts
+        self.evidence = ExtrinsicsEvidence(facts, local_values(facts.index.tree))
+        for node in facts.index.nodes(ast.Assign, ast.AnnAssign, ast.Call, ast.Dict):
+            if isinstance(node, ast.Assign):
+                for target in node.targets:
+                    self._stored(node, target, node.value)
+            elif isinstance(node, ast.AnnAssign):
+                if node.value is not None:
+                    self._stored(node, node.target, node.value)
+            elif isinstance(node, ast.Dict):
+                for key, value in zip(node.keys, node.values):
+                    stated = key_extrinsic(string(key) or "") if key is not None else None
+                    if stated is not None:
+                        self._compare(value, stated, f"key {string(key)!r}")
+            else:
+                self._call(node)  # type: ignore[arg-type]
+
+    # -- sinks -------------------------------------------------------------------------------------
+    def _stored(self, statement: ast.Assign | ast.AnnAssign, target: ast.expr, value: ast.expr) -> None:
+        if isinstance(target, ast.Subscript):
+            key = string(target.slice)
+            stated = key_extrinsic(key) if key is not None else None
+            if stated is not None and not _mentions(value, target):
+                self._compare(value, stated, f"key {key!r}")
+            return
+        name = target.id if isinstance(target, ast.Name) else target.attr if isinstance(target, ast.Attribute) else None
+        if name is None:
+            return
+        stated = name_extrinsic(self.facts, name)
+        if stated is None or _mentions(value, target):
+            return  # `c2w = np.linalg.inv(c2w)`: a name updated from itself holds both directions
+        if isinstance(target, ast.Name) and is_blank_matrix(value):
+            self._blocks(statement, target, stated)
+            return
+        if isinstance(target, ast.Name):
+            if self.evidence.block_stores(target, binding=id(statement)):
+                return  # a start value edited in place: the name describes the value after the edits
+            if any(self.facts.frame_fact(value, order) is not None for order in self.facts.readings()):
+                return  # frames GEO203 sees and compares
+        self._compare(value, stated, f"`{self.code_of(target)}`")
+
+    def _blocks(self, statement: ast.stmt, target: ast.Name, stated: Extrinsic) -> None:
+        """`T = np.eye(4); T[:3, :3] = R; T[:3, 3] = t`: the blocks' direction against T's name."""
+        parts = self.evidence.block_parts(self.evidence.block_stores(target, binding=id(statement)))
+        if not parts or len({part.direction for _, part in parts}) != 1:
+            return
+        if not all(part.explicit for _, part in parts) or not any(part.strength == DATA for _, part in parts):
+            return
+        value, part = parts[0]
+        if part.direction == stated.direction or stated.part != POSE:
+            return
+        evidence = tuple(e for _, found in parts for e in found.evidence)
+        self.report(
+            value,
+            f"`{target.id}` is a {stated.description} by its {stated.evidence[0]}, but its blocks are set from a "
+            f"{DIRECTION_WORDS[part.direction]} pose ({'; '.join(dict.fromkeys(evidence))}): "
+            "an inverse too many or one missing",
+            evidence=(*stated.evidence, *evidence),
+        )
+
+    def _call(self, call: ast.Call) -> None:
+        for keyword in call.keywords:
+            if keyword.arg is not None:
+                stated = name_extrinsic(self.facts, keyword.arg)
+                if stated is not None:
+                    self._compare(keyword.value, stated, f"`{keyword.arg}=`", names_both_sides=True)
+        function = self.facts.index.functions.get(call.func.id) if isinstance(call.func, ast.Name) else None
+        if function is not None:
+            parameters = [*function.args.posonlyargs, *function.args.args]
+            for argument, parameter in zip(call.args, parameters):
+                if isinstance(argument, ast.Starred):
+                    break
+                stated = name_extrinsic(self.facts, parameter.arg)
+                if stated is not None:
+                    self._compare(argument, stated, f"parameter `{parameter.arg}` of `{function.name}`", names_both_sides=True)
+        func = call.func
+        if isinstance(func, ast.Attribute) and func.attr == "transform" and len(call.args) == 1 and not call.keywords:
+            why = camera_frame_cloud(self.evidence, func.value, call)
+            if why is None:
+                return
+            moved = self.evidence.of(call.args[0])
+            if moved is not None and moved.part == POSE and moved.direction == W2C and moved.explicit:
+                self.report(
+                    call.args[0],
+                    f"{why}, but `{self.code_of(call.args[0])}` is a world-to-camera pose "
+                    f"({'; '.join(moved.evidence)}): only its inverse (camera-to-world) takes the cloud into the world",
+                    evidence=(why, *moved.evidence),
+                )
+
+    def _compare(self, value: ast.expr, stated: Extrinsic, where: str, names_both_sides: bool = False) -> None:
+        actual = self.evidence.of(value)
+        if actual is None or not actual.explicit or actual.part != stated.part or actual.direction == stated.direction:
+            return
+        if actual.strength != DATA and not (names_both_sides and stated.explicit):
+            return  # a name against a name is GEO203's, except at a call, which GEO203 does not see
+        self.report(
+            value,
+            f"{where} expects a {stated.description} ({stated.evidence[0]}), but `{self.code_of(value)}` is a "
+            f"{actual.description} ({'; '.join(actual.evidence)}): an inverse is missing or one too many",
+            evidence=(*stated.evidence, *actual.evidence),
+        )
+
+
+def _mentions(value: ast.expr, target: ast.expr) -> bool:
+    """Whether the value reads the target (`c2w = c2w[[1, 0, 2, 3]]`, `f["m"] = inv(f["m"])`)."""
+    text = ast.unparse(target)
+    for node in walk_within(value):
+        if isinstance(node, ast.Name) and isinstance(target, ast.Name) and node.id == target.id:
+            return True
+        if isinstance(node, type(target)) and not isinstance(target, ast.Name) and ast.unparse(node) == text:
+            return True
+    return False

@@ -1,0 +1,172 @@
+"""Camera extrinsics conventions stated by data (geolint.factbase.extrinsics) and the rules on them
+(GEO209, GEO210): which way a pose maps is read from keys, library attributes, blocks, inverses and
+names, and a `T_a_b` name counts only in the order the project settles."""
+
+from __future__ import annotations
+
+import ast
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from geolint import api
+from geolint.factbase import facts_for_module
+from geolint.factbase.extrinsics import C2W, DATA, NAME, POSE, ROTATION, TRANSLATION, W2C, ExtrinsicsEvidence, name_extrinsic
+from geolint.lint_types import Config
+from geolint.rules.pose_parts import local_values
+
+
+def returned(code: str) -> tuple[str, str, str] | None:
+    """(direction, part, strength) of the value the last `return` of `code` returns."""
+    source = textwrap.dedent(code)
+    tree = ast.parse(source)
+    facts = facts_for_module(tree, source, "<test>", Config())
+    evidence = ExtrinsicsEvidence(facts, local_values(tree))
+    value = [node for node in ast.walk(tree) if isinstance(node, ast.Return)][-1].value
+    found = evidence.of(value)
+    return None if found is None else (found.direction, found.part, found.strength)
+
+
+@pytest.mark.parametrize(
+    ("code", "expected"),
+    [
+        # BOP keys, through np.array / reshape / unit scaling
+        ("def f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n    return R\n", (W2C, ROTATION, DATA)),
+        ("def f(info):\n    t = np.array(info['cam_t_w2c']) * 0.001\n    return t\n", (W2C, TRANSLATION, DATA)),
+        # the hand-written inverse: R.T and -R.T @ t are the camera-to-world parts
+        ("def f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n    return R.T\n", (C2W, ROTATION, DATA)),
+        (
+            "def f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n    t = np.array(info['cam_t_w2c'])\n"
+            "    return -R.T @ t\n",
+            (C2W, TRANSLATION, DATA),
+        ),
+        (
+            "def f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n    t = np.array(info['cam_t_w2c'])\n"
+            "    return -t @ R\n",
+            (C2W, TRANSLATION, DATA),
+        ),
+        # a 4x4 assembled from blocks, then inverted
+        (
+            "def f(info):\n    T = np.eye(4)\n    T[:3, :3] = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
+            "    T[:3, 3] = np.array(info['cam_t_w2c'])\n    return np.linalg.inv(T)\n",
+            (C2W, POSE, DATA),
+        ),
+        # flow-sensitive: a name rebound to its own inverse holds the inverse from there on
+        (
+            "def f(info, pcd):\n    world2cam = np.eye(4)\n    world2cam[:3, :3] = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
+            "    world2cam = np.linalg.inv(world2cam)\n    return world2cam\n",
+            (C2W, POSE, DATA),
+        ),
+        # COLMAP: [R | t] from qvec2rotmat() and tvec, with the bottom row
+        (
+            "def f(image):\n    bottom = np.array([[0, 0, 0, 1.0]])\n    R = image.qvec2rotmat()\n    t = image.tvec.reshape([3, 1])\n"
+            "    m = np.concatenate([np.concatenate([R, t], 1), bottom], 0)\n    return m\n",
+            (W2C, POSE, DATA),
+        ),
+        ("def f(image):\n    return qvec2rotmat(image.qvec)\n", (W2C, ROTATION, DATA)),
+        # pycolmap
+        ("def f(image):\n    return image.cam_from_world.matrix()\n", (W2C, POSE, DATA)),
+        ("def f(image):\n    return image.cam_from_world.inverse().matrix()\n", (C2W, POSE, DATA)),
+        ("def f(image):\n    return image.cam_from_world().rotation.matrix()\n", (W2C, ROTATION, DATA)),
+        ("def f(image):\n    return image.projection_center()\n", (C2W, TRANSLATION, DATA)),
+        # NeRF transforms.json, sliced and with axes permuted
+        ("def f(frame):\n    c2w = np.array(frame['transform_matrix'])[:3, :4]\n    return c2w[[1, 0, 2]]\n", (C2W, POSE, DATA)),
+        ("def f(frame):\n    return np.array(frame['transform_matrix'])[:3, 3]\n", (C2W, TRANSLATION, DATA)),
+        # names that say their direction: the weakest evidence, used only when the data says nothing
+        ("def f(pose_c2w):\n    return pose_c2w\n", (C2W, POSE, NAME)),
+        ("def f(Tcw):\n    return Tcw\n", (W2C, POSE, NAME)),
+        ("def f(R_w2c):\n    return R_w2c.T\n", (C2W, ROTATION, NAME)),
+        ("def f(world_to_camera):\n    return world_to_camera\n", (W2C, POSE, NAME)),
+    ],
+)
+def test_direction_from_evidence(code: str, expected: tuple[str, str, str]) -> None:
+    assert returned(code) == expected
+
+
+@pytest.mark.parametrize(
+    "code",
+    [
+        "def f(pose):\n    return pose\n",  # no evidence
+        "def f(info):\n    return np.array(info['cam_t_w2c']).T\n",  # a translation has no transpose direction
+        "def f(image):\n    return image.cam_from_world.matrix().T\n",  # a pose's transpose is not its inverse
+        # blocks that disagree (a half inverse, GEO205's business): no direction
+        "def f(info):\n    T = np.eye(4)\n    T[:3, :3] = np.array(info['cam_R_w2c']).reshape(3, 3).T\n"
+        "    T[:3, 3] = np.array(info['cam_t_w2c'])\n    return T\n",
+        # the relative pose of two cameras is not an extrinsic (FP7: frames belong to their owners)
+        "def f(image0, image1):\n    return image1.cam_from_world * image0.cam_from_world.inverse()\n",
+        # `R.T @ t` without the minus is no camera centre
+        "def f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n    t = np.array(info['cam_t_w2c'])\n    return R.T @ t\n",
+    ],
+)
+def test_no_direction_without_evidence(code: str) -> None:
+    assert returned(code) is None
+
+
+def test_t_a_b_names_count_only_in_a_settled_order() -> None:
+    def facts_of(source: str):  # type: ignore[no-untyped-def]
+        tree = ast.parse(source)
+        return facts_for_module(tree, source, "<test>", Config())
+
+    unsettled = facts_of("x = 1\n")
+    assert name_extrinsic(unsettled, "H_cam_world") is None
+    assert name_extrinsic(unsettled, "c2w").direction == C2W  # the word says it in any order
+    dst_first = facts_of("T_cam_obj = T_cam_world @ T_world_obj\n")
+    assert name_extrinsic(dst_first, "H_camZ_V").direction == W2C  # maps V into camera Z
+    src_first = facts_of("T_obj_world = RigidTransform(R, t, from_frame='obj', to_frame='world')\n")
+    assert name_extrinsic(src_first, "T_cam_world").direction == C2W  # autolab_core: cam -> world
+
+
+BOP_PROJECT = '''
+import json
+import numpy as np
+
+
+def load_scene_camera(path):
+    with open(path) as stream:
+        return json.load(stream)
+
+
+def camera_from_world(cam_info):
+    cam_rot = np.array(cam_info["cam_R_w2c"]).reshape(3, 3)
+    cam_trans = np.array(cam_info["cam_t_w2c"])
+    T_cam_world = np.eye(4)
+    T_cam_world[:3, :3] = cam_rot.T
+    T_cam_world[:3, 3] = -cam_rot.T @ cam_trans
+    return T_cam_world
+
+
+def object_in_camera(cam_info, T_world_obj):
+    return camera_from_world(cam_info) @ T_world_obj
+'''
+
+
+def _lint_project(tmp_path: Path, body: str, extra: str = "") -> set[tuple[int, str]]:
+    (tmp_path / "pyproject.toml").write_text("[project]\nname = 'bop_tools'\n")
+    module = tmp_path / "bop_tools.py"
+    module.write_text(body + extra)
+    findings = [f for result in api.lint_paths([tmp_path], config=Config(select=("GEO209", "GEO210"))) for f in result.findings]
+    return {(f.line, f.code) for f in findings}
+
+
+def test_inverted_w2c_in_a_dst_first_project_is_flagged(tmp_path: Path) -> None:
+    extra = "\n\ndef chain(T_cam_world, T_world_obj):\n    T_cam_obj = T_cam_world @ T_world_obj\n    return T_cam_obj\n"
+    assert _lint_project(tmp_path, BOP_PROJECT, extra) == {(15, "GEO209")}
+
+
+def test_the_same_code_in_a_src_first_project_is_silent(tmp_path: Path) -> None:
+    # autolab_core style: T_cam_world maps the camera into the world, which is what the blocks build
+    extra = "\n\nT_obj_world = RigidTransform(R, t, from_frame='obj', to_frame='world')\n"
+    assert _lint_project(tmp_path, BOP_PROJECT, extra) == set()
+
+
+def test_unsettled_order_is_silent(tmp_path: Path) -> None:
+    assert _lint_project(tmp_path, BOP_PROJECT) == set()
+
+
+def test_project_order_counts_h_and_x_names(tmp_path: Path) -> None:
+    from geolint.factbase.conventions import project_votes
+
+    (tmp_path / "setup.py").write_text("")
+    (tmp_path / "annotate.py").write_text("def chain(H_camZ_V, H_V_obj):\n    return H_camZ_V @ H_V_obj\n")
+    assert project_votes(tmp_path).orders() == ("dst-first",)
