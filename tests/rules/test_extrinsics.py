@@ -170,3 +170,44 @@ def test_project_order_counts_h_and_x_names(tmp_path: Path) -> None:
     (tmp_path / "setup.py").write_text("")
     (tmp_path / "annotate.py").write_text("def chain(H_camZ_V, H_V_obj):\n    return H_camZ_V @ H_V_obj\n")
     assert project_votes(tmp_path).orders() == ("dst-first",)
+
+
+def _codes(source: str) -> set[tuple[int, str]]:
+    findings = api.lint_text(textwrap.dedent(source), "fusion.py", Config(select=("GEO209", "GEO210")))
+    return {(f.line, f.code) for f in findings}
+
+
+def test_open3d_extrinsics_are_world_to_camera() -> None:
+    source = """
+    import numpy as np
+    import open3d as o3d
+
+    def fuse(rgbd, depth, intrinsic, frame, volume_args):
+        volume = o3d.pipelines.integration.UniformTSDFVolume(**volume_args)
+        c2w = np.array(frame["transform_matrix"])
+        volume.integrate(rgbd, intrinsic, c2w)
+        volume.integrate(rgbd, intrinsic, np.linalg.inv(c2w))
+        cloud = o3d.geometry.PointCloud.create_from_depth_image(depth, intrinsic, extrinsic=c2w)
+        cloud_ok = o3d.geometry.PointCloud.create_from_depth_image(depth, intrinsic, np.linalg.inv(c2w))
+        other = SomeVolume()
+        other.integrate(rgbd, intrinsic, c2w)  # not Open3D's: no claim
+        return cloud, cloud_ok
+    """
+    assert _codes(source) == {(8, "GEO209"), (10, "GEO209")}
+
+
+def test_a_cloud_moved_before_is_no_longer_known_to_be_in_the_camera_frame() -> None:
+    source = """
+    import numpy as np
+    import open3d as o3d
+
+    def fuse(rgbd, intrinsic, image, flip):
+        pcd = o3d.geometry.PointCloud.create_from_rgbd_image(rgbd, intrinsic)
+        w2c = image.cam_from_world.matrix()
+        pcd.transform(w2c)
+        other = o3d.geometry.PointCloud.create_from_rgbd_image(rgbd, intrinsic)
+        other.transform(flip)
+        other.transform(w2c)
+        return pcd, other
+    """
+    assert _codes(source) == {(8, "GEO209")}

@@ -14,6 +14,7 @@ from geolint.factbase.extrinsics import (
     camera_frame_cloud,
     key_extrinsic,
     name_extrinsic,
+    open3d_w2c_argument,
     DIRECTION_WORDS,
     is_blank_matrix,
 )
@@ -24,7 +25,7 @@ from geolint.rules.pose_parts import local_values
 
 TRIGGER = re.compile(
     r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
-    r"create_from_(?:rgbd|depth)_image|\b[TR]_?(?:cw|wc)\b"
+    r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|\b[TR]_?(?:cw|wc)\b"
 )
 
 
@@ -53,9 +54,11 @@ class ExtrinsicsDirectionMismatch(FactRule):
     shape: world-to-camera data inverted by hand into a camera-from-world target); a value stored
     under a name, attribute or key (`frame["transform_matrix"] = ...`, `{"cam_R_w2c": ...}`) of the
     other direction; an argument passed to a parameter or keyword of the other direction
-    (`render(c2w=w2c)`); and an Open3D cloud in the camera frame (`create_from_rgbd_image` /
-    `create_from_depth_image` without an extrinsic) moved by a world-to-camera matrix, which only
-    a camera-to-world one can take to the world.
+    (`render(c2w=w2c)`); a camera-to-world pose given as an Open3D extrinsic, which is world to
+    camera (TSDF `volume.integrate(rgbd, intrinsic, extrinsic)`, `create_from_rgbd_image` /
+    `create_from_depth_image`'s `extrinsic`, `create_camera_visualization`); and an Open3D cloud in
+    the camera frame (made by those two without an extrinsic) moved by a world-to-camera matrix,
+    which only a camera-to-world one can take to the world.
 
     ## Why is this bad?
     A world-to-camera pose and its camera-to-world inverse are both 4x4 rigid transforms with
@@ -224,6 +227,10 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 stated = name_extrinsic(self.facts, parameter.arg)
                 if stated is not None:
                     self._compare(argument, stated, f"parameter `{parameter.arg}` of `{function.name}`", names_both_sides=True)
+        library = open3d_w2c_argument(self.evidence, call)
+        if library is not None:
+            argument, where = library
+            self._compare(argument, Extrinsic(W2C, POSE, ("Open3D: an extrinsic maps world into camera",)), where, names_both_sides=True)
         func = call.func
         if isinstance(func, ast.Attribute) and func.attr == "transform" and len(call.args) == 1 and not call.keywords:
             why = camera_frame_cloud(self.evidence, func.value, call)
