@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-import re
 
 from geolint.factbase.extrinsics import (
     DATA,
@@ -21,11 +20,11 @@ from geolint.factbase.extrinsics import (
 from geolint.factbase.model import string, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.pose_parts import local_values
+from geolint.rules.pose_parts import AllOf, local_values
 
-TRIGGER = re.compile(
+TRIGGER = AllOf(
     r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
-    r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|\b[TR]_?(?:cw|wc)\b"
+    r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|_from_world|world_from_cam|\b[TRt]_?(?:cw|wc)\b"
 )
 
 
