@@ -187,11 +187,17 @@ class FreeVectorsLeftBehind(FactRule):
     def run(self) -> None:
         facts = self.facts
         layouts = _Layouts(facts.index.source)
-        for function in facts.index.nodes(ast.FunctionDef, ast.AsyncFunctionDef):
+        # the statements and expressions the checks read, grouped by the function they run in
+        # (from the module index: no second walk of every function)
+        bodies: dict[ast.AST, list[ast.AST]] = {}
+        for node in facts.index.nodes(ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Call, ast.BinOp):
+            owner = facts.index.scope_of(node).node
+            if isinstance(owner, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                bodies.setdefault(owner, []).append(node)
+        for function, body in bodies.items():
             scope = facts.index.scopes.get(function)
             if scope is None:
                 continue
-            body = [node for statement in function.body for node in (statement, *walk_within(statement))]  # type: ignore[attr-defined]
             self._check_members(function, body, layouts)
             self._check_returned_together(function, body, scope)
 
@@ -274,6 +280,8 @@ class FreeVectorsLeftBehind(FactRule):
         stores = _stores(body)
         moves: list[tuple[_Member, ast.AST, str]] = []
         for target, value in stores:
+            if not _may_hold_positions(target):
+                continue
             member = self._member(target)
             if member is None:
                 continue
@@ -345,7 +353,7 @@ class FreeVectorsLeftBehind(FactRule):
         module: a property such as trimesh's `vertex_normals` is recomputed from the moved vertices.
         """
         facts = self.facts
-        nodes: list[ast.AST] = list(body)
+        nodes: list[ast.AST] = list(walk_within(function))
         if moved.owner == "self":
             cls = facts.parent(function)
             if not isinstance(cls, ast.ClassDef):
@@ -451,7 +459,7 @@ class FreeVectorsLeftBehind(FactRule):
             elif isinstance(value, ast.Dict):
                 groups.append([v for v in value.values if v is not None])
         for node in body:
-            if isinstance(node, ast.Call) and self.facts.is_array_call(node.func, *_STACKERS):
+            if isinstance(node, ast.Call) and last_name(node.func) in _STACKERS and self.facts.is_array_call(node.func, *_STACKERS):
                 arguments = positional_args(node)
                 if arguments and isinstance(arguments[0], (ast.List, ast.Tuple)):
                     groups.append(list(arguments[0].elts))
@@ -460,6 +468,9 @@ class FreeVectorsLeftBehind(FactRule):
         by_owner: dict[str, list[ast.expr]] = {}
         for node in body:
             if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], (ast.Attribute, ast.Subscript)):
+                word = node.targets[0].attr if isinstance(node.targets[0], ast.Attribute) else string(node.targets[0].slice)
+                if word is None or _role(word) not in ("position", "free"):
+                    continue
                 member = self._member(node.targets[0])
                 if member is None or member.columns is not None:
                     continue
@@ -468,12 +479,16 @@ class FreeVectorsLeftBehind(FactRule):
                     wrappers.add(id(wrapper))
                 by_owner.setdefault(member.owner, []).append(value)
         groups += [values for values in by_owner.values() if len(values) > 1]
-        touched = self._touched(body, skip_stackers=True, skip_calls=wrappers)
+        touched: set | None = None  # type: ignore[type-arg]
         for group in groups:
             names = [element for element in group if isinstance(element, ast.Name)]
+            if len(names) < 2 or not any(_role(name.id) == "free" for name in names):
+                continue
             moved = [(name, site) for name in names for site in [self._moved_position(name, scope)] if site is not None]
             if not moved:
                 continue
+            if touched is None:  # built only for the few functions that get this far
+                touched = self._touched(body, skip_stackers=True, skip_calls=wrappers)
             for vector in names:
                 if not self._free_left_behind(vector, scope, touched, function, [name.id for name, _ in moved]):
                     continue
@@ -557,6 +572,19 @@ def _role(word: str) -> str | None:
     if head in _POSITION_WORDS:
         return "position"
     return None
+
+
+def _may_hold_positions(target: ast.AST) -> bool:
+    """A cheap test before the owner's text is looked up: `x.center`, `x["points"]`, `x[:, :3]`, `x[:, 1]`."""
+    if isinstance(target, ast.Attribute):
+        return _role(target.attr) == "position"
+    if isinstance(target, ast.Subscript):
+        key = string(target.slice)
+        if key is not None:
+            return _role(key) == "position"
+        columns = _columns(target)
+        return columns is not None and columns <= {0, 1, 2}
+    return False
 
 
 def _peel(node: ast.AST) -> ast.AST:
