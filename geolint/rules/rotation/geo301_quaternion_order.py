@@ -8,7 +8,7 @@ import re
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, last_name, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_argument, quaternion_order
-from geolint.factbase.rule_support import FactRule
+from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.rotation.quaternion_flow import (
     COMPONENTS,
@@ -66,6 +66,9 @@ class QuaternionOrder(FactRule):
       `np.array([o.w, o.x, o.y, o.z])`, or a name that states it (`quat_wxyz`), followed through
       local variables, `self` attributes, and record fields filled by keyword in the same module
       (`Label(quaternion=q)` read back as `label.quaternion` from a parameter annotated `Label`);
+    - `np.roll(quats, -1)` / `torch.roll(quats, 1)` without an axis on a stack of quaternions
+      (a plural name: `quats`, `quaternions`, `orientations`; mujoco's per-body arrays), which rolls
+      the flattened array so each quaternion takes a component from its neighbour;
     - a name that states an order (`quat_xyzw`, `q_wxyz`) bound to data in another one
       (`quat_xyzw = mat2quat(R)`, `q_xyzw = (q_wxyz[3], q_wxyz[0], q_wxyz[1], q_wxyz[2])`);
     - a dict, keyword call or message filled component by component with the scalar part in the
@@ -99,8 +102,8 @@ class QuaternionOrder(FactRule):
 
     ## Known problems
     A wrong-way reorder of data whose order nothing states is not flagged in a module that also
-    stores data reordered the opposite way (two rolls that cancel are correct, and the module may
-    hold such non-standard data). Evidence is followed within one module only: a record field filled in another module, or a
+    stores data reordered the opposite way in a container (`batch["quat"] = torch.roll(q, 1, -1)`):
+    two rolls that cancel are correct, and such data may travel in that non-standard order. Evidence is followed within one module only: a record field filled in another module, or a
     parameter, has no known order and stays silent. When a name (`quat_xyzw`) and its value
     (`mat2quat(R)`) disagree, the binding is flagged once and the later uses of the name are not
     judged.
@@ -126,6 +129,8 @@ class QuaternionOrder(FactRule):
         Valid("from scipy.spatial.transform import Rotation\ndef f(X):\n    return Rotation.from_quat(X[:, [3, 0, 1, 2]], scalar_first=True)\n"),
         Valid("def f(rec):\n    return {'x': rec.q[0], 'y': rec.q[1], 'z': rec.q[2], 'w': rec.q[3]}\n"),
         Valid("def f(q_wxyz):\n    q_xyzw = (q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0])\n    return q_xyzw\n"),
+        Valid("import numpy as np\ndef to_xyzw(quats_wxyz):\n    return np.roll(quats_wxyz, -1, axis=1)\n"),
+        Valid("import numpy as np\ndef to_xyzw(quat_wxyz):\n    return np.roll(quat_wxyz, -1)\n"),  # one quaternion
         Valid("def enu_to_ned(q):\n    return {'x': q.y, 'y': q.x, 'z': -q.z, 'w': q.w}\n"),  # an axis change
         Valid(
             "from transforms3d.quaternions import mat2quat\ndef f(R):\n    q = mat2quat(R)\n"
@@ -193,6 +198,10 @@ class QuaternionOrder(FactRule):
             "def f(R):\n    quat_xyzw = mat2quat(R)\n    return Rotation.from_quat(quat_xyzw)\n"
         ),  # once, at the binding: the name and the producer disagree, so the call itself is not judged
         Invalid("def f(q_wxyz):\n    q_xyzw = (q_wxyz[3], q_wxyz[0], q_wxyz[1], q_wxyz[2])\n    return q_xyzw\n"),
+        Invalid(
+            "import numpy as np\ndef to_xyzw(orientations_quat_wxyz):\n    return np.roll(orientations_quat_wxyz, -1)\n",
+            expected_fix="import numpy as np\ndef to_xyzw(orientations_quat_wxyz):\n    return np.roll(orientations_quat_wxyz, -1, axis=-1)\n",
+        ),
         Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
         Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
@@ -208,6 +217,26 @@ class QuaternionOrder(FactRule):
         self._check_component_writes(flow)
         for node in facts.index.nodes(ast.Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
+        for node in facts.index.nodes(ast.Call):
+            self._check_flat_roll(node, flow)  # type: ignore[arg-type]
+
+    def _check_flat_roll(self, node: ast.Call, flow: QuaternionFlow) -> None:
+        """`np.roll(quats, -1)` without an axis on a stack of quaternions rolls the flattened array."""
+        reorder = flow.reorder_of(node, through_names=False)
+        if reorder is None or reorder.spelling != "roll" or len(node.args) > 2 or any(
+            given.arg in ("axis", "dims") for given in node.keywords
+        ):
+            return
+        if not flow.is_quaternion_stack(reorder.base):
+            return
+        self.report(
+            node,
+            f"`{self.code_of(node)}` has no axis: on a stack of quaternions (`{self.code_of(reorder.base)}`) it rolls the "
+            "flattened array, so each quaternion takes a component from its neighbour; roll the last axis",
+            replacement=with_keyword(self.facts.index.segment(node), "axis=-1"),
+            applicability="unsafe",  # the stack is known from a name
+            fix_description="pass axis=-1",
+        )
 
     def _check_named_target(self, node: ast.Assign, flow: QuaternionFlow) -> None:
         """`quat_xyzw = mat2quat(R)`: a name that states an order, bound to data in the other one."""

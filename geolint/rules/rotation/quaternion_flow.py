@@ -36,6 +36,7 @@ _TYPING_WORDS = frozenset(
 )
 _NAME_ORDER = re.compile(r"(?i)(?:^|_|\d)(wxyz|xyzw)(?:$|_|s\b)")
 _MAX_DEPTH = 12
+_STACK_WORDS = frozenset({"quats", "quaternions", "orientations", "qvecs", "quaternions"})
 
 
 @dataclass(frozen=True)
@@ -183,23 +184,35 @@ class QuaternionFlow:
         permutation = (3, 0, 1, 2) if shift % 4 == 1 else (1, 2, 3, 0)
         return Reorder(call, positional[0], permutation, "roll")
 
+    def is_quaternion_stack(self, node: ast.expr) -> bool:
+        """`orientations_quat_wxyz`, `quats`, `data.xquat`: a name in the plural of a quaternion word,
+        or a value known to be a stack (mujoco's per-body arrays)."""
+        name = node.id if isinstance(node, ast.Name) else node.attr if isinstance(node, ast.Attribute) else None
+        if name is not None and any(word in _STACK_WORDS for word in _words(name)):
+            return True
+        order = self.order_of(node)
+        return order is not None and order.batch
+
     def module_applies(self, permutation: tuple[int, ...]) -> bool:
-        """Whether the module stores data reordered by `permutation` (an index list, a roll, a
-        spelled-out list whose result is kept rather than handed straight to a quaternion API)."""
+        """Whether the module stores data reordered by `permutation` in a container (`batch["quat"] =
+        torch.roll(q, 1, -1)`, `{"quat": q[..., [3, 0, 1, 2]]}`, `sample.quat = ...`), where it may
+        travel to other code in that non-standard order."""
         if self._module_permutations is None:
             found: set[tuple[int, ...]] = set()
             for node in self.facts.index.nodes(ast.Subscript, ast.Call, ast.List, ast.Tuple):
                 reorder = self.reorder_of(node, through_names=False)  # type: ignore[arg-type]
-                if reorder is not None and not self._consumed_directly(reorder.node):
+                if reorder is not None and self._stored_in_container(reorder.node):
                     found.add(reorder.permutation)
             self._module_permutations = found
         return permutation in self._module_permutations
 
-    def _consumed_directly(self, node: ast.expr) -> bool:
-        from geolint.factbase.rotations import quaternion_argument, quaternion_order
-
+    def _stored_in_container(self, node: ast.expr) -> bool:
         parent = self.facts.parent(node)
-        return isinstance(parent, ast.Call) and quaternion_order(self.facts, parent) is not None and quaternion_argument(self.facts, parent) is node
+        if isinstance(parent, ast.Dict):
+            return any(value is node for value in parent.values)
+        if isinstance(parent, ast.Assign) and parent.value is node:
+            return any(isinstance(target, (ast.Subscript, ast.Attribute)) for target in parent.targets)
+        return False
 
     # -- orders --------------------------------------------------------------------------
     def order_of(self, node: ast.expr) -> Order | None:
