@@ -211,3 +211,22 @@ def test_a_cloud_moved_before_is_no_longer_known_to_be_in_the_camera_frame() -> 
         return pcd, other
     """
     assert _codes(source) == {(8, "GEO209")}
+
+
+def test_a_method_parameter_states_what_it_expects() -> None:
+    source = """
+    import numpy as np
+
+    class NerfDataset:
+        def __init__(self, meta, H, W, focal):
+            self.rays = []
+            for frame in meta["frames"]:
+                pose = np.array(frame["transform_matrix"], dtype=np.float32)
+                w2c = np.linalg.inv(pose)
+                self.rays.append(self.get_rays(H, W, focal, w2c))
+                self.rays.append(self.get_rays(H, W, focal, pose))
+
+        def get_rays(self, H, W, focal, c2w):
+            return H, W, focal, c2w
+    """
+    assert _codes(source) == {(10, "GEO209")}

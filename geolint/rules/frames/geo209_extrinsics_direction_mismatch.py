@@ -94,6 +94,8 @@ class ExtrinsicsDirectionMismatch(FactRule):
     author knows which.
 
     ## Known problems
+    Parameters are read for functions of the same module and for `self.method(...)` when the
+    module defines one method of that name; a helper imported from another module is not followed.
     Only conventions stated in the code are used: a pose loaded from a file without a telling key
     (`np.loadtxt(pose_path)`) has no direction. A `T_a_b` target is read in the project's naming
     order and is skipped where the project does not settle it. Plain name-to-name assignments
@@ -217,9 +219,8 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 stated = name_extrinsic(self.facts, keyword.arg)
                 if stated is not None:
                     self._compare(keyword.value, stated, f"`{keyword.arg}=`", names_both_sides=True)
-        function = self.facts.index.functions.get(call.func.id) if isinstance(call.func, ast.Name) else None
+        function, parameters = self._callee(call)
         if function is not None:
-            parameters = [*function.args.posonlyargs, *function.args.args]
             for argument, parameter in zip(call.args, parameters):
                 if isinstance(argument, ast.Starred):
                     break
@@ -243,6 +244,21 @@ class ExtrinsicsDirectionMismatch(FactRule):
                     f"({'; '.join(moved.evidence)}): only its inverse (camera-to-world) takes the cloud into the world",
                     evidence=(why, *moved.evidence),
                 )
+
+    def _callee(self, call: ast.Call) -> tuple[ast.FunctionDef | ast.AsyncFunctionDef | None, list[ast.arg]]:
+        """The function of this module a call runs (`render(...)`, or `self.render(...)` when one
+        method of the module has that name) and the parameters its positional arguments fill."""
+        index = self.facts.index
+        func = call.func
+        if isinstance(func, ast.Name) and func.id in index.functions:
+            function = index.functions[func.id]
+            return function, [*function.args.posonlyargs, *function.args.args]
+        if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "self":
+            methods = index.methods.get(func.attr, [])
+            if len(methods) == 1:
+                function = methods[0]
+                return function, [*function.args.posonlyargs, *function.args.args][1:]
+        return None, []
 
     def _compare(self, value: ast.expr, stated: Extrinsic, where: str, names_both_sides: bool = False) -> None:
         actual = self.evidence.of(value)
