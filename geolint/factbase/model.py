@@ -450,11 +450,17 @@ class FactBase:
         return self._cached("summary", call, lambda: self._function_summary(call))
 
     def _function_summary(self, call: ast.Call) -> FunctionSummary | None:
+        found = self.called_function(call)
+        return None if found is None else self._summary_of(*found)
+
+    def called_function(self, call: ast.Call) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+        """The project function a call runs (of this module, or of a project module it imports) and
+        the fact base of the module that defines it."""
         if not self.may_have_summary(call):
             return None
         func = call.func
         if isinstance(func, ast.Name) and func.id in self.index.functions:
-            return self._summary_of(self, self.index.functions[func.id])
+            return self, self.index.functions[func.id]
         if not self.cross_module:
             return None
         head = func.id if isinstance(func, ast.Name) else dotted_name(func)
@@ -471,7 +477,7 @@ class FactBase:
         other = summaries.external_facts(file, self.config)
         if other is None or name not in other.index.functions:
             return None
-        return self._summary_of(other, other.index.functions[name])
+        return other, other.index.functions[name]
 
     @staticmethod
     def _summary_of(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary | None:

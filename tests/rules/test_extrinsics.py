@@ -230,3 +230,27 @@ def test_a_method_parameter_states_what_it_expects() -> None:
             return H, W, focal, c2w
     """
     assert _codes(source) == {(10, "GEO209")}
+
+
+def test_a_helper_of_another_project_module_states_what_it_expects(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text("[project]\nname = 'tiny_nerf'\n")
+    package = tmp_path / "tiny_nerf"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "rays.py").write_text(
+        "import torch\n\n\ndef get_rays(H, W, focal, c2w):\n"
+        "    i, j = torch.meshgrid(torch.arange(W), torch.arange(H), indexing='xy')\n"
+        "    dirs = torch.stack([(i - W * 0.5) / focal, -(j - H * 0.5) / focal, -torch.ones_like(i)], -1)\n"
+        "    return c2w[:3, 3].expand(dirs.shape), dirs @ c2w[:3, :3].T\n"
+    )
+    (package / "data.py").write_text(
+        "import numpy as np\nimport torch\n\nfrom tiny_nerf import rays\nfrom tiny_nerf.rays import get_rays\n\n\n"
+        "def load(meta, H, W, focal):\n    out = []\n    for frame in meta['frames']:\n"
+        "        pose = torch.from_numpy(np.array(frame['transform_matrix'], dtype=np.float32))\n"
+        "        out.append(get_rays(H, W, focal, pose))\n"
+        "        out.append(get_rays(H, W, focal, torch.linalg.inv(pose)))\n"
+        "        out.append(rays.get_rays(H, W, focal, torch.linalg.inv(pose)))\n"
+        "    return out\n"
+    )
+    findings = [f for result in api.lint_paths([tmp_path], config=Config(select=("GEO209",)), use_cache=False) for f in result.findings]
+    assert {(Path(f.path).name, f.line) for f in findings} == {("data.py", 13), ("data.py", 14)}

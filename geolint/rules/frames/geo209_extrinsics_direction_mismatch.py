@@ -94,8 +94,8 @@ class ExtrinsicsDirectionMismatch(FactRule):
     author knows which.
 
     ## Known problems
-    Parameters are read for functions of the same module and for `self.method(...)` when the
-    module defines one method of that name; a helper imported from another module is not followed.
+    Parameters are read for functions of the project (this module, or a project module it imports)
+    and for `self.method(...)` when the module defines one method of that name.
     Only conventions stated in the code are used: a pose loaded from a file without a telling key
     (`np.loadtxt(pose_path)`) has no direction. A `T_a_b` target is read in the project's naming
     order and is skipped where the project does not settle it. Plain name-to-name assignments
@@ -246,12 +246,14 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 )
 
     def _callee(self, call: ast.Call) -> tuple[ast.FunctionDef | ast.AsyncFunctionDef | None, list[ast.arg]]:
-        """The function of this module a call runs (`render(...)`, or `self.render(...)` when one
-        method of the module has that name) and the parameters its positional arguments fill."""
+        """The project function a call runs (`render(...)` of this module or of a project module it
+        imports, or `self.render(...)` when one method of the module has that name) and the
+        parameters its positional arguments fill."""
         index = self.facts.index
         func = call.func
-        if isinstance(func, ast.Name) and func.id in index.functions:
-            function = index.functions[func.id]
+        found = self.facts.called_function(call) if isinstance(func, (ast.Name, ast.Attribute)) else None
+        if found is not None:
+            function = found[1]
             return function, [*function.args.posonlyargs, *function.args.args]
         if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "self":
             methods = index.methods.get(func.attr, [])
