@@ -82,6 +82,20 @@ def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
     return positional[0] if positional else None
 
 
+def pybullet_orientation_arguments(call: ast.Call) -> list[ast.expr]:
+    """The (x, y, z, w) orientation arguments of a pybullet call that takes them beside positions
+    (`resetBasePositionAndOrientation(body, pos, orn)`, `loadURDF(path, pos, orn)`,
+    `multiplyTransforms(p1, o1, p2, o2)`...), positional or by keyword."""
+    name = last_name(call.func) or ""
+    spec = _PYBULLET_ORIENTATION_ARGUMENTS.get(name)
+    if spec is None or any(isinstance(arg, ast.Starred) for arg in call.args):
+        return []
+    positions, keywords = spec
+    found = [call.args[position] for position in positions if position < len(call.args)]
+    found += [given.value for given in call.keywords if given.arg in keywords]
+    return found
+
+
 def quaternion_producer(facts: FactBase, call: ast.Call) -> str | None:
     """The component order of the quaternion a library call returns, or None if unknown."""
     func = call.func
@@ -167,6 +181,14 @@ _DATA_CONSUMERS = {
     "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_FIRST,
     "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_LAST,
 }  # fmt: skip
+_PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]]] = {
+    "resetBasePositionAndOrientation": ((2,), frozenset({"ornObj"})),
+    "loadURDF": ((2,), frozenset({"baseOrientation"})),
+    "createMultiBody": ((), frozenset({"baseOrientation"})),
+    "multiplyTransforms": ((1, 3), frozenset({"orientationA", "orientationB"})),
+    "invertTransform": ((1,), frozenset({"orientation"})),
+    "calculateInverseKinematics": ((3,), frozenset({"targetOrientation"})),
+}
 _PYBULLET_CONSUMERS = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
 _DATA_PRODUCERS = {
     "quaternion.as_float_array": SCALAR_FIRST,  # numpy-quaternion

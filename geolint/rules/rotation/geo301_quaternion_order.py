@@ -7,7 +7,14 @@ import re
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, last_name, positional_args, replace_span, string, subscript_parts
-from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, api_label, quaternion_argument, quaternion_order
+from geolint.factbase.rotations import (
+    SCALAR_FIRST,
+    SCALAR_LAST,
+    api_label,
+    pybullet_orientation_arguments,
+    quaternion_argument,
+    quaternion_order,
+)
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.rotation.quaternion_flow import (
@@ -54,7 +61,9 @@ class QuaternionOrder(FactRule):
     `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` and ROS 1 `geometry_msgs.msg.Quaternion`
     (x, y, z, w); also trimesh's
     `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array` and pybullet
-    `get*FromQuaternion`. Through data it also flags:
+    (`get*FromQuaternion`, and the orientation arguments of `resetBasePositionAndOrientation`,
+    `loadURDF`, `multiplyTransforms`, `invertTransform`, `calculateInverseKinematics`). Through
+    data it also flags:
 
     - a reorder that goes the wrong way for the API, whatever the data: `from_quat(X[..., [3, 0, 1, 2]])`
       or `from_quat(np.roll(q, 1))` (scalar-last to scalar-first, then read as scalar-last), and
@@ -111,7 +120,7 @@ class QuaternionOrder(FactRule):
 
     code = "GEO301"
     name = "quaternion-order"
-    triggers = _GATE_OR_ORDER_NAME
+    triggers = _GATE_OR_ORDER_NAME  # type: ignore[assignment]  # the gate, widened
 
     VALID = [
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.x, q.y, q.z, q.w])\n"),
@@ -131,6 +140,10 @@ class QuaternionOrder(FactRule):
         Valid("def f(q_wxyz):\n    q_xyzw = (q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0])\n    return q_xyzw\n"),
         Valid("import numpy as np\ndef to_xyzw(quats_wxyz):\n    return np.roll(quats_wxyz, -1, axis=1)\n"),
         Valid("import numpy as np\ndef to_xyzw(quat_wxyz):\n    return np.roll(quat_wxyz, -1)\n"),  # one quaternion
+        Valid(
+            "import pybullet as p\ndef place(body, position, yaw):\n"
+            "    orientation = p.getQuaternionFromEuler([0, 0, yaw])\n    p.resetBasePositionAndOrientation(body, position, orientation)\n"
+        ),
         Valid("def enu_to_ned(q):\n    return {'x': q.y, 'y': q.x, 'z': -q.z, 'w': q.w}\n"),  # an axis change
         Valid(
             "from transforms3d.quaternions import mat2quat\ndef f(R):\n    q = mat2quat(R)\n"
@@ -202,6 +215,10 @@ class QuaternionOrder(FactRule):
             "import numpy as np\ndef to_xyzw(orientations_quat_wxyz):\n    return np.roll(orientations_quat_wxyz, -1)\n",
             expected_fix="import numpy as np\ndef to_xyzw(orientations_quat_wxyz):\n    return np.roll(orientations_quat_wxyz, -1, axis=-1)\n",
         ),
+        Invalid(
+            "import pybullet as p\nfrom transforms3d.euler import euler2quat\ndef place(body, position, yaw):\n"
+            "    orientation = euler2quat(0, 0, yaw)\n    p.resetBasePositionAndOrientation(body, position, orientation)\n"
+        ),
         Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
         Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
@@ -269,6 +286,8 @@ class QuaternionOrder(FactRule):
 
     def _check(self, node: ast.Call, flow: QuaternionFlow) -> None:
         facts = self.facts
+        for orientation in pybullet_orientation_arguments(node):
+            self._check_value(node, orientation, SCALAR_LAST, flow)
         expected = quaternion_order(facts, node)
         if expected is None:
             return
@@ -452,7 +471,7 @@ class QuaternionOrder(FactRule):
         value = mapping[letter]
         written = shape.format(letter=letter, value=facts.code_of(value))
         right = order.order.index(letter)
-        edits = []
+        edits: list[tuple[ast.AST, str]] = []
         for component in COMPONENTS:
             element = mapping[component]
             text = facts.index.segment(element)

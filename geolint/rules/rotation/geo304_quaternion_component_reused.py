@@ -10,7 +10,7 @@ from geolint.factbase.rotations import quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.pose_parts import AllOf
-from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base, spelled_components
+from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness
 # (in robotics `q` is just as often a joint configuration).
@@ -63,7 +63,7 @@ class QuaternionComponentReused(FactRule):
     code = "GEO304"
     name = "quaternion-component-reused"
     # an indexed component followed by another element (`q[2], `), or a `.w` component
-    triggers = AllOf(r"\w\s*\[[^\[\]\n]*\d\s*\]\s*,|\.w\b")
+    triggers = AllOf(r"\w\s*\[[^\[\]\n]*\d\s*\]\s*,|\.w\b")  # type: ignore[assignment]
 
     VALID = [
         Valid("import numpy as np\ndef f(q_wxyz):\n    q_xyzw = np.array([q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0]])\n    return q_xyzw\n"),

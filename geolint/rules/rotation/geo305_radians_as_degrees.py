@@ -49,7 +49,7 @@ class RadiansAsDegrees(FactRule):
 
     code = "GEO305"
     name = "radians-as-degrees"
-    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True")
+    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True")  # type: ignore[assignment]
 
     VALID = [
         Valid("import numpy as np\ndef f(heading_deg):\n    return np.deg2rad(heading_deg)\n"),

@@ -36,7 +36,7 @@ _TYPING_WORDS = frozenset(
 )
 _NAME_ORDER = re.compile(r"(?i)(?:^|_|\d)(wxyz|xyzw)(?:$|_|s\b)")
 _MAX_DEPTH = 12
-_STACK_WORDS = frozenset({"quats", "quaternions", "orientations", "qvecs", "quaternions"})
+_STACK_WORDS = frozenset({"quats", "quaternions", "orientations", "qvecs"})
 
 
 @dataclass(frozen=True)
@@ -395,7 +395,7 @@ class QuaternionFlow:
                         enclosing = scope.node
                         while enclosing is not None and not isinstance(enclosing, ast.ClassDef):
                             enclosing = facts.parent(enclosing)  # type: ignore[assignment]
-                        owner_class = enclosing.name if isinstance(enclosing, ast.ClassDef) else None
+                        owner_class: str | None = enclosing.name if isinstance(enclosing, ast.ClassDef) else None
                     else:
                         owner_class = self._class_of(owner) if isinstance(owner, ast.Name) else None
                     self._keyword_stores.setdefault((owner_class or "?", target.attr), []).append(value if owner_class else None)
@@ -467,7 +467,7 @@ def _index_list(facts: FactBase, node: ast.AST) -> tuple[int, ...] | None:
     values = [number(element) for element in node.elts]
     if any(not isinstance(value, int) or isinstance(value, bool) for value in values):
         return None
-    permutation = tuple(value % 4 for value in values if -4 <= value <= 3)  # type: ignore[operator]
+    permutation = tuple(int(value) % 4 for value in values if value is not None and -4 <= value <= 3)
     if len(permutation) != 4 or sorted(permutation) != [0, 1, 2, 3] or permutation == (0, 1, 2, 3):
         return None
     return permutation
@@ -481,8 +481,8 @@ def _spelled_order(elements: list[ast.expr]) -> str | None:
         if isinstance(element, ast.Attribute) and element.attr in COMPONENTS:
             letters.append(element.attr)
             owners.add(ast.dump(element.value))
-        elif isinstance(element, ast.Subscript) and string(element.slice) in tuple(COMPONENTS):
-            letters.append(string(element.slice))
+        elif isinstance(element, ast.Subscript) and (key := string(element.slice)) is not None and key in tuple(COMPONENTS):
+            letters.append(key)
             owners.add(ast.dump(element.value))
         elif isinstance(element, ast.Name):
             lowered = element.id.lower()
