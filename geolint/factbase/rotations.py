@@ -180,6 +180,10 @@ _DATA_CONSUMERS = {
     "quaternion.as_quat_array": SCALAR_FIRST,
     "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_FIRST,
     "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_LAST,
+    "open3d.get_rotation_matrix_from_quaternion": SCALAR_FIRST,
+    **{f"roma.{name}": SCALAR_LAST for name in (
+        "unitquat_to_rotmat", "unitquat_to_rotvec", "unitquat_to_euler", "quat_product", "quat_action",
+        "quat_conjugation", "quat_inverse", "unitquat_slerp")},
 }  # fmt: skip
 _PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]]] = {
     "resetBasePositionAndOrientation": ((2,), frozenset({"ornObj"})),
@@ -191,6 +195,9 @@ _PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]
 }
 _PYBULLET_CONSUMERS = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
 _DATA_PRODUCERS = {
+    **{f"roma.{name}": SCALAR_LAST for name in (
+        "rotmat_to_unitquat", "rotvec_to_unitquat", "euler_to_unitquat", "quat_product", "quat_conjugation",
+        "quat_inverse", "random_unitquat", "unitquat_slerp")},
     "quaternion.as_float_array": SCALAR_FIRST,  # numpy-quaternion
     "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_FIRST,
     "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_LAST,

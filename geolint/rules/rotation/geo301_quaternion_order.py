@@ -60,7 +60,8 @@ class QuaternionOrder(FactRule):
     pytransform3d `*_from_quaternion`, pyquaternion `Quaternion` and spatialmath
     `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` and ROS 1 `geometry_msgs.msg.Quaternion`
     (x, y, z, w); also trimesh's
-    `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array` and pybullet
+    `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array`, Open3D
+    `get_rotation_matrix_from_quaternion` (w, x, y, z), roma `unitquat_*` (x, y, z, w) and pybullet
     (`get*FromQuaternion`, and the orientation arguments of `resetBasePositionAndOrientation`,
     `loadURDF`, `multiplyTransforms`, `invertTransform`, `calculateInverseKinematics`). Through
     data it also flags:
@@ -218,6 +219,10 @@ class QuaternionOrder(FactRule):
         Invalid(
             "import pybullet as p\nfrom transforms3d.euler import euler2quat\ndef place(body, position, yaw):\n"
             "    orientation = euler2quat(0, 0, yaw)\n    p.resetBasePositionAndOrientation(body, position, orientation)\n"
+        ),
+        Invalid(
+            "import open3d as o3d\nimport roma\ndef f(R):\n    quat = roma.rotmat_to_unitquat(R)\n"
+            "    return o3d.geometry.get_rotation_matrix_from_quaternion(quat)\n"
         ),
         Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
         Invalid(
