@@ -208,3 +208,24 @@ def test_stored_together_into_one_object() -> None:
         return cloud
     """
     assert codes(source) == [(5, "GEO107")]
+
+
+def test_a_vector_the_class_recomputes_from_the_position_follows_it() -> None:
+    source = """
+    class OrbitCamera:
+        def __init__(self, position, target):
+            self.position = position
+            self.target = target
+            self.direction = None
+
+        def look(self):
+            self.direction = normalize(self.target - self.position)
+
+        def orbit(self, R):
+            self.position = R @ (self.position - self.target) + self.target
+            self.look()
+
+        def orbit_quietly(self, R):
+            self.position = R @ (self.position - self.target) + self.target
+    """
+    assert codes(source) == []

@@ -374,7 +374,24 @@ class FreeVectorsLeftBehind(FactRule):
             role = _role(member.name)
             if role in ("free", "orientation") and not frames_of_name(member.name, facts.config):
                 seen.setdefault(member.name, role)
-        return sorted(seen.items())
+        derived = self._derived_from(moved, nodes)
+        return sorted((name, role) for name, role in seen.items() if name not in derived)
+
+    def _derived_from(self, moved: _Member, nodes: list[ast.AST]) -> set[str]:
+        """Members the code computes from the moved position (`self.direction = normalize(self.target -
+        self.position)` in an orbit camera): they follow the position by themselves."""
+        derived: set[str] = set()
+        for node in nodes:
+            if not isinstance(node, ast.Assign):
+                continue
+            reads = [self._member(inner) for inner in walk_within(node.value)]
+            if not any(m is not None and m.owner == moved.owner and m.name == moved.name for m in reads):
+                continue
+            for target in node.targets:
+                member = self._member(target)
+                if member is not None and member.owner == moved.owner and member.name is not None:
+                    derived.add(member.name)
+        return derived
 
     def _unwrapped(self, value: ast.expr) -> tuple[ast.expr, ast.Call | None]:
         """`Vector3dVector(x)`, `np.asarray(x)`, `torch.from_numpy(x).float()` -> x and the wrapping call
