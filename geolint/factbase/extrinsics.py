@@ -577,3 +577,23 @@ def _is_tsdf_volume(evidence: ExtrinsicsEvidence, receiver: ast.expr) -> bool:
     return bool(made_by) and all(
         isinstance(made, ast.Call) and "TSDFVolume" in (evidence.facts.qualified_name(made.func) or "") for made in made_by
     )
+
+
+_PYRENDER_CAMERAS = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "OrthographicCamera"})
+
+
+def pyrender_camera_pose(evidence: ExtrinsicsEvidence, call: ast.Call) -> ast.expr | None:
+    """The `pose=` of `scene.add(camera, pose=...)` when `camera` is a pyrender camera: a scene
+    node's pose maps the node into the scene, so a camera's is camera-to-world."""
+    from geolint.rules.pose_parts import call_name
+
+    if call_name(call) != "add" or not call.args or not isinstance(call.func, ast.Attribute):
+        return None
+    pose = next((keyword.value for keyword in call.keywords if keyword.arg == "pose"), None)
+    if pose is None:
+        return None
+    camera = call.args[0]
+    made = evidence.values.value_of(camera) if isinstance(camera, ast.Name) else camera
+    if not isinstance(made, ast.Call) or call_name(made) not in _PYRENDER_CAMERAS:
+        return None
+    return pose if (evidence.facts.qualified_name(made.func) or "").startswith("pyrender") else None

@@ -254,3 +254,22 @@ def test_a_helper_of_another_project_module_states_what_it_expects(tmp_path: Pat
     )
     findings = [f for result in api.lint_paths([tmp_path], config=Config(select=("GEO209",)), use_cache=False) for f in result.findings]
     assert {(Path(f.path).name, f.line) for f in findings} == {("data.py", 13), ("data.py", 14)}
+
+
+def test_a_pyrender_camera_pose_is_camera_to_world() -> None:
+    source = """
+    import numpy as np
+    import pyrender
+
+    def render(scene_camera, mesh, K, H, W):
+        scene = pyrender.Scene()
+        camera = pyrender.IntrinsicsCamera(fx=K[0, 0], fy=K[1, 1], cx=K[0, 2], cy=K[1, 2])
+        w2c = np.eye(4)
+        w2c[:3, :3] = np.array(scene_camera["cam_R_w2c"]).reshape(3, 3)
+        w2c[:3, 3] = np.array(scene_camera["cam_t_w2c"])
+        scene.add(camera, pose=w2c)
+        scene.add(camera, pose=np.linalg.inv(w2c))
+        scene.add(pyrender.Mesh.from_trimesh(mesh), pose=w2c)  # a mesh given in world coordinates: fine
+        return pyrender.OffscreenRenderer(W, H).render(scene)
+    """
+    assert _codes(source) == {(11, "GEO209")}

@@ -5,6 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.factbase.extrinsics import (
+    C2W,
     DATA,
     POSE,
     Extrinsic,
@@ -14,6 +15,7 @@ from geolint.factbase.extrinsics import (
     key_extrinsic,
     name_extrinsic,
     open3d_w2c_argument,
+    pyrender_camera_pose,
     DIRECTION_WORDS,
     is_blank_matrix,
 )
@@ -24,7 +26,7 @@ from geolint.rules.pose_parts import AllOf, local_values
 
 TRIGGER = AllOf(
     r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
-    r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|_from_world|world_from_cam|\b[TRt]_?(?:cw|wc)\b"
+    r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|pyrender|_from_world|world_from_cam|\b[TRt]_?(?:cw|wc)\b"
 )
 
 
@@ -57,7 +59,8 @@ class ExtrinsicsDirectionMismatch(FactRule):
     camera (TSDF `volume.integrate(rgbd, intrinsic, extrinsic)`, `create_from_rgbd_image` /
     `create_from_depth_image`'s `extrinsic`, `create_camera_visualization`); and an Open3D cloud in
     the camera frame (made by those two without an extrinsic) moved by a world-to-camera matrix,
-    which only a camera-to-world one can take to the world.
+    which only a camera-to-world one can take to the world; a world-to-camera pose given to a
+    pyrender camera node (`scene.add(camera, pose=...)`, whose pose maps the camera into the scene).
 
     ## Why is this bad?
     A world-to-camera pose and its camera-to-world inverse are both 4x4 rigid transforms with
@@ -231,6 +234,10 @@ class ExtrinsicsDirectionMismatch(FactRule):
         if library is not None:
             argument, where = library
             self._compare(argument, Extrinsic(W2C, POSE, ("Open3D: an extrinsic maps world into camera",)), where, names_both_sides=True)
+        camera_pose = pyrender_camera_pose(self.evidence, call)
+        if camera_pose is not None:
+            stated = Extrinsic(C2W, POSE, ("pyrender: a node's pose maps it into the scene",))
+            self._compare(camera_pose, stated, "the pose of a pyrender camera node", names_both_sides=True)
         func = call.func
         if isinstance(func, ast.Attribute) and func.attr == "transform" and len(call.args) == 1 and not call.keywords:
             why = camera_frame_cloud(self.evidence, func.value, call)
