@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import os
 import pty
 import subprocess
@@ -47,6 +48,15 @@ def test_docs_rules_md_is_up_to_date():
     ).stdout
     committed = (REPO / "docs" / "rules.md").read_text(encoding="utf-8")
     assert committed == generated, "docs/rules.md is stale: run `python -m geolint.docs > docs/rules.md`"
+
+
+def test_readme_rule_table_names_every_semantic_rule_by_its_code_and_name():
+    from geolint.rules import all_rules
+
+    readme = (REPO / "README.md").read_text(encoding="utf-8")
+    rows = dict(re.findall(r"^\| (GEO\d{3}) \| ([a-z-]+) \|", readme, re.M))
+    semantic = {rule.code: rule.name for rule in all_rules() if rule.code[3] in "123"}
+    assert rows == semantic
 
 
 def _run_on_a_tty(args: list[str], cwd: Path, env: dict[str, str]) -> str:
