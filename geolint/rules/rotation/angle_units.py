@@ -22,6 +22,7 @@ import re
 from dataclasses import dataclass
 
 from geolint.factbase.index import ParamBinding
+from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import FactBase, keyword, number, positional_args
 
 DEGREES, RADIANS = "deg", "rad"
@@ -62,8 +63,7 @@ class AngleUnits:
 
     def __init__(self, facts: FactBase) -> None:
         self.facts = facts
-        self._memo: dict[int, Unit | None] = {}
-        self._active: set[int] = set()
+        self._units: NodeMemo[Unit] = NodeMemo(_MAX_DEPTH)
 
     def converts(self, call: ast.Call) -> str | None:
         """For `np.radians(x)` / `np.deg2rad(x)`, RADIANS (the unit it returns); DEGREES for
@@ -75,18 +75,7 @@ class AngleUnits:
         return RADIANS if name in _TO_RADIANS else DEGREES if name in _TO_DEGREES else None
 
     def unit_of(self, node: ast.expr) -> Unit | None:
-        key = id(node)
-        if key in self._memo:
-            return self._memo[key]
-        if key in self._active or len(self._active) > _MAX_DEPTH:
-            return None
-        self._active.add(key)
-        try:
-            found = self._unit(node)
-        finally:
-            self._active.discard(key)
-        self._memo[key] = found
-        return found
+        return self._units.get(id(node), lambda: self._unit(node))
 
     def _unit(self, node: ast.expr) -> Unit | None:
         facts = self.facts

@@ -18,6 +18,7 @@ import re
 from dataclasses import dataclass
 
 from geolint.factbase.index import LoopBinding, ParamBinding, UnpackBinding
+from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, quaternion_producer
 from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
@@ -132,8 +133,7 @@ class QuaternionFlow:
 
     def __init__(self, facts: FactBase) -> None:
         self.facts = facts
-        self._orders: dict[int, Order | None] = {}
-        self._active: set[int] = set()
+        self._orders: NodeMemo[Order] = NodeMemo(_MAX_DEPTH)
         self._keyword_stores: dict[tuple[str, str], list[ast.expr | None]] | None = None
         self._module_permutations: set[tuple[int, ...]] | None = None
 
@@ -216,18 +216,7 @@ class QuaternionFlow:
 
     # -- orders --------------------------------------------------------------------------
     def order_of(self, node: ast.expr) -> Order | None:
-        key = id(node)
-        if key in self._orders:
-            return self._orders[key]
-        if key in self._active or len(self._active) > _MAX_DEPTH:
-            return None
-        self._active.add(key)
-        try:
-            found = self._order(node)
-        finally:
-            self._active.discard(key)
-        self._orders[key] = found
-        return found
+        return self._orders.get(id(node), lambda: self._order(node))
 
     def _order(self, node: ast.expr) -> Order | None:
         facts = self.facts
