@@ -30,6 +30,7 @@ import re
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import number, string
 
 if TYPE_CHECKING:
@@ -208,22 +209,10 @@ class ExtrinsicsEvidence:
     def __init__(self, facts: FactBase, values: LocalValues) -> None:
         self.facts = facts
         self.values = values
-        self._memo: dict[int, Extrinsic | None] = {}
-        self._active: set[int] = set()
+        self._facts: NodeMemo[Extrinsic] = NodeMemo(max_depth=40)
 
     def of(self, node: ast.AST) -> Extrinsic | None:
-        key = id(node)
-        if key in self._memo:
-            return self._memo[key]
-        if key in self._active or len(self._active) > 40:
-            return None
-        self._active.add(key)
-        try:
-            found = self._of(node)
-        finally:
-            self._active.discard(key)
-        self._memo[key] = found
-        return found
+        return self._facts.get(id(node), lambda: self._of(node))
 
     # -- the evaluation ------------------------------------------------------------------------
     def _of(self, node: ast.AST) -> Extrinsic | None:
