@@ -188,8 +188,8 @@ def _camera_pose_name(facts: FactBase, name: str, order: str) -> FrameFact | Non
     if not all(re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", word) for word in (first, second)):
         return None
     dst, src = (first, second) if order == DST_FIRST else (second, first)
-    operator = "rotation" if tokens[0] in ROTATION_LETTERS else "transform"
-    return FrameFact(NameFrames(dst=dst.lower(), src=src.lower(), operator=operator), (f"name `{name}` ({order})",))
+    frames = NameFrames(dst=dst.lower(), src=src.lower(), operator="rotation" if tokens[0] in ROTATION_LETTERS else "transform")
+    return FrameFact(frames, (f"name `{name}` ({order})",))
 
 
 def key_extrinsic(key: str) -> Extrinsic | None:
