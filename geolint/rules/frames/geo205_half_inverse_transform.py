@@ -17,6 +17,7 @@ from geolint.rules.pose_parts import (
     matmul_operands,
     pose_part,
     same_code,
+    transposed_operand,
 )
 
 # A product, or a transpose/inverse written into a pose's rotation block.
@@ -78,7 +79,9 @@ class HalfInverseTransform(AstRule):
     was meant.
 
     ## Known problems
-    The rule needs evidence that R and t belong to one pose; rotations and translations passed in
+    A rotation read from a key is taken to be stored as a rotation (column form); when the same
+    module writes that key from a computed matrix (`info["rot"] = R` laid out for `points @ R`),
+    the in-place row form is not judged. The rule needs evidence that R and t belong to one pose; rotations and translations passed in
     separately (`def f(R, t, p)`) are not checked. A codebase that stores a camera *centre* under a
     translation's name (`pose.t` = centre, so `R @ (p - pose.t)` is right) is flagged; such a
     value is better named `center`.
@@ -112,6 +115,14 @@ class HalfInverseTransform(AstRule):
             "def to_sensor(points, T):\n"
             "    points[:, :3] = points[:, :3] @ T[:3, :3].T\n"
             "    points[:, :3] += T[:3, 3]\n"
+            "    return points\n"
+        ),
+        Valid(
+            "def build(sweep, R_a, R_b):\n"
+            "    sweep['sweep2lidar_rotation'] = R_a.T @ R_b.T  # laid out for points @ R\n"
+            "def load(points, sweep):\n"
+            "    points[:, :3] = points[:, :3] @ sweep['sweep2lidar_rotation']\n"
+            "    points[:, :3] += sweep['sweep2lidar_translation']\n"
             "    return points\n"
         ),
         Valid(
@@ -171,7 +182,9 @@ class HalfInverseTransform(AstRule):
         if len(node.targets) != 1:
             return
         target = node.targets[0]
-        written = pose_part(target, values) if isinstance(target, ast.Subscript) else None
+        if not isinstance(target, ast.Subscript):
+            return
+        written = pose_part(target, values)
         if written is None or written.kind != "translation":
             return
         value = node.value.operand if isinstance(node.value, ast.UnaryOp) and isinstance(node.value.op, ast.USub) else node.value
@@ -223,6 +236,8 @@ class HalfInverseTransform(AstRule):
             return
         if not same_code(applied.operand, node.target):
             return  # `x = y @ R; x -= t`: not a point moved in place
+        if self._module_stores_key_computed(previous.value, values):
+            return  # `info["rot"] = R` with R composed for `points @ R`: the module chose the layout
         sign = "+" if isinstance(node.op, ast.Add) else "-"
         self.report(
             node,
@@ -230,6 +245,27 @@ class HalfInverseTransform(AstRule):
             f"and now its forward translation ({sign}= t): neither the pose nor its inverse. The inverse "
             "is Rᵀ (p - t) (rows: (p - t) @ R)",
         )
+
+    @staticmethod
+    def _module_stores_key_computed(product: ast.expr, values: LocalValues) -> bool:
+        """Whether the rotation in `product` is read from a string key (`sweep["sweep2lidar_rotation"]`)
+        that this module also writes from something other than a plain rotation: the stored layout
+        (row-form, for `points @ R`) is then the module's own choice, and the read may be right."""
+        keys = set()
+        for operand in matmul_operands(product) or ():
+            read = transposed_operand(operand) or operand
+            if isinstance(read, ast.Subscript) and isinstance(read.slice, ast.Constant) and isinstance(read.slice.value, str):
+                keys.add(read.slice.value)
+        if not keys:
+            return False
+        for node in values.nodes:
+            if isinstance(node, ast.Assign) and len(node.targets) == 1:
+                target = node.targets[0]
+                if isinstance(target, ast.Subscript) and isinstance(target.slice, ast.Constant) and target.slice.value in keys:
+                    stored = pose_part(node.value, values)
+                    if stored is None or stored.transposed:
+                        return True
+        return False
 
     @staticmethod
     def _block_of(node: ast.stmt, values: LocalValues) -> list[ast.stmt]:
