@@ -116,8 +116,11 @@ def lint_source(
 
     module = None
     syntax_error = None
-    if SYNTAX_ERROR in on or guards.TOO_COMPLEX in on or visitors:
-        limit = guards.exceeded_limit(source, config)  # before any analysis and before libcst's parser
+    checked = SYNTAX_ERROR in on or guards.TOO_COMPLEX in on or bool(visitors)
+    if checked:
+        # size and CPython's parser before any analysis; the nesting depth below, before any analysis
+        # and before libcst's parser (measured on the fact base's walk when an AstRule runs)
+        limit = guards.exceeded_limit(source, config, measure_depth=False)
         if limit is not None:
             return guards.limit_finding(path, config, limit)
         guards.make_room_for_recursion(config)
@@ -133,6 +136,12 @@ def lint_source(
     active = [rule for rule in visitors if _may_fire(rule, source, config)]
     ast_rules = [rule for rule in active if _is_ast_rule(rule)] if syntax_error is None else []
     cst_rules = [rule for rule in active if not _is_ast_rule(rule)]
+    if checked and syntax_error is None:
+        limit = _depth_limit(source, config, bool(ast_rules), bool(cst_rules) or guards.TOO_COMPLEX in on or (
+            suppression.UNUSED_SUPPRESSION in on and suppression.may_have_directives(source)
+        ))
+        if limit is not None:
+            return guards.limit_finding(path, config, limit)
     findings: list[Finding] = []
     if ast_rules:
         findings += _run_ast_rules(source, path, config, ast_rules)
@@ -157,6 +166,22 @@ def lint_source(
                 severity=_severity_of(suppression.UNUSED_SUPPRESSION, config, Severity.WARNING),
             )
     return sorted(findings, key=finding_order)
+
+
+def _depth_limit(source: str, config: Config, analysed: bool, verdict_needed: bool) -> guards.LimitExceeded | None:
+    """Whether the tree of `source` (which parses) is nested past `max-nesting-depth`.
+
+    When an AstRule runs, the fact base's walk of the tree measures it (one walk for both); otherwise
+    the guards walk it, but only when something would still read the file or GEO001 is on (a file
+    no rule reads and GEO001 ignores gets no finding either way).
+    """
+    limit = config.max_nesting_depth
+    if analysed:
+        from geolint.factbase import module_index
+
+        index = module_index(cached_ast(source), source, limit)
+        return guards.past_depth_limit(index.too_deep_at, limit) if index.too_deep else None
+    return guards.too_deep(cached_ast(source), limit) if verdict_needed else None
 
 
 def _may_fire(rule: AnyRule, source: str, config: Config) -> bool:

@@ -59,11 +59,13 @@ class LimitExceeded:
     message: str
 
 
-def exceeded_limit(source: str, config: Config) -> LimitExceeded | None:
+def exceeded_limit(source: str, config: Config, measure_depth: bool = True) -> LimitExceeded | None:
     """The first limit `source` exceeds (size, CPython's parser, nesting depth), or None.
 
     Parses with CPython's `ast` (through the engine's cache), which raises rather than crashes;
-    a plain syntax error is not a limit (None: the engine reports it as GEO000).
+    a plain syntax error is not a limit (None: the engine reports it as GEO000). Without
+    `measure_depth` the caller measures the depth itself (the engine does it on the fact base's
+    walk of the tree, `depth_limit_finding`).
     """
     from geolint.engine import cached_ast
 
@@ -88,7 +90,17 @@ def exceeded_limit(source: str, config: Config) -> LimitExceeded | None:
         return None
     except ValueError:  # null bytes: a syntax error, reported by the engine
         return None
-    return _too_deep(tree, config.max_nesting_depth)
+    return too_deep(tree, config.max_nesting_depth) if measure_depth else None
+
+
+def past_depth_limit(at: ast.AST | None, limit: int) -> LimitExceeded:
+    """What to say about a tree nested deeper than `limit`, first past it at `at` (see `too_deep`)."""
+    return LimitExceeded(
+        getattr(at, "lineno", 1),
+        getattr(at, "col_offset", 0) + 1,
+        f"file not analysed: its syntax tree is nested more than {limit} levels deep here; "
+        f"raise `max-nesting-depth` in [tool.geolint] to analyse it",
+    )
 
 
 def safe_for_libcst(source: str, syntax_error: str, config: Config) -> bool:
@@ -181,20 +193,14 @@ def too_deep_becomes_a_finding(lint_source: LintSource) -> LintSource:
     return cast(LintSource, guarded)
 
 
-def _too_deep(tree: ast.AST, limit: int) -> LimitExceeded | None:
+def too_deep(tree: ast.AST, limit: int) -> LimitExceeded | None:
     """Walk the tree level by level (no recursion); stop at the first level past `limit`."""
     level: list[ast.AST] = [tree]
     depth = 0
     while level:
         depth += 1
         if depth > limit:
-            where = next((node for node in level if hasattr(node, "lineno")), None)
-            return LimitExceeded(
-                getattr(where, "lineno", 1),
-                getattr(where, "col_offset", 0) + 1,
-                f"file not analysed: its syntax tree is nested more than {limit} levels deep here; "
-                f"raise `max-nesting-depth` in [tool.geolint] to analyse it",
-            )
+            return past_depth_limit(next((node for node in level if hasattr(node, "lineno")), None), limit)
         children: list[ast.AST] = []
         for node in level:
             names = _CHILD_FIELDS.get(node.__class__)

@@ -8,17 +8,43 @@ and `model.FactBase` answers the rules' questions lazily, memoised.
 from __future__ import annotations
 
 import ast
+import threading
 
 from geolint.factbase.conventions import orders_for
 from geolint.factbase.index import ModuleIndex
 from geolint.factbase.model import FactBase
 from geolint.lint_types import Config
 
-__all__ = ["FactBase", "ModuleIndex", "facts_for_module"]
+__all__ = ["FactBase", "ModuleIndex", "facts_for_module", "index_of", "module_index"]
+
+# The last module indexed, per thread: the engine, the fact base and the rules that walk the tree
+# all ask about the same module in a row, and one walk serves them all.
+_last_index = threading.local()
+
+
+def module_index(tree: ast.Module, source: str, depth_limit: int | None = None) -> ModuleIndex:
+    """The index of `tree` (whose text is `source`), walked once for everyone who asks."""
+    cached: ModuleIndex | None = getattr(_last_index, "value", None)
+    if cached is not None and cached.tree is tree and cached.source is source and not cached.too_deep:
+        if depth_limit is None or cached.depth_limit == depth_limit:  # measured against the same limit
+            return cached
+    index = ModuleIndex(tree, source, depth_limit)
+    _last_index.value = index
+    return index
+
+
+def index_of(tree: ast.Module) -> ModuleIndex:
+    """The index of `tree` for code that holds only the tree (the last one built, else a new one)."""
+    cached: ModuleIndex | None = getattr(_last_index, "value", None)
+    if cached is not None and cached.tree is tree and not cached.too_deep:
+        return cached
+    index = ModuleIndex(tree, "")
+    _last_index.value = index
+    return index
 
 
 def facts_for_module(tree: ast.Module, source: str, path: str, config: Config) -> FactBase:
     """The fact base of one module under one config."""
-    index = ModuleIndex(tree, source)
+    index = module_index(tree, source)
     orders, mixed = orders_for(path, source, tree, config.naming.order)
     return FactBase(index, config, path, orders, order_names_mixed=mixed)

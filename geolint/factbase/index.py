@@ -74,7 +74,7 @@ class Scope:
 class ModuleIndex:
     """The facts of one module that do not depend on the config."""
 
-    def __init__(self, tree: ast.Module, source: str) -> None:
+    def __init__(self, tree: ast.Module, source: str, depth_limit: int | None = None) -> None:
         self.tree = tree
         self.source = source
         self.parents: dict[ast.AST, ast.AST] = {}
@@ -87,10 +87,18 @@ class ModuleIndex:
         self.by_type: dict[type, list[ast.AST]] = {}  # in source (pre-)order
         self.self_attribute_stores: dict[str, list[ast.expr]] = {}  # `self.x = value` anywhere in a class
         self._lines: list[str] | None = None
-        self._build()
+        # Past `depth_limit` levels (the module node is level 1) the walk stops: `too_deep` is then
+        # True and `too_deep_at` the first node (source order) on the first level past it that has
+        # a position (the guards' depth check, measured on the same walk)
+        self.depth_limit = depth_limit
+        self.too_deep = False
+        self.too_deep_at: ast.AST | None = None
+        self._merged: dict[tuple[type, ...], list[ast.AST]] = {}
+        self.local_values: object = None  # `geolint.rules.pose_parts.LocalValues`, built on first use
+        self._build(depth_limit if depth_limit is not None else 1 << 62)
 
     # -- the walk ----------------------------------------------------------------------
-    def _build(self) -> None:
+    def _build(self, depth_limit: int) -> None:
         root = Scope(self.tree, None)
         self.scopes[self.tree] = root
         by_type = self.by_type
@@ -98,11 +106,15 @@ class ModuleIndex:
         scope_of = self.scope_of_node
         record = self._record
         child_fields = _CHILD_FIELDS
-        # (node, scope the node's code runs in); an explicit stack, so depth costs no recursion
-        stack: list[tuple[ast.AST, Scope]] = [(self.tree, root)]
+        # (node, scope the node's code runs in, its level); an explicit stack, so depth costs no recursion
+        stack: list[tuple[ast.AST, Scope, int]] = [(self.tree, root, 1)]
         pop, push = stack.pop, stack.append
         while stack:
-            node, scope = pop()
+            node, scope, depth = pop()
+            if depth > depth_limit:
+                if self._past_the_limit(node):
+                    return
+                continue
             scope_of[node] = scope
             kind = type(node)
             bucket = by_type.get(kind)
@@ -129,9 +141,20 @@ class ModuleIndex:
                 elif isinstance(value, ast.AST) and type(value) not in _LEAVES:
                     children.append(value)
             # pushed last-first, so nodes come off the stack in source (pre-)order
+            depth += 1
             for child in reversed(children):
                 parents[child] = node
-                push((child, inner if makes_scope and _runs_in_inner_scope(node, child) else scope))
+                push((child, inner if makes_scope and _runs_in_inner_scope(node, child) else scope, depth))
+
+    def _past_the_limit(self, node: ast.AST) -> bool:
+        """`node` is one level past the limit: the tree is too deep. Whether to stop the walk now:
+        the guards name the first node of that level, in source order, that has a position (nodes
+        past the limit are never expanded, so the walk goes on through that level only)."""
+        self.too_deep = True
+        if hasattr(node, "lineno"):
+            self.too_deep_at = node
+            return True
+        return False
 
     def _record(self, node: ast.AST, scope: Scope) -> Scope:
         """Record what `node` binds in `scope`; return the scope its body runs in."""
@@ -254,11 +277,14 @@ class ModuleIndex:
 
     # -- queries ------------------------------------------------------------------------
     def nodes(self, *kinds: type) -> list[ast.AST]:
-        """Every node of these types, in source order."""
+        """Every node of these types, in source order (a list several rules share: never change it)."""
         if len(kinds) == 1:
             return self.by_type.get(kinds[0], [])
-        found = [node for kind in kinds for node in self.by_type.get(kind, [])]
-        found.sort(key=_position)
+        found = self._merged.get(kinds)
+        if found is None:
+            found = [node for kind in kinds for node in self.by_type.get(kind, [])]
+            found.sort(key=_position)
+            self._merged[kinds] = found
         return found
 
     def parent(self, node: ast.AST) -> ast.AST | None:

@@ -11,14 +11,14 @@
   to what, and whether the rotation or its inverse is what acts on the vector;
 - `matrix_shape`: whether an array is known to be a 3x3 rotation or a 4x4 pose from what made it.
 
-One `LocalValues` is built per module and shared by the rules that ask (`local_values(tree)`).
+One `LocalValues` is built per module, on the fact base's index of it (`geolint.factbase.index_of`:
+the same single walk), and shared by the rules that ask (`local_values(tree)`).
 """
 
 from __future__ import annotations
 
 import ast
 import re
-import weakref
 from dataclasses import dataclass
 from typing import Iterator
 
@@ -137,23 +137,19 @@ class Unpacked:
 
 
 class LocalValues:
-    """Parents of every node of one module, and (indexed per scope on first use) local assignments."""
+    """Local assignments of one module (indexed per scope on first use), on the module's shared index."""
 
     def __init__(self, tree: ast.Module) -> None:
-        self.parents: dict[ast.AST, ast.AST] = {}
-        self.nodes: list[ast.AST] = [tree]  # every node, each after its parent
+        from geolint.factbase import index_of
+
+        self.tree = tree
+        self.index = index_of(tree)
+        # the index's parents of every node (shared: `x -= t` adds the parents of the `x - t` it stands for)
+        self.parents: dict[ast.AST, ast.AST] = self.index.parents
         self._assignments: dict[tuple[int, str], list[tuple[ast.stmt, ast.expr | Unpacked | None]]] = {}
         self._indexed: set[int] = set()
         self._names_of_scope: dict[int, set[str]] = {}
         self.parameters: dict[tuple[int, str], ast.arg] = {}
-        parents, nodes = self.parents, self.nodes
-        position = 0
-        while position < len(nodes):
-            node = nodes[position]
-            position += 1
-            for child in ast.iter_child_nodes(node):
-                parents[child] = node
-                nodes.append(child)
 
     # -- indexing ------------------------------------------------------------------------------
 
@@ -364,14 +360,14 @@ def _names_in(target: ast.AST) -> list[str]:
     return [node.id for node in ast.walk(target) if isinstance(node, ast.Name)]
 
 
-_VALUES: weakref.WeakKeyDictionary[ast.Module, LocalValues] = weakref.WeakKeyDictionary()
-
-
 def local_values(tree: ast.Module) -> LocalValues:
-    """The module's `LocalValues`, built once and shared by every rule that asks."""
-    values = _VALUES.get(tree)
-    if values is None:
-        values = _VALUES[tree] = LocalValues(tree)
+    """The module's `LocalValues`, built once (on the module's index) and shared by every rule that asks."""
+    from geolint.factbase import index_of
+
+    index = index_of(tree)
+    values = index.local_values
+    if not isinstance(values, LocalValues):
+        values = index.local_values = LocalValues(tree)
     return values
 
 

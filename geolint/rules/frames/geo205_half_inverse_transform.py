@@ -163,10 +163,10 @@ class HalfInverseTransform(AstRule):
     def check(self, tree: ast.Module) -> None:
         values = local_values(tree)
         settled: set[ast.AST] = set()  # products already judged as part of a sum
-        for node in values.nodes:
-            if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
-                self._check_sum(node, values, settled)
-        for node in values.nodes:
+        for node in values.index.nodes(ast.BinOp):
+            if isinstance(node.op, (ast.Add, ast.Sub)):
+                self._check_sum(node, values, settled)  # type: ignore[arg-type]
+        for node in values.index.nodes(ast.BinOp, ast.Call):
             if node not in settled and matmul_operands(node) is not None:
                 applied = application(node, values)  # type: ignore[arg-type]
                 if applied is not None and applied.product is node:

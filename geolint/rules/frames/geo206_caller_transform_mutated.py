@@ -5,6 +5,7 @@ from __future__ import annotations
 import ast
 import re
 
+from geolint.factbase import index_of
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.pose_parts import AllOf, LocalValues, int_value, is_slice_upto, local_values, matrix_indices
 
@@ -87,9 +88,8 @@ class CallerTransformMutated(AstRule):
 
     def check(self, tree: ast.Module) -> None:
         values: LocalValues | None = None
-        for function in ast.walk(tree):
-            if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                continue
+        for function in index_of(tree).nodes(ast.FunctionDef, ast.AsyncFunctionDef):
+            assert isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
             if _MUTATOR_NAME.search(function.name) or not _returns_value(function):
                 continue
             for statement in _own_statements(function):

@@ -78,7 +78,7 @@ class TfLookupSourceMismatch(AstRule):
 
     def check(self, tree: ast.Module) -> None:
         values = local_values(tree)
-        for node in values.nodes:
+        for node in values.index.nodes(ast.Call):
             if not (isinstance(node, ast.Call) and (call_name(node) or "").startswith("do_transform_") and len(node.args) >= 2):
                 continue
             message, transform = node.args[0], node.args[1]
@@ -145,7 +145,7 @@ def _literal(node: ast.expr, values: LocalValues) -> str | None:
 
 def _module_constant(name: ast.Name, values: LocalValues) -> ast.expr | None:
     """A module-level name assigned exactly once."""
-    module = values.nodes[0]
+    module = values.tree
     found = values.assignments(module, name.id)  # type: ignore[arg-type]
     if len(found) == 1 and isinstance(found[0][1], ast.expr):
         return found[0][1]

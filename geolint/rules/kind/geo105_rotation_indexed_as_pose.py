@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 
+from geolint.factbase import index_of
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.pose_parts import (
     ROTATION_MAKERS,
@@ -84,9 +85,11 @@ class RotationIndexedAsPose(AstRule):
         values: LocalValues | None = None
         candidates: list[ast.Subscript] = []
         square_names: set[str] = set()  # names some assignment may make 3x3 (a cheap first cut)
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Assign) and _may_make_square(node.value):
-                square_names.update(target.id for target in node.targets if isinstance(target, ast.Name))
+        index = index_of(tree)
+        for assign in index.nodes(ast.Assign):
+            if _may_make_square(assign.value):  # type: ignore[attr-defined]
+                square_names.update(target.id for target in assign.targets if isinstance(target, ast.Name))  # type: ignore[attr-defined]
+        for node in index.nodes(ast.Subscript):
             if not isinstance(node, ast.Subscript) or not isinstance(node.value, ast.Name):
                 continue
             indices = subscript_indices(node)

@@ -69,7 +69,7 @@ class VectorTransformedAsPoint(AstRule):
 
     def check(self, tree: ast.Module) -> None:
         values = local_values(tree)
-        for node in values.nodes:
+        for node in values.index.nodes(ast.Call):
             if not (isinstance(node, ast.Call) and call_name(node) == "do_transform_point" and node.args):
                 continue
             message = node.args[0]
