@@ -126,6 +126,83 @@ GATE = re.compile(
 )
 
 
+# The same test, written so that each part starts with a literal or a small set of characters (which
+# the regex engine scans for in C) and checks a leading word boundary in Python at each candidate:
+# `GATE.search` tries every alternative at every position and cost as much as half the parse. Each
+# `_*_CANDIDATE` is searched again from one past its last start, so overlapping candidates are seen.
+_AFTER_AT = re.compile(r"@=?\s*[\w(\[-]")
+_TRANSPOSE_OR_PRODUCT = re.compile(r"\.dot\(|matmul|\.m?T\b|_[TRXH]_|_h\b|_hom|homog")
+_NAMED_OPERATOR_CANDIDATE = re.compile(r"[TRXH]_[A-Za-z0-9]")
+_FRAMES = frozenset(_FRAME_WORDS.split("|"))
+_FRAME_PAIR_CANDIDATE = re.compile(rf"(?:2|_to_|_from_|_in_)(?:{_FRAME_WORDS})")
+_FRAME_VECTOR_CANDIDATE = re.compile(rf"[pv]_(?:{_FRAME_WORDS})\b")
+_TRIG_CANDIDATE = re.compile(r"(?:sin|cos|tan)\(")
+_WORD_CANDIDATE = re.compile(r"(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_|s\b)")
+
+
+def _is_word_character(character: str) -> bool:
+    return character == "_" or character.isalnum()  # exactly `\w` for str patterns
+
+
+def _starts_a_word(source: str, start: int) -> bool:
+    """`\b` before a word character at `start`."""
+    return start == 0 or not _is_word_character(source[start - 1])
+
+
+def _any_candidate(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
+    match = pattern.search(source)
+    while match is not None:
+        if accept(source, match.start()):
+            return True
+        match = pattern.search(source, match.start() + 1)
+    return False
+
+
+def _matrix_product_at(source: str) -> bool:
+    """`[\w)\]]\s*@=?\s*[\w(\[-]`: an `@` between operands (a decorator follows a line break)."""
+    at = source.find("@")
+    while at >= 0:
+        if _AFTER_AT.match(source, at):
+            before = at - 1
+            while before >= 0 and source[before].isspace():
+                before -= 1
+            if before >= 0 and (_is_word_character(source[before]) or source[before] in ")]"):
+                return True
+        at = source.find("@", at + 1)
+    return False
+
+
+def _frame_pair_ends_at(source: str, connector: int) -> bool:
+    """`\b(?:frame)[0-9]*` right before `connector` (`cam2world`, `base_to_cam`)."""
+    start = connector
+    while start > 0 and _is_word_character(source[start - 1]):
+        start -= 1
+    digits = connector
+    while digits > start and source[digits - 1] in "0123456789":
+        digits -= 1
+    return any(source[start:end] in _FRAMES for end in range(digits, connector + 1))
+
+
+def _after_boundary_or_underscore(source: str, start: int) -> bool:
+    return _starts_a_word(source, start) or source[start - 1] == "_"
+
+
+def gate_matches(source: str) -> bool:
+    """Exactly `GATE.search(source) is not None`, several times faster."""
+    return (
+        _matrix_product_at(source)
+        or _TRANSPOSE_OR_PRODUCT.search(source) is not None
+        or _any_candidate(_WORD_CANDIDATE, source, _after_boundary_or_underscore)
+        or _any_candidate(_NAMED_OPERATOR_CANDIDATE, source, _starts_a_word)
+        or _any_candidate(_FRAME_PAIR_CANDIDATE, source, _frame_pair_ends_at)
+        or _any_candidate(_FRAME_VECTOR_CANDIDATE, source, _starts_a_word)
+        or _any_candidate(_TRIG_CANDIDATE, source, _starts_a_word)
+        or "euler2" in source
+        or "axangle2" in source
+        or "_from_angle(" in source
+    )
+
+
 class Gate:
     """The rules' prefilter: a file the gate does not match holds nothing any fact rule reasons about.
 
@@ -142,7 +219,7 @@ class Gate:
         last = self._last
         if last is not None and last[0] is source:
             return last[1]
-        found = GATE.search(source) is not None
+        found = gate_matches(source)
         self._last = (source, found)
         return found
 

@@ -153,3 +153,34 @@ def test_baseline_keys_ignore_line_numbers_and_indentation(tmp_path: Path):
 
 def _finding(line: int, code: str, path: str = "<string>") -> Finding:
     return Finding(path, line, 1, line, 2, code, "name", "message", Severity.ERROR)
+
+
+def test_the_fact_base_walk_measures_depth_as_the_guards_do() -> None:
+    """The engine measures the nesting depth on the fact base's index walk when a rule runs; it must
+    find the same verdict and the same first node past the limit as the guards' level-by-level walk."""
+    import ast
+
+    from geolint import guards
+    from geolint.factbase.index import ModuleIndex
+
+    sources = [
+        "total_world = p_cam + " + " + ".join(f"v{i}_world" for i in range(60)) + "\n",
+        "x = " + "-" * 50 + "a\n",
+        "x = a < b < (c < d)\n",
+        "def f():\n" + "".join("    " * (i + 1) + "if a:\n" for i in range(12)) + "    " * 13 + "pass\n",
+        "f = " + "lambda: " * 30 + "1\n",
+        "y = " + "[" * 30 + "]" * 30 + "\nz = {'a': [(1, 2)]}\n",
+        "w = f" + "()" * 40 + "\nv = a" + ".b" * 40 + "\n",
+        "class A:\n    def g(self, x=lambda: (" + "1+" * 30 + "1)):\n        return [i for i in r if i < 2 < 3]\n",
+        "with a as (b, c):\n    try:\n        pass\n    except E as e:\n        match x:\n            case [1, *r]:\n                pass\n",
+    ]
+    compared = 0
+    for source in sources:
+        tree = ast.parse(source)
+        for limit in range(2, 64, 3):
+            expected = guards.too_deep(tree, limit)
+            index = ModuleIndex(tree, source, limit)
+            found = guards.past_depth_limit(index.too_deep_at, limit) if index.too_deep else None
+            assert found == expected, (source[:40], limit)
+            compared += expected is not None
+    assert compared > 50  # most cases are past the limit somewhere

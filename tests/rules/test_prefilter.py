@@ -80,3 +80,42 @@ def test_config_words_widen_the_gate() -> None:
 
     assert not GATE_TRIGGER.search("y = blob + blub\n")
     assert GATE_TRIGGER.search_with("y = blob + blub\n", Config(extra_point_names=("blob",)))
+
+
+# Pieces the gate's and the pose triggers' regexes are made of, glued at random below: word
+# boundaries, underscores, digits, overlapping candidates, non-ASCII word and space characters.
+_PIECES = [
+    "@", "@=", " ", "\n", "\t", "(", ")", "[", "]", "-", "_", "2", "0", "3", "3:", ":", ",", "=", "s", "T", "R",
+    "X", "H", "t", "p", "v", ".", ".dot(", "matmul", ".mT", ".T", "_to_", "_from_", "_in_", "sin(", "cos", "tan(",
+    "euler2", "axangle2", "_from_angle(", "_h", "hom", "homog", "x", "é", "٣", "\u00a0", "'", '"', "_R_", "_t_",
+    "rotation", "translation", "rot", "trans", "cam", "c", "w", "world", "base", "points", "pts", "quat", "Frame",
+    "lookup_transform", "do_transform_", "tf2_ros", "Vector3Stamped", ".linear", "eye(", "2mat(",
+]  # fmt: skip
+
+
+def test_fast_gates_answer_as_their_regexes() -> None:
+    """The gate and the pose triggers search several simpler patterns instead of their one regex;
+    on random text built from the regexes' own pieces they must answer exactly as the regex does."""
+    import random
+    import re
+
+    from geolint.factbase.vocabulary import GATE, gate_matches
+    from geolint.rules.pose_parts import AllOf, POSE_PART_TEXT
+
+    triggers = [(POSE_PART_TEXT.search, re.compile(POSE_PART_TEXT.pattern))]
+    for rule in all_rules():
+        if isinstance(rule.triggers, AllOf):
+            triggers += [(test.search, re.compile(test.pattern)) for test in rule.triggers.patterns]
+    assert len(triggers) > 5
+    rng = random.Random(20261127)
+    for _ in range(20_000):
+        text = "".join(rng.choice(_PIECES) for _ in range(rng.randint(1, 9)))
+        assert gate_matches(text) == (GATE.search(text) is not None), text
+        for fast, regex in triggers:
+            assert bool(fast(text)) == (regex.search(text) is not None), (text, regex.pattern)
+
+
+def test_a_regex_is_split_only_at_top_level_bars() -> None:
+    from geolint.rules.pose_parts import _top_level_alternatives
+
+    assert _top_level_alternatives(r"a|b(c|d)|[|]|\||[]|]x|[^]|]") == ["a", "b(c|d)", "[|]", r"\|", "[]|]x", "[^]|]"]
