@@ -104,8 +104,10 @@ class ModuleIndex:
         by_type = self.by_type
         parents = self.parents
         scope_of = self.scope_of_node
-        record = self._record
+        recorders = _RECORDERS
         child_fields = _CHILD_FIELDS
+        no_children, leaves, scope_makers = _NO_CHILDREN, _LEAVES, _SCOPE_MAKERS
+        AST = ast.AST
         # (node, scope the node's code runs in, its level); an explicit stack, so depth costs no recursion
         stack: list[tuple[ast.AST, Scope, int]] = [(self.tree, root, 1)]
         pop, push = stack.pop, stack.append
@@ -122,29 +124,34 @@ class ModuleIndex:
                 by_type[kind] = [node]
             else:
                 bucket.append(node)
-            if kind in _NO_CHILDREN:
+            if kind in no_children:
                 continue
-            inner = record(node, scope) if kind in _RECORDED else scope
-            makes_scope = kind in _SCOPE_MAKERS
-            children = []
+            recorder = recorders.get(kind)
+            inner = recorder(self, node, scope) if recorder is not None else scope
             fields = child_fields.get(kind)
             if fields is None:
                 fields = child_fields[kind] = tuple(f for f in kind._fields if f not in _NOT_CHILD_FIELDS)
+            children = []
             for name in fields:
                 value = getattr(node, name, None)
                 if value is None:
                     continue
                 if type(value) is list:
                     for child in value:
-                        if isinstance(child, ast.AST) and type(child) not in _LEAVES:
+                        if isinstance(child, AST) and type(child) not in leaves:
                             children.append(child)
-                elif isinstance(value, ast.AST) and type(value) not in _LEAVES:
+                elif isinstance(value, AST) and type(value) not in leaves:
                     children.append(value)
             # pushed last-first, so nodes come off the stack in source (pre-)order
             depth += 1
-            for child in reversed(children):
-                parents[child] = node
-                push((child, inner if makes_scope and _runs_in_inner_scope(node, child) else scope, depth))
+            if kind in scope_makers:
+                for child in reversed(children):
+                    parents[child] = node
+                    push((child, inner if _runs_in_inner_scope(node, child) else scope, depth))
+            else:
+                for child in reversed(children):
+                    parents[child] = node
+                    push((child, scope, depth))
 
     def _past_the_limit(self, node: ast.AST) -> bool:
         """`node` is one level past the limit: the tree is too deep. Whether to stop the walk now:
@@ -158,81 +165,109 @@ class ModuleIndex:
 
     def _record(self, node: ast.AST, scope: Scope) -> Scope:
         """Record what `node` binds in `scope`; return the scope its body runs in."""
-        if isinstance(node, FUNCTION_NODES):
+        recorder = _RECORDERS.get(type(node))
+        return recorder(self, node, scope) if recorder is not None else scope
+
+    def _record_function(self, node: ast.FunctionDef | ast.AsyncFunctionDef, scope: Scope) -> Scope:
+        scope.bind(node.name, OpaqueBinding())
+        if isinstance(scope.node, ast.Module):
+            self.functions[node.name] = node
+        elif isinstance(scope.node, ast.ClassDef):
+            self.methods.setdefault(node.name, []).append(node)
+        inner = Scope(node, scope)
+        self.scopes[node] = inner
+        self._bind_arguments(node.args, inner, node)
+        return inner
+
+    def _record_lambda(self, node: ast.Lambda, scope: Scope) -> Scope:
+        inner = Scope(node, scope)
+        self.scopes[node] = inner
+        self._bind_arguments(node.args, inner, node)
+        return inner
+
+    def _record_class(self, node: ast.ClassDef, scope: Scope) -> Scope:
+        scope.bind(node.name, OpaqueBinding())
+        inner = Scope(node, scope)
+        self.scopes[node] = inner
+        return inner
+
+    def _record_assign(self, node: ast.Assign, scope: Scope) -> Scope:
+        for target in node.targets:
+            self._bind_target(target, node.value, scope)
+        return scope
+
+    def _record_annotated(self, node: ast.AnnAssign, scope: Scope) -> Scope:
+        self._bind_target(node.target, node.value if node.value is not None else OpaqueBinding(), scope)
+        return scope
+
+    def _record_augmented(self, node: ast.AugAssign, scope: Scope) -> Scope:
+        if isinstance(node.target, ast.Name):
+            scope.augmented.add(node.target.id)
+        elif isinstance(node.target, ast.Attribute):
+            scope.attribute_stores.append((node.target, node.value))
+        return scope
+
+    def _record_walrus(self, node: ast.NamedExpr, scope: Scope) -> Scope:
+        self._bind_target(node.target, node.value, scope)
+        return scope
+
+    def _record_loop(self, node: ast.For | ast.AsyncFor | ast.comprehension, scope: Scope) -> Scope:
+        self._bind_loop(node.target, node.iter, scope)
+        return scope
+
+    def _record_with_item(self, node: ast.withitem, scope: Scope) -> Scope:
+        if node.optional_vars is not None:
+            self._bind_target(node.optional_vars, OpaqueBinding(), scope)
+        return scope
+
+    def _record_handler(self, node: ast.ExceptHandler, scope: Scope) -> Scope:
+        if node.name:
             scope.bind(node.name, OpaqueBinding())
-            if isinstance(scope.node, ast.Module):
-                self.functions[node.name] = node
-            elif isinstance(scope.node, ast.ClassDef):
-                self.methods.setdefault(node.name, []).append(node)
-            inner = Scope(node, scope)
-            self.scopes[node] = inner
-            self._bind_arguments(node.args, inner, node)
-            return inner
-        if isinstance(node, ast.Lambda):
-            inner = Scope(node, scope)
-            self.scopes[node] = inner
-            self._bind_arguments(node.args, inner, node)
-            return inner
-        if isinstance(node, ast.ClassDef):
-            scope.bind(node.name, OpaqueBinding())
-            inner = Scope(node, scope)
-            self.scopes[node] = inner
-            return inner
-        if isinstance(node, ast.Assign):
-            for target in node.targets:
-                self._bind_target(target, node.value, scope)
-        elif isinstance(node, ast.AnnAssign):
-            self._bind_target(node.target, node.value if node.value is not None else OpaqueBinding(), scope)
-        elif isinstance(node, ast.AugAssign):
-            if isinstance(node.target, ast.Name):
-                scope.augmented.add(node.target.id)
-            elif isinstance(node.target, ast.Attribute):
-                scope.attribute_stores.append((node.target, node.value))
-        elif isinstance(node, ast.NamedExpr):
-            self._bind_target(node.target, node.value, scope)
-        elif isinstance(node, (ast.For, ast.AsyncFor)):
-            self._bind_loop(node.target, node.iter, scope)
-        elif isinstance(node, ast.comprehension):
-            self._bind_loop(node.target, node.iter, scope)
-        elif isinstance(node, ast.withitem):
-            if node.optional_vars is not None:
-                self._bind_target(node.optional_vars, OpaqueBinding(), scope)
-        elif isinstance(node, ast.ExceptHandler):
-            if node.name:
-                scope.bind(node.name, OpaqueBinding())
-        elif isinstance(node, ast.BinOp):
-            if isinstance(node.op, ast.MatMult):
-                _matmul_operands(scope, node.left, node.right)
-        elif isinstance(node, ast.Call):
-            func = node.func
-            if isinstance(func, ast.Attribute) and func.attr in ("dot", "matmul"):
-                _matmul_operands(scope, func.value, *node.args)
-        elif isinstance(node, ast.Return):
-            if node.value is not None:
-                scope.returns.append(node.value)
-        elif isinstance(node, (ast.Global, ast.Nonlocal)):
-            for name in node.names:
-                scope.bind(name, OpaqueBinding())
-        elif isinstance(node, ast.Import):
+        return scope
+
+    def _record_binary(self, node: ast.BinOp, scope: Scope) -> Scope:
+        if type(node.op) is ast.MatMult:
+            _matmul_operands(scope, node.left, node.right)
+        return scope
+
+    def _record_call(self, node: ast.Call, scope: Scope) -> Scope:
+        func = node.func
+        if type(func) is ast.Attribute and func.attr in ("dot", "matmul"):
+            _matmul_operands(scope, func.value, *node.args)
+        return scope
+
+    def _record_return(self, node: ast.Return, scope: Scope) -> Scope:
+        if node.value is not None:
+            scope.returns.append(node.value)
+        return scope
+
+    def _record_declaration(self, node: ast.Global | ast.Nonlocal, scope: Scope) -> Scope:
+        for name in node.names:
+            scope.bind(name, OpaqueBinding())
+        return scope
+
+    def _record_import(self, node: ast.Import, scope: Scope) -> Scope:
+        for alias in node.names:
+            if alias.asname:
+                local = alias.asname
+                self.imports[local] = alias.name
+            else:
+                local = alias.name.split(".")[0]
+                self.imports[local] = local
+            self.imported_modules.add(local)
+            scope.bind(local, OpaqueBinding())
+        return scope
+
+    def _record_import_from(self, node: ast.ImportFrom, scope: Scope) -> Scope:
+        # a relative import keeps its leading dots (`.utils.to_homogeneous`), resolved by summaries
+        module = "." * node.level + (node.module or "")
+        if module:
             for alias in node.names:
-                if alias.asname:
-                    local = alias.asname
-                    self.imports[local] = alias.name
-                else:
-                    local = alias.name.split(".")[0]
-                    self.imports[local] = local
-                self.imported_modules.add(local)
+                if alias.name == "*":
+                    continue
+                local = alias.asname or alias.name
+                self.imports[local] = f"{module}.{alias.name}" if node.module else f"{module}{alias.name}"
                 scope.bind(local, OpaqueBinding())
-        elif isinstance(node, ast.ImportFrom):
-            # a relative import keeps its leading dots (`.utils.to_homogeneous`), resolved by summaries
-            module = "." * node.level + (node.module or "")
-            if module:
-                for alias in node.names:
-                    if alias.name == "*":
-                        continue
-                    local = alias.asname or alias.name
-                    self.imports[local] = f"{module}.{alias.name}" if node.module else f"{module}{alias.name}"
-                    scope.bind(local, OpaqueBinding())
         return scope
 
     def _bind_arguments(self, args: ast.arguments, scope: Scope, function: ast.AST) -> None:
@@ -355,12 +390,39 @@ _NOT_CHILD_FIELDS = frozenset(
 )
 _CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
 _SCOPE_MAKERS = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
-# Nodes `_record` has something to say about.
-_RECORDED = _SCOPE_MAKERS | {
-    ast.Assign, ast.AnnAssign, ast.AugAssign, ast.NamedExpr, ast.For, ast.AsyncFor, ast.comprehension,
-    ast.withitem, ast.ExceptHandler, ast.BinOp, ast.Call, ast.Return, ast.Global, ast.Nonlocal, ast.Import,
-    ast.ImportFrom,
+# What the walk records for the nodes that bind names, make scopes, return or multiply matrices
+# (by exact type, as `ast` makes them: one dictionary look-up per node).
+_RECORDERS = {
+    ast.FunctionDef: ModuleIndex._record_function, ast.AsyncFunctionDef: ModuleIndex._record_function,
+    ast.Lambda: ModuleIndex._record_lambda, ast.ClassDef: ModuleIndex._record_class,
+    ast.Assign: ModuleIndex._record_assign, ast.AnnAssign: ModuleIndex._record_annotated,
+    ast.AugAssign: ModuleIndex._record_augmented, ast.NamedExpr: ModuleIndex._record_walrus,
+    ast.For: ModuleIndex._record_loop, ast.AsyncFor: ModuleIndex._record_loop, ast.comprehension: ModuleIndex._record_loop,
+    ast.withitem: ModuleIndex._record_with_item, ast.ExceptHandler: ModuleIndex._record_handler,
+    ast.BinOp: ModuleIndex._record_binary, ast.Call: ModuleIndex._record_call, ast.Return: ModuleIndex._record_return,
+    ast.Global: ModuleIndex._record_declaration, ast.Nonlocal: ModuleIndex._record_declaration,
+    ast.Import: ModuleIndex._record_import, ast.ImportFrom: ModuleIndex._record_import_from,
 }  # fmt: skip
+
+
+def child_nodes(node: ast.AST) -> list[ast.AST]:
+    """`ast.iter_child_nodes(node)` as a list, less the leaves nothing asks about (`Load`, operators)."""
+    kind = type(node)
+    fields = _CHILD_FIELDS.get(kind)
+    if fields is None:
+        fields = _CHILD_FIELDS[kind] = tuple(f for f in kind._fields if f not in _NOT_CHILD_FIELDS)
+    children = []
+    for name in fields:
+        value = getattr(node, name, None)
+        if value is None:
+            continue
+        if type(value) is list:
+            for child in value:
+                if isinstance(child, ast.AST) and type(child) not in _LEAVES:
+                    children.append(child)
+        elif isinstance(value, ast.AST) and type(value) not in _LEAVES:
+            children.append(value)
+    return children
 
 
 def _runs_in_inner_scope(node: ast.AST, child: ast.AST) -> bool:

@@ -30,6 +30,7 @@ from geolint.factbase import vocabulary as vocab
 from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.index import (
     Binding,
+    child_nodes,
     LoopBinding,
     ModuleIndex,
     OpaqueBinding,
@@ -1127,14 +1128,18 @@ def _offset(index: ModuleIndex, line: int | None, byte_column: int | None) -> in
 
 
 def walk_within(node: ast.AST, stop_at_functions: bool = True) -> Iterator[ast.AST]:
-    """The nodes below `node` (iteratively), not entering nested functions when asked."""
-    stack = list(ast.iter_child_nodes(node))
+    """The nodes below `node` (iteratively), not entering nested functions when asked (leaves such as
+    `Load` and operators left out)."""
+    stack = child_nodes(node)
     while stack:
         current = stack.pop()
         yield current
-        if stop_at_functions and isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
+        if stop_at_functions and type(current) in _SCOPE_NODES:
             continue
-        stack.extend(ast.iter_child_nodes(current))
+        stack.extend(child_nodes(current))
+
+
+_SCOPE_NODES = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 
 
 __all__ = [

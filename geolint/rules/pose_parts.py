@@ -22,6 +22,8 @@ import re
 from dataclasses import dataclass
 from typing import Iterator, Protocol
 
+from geolint.factbase.index import child_nodes
+
 ScopeNode = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda | ast.ClassDef
 _SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
 
@@ -177,7 +179,7 @@ class LocalValues:
                     self._add(scope, name, statement, None)
             elif isinstance(node, ast.Lambda):
                 continue
-            stack.extend((child, statement) for child in reversed(list(ast.iter_child_nodes(node))))
+            stack.extend((child, statement) for child in reversed(child_nodes(node)))
         for name in self._names_of_scope.pop(id(scope), ()):
             self._assignments[(id(scope), name)].sort(key=lambda assignment: (assignment[0].lineno, assignment[0].col_offset))
 
