@@ -145,7 +145,7 @@ def _is_word_character(character: str) -> bool:
 
 
 def _starts_a_word(source: str, start: int) -> bool:
-    """`\b` before a word character at `start`."""
+    r"""`\b` before a word character at `start`."""
     return start == 0 or not _is_word_character(source[start - 1])
 
 
@@ -159,7 +159,7 @@ def _any_candidate(pattern: re.Pattern[str], source: str, accept) -> bool:  # ty
 
 
 def _matrix_product_at(source: str) -> bool:
-    """`[\w)\]]\s*@=?\s*[\w(\[-]`: an `@` between operands (a decorator follows a line break)."""
+    r"""`[\w)\]]\s*@=?\s*[\w(\[-]`: an `@` between operands (a decorator follows a line break)."""
     at = source.find("@")
     while at >= 0:
         if _AFTER_AT.match(source, at):
@@ -173,7 +173,7 @@ def _matrix_product_at(source: str) -> bool:
 
 
 def _frame_pair_ends_at(source: str, connector: int) -> bool:
-    """`\b(?:frame)[0-9]*` right before `connector` (`cam2world`, `base_to_cam`)."""
+    r"""`\b(?:frame)[0-9]*` right before `connector` (`cam2world`, `base_to_cam`)."""
     start = connector
     while start > 0 and _is_word_character(source[start - 1]):
         start -= 1

@@ -153,6 +153,17 @@ class LocalValues:
         self._names_of_scope: dict[int, set[str]] = {}
         self.parameters: dict[tuple[int, str], ast.arg] = {}
 
+    @property
+    def nodes(self) -> list[ast.AST]:
+        """Every node of the module (leaves such as `Load` aside), each after its parent, level by level.
+        Rules had better ask the index for the types they look at (`values.index.nodes(ast.Call)`)."""
+        nodes: list[ast.AST] = [self.tree]
+        position = 0
+        while position < len(nodes):
+            nodes.extend(child_nodes(nodes[position]))
+            position += 1
+        return nodes
+
     # -- indexing ------------------------------------------------------------------------------
 
     def _index_scope(self, scope: ScopeNode) -> None:
@@ -1018,7 +1029,7 @@ def _any_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ign
 
 
 def _inside_quoted_word(source: str, match: re.Match[str]) -> bool:
-    """`['"]\w*<match>\w*['"]`: the word around the match is quoted on both sides."""
+    r"""`['"]\w*<match>\w*['"]`: the word around the match is quoted on both sides."""
     start, end = match.start(), match.end()
     while start > 0 and _is_word_character(source[start - 1]):
         start -= 1
@@ -1028,7 +1039,7 @@ def _inside_quoted_word(source: str, match: re.Match[str]) -> bool:
 
 
 def _after_rotation_word(source: str, match: re.Match[str]) -> bool:
-    """`\b\w*(?:R|rot)\w*\s*` right before the comma: the word before it names a rotation."""
+    r"""`\b\w*(?:R|rot)\w*\s*` right before the comma: the word before it names a rotation."""
     end = match.start()
     while end > 0 and source[end - 1].isspace():
         end -= 1

@@ -171,7 +171,7 @@ class HalfInverseTransform(AstRule):
                 applied = application(node, values)  # type: ignore[arg-type]
                 if applied is not None and applied.product is node:
                     self._check_forward_of_difference(applied, values)
-        for node in values.nodes:
+        for node in values.index.nodes(ast.Assign, ast.AugAssign):
             if isinstance(node, ast.Assign):
                 self._check_block_write(node, values)
             elif isinstance(node, ast.AugAssign) and isinstance(node.op, (ast.Add, ast.Sub)):
