@@ -108,15 +108,24 @@ def lint_paths(
     results: dict[str, FileResult] = {}
     pending: list[tuple[SourceFile, bytes, str]] = []
     total = len(sources)
+    hashes: dict[str, str] = {}  # absolute path -> content hash: each imported module is read once
+
+    def hash_of_file(file: Path) -> str:
+        known = hashes.get(str(file))
+        if known is None:
+            known = hashes[str(file)] = content_hash(file.read_bytes())
+        return known
+
     for source in sources:
         try:
             data = source.path.read_bytes()
         except OSError as error:
             results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
             continue
+        own = hashes[os.path.abspath(source.path)] = content_hash(data)
         # the file's bytes and those of the project modules it imports (their summaries feed its findings)
-        digest = dependency_digest(str(source.path), data, content_hash)
-        cached = cache.get(source.path.resolve(), digest, source.display) if cache else None
+        digest = dependency_digest(str(source.path), data, lambda _: own, hash_of_file)
+        cached = cache.get(source.real_path(), digest, source.display) if cache else None
         if cached is not None:
             results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
         else:
@@ -129,7 +138,7 @@ def lint_paths(
     for (source, _, digest), result in zip(pending, linted):
         results[source.display] = result
         if cache is not None and result.error is None:
-            cache.put(source.path.resolve(), digest, list(result.findings))
+            cache.put(source.real_path(), digest, list(result.findings))
     if cache is not None:
         cache.save()
     if stats is not None:

@@ -39,6 +39,10 @@ class SourceFile:
 
     path: Path
     display: str
+    resolved: Path | None = None  # `path.resolve()`, when discovery knew it already
+
+    def real_path(self) -> Path:
+        return self.resolved if self.resolved is not None else self.path.resolve()
 
 
 @lru_cache(maxsize=64)
@@ -66,11 +70,24 @@ def discover(paths: Sequence[Path], config: Config, *, force_exclude: bool = Fal
             walk_excluder = excluder
             if not force_exclude and _excluded_file(given.resolve() / "__init__.py", excluder):
                 walk_excluder = _Excluder(given.resolve(), excluder.patterns)
+            real_folders: dict[str, str] = {}
             for file in _walk(given, walk_excluder):
-                found.setdefault(file.resolve(), SourceFile(file, _display(file)))
+                real = _real_path(file, real_folders)
+                found.setdefault(real, SourceFile(file, _display(file), real))
         elif not (force_exclude and _excluded_file(given.resolve(), excluder)):
-            found.setdefault(given.resolve(), SourceFile(given, _display(given)))
+            found.setdefault(given.resolve(), SourceFile(given, _display(given), given.resolve()))
     return sorted(found.values(), key=lambda source: source.display)
+
+
+def _real_path(file: Path, real_folders: dict[str, str]) -> Path:
+    """`file.resolve()`, resolving each folder once (a walk yields many files per folder)."""
+    if os.path.islink(file):
+        return file.resolve()
+    folder, name = os.path.split(os.path.abspath(file))
+    real_folder = real_folders.get(folder)
+    if real_folder is None:
+        real_folder = real_folders[folder] = os.path.realpath(folder)
+    return Path(real_folder, name)
 
 
 def _display(path: Path) -> str:

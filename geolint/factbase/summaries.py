@@ -26,6 +26,9 @@ if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
 
 _IMPORT = re.compile(r"^[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))", re.MULTILINE)
+# `_IMPORT` at one line start: both its alternatives hold the word "import", so only the lines that
+# hold it are tried (the anchored regex alone tries every position of the text).
+_IMPORT_AT_LINE_START = re.compile(r"[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))")
 _PROJECT_MARKERS = ("pyproject.toml", "setup.py", "setup.cfg", ".git")
 
 
@@ -137,8 +140,7 @@ def imported_files(path: str, source: str) -> list[Path]:
     if not os.path.isfile(path):
         return []
     found = []
-    for match in _IMPORT.finditer(source):
-        name = match.group(1) or match.group(2)
+    for name in imported_names(source):
         level = len(name) - len(name.lstrip("."))
         file = module_file(name.lstrip("."), path, level)
         if file is not None and file not in found:
@@ -146,8 +148,28 @@ def imported_files(path: str, source: str) -> list[Path]:
     return found
 
 
-def dependency_digest(path: str, data: bytes, content_hash) -> str:  # type: ignore[no-untyped-def]
-    """The file's own hash, combined with the hashes of the project modules it imports directly."""
+def imported_names(source: str) -> list[str]:
+    """The module names of the import statements in `source`, exactly as `_IMPORT.finditer` finds them
+    (a match never spans lines, so each line start gives at most one)."""
+    names = []
+    tried = -1
+    at = source.find("import")
+    while at >= 0:
+        line = source.rfind("\n", 0, at) + 1
+        if line != tried:
+            tried = line
+            match = _IMPORT_AT_LINE_START.match(source, line)
+            if match is not None:
+                names.append(match.group(1) or match.group(2))
+        at = source.find("import", at + 6)
+    return names
+
+
+def dependency_digest(path: str, data: bytes, content_hash, hash_of_file=None) -> str:  # type: ignore[no-untyped-def]
+    """The file's own hash, combined with the hashes of the project modules it imports directly.
+
+    `hash_of_file(path)` (default: read and hash it) lets a run hash each imported module once.
+    """
     own = content_hash(data)
     try:
         source = data.decode("utf-8", errors="replace")
@@ -161,7 +183,7 @@ def dependency_digest(path: str, data: bytes, content_hash) -> str:  # type: ign
     digest = hashlib.blake2b(own.encode(), digest_size=16)
     for file in sorted(files):
         try:
-            digest.update(content_hash(file.read_bytes()).encode())
+            digest.update((hash_of_file(file) if hash_of_file else content_hash(file.read_bytes())).encode())
         except OSError:
             digest.update(b"-")
     return digest.hexdigest()

@@ -184,3 +184,18 @@ def test_the_fact_base_walk_measures_depth_as_the_guards_do() -> None:
             assert found == expected, (source[:40], limit)
             compared += expected is not None
     assert compared > 50  # most cases are past the limit somewhere
+
+
+def test_import_scan_finds_what_the_anchored_regex_finds() -> None:
+    """The cache's dependency digest scans only the lines that hold "import"; on random text it must
+    find exactly the module names the line-anchored regex finds."""
+    import random
+
+    from geolint.factbase.summaries import _IMPORT, imported_names
+
+    pieces = ["from", "import", " ", "\t", "\n", "\r", "a", ".", "x", "os", "#", "fromimport", "_", "é"]
+    rng = random.Random(7)
+    for _ in range(20_000):
+        text = "".join(rng.choice(pieces) for _ in range(rng.randint(1, 10)))
+        assert imported_names(text) == [m.group(1) or m.group(2) for m in _IMPORT.finditer(text)], text
+    assert imported_names("import os\n  from .utils import f\nx = 'import y'\n") == ["os", ".utils"]
