@@ -859,12 +859,32 @@ class FactBase:
     def homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
         """The homogeneous value whose construction is exactly `node` (including an `np.ones(4)`
         buffer filled later), or None."""
+        if not self._may_build_homogeneous(node):
+            return None
         found = self.homogeneous(node)
         if found is None and isinstance(node, ast.Call):
             assign = self.parent(node)
             if isinstance(assign, ast.Assign) and len(assign.targets) == 1 and isinstance(assign.targets[0], ast.Name):
                 found = self.homogeneous(assign.targets[0])
         return found if found is not None and found.construction is node else None
+
+    def _may_build_homogeneous(self, node: ast.AST) -> bool:
+        """False when `node` certainly builds no homogeneous value: a call that is none of the array
+        makers `_homogeneous_call` and `_filled_buffer` know and cannot reach a helper's summary (it
+        feeds no product), a subscript other than `np.r_`/`np.c_`. Rules ask this of every call and
+        subscript of a module, so it is decided before any fact is looked up."""
+        kind = type(node)
+        if kind is ast.Subscript:
+            return self.is_array_call(node.value, "r_", "c_")  # type: ignore[attr-defined]
+        if kind is not ast.Call:
+            return True
+        func = node.func  # type: ignore[attr-defined]
+        qualified = self.qualified_name(func)
+        if qualified is not None:
+            module, _, name = qualified.rpartition(".")
+            if name in _HOMOGENEOUS_MAKERS and module in vocab.ARRAY_MODULES:
+                return True
+        return type(func) in (ast.Name, ast.Attribute) and self._feeds_a_product(node)
 
     def _homogeneous(self, node: ast.AST) -> Homogeneous | None:
         if isinstance(node, ast.Name):
@@ -1014,6 +1034,8 @@ class FactBase:
 
 
 _ARRAY_BUILDERS = ("append", "hstack", "column_stack", "concatenate", "cat", "concat", "array", "asarray", "tensor", "as_tensor", "r_", "c_")
+# Array makers `_homogeneous_call` (append, joins, 4-element arrays) and `_filled_buffer` read.
+_HOMOGENEOUS_MAKERS = frozenset({"append", *vocab.STACKING_FUNCTIONS, "array", "asarray", "tensor", "as_tensor", "ones", "zeros"})
 _SWAP = {"ones": "zeros", "zeros": "ones", "ones_like": "zeros_like", "zeros_like": "ones_like"}
 
 
