@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import ast
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -44,29 +45,35 @@ def count_lines(files: list[Path]) -> int:
     return sum(path.read_bytes().count(b"\n") for path in files)
 
 
-def time_ast_floor(files: list[Path]) -> float:
+def time_ast_floor(files: list[Path]) -> tuple[float, float]:
+    """(wall seconds, CPU seconds) to read, decode and parse every file in this process."""
     from geolint.engine import decode_source
 
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     for path in files:
         try:
             ast.parse(decode_source(path.read_bytes())[0])
         except (SyntaxError, ValueError, UnicodeDecodeError):
             pass
-    return time.perf_counter() - start
+    return time.perf_counter() - start, time.process_time() - cpu
 
 
-def time_command(command: list[str], cwd: Path, env: dict[str, str]) -> float:
+def time_command(command: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, float]:
+    """(wall seconds, CPU seconds of the command and its worker processes)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     result = subprocess.run(command, cwd=cwd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     elapsed = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if result.returncode not in (0, 1):
         raise SystemExit(f"{' '.join(command)} failed ({result.returncode}):\n{result.stderr[-2000:]}")
-    return elapsed
+    return elapsed, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
-def median_of(repeats: int, measure) -> float:
-    return statistics.median(measure() for _ in range(repeats))
+def median_of(repeats: int, measure) -> tuple[float, float]:
+    """Medians of wall and CPU seconds (on a shared machine, CPU time is the steadier of the two)."""
+    runs = [measure() for _ in range(repeats)]
+    return statistics.median(run[0] for run in runs), statistics.median(run[1] for run in runs)
 
 
 def main() -> int:
@@ -93,7 +100,8 @@ def main() -> int:
     print(f"tree: {tree}")
     print(f"files: {len(files)}, lines: {lines}, cores: {jobs}, repeats: {args.repeats} (fixit: {args.fixit_repeats})")
     print(f"date: {time.strftime('%Y-%m-%d %H:%M')} (figures are medians; a shared machine adds noise)")
-    rows: list[tuple[str, float]] = []
+    print(f"load average at start: {' '.join(f'{value:.2f}' for value in os.getloadavg())}")
+    rows: list[tuple[str, tuple[float, float]]] = []
 
     rows.append(("ast.parse floor (1 process)", median_of(args.repeats, lambda: time_ast_floor(files))))
     rows.append(("geolint cold, --jobs 1", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", "1"], workdir, env))))
@@ -114,16 +122,19 @@ def main() -> int:
         else:
             rows.append(("fixit lint (built-in rules)", median_of(args.fixit_repeats, lambda: time_command([fixit, "lint", str(tree)], workdir, env))))
 
-    print(f"{'':32} {'seconds':>9} {'lines/s':>10}")
-    for label, seconds in rows:
-        print(f"{label:32} {seconds:9.2f} {lines / seconds:10.0f}")
+    print(f"{'':32} {'wall s':>8} {'lines/s':>10} {'CPU s':>8} {'lines/CPU s':>12}")
+    for label, (wall, cpu) in rows:
+        print(f"{label:32} {wall:8.2f} {lines / wall:10.0f} {cpu:8.2f} {lines / cpu:12.0f}")
     by_label = dict(rows)
-    cold = by_label["geolint cold, --jobs 1"]
-    print(f"warm / cold(jobs 1): {by_label['geolint warm (cache)'] / cold:.1%}")
-    print(f"cold(jobs 1) / ast.parse: {cold / by_label['ast.parse floor (1 process)']:.1f}x")
-    print(f"jobs 2 speed-up over jobs 1: {cold / by_label['geolint cold, --jobs 2']:.2f}x")
+    cold, cold_cpu = by_label["geolint cold, --jobs 1"]
+    parse, parse_cpu = by_label["ast.parse floor (1 process)"]
+    warm, warm_cpu = by_label["geolint warm (cache)"]
+    print(f"warm / cold(jobs 1): {warm / cold:.1%} wall, {warm_cpu / cold_cpu:.1%} CPU")
+    print(f"cold(jobs 1) / ast.parse: {cold / parse:.1f}x wall, {cold_cpu / parse_cpu:.1f}x CPU")
+    print(f"jobs 2 speed-up over jobs 1 (wall): {cold / by_label['geolint cold, --jobs 2'][0]:.2f}x")
     if "fixit lint (built-in rules)" in by_label:
-        print(f"geolint cold (jobs 1) vs fixit: {by_label['fixit lint (built-in rules)'] / cold:.1f}x faster")
+        print(f"geolint cold (jobs 1) vs fixit: {by_label['fixit lint (built-in rules)'][0] / cold:.1f}x faster")
+    print(f"load average at end: {' '.join(f'{value:.2f}' for value in os.getloadavg())}")
     shutil.rmtree(workdir, ignore_errors=True)
     return 0
 
