@@ -12,17 +12,17 @@ import re
 from typing import TYPE_CHECKING, Sequence
 
 if TYPE_CHECKING:
-    from geolint.rules import Rule
+    from geolint.rules.base import RuleAttributes
 
 SECTION = re.compile(r"^##\s+(?P<title>.+?)\s*$", re.MULTILINE)
 
 
-def rule_doc(rule: type[Rule]) -> str:
+def rule_doc(rule: type[RuleAttributes]) -> str:
     """The rule's documentation (its docstring, dedented)."""
     return inspect.cleandoc(rule.__doc__ or "").strip()
 
 
-def doc_sections(rule: type[Rule]) -> dict[str, str]:
+def doc_sections(rule: type[RuleAttributes]) -> dict[str, str]:
     """Section title -> body, from the rule's `## Title` markdown headings."""
     doc = rule_doc(rule)
     matches = list(SECTION.finditer(doc))
@@ -32,7 +32,7 @@ def doc_sections(rule: type[Rule]) -> dict[str, str]:
     }
 
 
-def rule_summary(rule: type[Rule]) -> str:
+def rule_summary(rule: type[RuleAttributes]) -> str:
     """One line: the first sentence of "What it does"."""
     body = doc_sections(rule).get("What it does") or rule_doc(rule)
     flat = " ".join(body.split())
@@ -40,17 +40,17 @@ def rule_summary(rule: type[Rule]) -> str:
     return sentence
 
 
-def is_fixable(rule: type[Rule]) -> bool:
+def is_fixable(rule: type[RuleAttributes]) -> bool:
     """Whether the rule offers fixes (it documents at least one with an INVALID example)."""
     return any(example.expected_fix is not None for example in rule.INVALID)
 
 
-def rules_markdown(rules: Sequence[type[Rule]] | None = None) -> str:
+def rules_markdown(rules: Sequence[type[RuleAttributes]] | None = None) -> str:
     """The whole `docs/rules.md` page."""
     if rules is None:
         from geolint.rules import all_rules
 
-        rules = all_rules()
+        return rules_markdown(all_rules())
     out = [
         "# geolint rules",
         "",

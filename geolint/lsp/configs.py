@@ -24,7 +24,7 @@ Stamp = tuple[tuple[str, int | None], ...]
 def _stamp(folder: Path, config: Config | None) -> Stamp:
     """The modification time (None: absent) of each pyproject.toml from `folder` up to the config's."""
     last = config.source.parent if config is not None and config.source is not None else None
-    stamps = []
+    stamps: list[tuple[str, int | None]] = []
     for directory in (folder, *folder.parents):
         candidate = directory / CONFIG_FILE
         try:

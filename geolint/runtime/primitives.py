@@ -112,7 +112,7 @@ class _Coordinates(FramedKind):
             framed = cls._by_frame_name[frame]
         except KeyError:
             framed = cls.framed_class(frame)
-        obj = object.__new__(framed)
+        obj: Any = object.__new__(framed)
         obj._xyz = xyz
         return obj
 

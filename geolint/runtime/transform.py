@@ -382,7 +382,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
                     cls = _TRANSFORM_CLASSES[(self._dst, other._src)]
                 except KeyError:
                     cls = Transform.framed_class(self._dst, other._src)
-                composed = _new(cls)
+                composed: Any = _new(cls)
                 composed._m = matrix
                 return composed
             raise self._refusal(other)
@@ -409,7 +409,7 @@ class Transform(FramedKind, Generic[Dst, Src]):
                 cls = _POINT_CLASSES[self._dst]
             except KeyError:
                 cls = Point.framed_class(self._dst)
-            result = _new(cls)
+            result: Any = _new(cls)
             result._xyz = out
             return result
         moved_by = getattr(other, "_moved_by", None)
