@@ -20,6 +20,7 @@ from __future__ import annotations
 import ast
 import re
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Iterator, Protocol
 
 from geolint.factbase.index import child_nodes
@@ -153,7 +154,7 @@ class LocalValues:
         self._names_of_scope: dict[int, set[str]] = {}
         self.parameters: dict[tuple[int, str], ast.arg] = {}
 
-    @property
+    @cached_property
     def nodes(self) -> list[ast.AST]:
         """Every node of the module (leaves such as `Load` aside), each after its parent, level by level.
         Rules had better ask the index for the types they look at (`values.index.nodes(ast.Call)`)."""
