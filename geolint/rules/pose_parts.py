@@ -859,6 +859,8 @@ def square_shape(node: ast.expr, values: LocalValues, depth: int = 8) -> tuple[i
         return None
     if isinstance(node, ast.Call):
         name = call_name(node)
+        if name in (_SIZE_MAKERS | _FILLED_MAKERS) and not _array_module_call(node):
+            return None  # sympy's `eye(3)` / `zeros(3, 3)` make matrices with flat indexing (`s[3]`)
         if name in _SIZE_MAKERS and len(node.args) == 1:
             size = int_value(node.args[0])
             return (size, False) if size in (3, 4) else None
@@ -866,12 +868,23 @@ def square_shape(node: ast.expr, values: LocalValues, depth: int = 8) -> tuple[i
             shape = node.args[0]
             if isinstance(shape, (ast.Tuple, ast.List)):
                 return _square_of_sizes([int_value(element) for element in shape.elts])
+            if (dotted(node.func) or "").split(".")[0] != "torch":
+                return None  # sizes as separate arguments: torch's signature, not numpy's
             return _square_of_sizes([int_value(argument) for argument in node.args])
         if name in ROTATION_MAKERS:
             return (3, False) if not _stacks(node) else None
         if name in _POSE_MAKERS and _is_tf_style_maker(node):
             return (4, False)
     return None
+
+
+# Module names under which `eye`/`zeros`/... are array makers (as written, or as conventionally imported).
+_ARRAY_MODULE_ROOTS = frozenset({"np", "numpy", "torch", "jnp", "jax", "cp", "cupy", "onp"})
+
+
+def _array_module_call(node: ast.Call) -> bool:
+    """`np.eye(3)`, `torch.zeros(4, 4)`, `numpy.identity(4)`: a maker called through an array module."""
+    return (dotted(node.func) or "").split(".")[0] in _ARRAY_MODULE_ROOTS
 
 
 def _square_of_sizes(sizes: list[int | None]) -> tuple[int, bool] | None:

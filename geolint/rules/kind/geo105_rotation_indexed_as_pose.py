@@ -64,6 +64,7 @@ class RotationIndexedAsPose(AstRule):
     )
 
     VALID = [
+        Valid("from sympy import zeros\ns = zeros(3, 3)\ns[3] = 1\n"),  # sympy: flat indexing
         Valid("import numpy as np\nT = np.eye(4)\nT[:3, 3] = t\n"),
         Valid("import numpy as np\nR = np.eye(3)\nR[:2, 2] = t\n"),  # a 2-D homogeneous transform
         Valid("def f(R, t):\n    R[:3, 3] = t\n"),  # shape unknown
