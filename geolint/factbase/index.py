@@ -128,6 +128,8 @@ class ModuleIndex:
                 continue
             recorder = recorders.get(kind)
             inner = recorder(self, node, scope) if recorder is not None else scope
+            # `child_nodes` inlined: this loop runs once per node of every module, and a call per
+            # node costs more than the copy
             fields = child_fields.get(kind)
             if fields is None:
                 fields = child_fields[kind] = tuple(f for f in kind._fields if f not in _NOT_CHILD_FIELDS)

@@ -7,19 +7,16 @@ that the editor shows exactly what the linter finds, in LSP's terms (0-based lin
 from __future__ import annotations
 
 import asyncio
-import sys
 import time
 from pathlib import Path
 from typing import Any, Callable
 
 import pytest
-import pytest_lsp
 from lsprotocol import types
-from pygls.protocol import default_converter
-from pytest_lsp import ClientServerConfig, LanguageClient
-from pytest_lsp.client import DEFAULT_CLIENT_FEATURES, register_lsp_features
+from pytest_lsp import LanguageClient
 
 from geolint import api
+from tests.integrations.conftest import RecordingClient
 from geolint.engine import apply_edits
 from geolint.lint_types import Edit
 from geolint.rules import rule_by_code
@@ -48,29 +45,6 @@ def to_world(R_world_cam, t_world_cam, normal_cam):
 EMOJI_SYNTAX_ERROR = 'label = "\U0001f916\U0001f916" + (\n'
 
 
-class RecordingClient(LanguageClient):
-    published: list[types.PublishDiagnosticsParams]
-
-
-def make_client() -> LanguageClient:
-    """pytest-lsp's client, also recording every publishDiagnostics (to count debounced publishes)."""
-    client = RecordingClient(converter_factory=default_converter)
-    client.published = []
-
-    def publish(client: RecordingClient, params: types.PublishDiagnosticsParams) -> None:
-        client.diagnostics[params.uri] = params.diagnostics
-        client.published.append(params)
-
-    register_lsp_features(client, {**DEFAULT_CLIENT_FEATURES, types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS: publish})
-    return client
-
-
-@pytest_lsp.fixture(
-    config=ClientServerConfig(server_command=[sys.executable, "-m", "geolint", "lsp"], client_factory=make_client)
-)
-async def client(lsp_client: RecordingClient):  # type: ignore[no-untyped-def]
-    yield
-    await lsp_client.shutdown_session()
 
 
 PUSH_ONLY = types.ClientCapabilities()

@@ -10,19 +10,16 @@ from __future__ import annotations
 
 import asyncio
 import os
-import sys
 import time
 from pathlib import Path
 from typing import Any, Callable
 
 import pytest
-import pytest_lsp
 from lsprotocol import types
-from pygls.protocol import default_converter
-from pytest_lsp import ClientServerConfig, LanguageClient
-from pytest_lsp.client import DEFAULT_CLIENT_FEATURES, register_lsp_features
+from pytest_lsp import LanguageClient
 
 from geolint import api
+from tests.integrations.conftest import RecordingClient
 
 FIX_ALL = "source.fixAll.geolint"
 FUNCTION = (
@@ -37,28 +34,6 @@ def source_with(functions: int) -> str:
     return "import numpy as np\n" + "".join(FUNCTION.format(i=i) for i in range(functions))
 
 
-class RecordingClient(LanguageClient):
-    published: list[types.PublishDiagnosticsParams]
-
-
-def make_client() -> LanguageClient:
-    client = RecordingClient(converter_factory=default_converter)
-    client.published = []
-
-    def publish(client: RecordingClient, params: types.PublishDiagnosticsParams) -> None:
-        client.diagnostics[params.uri] = params.diagnostics
-        client.published.append(params)
-
-    register_lsp_features(client, {**DEFAULT_CLIENT_FEATURES, types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS: publish})
-    return client
-
-
-@pytest_lsp.fixture(
-    config=ClientServerConfig(server_command=[sys.executable, "-m", "geolint", "lsp"], client_factory=make_client)
-)
-async def client(lsp_client: RecordingClient):  # type: ignore[no-untyped-def]
-    yield
-    await lsp_client.shutdown_session()
 
 
 PUSH = types.ClientCapabilities()
