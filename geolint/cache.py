@@ -135,6 +135,7 @@ def finding_to_dict(finding: Finding) -> dict[str, Any]:
             "edits": [[e.line, e.column, e.end_line, e.end_column, e.content] for e in fix.edits],
         },
         "evidence": list(finding.evidence),
+        "frames": None if finding.frames is None else list(finding.frames),
     }
 
 
@@ -154,4 +155,11 @@ def finding_from_dict(item: dict[str, Any], path: str) -> Finding:
         if fix is None
         else Fix(fix["applicability"], tuple(Edit(*edit) for edit in fix["edits"]), fix["description"]),
         evidence=tuple(item.get("evidence", ())),
+        frames=_frame_pair(item.get("frames")),
     )
+
+
+def _frame_pair(value: Any) -> tuple[str, str] | None:
+    if isinstance(value, list) and len(value) == 2 and all(isinstance(frame, str) for frame in value):
+        return value[0], value[1]
+    return None

@@ -265,6 +265,7 @@ def _ast_finding(rule: AstRule, report: AstReport, columns: _CharacterColumns, p
         severity=_severity_of(rule.code, config, rule.default_severity),
         fix=fix,
         evidence=report.evidence,
+        frames=report.frames,
     )
 
 

@@ -10,7 +10,11 @@ Where a frame graph comes from, in one file:
   by the name the runtime gives them;
 - `FrameTree.add(T)` calls give an edge labelled with the call, as the runtime tree would hold it;
 - the linter's GEO2xx findings (frame mismatches) give red edges between the two frames that
-  disagree, labelled with the code and the file:line.
+  disagree (the pair the rule recorded in `Finding.frames`), labelled with the code and file:line.
+
+`T_a_b` names are read in the project's naming order, as the linter learns it (`naming` in the
+config, else the project's `from_frame=`/`to_frame=` declarations and compositions); where both
+orders stay open they are drawn dst-first, and where the project declares both they are not drawn.
 
 Frame names are lower-cased, as `frames_of_name` gives them, so `Transform[World, Cam]` and
 `T_world_cam` draw one edge between the same two frames.
@@ -19,15 +23,19 @@ Frame names are lower-cased, as `frames_of_name` gives them, so `Transform[World
 from __future__ import annotations
 
 import ast
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterable, Sequence
 
 from geolint.lint_types import Config, Finding
 from geolint.render import FrameEdge, FrameGraph
-from geolint.semantic.names import NameFrames, frames_of_name, same_frame
+from geolint.factbase.conventions import orders_for
+from geolint.factbase.model import DST_FIRST, SRC_FIRST
+from geolint.semantic.names import NameFrames, frames_of_name, order_dependent, same_frame
 
 MISMATCH_PREFIX = "GEO2"
+_LINE_BREAKS = re.compile(r"\r\n|\r|\n")
 _LABEL_WIDTH = 48
 _INVERSE_CALLS = frozenset({"inv", "inverse", "pinv"})
 _PRODUCT_CALLS = frozenset({"dot", "matmul"})
@@ -46,6 +54,10 @@ class _FileReader(ast.NodeVisitor):
     edges: dict[tuple[str, str, str], FrameEdge] = field(default_factory=dict)
     frames: set[str] = field(default_factory=set)
     claimed: set[int] = field(default_factory=set)  # Transform[...] nodes already drawn under a better label
+    # the project's reading of `T_a_b` (as the linter learns it): both orders open draws dst-first
+    orders: tuple[str, ...] = (DST_FIRST,)
+    order_names_mixed: bool = False  # both orders declared: a `T_a_b` name alone is no edge
+    lines: list[str] = field(default_factory=list)  # the source's lines, split on first use
 
     # ---- frames of names, types and expressions ------------------------------------------------
 
@@ -53,6 +65,15 @@ class _FileReader(ast.NodeVisitor):
         frame = frame.lower()
         aliases = {key.lower(): value.lower() for key, value in self.config.frame_aliases.items()}
         return aliases.get(frame, frame)
+
+    def name_frames(self, name: str) -> NameFrames | None:
+        """A name's frames in the project's naming order (`T_obj_world` maps obj into world in a src-first project)."""
+        stated = frames_of_name(name, self.config)
+        if stated is None or not stated.is_operator or not order_dependent(name):
+            return stated
+        if self.order_names_mixed:
+            return None
+        return stated.inverted() if self.orders == (SRC_FIRST,) else stated
 
     def _type_frame(self, node: ast.expr) -> str | None:
         if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value:
@@ -85,7 +106,7 @@ class _FileReader(ast.NodeVisitor):
                 return inner.inverted() if inner is not None and inner.is_operator else None
             if name in self.typed:
                 return self.typed[name]
-            return frames_of_name(name, self.config)
+            return self.name_frames(name)
         if isinstance(node, ast.Subscript):
             return self.transform_type(node)
         if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.MatMult, ast.Mult)):
@@ -158,10 +179,10 @@ class _FileReader(ast.NodeVisitor):
         self.claimed.update(id(inner) for inner in ast.walk(node) if isinstance(inner, ast.Subscript))
 
     def visit_Name(self, node: ast.Name) -> None:
-        self.add_edge(frames_of_name(node.id, self.config), node.id, node)
+        self.add_edge(self.name_frames(node.id), node.id, node)
 
     def visit_Attribute(self, node: ast.Attribute) -> None:
-        self.add_edge(frames_of_name(node.attr, self.config), node.attr, node)
+        self.add_edge(self.name_frames(node.attr), node.attr, node)
         self.generic_visit(node)
 
     def visit_arg(self, node: ast.arg) -> None:
@@ -170,7 +191,7 @@ class _FileReader(ast.NodeVisitor):
             self.typed[node.arg] = typed
             self.add_edge(typed, node.arg, node)
         else:
-            self.add_edge(frames_of_name(node.arg, self.config), node.arg, node)
+            self.add_edge(self.name_frames(node.arg), node.arg, node)
 
     def visit_AnnAssign(self, node: ast.AnnAssign) -> None:
         typed = self.transform_type(node.annotation)
@@ -227,6 +248,22 @@ class _FileReader(ast.NodeVisitor):
 
     # ---- findings ------------------------------------------------------------------------------
 
+    def _span(self, node: ast.AST) -> tuple[int, int, int, int]:
+        """A node's span as findings give it: 1-based character columns, end exclusive."""
+        start, end = getattr(node, "lineno", 0), getattr(node, "end_lineno", 0) or 0
+        return (
+            start,
+            self._characters(start, getattr(node, "col_offset", 0)) + 1,
+            end,
+            self._characters(end, getattr(node, "end_col_offset", 0) or 0) + 1,
+        )
+
+    def _characters(self, line: int, byte_offset: int) -> int:
+        if not self.lines:
+            self.lines = _LINE_BREAKS.split(self.source)  # the lines `ast` counts (not at form feeds)
+        text = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
+        return byte_offset if text.isascii() else len(text.encode("utf-8")[:byte_offset].decode("utf-8", errors="replace"))
+
     def add_mismatches(self, module: ast.Module, findings: Iterable[Finding]) -> None:
         nodes = [node for node in ast.walk(module) if isinstance(node, (ast.expr, ast.stmt))]
         for finding in findings:
@@ -244,10 +281,14 @@ class _FileReader(ast.NodeVisitor):
             ]
             # Smallest candidates first: the flagged expression, then the statement around it.
             ordered = sorted(inside, key=_extent) + sorted(enclosing, key=_extent)
+            flagged = [node for node in inside if self._span(node) == (finding.line, finding.column, finding.end_line, finding.end_column)]
+            if finding.frames is not None and flagged:
+                ordered = flagged[:1]  # the rule recorded the frames that differ: label the flagged expression
             for node in ordered:
-                pair = self.mismatch(node)
+                pair = finding.frames or self.mismatch(node)
                 if pair is None:
                     continue
+                pair = (self._canon(pair[0]), self._canon(pair[1]))
                 label = f"{finding.code}: {_segment(self.source, node)}"
                 edge = FrameEdge(pair[0], pair[1], label, mismatch=True, location=f"{self.path}:{finding.line}")
                 self.edges.setdefault((pair[0], pair[1], label), edge)
@@ -317,17 +358,20 @@ def _segment(source: str, node: ast.AST) -> str:
 
 
 def graph_of_source(
-    source: str, path: str, config: Config = Config(), findings: Sequence[Finding] = ()
+    source: str, path: str, config: Config = Config(), findings: Sequence[Finding] = (), location: str | None = None
 ) -> FrameGraph:
     """The frame graph of one module's text; `findings` (its lint findings) add the red edges.
 
-    Code that does not parse gives an empty graph (the linter reports it as GEO000).
+    `T_a_b` names are read in the order the linter uses for the file at `location` (default
+    `path`): the config's `naming`, else what the project declares. Code that does not parse
+    gives an empty graph (the linter reports it as GEO000).
     """
     try:
         module = ast.parse(source)
     except (SyntaxError, ValueError):
         return FrameGraph()
-    reader = _FileReader(source, path, config)
+    orders, mixed = orders_for(location or path, source, module, config.naming.order)
+    reader = _FileReader(source, path, config, orders=orders, order_names_mixed=mixed)
     reader.collect_frame_classes(module)
     reader.visit(module)
     reader.add_mismatches(module, findings)
@@ -367,5 +411,5 @@ def graph_of_paths(paths: Sequence[Path], config: Config | None = None) -> Frame
             source = Path(location).read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError):
             continue  # the linter has already said what is wrong with it
-        graphs.append(graph_of_source(source, result.path, config, result.findings))
+        graphs.append(graph_of_source(source, result.path, config, result.findings, str(location)))
     return merge(graphs)

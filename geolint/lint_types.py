@@ -60,6 +60,8 @@ class Finding:
     fix: Fix | None = None
     # why the rule believes it, strongest evidence first ("from_frame='obj', to_frame='world' at line 12")
     evidence: tuple[str, ...] = ()
+    # a frame mismatch's two frames, (expected, found): the frame the operation needs and the one it got
+    frames: tuple[str, str] | None = None
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import ast
-from typing import Sequence
+from typing import NamedTuple, Sequence
 
 from geolint.factbase.model import FactBase, MatMul
 from geolint.factbase.vocabulary import GATE_TRIGGER
@@ -38,12 +38,19 @@ class FactRule(AstRule):
         applicability: Applicability = "safe",
         fix_description: str = "",
         evidence: Sequence[str] = (),
+        frames: tuple[str, str] | None = None,
     ) -> None:
         """Report, except inside `with pytest.raises(...)`: code written to fail is not a bug."""
         if self.facts.expects_failure(node):
             return
         super().report(
-            node, message, replacement=replacement, applicability=applicability, fix_description=fix_description, evidence=evidence
+            node,
+            message,
+            replacement=replacement,
+            applicability=applicability,
+            fix_description=fix_description,
+            evidence=evidence,
+            frames=frames,
         )
 
     def code_of(self, node: ast.AST) -> str:
@@ -63,6 +70,13 @@ def product_operands(facts: FactBase, node: ast.AST, order: str) -> MatMul | Non
     return None
 
 
+class Mismatch(NamedTuple):
+    """What a frame check found: the message, and the frames that differ as (expected, found)."""
+
+    message: str
+    frames: tuple[str, str]
+
+
 class ProductRule(FactRule):
     """A rule about products whose two operands both have known frames (GEO201, GEO202).
 
@@ -73,7 +87,7 @@ class ProductRule(FactRule):
     def run(self) -> None:
         facts = self.facts
         for node in facts.index.nodes(ast.BinOp, ast.Call):
-            found: list[tuple[str, tuple[str, ...]]] = []
+            found: list[tuple[Mismatch, tuple[str, ...]]] = []
             for order in facts.readings():
                 product = product_operands(facts, node, order)
                 if product is None:
@@ -84,15 +98,16 @@ class ProductRule(FactRule):
                     if self._inconsistent(product.left, order) or self._inconsistent(product.right, order):
                         continue
                     break
-                message = self.problem(product, left.frames, right.frames)
-                if message is None:
+                mismatch = self.problem(product, left.frames, right.frames)
+                if mismatch is None:
                     break
-                found.append((message, left.evidence + right.evidence))
+                found.append((mismatch, left.evidence + right.evidence))
             else:
                 if found:
-                    self.report(node, found[0][0], evidence=found[0][1])
+                    mismatch, evidence = found[0]
+                    self.report(node, mismatch.message, evidence=evidence, frames=mismatch.frames)
 
-    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> str | None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
         raise NotImplementedError
 
     def _inconsistent(self, node: ast.AST, order: str, depth: int = 0) -> bool:

@@ -2,7 +2,8 @@
 `path`, `line`, `column`, `end_line`, `end_column` (1-based; end exclusive), `code`, `name`,
 `message`, `severity`, `fix` (null, or `{"applicability": "safe"|"unsafe", "edits": [...]}` where
 each edit is `{"line", "column", "end_line", "end_column", "content"}`), and, only when the rule
-states why, `evidence` (a list of strings, strongest first). `[]` when clean.
+states why, `evidence` (a list of strings, strongest first), and, only for a frame mismatch,
+`frames` (`[expected, found]`: the frame the operation needs and the one it got). `[]` when clean.
 """
 
 from __future__ import annotations
@@ -43,6 +44,8 @@ def finding_as_json(finding: Finding) -> dict[str, Any]:
     }
     if finding.evidence:
         shown["evidence"] = list(finding.evidence)
+    if finding.frames is not None:
+        shown["frames"] = list(finding.frames)
     return shown
 
 

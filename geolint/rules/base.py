@@ -49,7 +49,8 @@ class Invalid:
 class AstReport:
     """What an `AstRule` says about an `ast` node; `replacement` is the new text of the node's whole span.
 
-    `evidence` says why, strongest first (e.g. "T_world_cam: from_frame='cam' at line 12").
+    `evidence` says why, strongest first (e.g. "T_world_cam: from_frame='cam' at line 12");
+    `frames` is a frame mismatch's (expected, found) pair, for the frames graph and the JSON.
     """
 
     node: ast.AST
@@ -58,6 +59,7 @@ class AstReport:
     applicability: Applicability = "safe"
     fix_description: str = ""
     evidence: tuple[str, ...] = ()
+    frames: tuple[str, str] | None = None
 
 
 @dataclass(frozen=True)
@@ -113,8 +115,9 @@ class AstRule(RuleAttributes):
         applicability: Applicability = "safe",
         fix_description: str = "",
         evidence: Sequence[str] = (),
+        frames: tuple[str, str] | None = None,
     ) -> None:
-        self.reports.append(AstReport(node, message, replacement, applicability, fix_description, tuple(evidence)))
+        self.reports.append(AstReport(node, message, replacement, applicability, fix_description, tuple(evidence), frames))
 
 
 AnyRule = Union["type[Rule]", type[AstRule]]

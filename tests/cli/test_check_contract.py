@@ -130,3 +130,21 @@ def test_stub_files_are_linted(cli):
     cli.write("types.pyi", "bad_thing: int\n")
     result = cli("check", "--format", "json")
     assert [f["path"] for f in json.loads(result.stdout)] == ["types.pyi"]
+
+
+def test_json_frame_mismatches_name_the_two_frames_and_the_cache_keeps_them(cli_real):
+    cli_real.write(
+        "node.py",
+        "def wrong_source(buffer, stamp, p_camera, p_base, T_base_cam):\n"
+        "    T_lookup = buffer.lookup_transform('map', 'base_link', stamp)\n"
+        "    p_base = T_base_cam @ p_camera\n"
+        "    return T_lookup @ p_camera\n",
+    )
+    for run in ("cold", "cached"):
+        result = cli_real("check", "--format", "json")
+        assert result.returncode == 1, (run, result.stderr)
+        findings = json.loads(result.stdout)
+        assert [(f["code"], f["line"]) for f in findings] == [("GEO201", 4)], run
+        # the transform maps base_link data; it is given camera data
+        assert findings[0]["frames"] == ["base_link", "camera"], run
+        assert set(findings[0]) == JSON_KEYS | {"evidence", "frames"}

@@ -124,6 +124,46 @@ def f(T_world_cam, p_base, T_world_base, T_cam_tool):
     assert red == {("cam", "base"), ("base", "cam")}
 
 
+def test_a_src_first_project_is_drawn_in_its_own_order_with_the_rules_frames(tmp_path: Path) -> None:
+    """autolab_core style: `T_obj_world` maps obj into world, as the project declares. The edges
+    and the red edges follow the order the linter learned, and the red edges are the frames
+    the findings recorded (read in dst-first order, the names would give other pairs)."""
+    (tmp_path / "setup.py").write_text("")
+    (tmp_path / "grasp.py").write_text(
+        "from autolab_core import RigidTransform\n"
+        "\n"
+        "def place(R, t, T_gripper_cam, p_base):\n"
+        '    T_cam_world = RigidTransform(R, t, from_frame="cam", to_frame="world")\n'
+        "    T_gripper_world = T_gripper_cam @ T_cam_world\n"
+        "    p_world = T_cam_world @ p_base\n"
+        "    return T_gripper_world, p_world\n"
+    )
+    results = api.lint_paths([tmp_path / "grasp.py"], Config(), use_cache=False)
+    recorded = sorted((f.code, f.frames) for result in results for f in result.findings)
+    assert recorded == [("GEO201", ("cam", "base")), ("GEO202", ("gripper", "world"))]
+    completed = frames_cli(".", cwd=tmp_path)
+    assert completed.returncode == 0, completed.stderr
+    drawn = completed.stdout
+    assert '"world" -> "cam" [label="T_cam_world' in drawn  # world <- cam: maps cam into world
+    assert '"cam" -> "gripper" [label="T_gripper_cam' in drawn
+    assert '"cam" -> "base" [label="GEO201: T_cam_world @ p_base' in drawn
+    assert '"gripper" -> "world" [label="GEO202: T_gripper_cam @ T_cam_world' in drawn
+    assert '"cam" -> "world" [label="T_cam_world' not in drawn
+
+
+def test_a_project_that_declares_both_orders_draws_no_edge_for_order_names(tmp_path: Path) -> None:
+    (tmp_path / "setup.py").write_text("")
+    (tmp_path / "m.py").write_text(
+        "from autolab_core import RigidTransform\n"
+        'T_obj_world = RigidTransform(R, t, from_frame="obj", to_frame="world")\n'
+        'T_world_cam = RigidTransform(R, t, from_frame="cam", to_frame="world")\n'
+        "world_T_base = load()\n"
+    )
+    drawn = frames_cli(".", cwd=tmp_path).stdout
+    assert "T_obj_world" not in drawn and "T_world_cam" not in drawn
+    assert '"world" -> "base" [label="world_T_base' in drawn  # not an order-dependent name
+
+
 def test_code_that_does_not_parse_gives_an_empty_graph() -> None:
     graph = graph_of_source("def f(:\n", "m.py")
     assert graph.edges == () and graph.frames == ()

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
-from geolint.factbase.rule_support import ProductRule
+from geolint.factbase.rule_support import Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -66,18 +66,22 @@ class FrameMismatchApply(ProductRule):
         Invalid("import numpy as np\nT_world_base = T_world_cam @ T_cam_base\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
     ]
 
-    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> str | None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
         if left.is_operator and right.frame is not None:
             if same_frame(left.src, right.frame) is False:
-                return (
+                assert left.src is not None
+                return Mismatch(
                     f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "
-                    f"`{self.code_of(product.right)}` is in {right.frame}"
+                    f"`{self.code_of(product.right)}` is in {right.frame}",
+                    (left.src, right.frame),
                 )
         elif right.is_operator and left.frame is not None:
             # Row vectors: `x @ M` applies M.T, which maps M.dst into M.src.
             if same_frame(right.dst, left.frame) is False:
-                return (
+                assert right.dst is not None
+                return Mismatch(
                     f"`{self.code_of(product.left)} @ {self.code_of(product.right)}` maps {right.dst} into "
-                    f"{right.src}, but `{self.code_of(product.left)}` is in {left.frame}"
+                    f"{right.src}, but `{self.code_of(product.left)}` is in {left.frame}",
+                    (right.dst, left.frame),
                 )
         return None

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
-from geolint.factbase.rule_support import ProductRule
+from geolint.factbase.rule_support import Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -67,13 +67,15 @@ class FrameMismatchCompose(ProductRule):
         Invalid("T = cam2world @ world2base\n"),
     ]
 
-    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> str | None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
         if not (left.is_operator and right.is_operator):
             return None
         if same_frame(left.src, right.dst) is False:
-            return (
+            assert left.src is not None and right.dst is not None
+            return Mismatch(
                 f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "
                 f"`{self.code_of(product.right)}` maps {right.src} into {right.dst}: the inner frames "
-                f"{left.src} and {right.dst} differ"
+                f"{left.src} and {right.dst} differ",
+                (left.src, right.dst),
             )
         return None

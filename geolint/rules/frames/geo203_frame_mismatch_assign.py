@@ -6,7 +6,7 @@ import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, last_name, walk_within
-from geolint.factbase.rule_support import FactRule
+from geolint.factbase.rule_support import FactRule, Mismatch
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -88,28 +88,41 @@ class FrameMismatchAssign(FactRule):
                 return
             if actual.declared and not _reversed(stated.frames, actual.frames):
                 return  # labels and names use different words (`T_table_world` from "patch"): only a reversal counts
-            message = self._problem(target.id, value, stated.frames, actual.frames)
-            if message is None:
+            mismatch = self._problem(target.id, value, stated.frames, actual.frames)
+            if mismatch is None:
                 return
-            messages.append((message, stated.evidence + actual.evidence))
+            messages.append((mismatch, stated.evidence + actual.evidence))
         if messages:
-            self.report(value, messages[0][0], evidence=messages[0][1])
+            mismatch, evidence = messages[0]
+            self.report(value, mismatch.message, evidence=evidence, frames=mismatch.frames)
 
-    def _problem(self, name: str, value: ast.expr, stated: NameFrames, actual: NameFrames) -> str | None:
+    def _problem(self, name: str, value: ast.expr, stated: NameFrames, actual: NameFrames) -> Mismatch | None:
         if stated.is_operator and actual.is_operator:
-            if same_frame(stated.dst, actual.dst) is False or same_frame(stated.src, actual.src) is False:
+            differing = [
+                (wanted, got)
+                for wanted, got in ((stated.dst, actual.dst), (stated.src, actual.src))
+                if same_frame(wanted, got) is False
+            ]
+            if differing:
                 hint = (
                     " (an inverse is missing)"
                     if same_frame(stated.dst, actual.src) and same_frame(stated.src, actual.dst)
                     else ""
                 )
-                return (
+                wanted, got = differing[0]
+                assert wanted is not None and got is not None
+                return Mismatch(
                     f"`{name}` should map {stated.src} into {stated.dst}, but "
-                    f"`{self.code_of(value)}` maps {actual.src} into {actual.dst}{hint}"
+                    f"`{self.code_of(value)}` maps {actual.src} into {actual.dst}{hint}",
+                    (wanted, got),
                 )
         elif not stated.is_operator and not actual.is_operator:
             if same_frame(stated.frame, actual.frame) is False:
-                return f"`{name}` should be in {stated.frame}, but `{self.code_of(value)}` is in {actual.frame}"
+                assert stated.frame is not None and actual.frame is not None
+                return Mismatch(
+                    f"`{name}` should be in {stated.frame}, but `{self.code_of(value)}` is in {actual.frame}",
+                    (stated.frame, actual.frame),
+                )
         return None
 
 

@@ -97,6 +97,7 @@ class TfLookupSourceMismatch(AstRule):
                 f"`{message.id}` is stamped in {stamped!r}, but `{transform.id}` is "
                 f"lookup_transform({target!r}, {source!r}): it maps data from {source!r}, so "
                 f"`{call_name(node)}` moves `{message.id}` from the wrong frame (swapped lookup arguments?)",
+                frames=(source.lstrip("/"), stamped.lstrip("/")),
             )
 
     def _frame_set_before(self, message: ast.Name, call: ast.Call, values: LocalValues) -> str | None:
