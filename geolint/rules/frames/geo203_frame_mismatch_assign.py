@@ -58,6 +58,10 @@ class FrameMismatchAssign(FactRule):
         Valid("import numpy as np\nworld2cam = np.linalg.inv(world2cam)\n"),  # a name rebound to its own inverse
         Valid("T_approach_obj = T_grasp_obj.copy()\nT_approach_obj.translation -= d\n"),  # copy, then edited
         Valid('T_table_world = RigidTransform(R, t, from_frame="patch", to_frame="world")\n'),  # label words differ
+        Valid(
+            "import numpy as np\ndef to_base(p_cam, rot, trans):\n    p_base = p_cam.T\n"
+            "    p_base = np.dot(p_base, rot.T)\n    p_base = p_base + trans\n    return p_base\n"
+        ),  # the start value of a name carried into base by the next statements
     ]
     INVALID = [
         Invalid("p_world = T_cam_base @ p_base\n"),
@@ -143,9 +147,16 @@ def _is_copy(facts: FactBase, value: ast.expr) -> bool:
 
 
 def _edited_in_place(facts: FactBase, target: ast.Name) -> bool:
-    """Whether the scope writes into the target after binding it (`T[:3, 3] = t`, `T.translation -= d`, `T += D`)."""
+    """Whether the scope writes into the target after binding it (`T[:3, 3] = t`, `T.translation -= d`,
+    `T += D`, or a later `T = f(T)`)."""
     scope = facts.index.scope_of(target)
     name = target.id
     if name in scope.subscript_stores or name in scope.augmented:
         return True
-    return any(isinstance(stored.value, ast.Name) and stored.value.id == name for stored, _ in scope.attribute_stores)
+    if any(isinstance(stored.value, ast.Name) and stored.value.id == name for stored, _ in scope.attribute_stores):
+        return True
+    # `p_base = p_cam.T` then `p_base = np.dot(p_base, R.T)`: a later binding updates the name from itself
+    return any(
+        isinstance(value, ast.expr) and value.lineno > target.lineno and _mentions_name(value, name)
+        for value in scope.bindings.get(name, [])
+    )

@@ -54,6 +54,11 @@ class PointNotTranslated(FactRule):
         Valid("import trimesh\nn = trimesh.transform_points(normals, T, translate=False)\n"),
         Valid("rotated = np.dot(pose[:3, :3], points.T)\nbox = rotated.max(axis=1) + pose[:3, 3]\n"),
         Valid("import numpy as np\nxyz = np.column_stack((points_2d, np.zeros(len(points_2d))))\n"),
+        Valid(
+            "import numpy as np\nfrom tf import transformations as tr\ndef rotate(point, quat):\n"
+            "    v = np.array([point[0], point[1], point[2], 0.0])\n"
+            "    return tr.quaternion_multiply(tr.quaternion_multiply(quat, v), tr.quaternion_inverse(quat))[:3]\n"
+        ),  # a pure quaternion for the product q v q*, not a homogeneous point
     ]
     INVALID = [
         Invalid(
@@ -83,7 +88,7 @@ class PointNotTranslated(FactRule):
         homogeneous = facts.homogeneous_built_by(node)
         if homogeneous is None or homogeneous.w != 0 or not facts.used_as_homogeneous(homogeneous):
             return
-        if facts.kind_of(homogeneous.inner) != Kind.POINT:
+        if facts.kind_of(homogeneous.inner) != Kind.POINT or self._is_pure_quaternion(node):
             return
         self.report(
             node,
@@ -92,6 +97,22 @@ class PointNotTranslated(FactRule):
             replacement=homogeneous.fixed,
             applicability="unsafe",
             fix_description="use w = 1 for the point",
+        )
+
+    def _is_pure_quaternion(self, construction: ast.expr) -> bool:
+        """`v = [p[0], p[1], p[2], 0]` handed to quaternion algebra (`quaternion_multiply(q, v)`) is the
+        pure quaternion of the sandwich product q v q*, which rotates the point on purpose."""
+        facts = self.facts
+        parent = facts.parent(construction)
+        if isinstance(parent, ast.Call) and construction in parent.args:
+            return _is_quaternion_call(parent)
+        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+            return False
+        name, scope = parent.targets[0].id, facts.index.scope_of(parent).node
+        return any(
+            _is_quaternion_call(call) and facts.index.scope_of(call).node is scope
+            and any(isinstance(argument, ast.Name) and argument.id == name for argument in call.args)  # type: ignore[attr-defined]
+            for call in facts.index.nodes(ast.Call)
         )
 
     def _check_product(self, node: ast.expr) -> None:
@@ -179,6 +200,12 @@ _TRANSLATION_COLUMN = re.compile(r"([\w.]+)\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)
 
 def _scope_text(facts, scope_node: ast.AST) -> str:  # type: ignore[no-untyped-def]
     return facts.index.source if isinstance(scope_node, ast.Module) else facts.index.segment(scope_node)
+
+
+def _is_quaternion_call(call: ast.AST) -> bool:
+    """`quaternion_multiply`, `quat_mul`, `qmult`, `Quaternion(...)`: quaternion algebra."""
+    name = (last_name(call.func) or "").lower()  # type: ignore[attr-defined]
+    return "quat" in name or name in ("qmult", "qmul")
 
 
 def _row_form(left: ast.expr, right: ast.expr) -> tuple[ast.expr | None, ast.expr | None]:

@@ -19,8 +19,13 @@ _JOINT_SPACE_WORDS = frozenset({"joint", "joints", "motor", "motors", "qpos", "a
 
 
 def _name_tokens(node: ast.AST) -> set[str]:
+    while isinstance(node, ast.Call) and last_name(node.func) in _ARRAY_WRAPPERS and len(node.args) == 1:
+        node = node.args[0]  # `np.array(clipped_delta_pos)` is named by what it wraps
     name = last_name(node.value if isinstance(node, ast.Subscript) else node)
     return set(name.lower().split("_")) if name else set()
+
+
+_ARRAY_WRAPPERS = frozenset({"array", "asarray", "tensor", "as_tensor"})
 
 
 def _is_collection(node: ast.AST) -> bool:
@@ -73,6 +78,10 @@ class PointPlusPoint(FactRule):
     VALID = [
         Valid("target_arm_pos = processed_delta_pos + cur_arm_pos\n"),  # a displacement, joint space
         Valid("agent.arm_motor_pos = delta_pos + agent.arm_motor_pos\n"),
+        Valid(
+            "import numpy as np\ndef step(old_local_pos, delta_pos):\n    clipped_delta_pos = np.clip(delta_pos, -0.1, 0.1)\n"
+            "    return np.array(old_local_pos) + np.array(clipped_delta_pos)\n"
+        ),  # a displacement, wrapped in an array
         Valid("pos, quat = get_ee_pose(q)\ntarget = (pos + pos_diff_goal, quat)\n"),  # a difference, named so
         Valid("midpoint = (p_start + p_end) / 2\n"),
         Valid("mid = 0.5 * (point_a + point_b)\n"),
@@ -95,6 +104,14 @@ class PointPlusPoint(FactRule):
         ),  # features sampled at points, summed: not coordinates
         Valid("self._pos = max(0, self._pos + pos)\n"),  # a file offset
         Valid("point = expr.point + point\n"),  # sympy: tuples of coordinates, concatenated
+        Valid(
+            "import torch\ndef goal(root_pos, n, radius):\n"
+            "    rand_pos = radius * (2.0 * torch.rand([n, 2]) - 1.0)\n    return root_pos + rand_pos\n"
+        ),  # a scaled random vector: an offset around the root
+        Valid(
+            "import torch\ndef ring(root_pos, dist, theta):\n"
+            "    pos_x = dist * torch.cos(theta)\n    return root_pos[..., 0] + pos_x\n"
+        ),  # polar coordinates around the root: an offset
     ]
     INVALID = [
         Invalid("grasp_position = object_centroid + gripper_position\n"),
@@ -117,6 +134,8 @@ class PointPlusPoint(FactRule):
             return
         if any(_DISPLACEMENT_WORDS & _name_tokens(side) or _JOINT_SPACE_WORDS & _name_tokens(side) for side in (node.left, node.right)):
             return  # `delta_pos + pos`, `arm_motor_pos + ...`: a displacement, or joint space
+        if any(self._is_scaled_quantity(side) for side in (node.left, node.right)):
+            return  # `rand_pos = r * (2 * rand - 1)`, `pos_x = d * cos(theta)`: an offset, whatever its name
         if not (facts.has_geometric_evidence(node.left) or facts.has_geometric_evidence(node.right)):
             return  # `self._pos + pos`: file offsets, cursor positions and tuples are "positions" too
         if _is_collection(node.left) != _is_collection(node.right):
@@ -127,6 +146,18 @@ class PointPlusPoint(FactRule):
             node,
             f"`{self.code_of(node.left)}` and `{self.code_of(node.right)}` are both points; adding two "
             "positions depends on the origin (did you mean an offset, a difference or a midpoint?)",
+        )
+
+    def _is_scaled_quantity(self, side: ast.expr) -> bool:
+        """A name bound only to a product none of whose factors is a point (`dist * cos(theta)`,
+        `radius * (2 * rand - 1)`): scaling gives a vector relative to some centre, not a location."""
+        if not isinstance(side, ast.Name):
+            return False
+        bindings = self.facts.bindings(side) or []
+        return bool(bindings) and all(
+            isinstance(value, ast.BinOp) and isinstance(value.op, ast.Mult)
+            and all(self.facts.kind_of(factor) != Kind.POINT for factor in (value.left, value.right))
+            for value in bindings
         )
 
     def _is_affine(self, node: ast.AST) -> bool:

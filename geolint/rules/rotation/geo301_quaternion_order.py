@@ -140,6 +140,8 @@ class QuaternionOrder(FactRule):
         Valid("def f(rec):\n    return {'x': rec.q[0], 'y': rec.q[1], 'z': rec.q[2], 'w': rec.q[3]}\n"),
         Valid("def f(q_wxyz):\n    q_xyzw = (q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0])\n    return q_xyzw\n"),
         Valid("import numpy as np\ndef to_xyzw(quats_wxyz):\n    return np.roll(quats_wxyz, -1, axis=1)\n"),
+        Valid("import numpy as np\ndef to_xyzw(frames):\n    return np.roll(frames[:, 3:7], -1, axis=1)\n"),
+        Valid("import numpy as np\ndef to_xyzw(frame):\n    return np.roll(frame[3:7], -1)\n"),  # one row: 1-D
         Valid("import numpy as np\ndef to_xyzw(quat_wxyz):\n    return np.roll(quat_wxyz, -1)\n"),  # one quaternion
         Valid(
             "import pybullet as p\ndef place(body, position, yaw):\n"
@@ -157,6 +159,12 @@ class QuaternionOrder(FactRule):
         ),  # the module stores data rolled the other way: the second roll may undo the first
     ]
     INVALID = [
+        Invalid(
+            "import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef root_rotvec(frames):\n"
+            "    return Rotation.from_quat(np.roll(frames[:, 3:7], -1)).as_rotvec()\n",
+            expected_fix="import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef root_rotvec(frames):\n"
+            "    return Rotation.from_quat(np.roll(frames[:, 3:7], -1, axis=-1)).as_rotvec()\n",
+        ),  # stacked (x, y, z, qw, qx, qy, qz) rows: four columns of a table, rolled flat
         Invalid(
             "from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.w, q.x, q.y, q.z])\n",
             expected_fix="from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.x, q.y, q.z, q.w])\n",

@@ -98,6 +98,11 @@ class MisplacedTranslation(AstRule):
             "import numpy as np\ndef projection(normal, point, d):\n    M = np.identity(4)\n"
             "    M[:3, 3] = point\n    M[3, :3] = -normal\n    M[3, 3] = d\n    return M\n"
         ),
+        Valid(
+            "import torch\ndef splat_matrix(center, rot_scale):\n    RS = rot_scale.permute(0, 2, 1)\n"
+            "    M = torch.zeros((center.shape[0], 4, 4))\n    M[:, :3, :3] = RS\n    M[:, 3, :3] = center\n"
+            "    M[:, 3, 3] = 1\n    return M\n"
+        ),  # the whole matrix laid out transposed (row vectors): rotation block transposed, translation in row 3
     ]
     INVALID = [
         Invalid(
@@ -106,6 +111,7 @@ class MisplacedTranslation(AstRule):
         ),
         Invalid("import torch\ndef f(R, c, n):\n    poses = torch.eye(4).repeat(n, 1, 1)\n    poses[:, :3, :3] = R\n    poses[:, 3, :3] -= c\n    return poses\n"),
         Invalid("import numpy as np\nT = np.zeros((4, 4))\nT[:3, :3] = R\nT[3, 0] = x\nT[3, 3] = 1\n"),
+        Invalid("import numpy as np\nT_inv = np.eye(4)\nT_inv[:3, :3] = R.T\nT_inv[3, :3] = -R.T @ t\n"),  # an inverse's translation
         Invalid("def center(poses):\n    c = poses[:, :3, 3].mean(0)\n    poses[:, :3, :3] -= c\n    return poses\n"),
         Invalid(
             "def to_camera(box, info):\n    cam2ego = np.array(info['cam2ego'])\n    box.translate(-cam2ego[:3, :3])\n",
@@ -143,7 +149,9 @@ class MisplacedTranslation(AstRule):
                     continue
                 values = values or local_values(tree)
                 from_translation = self._comes_from_own_translation(target, indices[0], value, values)
-                if bottom_row and (from_translation or self._is_column_convention_pose(target, bool(indices[0]), values)):
+                if bottom_row and (
+                    from_translation or self._is_column_convention_pose(target, bool(indices[0]), values, _has_product(value))
+                ):
                     self._report_bottom_row(target, indices[2])
                 elif rotation_block and from_translation:
                     self.report(
@@ -184,7 +192,9 @@ class MisplacedTranslation(AstRule):
             return False
         return source.pose in (key, f"{key}[{stack_key(batch)}]") or source.pose.startswith(f"{key}[")
 
-    def _is_column_convention_pose(self, target: ast.Subscript, stacked: bool, values: LocalValues) -> bool:
+    def _is_column_convention_pose(
+        self, target: ast.Subscript, stacked: bool, values: LocalValues, computed_translation: bool = False
+    ) -> bool:
         shape = square_shape(target.value, values)
         if shape is None or shape[0] != 4 or (shape[1] and not stacked):
             return False
@@ -202,6 +212,8 @@ class MisplacedTranslation(AstRule):
                 reads_translation_column = reads_translation_column or (part is not None and part.kind == "translation")
                 if _writes_projective_corner(node, values):
                     return False  # M[3, 3] = d: a projection, whose bottom row is meant to be full
+            if not computed_translation and _writes_transposed_rotation(node, base, values):
+                row_layout = True  # [R^T 0; t 1]: the transpose of a pose, laid out for row vectors
             transposed = transposed_operand(node) if isinstance(node, ast.expr) else None
             if transposed is not None and same_code(transposed, base):
                 row_layout = True  # built transposed (row-vector layout), then transposed into place
@@ -260,6 +272,28 @@ def _writes_projective_corner(node: ast.Subscript, values: LocalValues) -> bool:
     if isinstance(statement, ast.Assign) and node in statement.targets:
         return not (isinstance(statement.value, ast.Constant) and statement.value.value == 1)
     return isinstance(statement, ast.AugAssign) and statement.target is node
+
+
+def _has_product(value: ast.expr) -> bool:
+    """`-R.T @ t`, `R.dot(t)`: a computed translation (an inverse's), not a value laid out as it is."""
+    return any(matmul_operands(node) is not None for node in ast.walk(value))
+
+
+def _writes_transposed_rotation(node: ast.AST, base: ast.expr, values: LocalValues) -> bool:
+    """`M[..., :3, :3] = R.T` (or a name bound to `R.permute(0, 2, 1)`): the rotation block of `base`
+    is written transposed, so a translation in its bottom row is the same layout, not a slip."""
+    if not isinstance(node, ast.Assign) or len(node.targets) != 1:
+        return False
+    target = node.targets[0]
+    if not isinstance(target, ast.Subscript) or not same_code(target.value, base):
+        return False
+    indices = matrix_indices(target)
+    if indices is None or not (is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)):
+        return False
+    value = values.resolve(node.value)
+    if not isinstance(value, ast.expr) or transposed_operand(value) is None:
+        return False
+    return not (isinstance(value, ast.Call) and call_name(value) in ("inverse", "inv", "pinv"))
 
 
 def _is_pose_like(node: ast.expr, values: LocalValues) -> bool:

@@ -37,6 +37,20 @@ _TYPING_WORDS = frozenset(
 )
 _NAME_ORDER = re.compile(r"(?i)(?:^|_|\d)(wxyz|xyzw)(?:$|_|s\b)")
 _MAX_DEPTH = 12
+def _is_four_column_block(index: ast.expr) -> bool:
+    """`[:, 3:7]`: every row, four consecutive columns (the result has two axes)."""
+    if not (isinstance(index, ast.Tuple) and len(index.elts) == 2):
+        return False
+    rows, columns = index.elts
+    if not (isinstance(rows, ast.Slice) and rows.lower is None and rows.upper is None and rows.step is None):
+        return False
+    if not isinstance(columns, ast.Slice) or columns.step is not None:
+        return False
+    lower = 0 if columns.lower is None else number(columns.lower)
+    upper = number(columns.upper) if columns.upper is not None else None
+    return isinstance(lower, int) and isinstance(upper, int) and lower >= 0 and upper - lower == 4
+
+
 _STACK_WORDS = frozenset({"quats", "quaternions", "orientations", "qvecs"})
 
 
@@ -186,7 +200,10 @@ class QuaternionFlow:
 
     def is_quaternion_stack(self, node: ast.expr) -> bool:
         """`orientations_quat_wxyz`, `quats`, `data.xquat`: a name in the plural of a quaternion word,
-        or a value known to be a stack (mujoco's per-body arrays)."""
+        a value known to be a stack (mujoco's per-body arrays), or a block of four columns of a table
+        (`poses[:, 3:7]`, the quaternions of stacked (x, y, z, qw, qx, qy, qz) rows)."""
+        if isinstance(node, ast.Subscript) and _is_four_column_block(node.slice):
+            return True
         name = node.id if isinstance(node, ast.Name) else node.attr if isinstance(node, ast.Attribute) else None
         if name is not None and any(word in _STACK_WORDS for word in _words(name)):
             return True
