@@ -22,7 +22,7 @@ from geolint import config as config_module
 from geolint import engine
 from geolint.cache import FindingsCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
-from geolint.factbase.summaries import dependency_digest
+from geolint.factbase.summaries import ImportGraph, dependency_digest
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 
@@ -108,13 +108,7 @@ def lint_paths(
     results: dict[str, FileResult] = {}
     pending: list[tuple[SourceFile, bytes, str]] = []
     total = len(sources)
-    hashes: dict[str, str] = {}  # absolute path -> content hash: each imported module is read once
-
-    def hash_of_file(file: Path) -> str:
-        known = hashes.get(str(file))
-        if known is None:
-            known = hashes[str(file)] = content_hash(file.read_bytes())
-        return known
+    imports = ImportGraph(content_hash)  # each imported module is read, hashed and scanned once
 
     for source in sources:
         try:
@@ -122,9 +116,8 @@ def lint_paths(
         except OSError as error:
             results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
             continue
-        own = hashes[os.path.abspath(source.path)] = content_hash(data)
-        # the file's bytes and those of the project modules it imports (their summaries feed its findings)
-        digest = dependency_digest(str(source.path), data, lambda _: own, hash_of_file)
+        # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
+        digest = dependency_digest(str(source.path), data, content_hash, imports)
         cached = cache.get(source.real_path(), digest, source.display) if cache else None
         if cached is not None:
             results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)

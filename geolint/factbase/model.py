@@ -60,6 +60,7 @@ _NAME_KIND = {
     NameKind.ROTATION: Kind.ROTATION,
 }
 _MAX_DEPTH = 60
+_MAX_REEXPORTS = 3  # package `__init__` modules followed to the module that defines a helper
 _MISSING = object()
 
 
@@ -194,6 +195,7 @@ class FactBase:
         orders: tuple[str, ...] = (DST_FIRST, SRC_FIRST),
         order_names_mixed: bool = False,
         cross_module: bool = True,
+        project: summaries.ProjectSummaries | None = None,
     ) -> None:
         self.index = index
         self.config = config
@@ -202,11 +204,27 @@ class FactBase:
         self.orders = orders
         # the project declares `T_a_b` names in both orders: such a name alone is no evidence
         self.order_names_mixed = order_names_mixed
-        # whether helpers imported from other project modules are summarised (one level deep)
+        # whether helpers imported from other project modules are summarised
         self.cross_module = cross_module
+        # the summaries of the project's helpers this module's lint reads (shared with the fact
+        # bases of the other modules they come from)
+        if project is None:
+            project = summaries.ProjectSummaries(config)
+            project.adopt(self)
+        self.project = project
         self._memo: dict[tuple[str, int, str], object] = {}
         self._qualified: dict[int, object] = {}
         self._active: set[tuple[str, int, str]] = set()
+
+    def scratch(self) -> FactBase:
+        """A fact base of the same module with no memoised facts (qualified names, which no summary
+        changes, are shared): a summary computed in it keeps nothing derived from a provisional one."""
+        fresh = FactBase(self.index, self.config, self.path, self.orders, self.order_names_mixed, self.cross_module, self.project)
+        fresh._qualified = self._qualified
+        local = self._memo.get(("local", 0, ""))
+        if local is not None:
+            fresh._memo[("local", 0, "")] = local
+        return fresh
 
     # -- plumbing -------------------------------------------------------------------------
     def _cached(self, tag: str, node: ast.AST, compute: Callable[[], _T], order: str = "") -> _T | None:
@@ -452,11 +470,12 @@ class FactBase:
 
     def _function_summary(self, call: ast.Call) -> FunctionSummary | None:
         found = self.called_function(call)
-        return None if found is None else self._summary_of(*found)
+        return None if found is None else self.project.summary(*found)
 
     def called_function(self, call: ast.Call) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
-        """The project function a call runs (of this module, or of a project module it imports) and
-        the fact base of the module that defines it."""
+        """The project function a call runs (of this module, or of a project module it imports,
+        through aliases, relative imports and package `__init__` re-exports) and the fact base of
+        the module that defines it."""
         if not self.may_have_summary(call):
             return None
         func = call.func
@@ -467,34 +486,23 @@ class FactBase:
         head = func.id if isinstance(func, ast.Name) else dotted_name(func)
         if head is None or head.split(".")[0] not in self.index.imports:
             return None
-        qualified = self.qualified_name(func) or ""
-        module, _, name = qualified.rpartition(".")
-        if not module or not name or module.split(".")[0] in vocab.THIRD_PARTY_ROOTS:
-            return None
-        level = len(module) - len(module.lstrip("."))
-        file = summaries.module_file(module.lstrip("."), self.path, level)
-        if file is None:
-            return None
-        other = summaries.external_facts(file, self.config)
-        if other is None or name not in other.index.functions:
-            return None
-        return other, other.index.functions[name]
+        return self._imported_function(self.qualified_name(func) or "", self.path)
 
-    @staticmethod
-    def _summary_of(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary | None:
-        cache = facts._memo
-        key = ("function-summary", id(function), "")
-        if key in cache:
-            return cache[key]  # type: ignore[return-value]
-        if key in facts._active:
-            return None  # recursion
-        facts._active.add(key)
-        try:
-            result = summaries.summarize(facts, function)
-        finally:
-            facts._active.discard(key)
-        cache[key] = result
-        return result
+    def _imported_function(self, qualified: str, importer: str) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+        for _ in range(_MAX_REEXPORTS):
+            module, _, name = qualified.rpartition(".")
+            if not module.strip(".") or not name or module.lstrip(".").split(".")[0] in vocab.THIRD_PARTY_ROOTS:
+                return None
+            level = len(module) - len(module.lstrip("."))
+            file = summaries.module_file(module.lstrip("."), importer, level)
+            other = None if file is None else self.project.facts_of(file)
+            if other is None:
+                return None
+            if name in other.index.functions:
+                return other, other.index.functions[name]
+            qualified = other.index.imports.get(name, "")  # `from .points import to_h` in a package's __init__
+            importer = other.path
+        return None
 
     def _kind_of_variable(self, name: ast.Name) -> Kind | None:
         stated = self._name_kind(name.id)

@@ -1,11 +1,18 @@
-"""Function summaries: what a helper does to its parameters, so call sites in this module and in
-the modules that import it know (`to_homogeneous(x)` appends w = 1 to x; `apply_pose(T, x)` rotates
-and translates x; `load_normals()` returns directions).
+"""Function summaries: what a helper does to its parameters and returns, so call sites anywhere in the
+project know (`to_homogeneous(x)` appends w = 1 to x; `apply_pose(T, x)` rotates and translates x;
+`load_normals()` returns directions; `heading(v)` returns radians; `rot_z(theta)` reads radians).
 
-A summary is computed from the helper's own module (parsed and indexed once per process), one level
-deep: a summary never consults a third module, so a file's findings depend only on its own text and
-the text of the project modules it imports directly. `dependency_digest` hashes exactly that, and
-the findings cache keys each file by it: editing a helper re-lints the modules that import it.
+Summaries compose: a helper that calls another project helper (in its own module or in one it
+imports, through aliases and relative imports, and through a package `__init__` that re-exports it)
+gets the callee's effect. `ProjectSummaries` computes them lazily for one linted module, each in a
+fresh scratch fact base (so a value computed under a provisional summary is never kept), and
+iterates recursion and import cycles to a fixpoint: a cycle's first pass reads the summaries still
+being computed as unknown, and the cycle's head is recomputed until its summary stops changing
+(at most `_MAX_ROUNDS` passes; a cycle that does not settle stays unknown).
+
+Since a summary may consult modules any number of imports away, `dependency_digest` hashes the
+transitive closure of the project modules a file imports, and the findings cache keys each file by
+it: editing a helper re-lints every module that may read its summary.
 """
 
 from __future__ import annotations
@@ -23,6 +30,7 @@ from typing import TYPE_CHECKING
 from geolint.algebra import FREE, Kind
 
 if TYPE_CHECKING:
+    from geolint.factbase.index import ModuleIndex
     from geolint.factbase.model import FactBase
 
 _IMPORT = re.compile(r"^[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))", re.MULTILINE)
@@ -34,36 +42,61 @@ _PROJECT_MARKERS = ("pyproject.toml", "setup.py", "setup.cfg", ".git")
 
 @dataclass
 class FunctionSummary:
-    """What one function does, as far as its own module shows."""
+    """What one function does, as far as the project shows."""
 
     parameters: tuple[str, ...] = ()
     returns: Kind | None = None  # the kind every `return` agrees on
     # parameter index -> w, when the function returns that parameter made homogeneous
     homogenizes: dict[int, int] = field(default_factory=dict)
-    # parameters the function moves by a rotation AND a translation (`R @ x + t`, `T @ [x; 1]`)
+    # parameters the function moves by a rotation AND a translation (`R @ x + t`, or a helper that does)
     translates: set[int] = field(default_factory=set)
+    # parameter index -> the helper chain that translates it, when that is not this function's own code
+    translates_through: dict[int, str] = field(default_factory=dict)
+    # the angle unit every `return` agrees on: (unit, evidence, decided by a name alone)
+    angle_unit: tuple[str, str, bool] | None = None
+    # the quaternion order every `return` agrees on: (order, evidence, a stack of quaternions)
+    quaternion_order: tuple[str, str, bool] | None = None
+    # parameter index -> (unit, where): parameters passed as they are to an API that reads that unit
+    reads_unit: dict[int, tuple[str, str]] = field(default_factory=dict)
+    # a summary still being computed, on a cycle's first pass: its `return`s constrain nothing yet
+    pending: bool = False
 
 
 def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary:
-    """The summary of a function of `facts`' module."""
-    from geolint.factbase.model import transposed_value
+    """The summary of a function of `facts`' module (helpers it calls answer through their summaries)."""
+    from geolint.factbase.model import positional_args, transposed_value, walk_within
 
     params = tuple(arg.arg for arg in (*function.args.posonlyargs, *function.args.args))
     summary = FunctionSummary(parameters=params)
     scope = facts.index.scopes.get(function)
     if scope is None:
         return summary
-    kinds = {facts.kind_of(value) for value in scope.returns}
+    plain = {name for name in params if _only_bound_as_parameter(facts, scope, name)}
+    # `return f(...)` of a summary not known yet on a cycle's first pass says nothing either way (the
+    # cycle's later passes see what the other `return`s agree on)
+    returns = [value for value in scope.returns if not _pending(facts, value)]
+    kinds = {facts.kind_of(value) for value in returns}
     if len(kinds) == 1:
         summary.returns = kinds.pop()
-    for value in scope.returns:
+    for value in returns:
         homogeneous = facts.homogeneous(value)
         if homogeneous is not None and isinstance(homogeneous.inner, ast.Name) and homogeneous.inner.id in params:
             summary.homogenizes[params.index(homogeneous.inner.id)] = homogeneous.w
-    # `R @ x + t` (or row form `x @ R.T + t`) on a parameter x
-    from geolint.factbase.model import walk_within
-
+        elif isinstance(value, ast.Call) and facts.may_have_summary(value):
+            # `return to_homogeneous(x)`: the callee's w, on our parameter
+            callee = facts.function_summary(value)
+            arguments = positional_args(value)
+            for index, w in (callee.homogenizes.items() if callee is not None else ()):
+                if index < len(arguments) and isinstance(arguments[index], ast.Name) and arguments[index].id in plain:
+                    summary.homogenizes.setdefault(params.index(arguments[index].id), w)
+    if returns:
+        summary.angle_unit = _returned_unit(facts, returns)
+        summary.quaternion_order = _returned_order(facts, returns)
     for node in walk_within(function):
+        if isinstance(node, ast.Call) and node.args:
+            _record_call(facts, node, params, plain, summary)
+            continue
+        # `R @ x + t` (or row form `x @ R.T + t`) on a parameter x
         if not isinstance(node, ast.BinOp) or not isinstance(node.op, ast.Add):
             continue
         for rotated, other in ((node.left, node.right), (node.right, node.left)):
@@ -80,10 +113,177 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
     return summary
 
 
+def _pending(facts: FactBase, value: ast.expr) -> bool:
+    if not isinstance(value, ast.Call) or not facts.may_have_summary(value):
+        return False
+    summary = facts.function_summary(value)
+    return summary is not None and summary.pending
+
+
+def _only_bound_as_parameter(facts: FactBase, scope, name: str) -> bool:  # type: ignore[no-untyped-def]
+    """A parameter never rebound in its function (so what a callee does to it, it does to the argument)."""
+    from geolint.factbase.index import ParamBinding
+
+    bound = scope.bindings.get(name, [])
+    return len(bound) == 1 and isinstance(bound[0], ParamBinding) and name not in scope.augmented
+
+
+def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain: set[str], summary: FunctionSummary) -> None:
+    """What a call inside the function does to the function's own parameters: a project helper that
+    translates one (`apply_pose(T, x)`), an API that reads an angle unit (`np.cos(theta)`)."""
+    from geolint.factbase.model import positional_args
+
+    arguments = positional_args(call)
+    passed = {index: params.index(arg.id) for index, arg in enumerate(arguments) if isinstance(arg, ast.Name) and arg.id in plain}
+    if not passed:
+        return
+    if facts.may_have_summary(call):
+        callee = facts.function_summary(call)
+        if callee is not None:
+            helper = facts.code_of(call.func)
+            for index in callee.translates:
+                if index in passed and facts.kind_of(arguments[index]) not in FREE:
+                    own = passed[index]
+                    if own not in summary.translates:
+                        summary.translates.add(own)
+                        through = callee.translates_through.get(index)
+                        summary.translates_through[own] = f"`{helper}`" + (f" -> {through}" if through else "")
+            for index, (unit, where) in callee.reads_unit.items():
+                if index in passed:
+                    _add_unit_read(summary, passed[index], unit, f"`{helper}` -> {where}")
+            return
+    from geolint.rules.rotation.angle_units import unit_read_by
+
+    for index, own in passed.items():
+        unit = unit_read_by(facts, call, arguments[index])
+        if unit is not None:
+            _add_unit_read(summary, own, unit, f"`{facts.code_of(call.func)}`")
+
+
+_CONFLICT = ("", "")
+
+
+def _add_unit_read(summary: FunctionSummary, index: int, unit: str, where: str) -> None:
+    known = summary.reads_unit.get(index)
+    if known is None:
+        summary.reads_unit[index] = (unit, where)
+    elif known[0] != unit:
+        summary.reads_unit[index] = _CONFLICT  # read as both units: no evidence
+
+
+def _returned_unit(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
+    from geolint.rules.rotation.angle_units import AngleUnits
+
+    units = AngleUnits(facts)
+    found = [units.unit_of(value) for value in returns]
+    if any(unit is None for unit in found) or len({unit.unit for unit in found}) != 1:  # type: ignore[union-attr]
+        return None
+    first = found[0]
+    return first.unit, first.evidence, any(unit.by_name for unit in found)  # type: ignore[union-attr]
+
+
+def _returned_order(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
+    from geolint.rules.rotation.quaternion_flow import QuaternionFlow
+
+    flow = QuaternionFlow(facts)
+    found = [flow.order_of(value) for value in returns]
+    if any(order is None for order in found) or len({order.order for order in found}) != 1:  # type: ignore[union-attr]
+        return None
+    first = found[0]
+    return first.order, first.evidence, all(order.batch for order in found)  # type: ignore[union-attr]
+
+
+# --- composition: summaries of one linted module's helpers, to a fixpoint ------------------------
+
+_MAX_SUMMARY_DEPTH = 12  # helpers calling helpers this deep; deeper calls are unknown
+_MAX_ROUNDS = 4  # passes over a recursion or import cycle before it is given up as unknown
+_BUDGET = 3000  # summaries computed for one linted module (each costs about its function's size)
+_NO_CUT = 1 << 30
+
+
+class ProjectSummaries:
+    """The summaries one linted module reads, computed on demand and kept for its lint only (so a
+    long-running process never serves a summary computed against an older version of a module).
+
+    Each summary is computed in a scratch fact base of its module. A call that reaches a summary
+    still being computed (recursion, an import cycle) reads its provisional value (unknown on the
+    first pass) and marks every summary computed since as provisional; the first summary of the
+    cycle is recomputed until it stops changing, and only then kept.
+    """
+
+    def __init__(self, config) -> None:  # type: ignore[no-untyped-def]
+        self.config = config
+        self._final: dict[tuple[int, int], FunctionSummary | None] = {}
+        self._provisional: dict[tuple[int, int], FunctionSummary] = {}
+        self._positions: dict[tuple[int, int], int] = {}
+        self._lowest_cut: list[int] = []  # per frame of the stack: the lowest frame a cycle reached
+        self._modules: dict[str, FactBase | None] = {}
+        self.computed = 0
+
+    def adopt(self, facts: FactBase) -> None:
+        """The linted module itself: other modules that import it read its in-memory text."""
+        if facts.path and os.path.isfile(facts.path):
+            self._modules.setdefault(os.path.abspath(facts.path), facts)
+
+    def facts_of(self, file: Path) -> FactBase | None:
+        """The fact base of another project module (its parse and index are shared by the process)."""
+        from geolint.factbase.model import FactBase
+
+        key = os.path.abspath(file)
+        if key not in self._modules:
+            index = _module_index_of_file(file)
+            self._modules[key] = None if index is None else FactBase(index, self.config, key, project=self)
+        return self._modules[key]
+
+    def summary(self, facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary | None:
+        key = (id(facts.index), id(function))
+        if key in self._final:
+            return self._final[key]
+        position = self._positions.get(key)
+        if position is not None:  # recursion or an import cycle: read what is known so far
+            self._lowest_cut[-1] = min(self._lowest_cut[-1], position)
+            return self._provisional.get(key) or FunctionSummary(pending=True)
+        if len(self._lowest_cut) >= _MAX_SUMMARY_DEPTH or self.computed >= _BUDGET:
+            if self._lowest_cut:
+                self._lowest_cut[-1] = -1  # cut short: nothing computed from here on is kept
+            return None
+        position = len(self._lowest_cut)
+        self._positions[key] = position
+        self._lowest_cut.append(_NO_CUT)
+        rounds = 0
+        try:
+            while True:
+                self.computed += 1
+                result: FunctionSummary | None = summarize(facts.scratch(), function)
+                lowest = self._lowest_cut[position]
+                if lowest == _NO_CUT:
+                    self._final[key] = result
+                    return result
+                if lowest < position:  # part of a cycle through a summary below: provisional
+                    if position:
+                        self._lowest_cut[position - 1] = min(self._lowest_cut[position - 1], lowest)
+                    return result
+                # the head of a cycle: again, with this pass's summary, until it settles
+                if rounds and result == self._provisional.get(key):
+                    break
+                rounds += 1
+                if rounds >= _MAX_ROUNDS:
+                    result = None
+                    break
+                self._provisional[key] = result  # type: ignore[assignment]
+                self._lowest_cut[position] = _NO_CUT
+            self._provisional.pop(key, None)
+            self._final[key] = result
+            return result
+        finally:
+            del self._positions[key]
+            self._lowest_cut.pop()
+
+
 # --- the project: modules imported by qualified name ------------------------------------------
 
 _lock = threading.Lock()
-_modules: dict[tuple[str, int, int, int], object] = {}
+_modules: dict[tuple[str, int, int], object] = {}
 
 
 def project_root(path: str) -> Path | None:
@@ -136,11 +336,12 @@ def _module_file_from(module: str, here: Path, level: int) -> Path | None:
 
 
 def imported_files(path: str, source: str) -> list[Path]:
-    """The project files `source` imports directly (by a cheap scan of its import lines)."""
+    """The project files `source` imports directly (by a cheap scan of its import lines): the modules
+    named, and for `from pkg import geom` the submodule `pkg.geom` too."""
     if not os.path.isfile(path):
         return []
     found = []
-    for name in imported_names(source):
+    for name in imported_names(source, members=True):
         level = len(name) - len(name.lstrip("."))
         file = module_file(name.lstrip("."), path, level)
         if file is not None and file not in found:
@@ -148,9 +349,10 @@ def imported_files(path: str, source: str) -> list[Path]:
     return found
 
 
-def imported_names(source: str) -> list[str]:
+def imported_names(source: str, members: bool = False) -> list[str]:
     """The module names of the import statements in `source`, exactly as `_IMPORT.finditer` finds them
-    (a match never spans lines, so each line start gives at most one)."""
+    (a match never spans lines, so each line start gives at most one). With `members`, each name a
+    `from X import a, b` brings in is added as `X.a`, `X.b` too (it may be a submodule)."""
     names = []
     tried = -1
     at = source.find("import")
@@ -161,14 +363,92 @@ def imported_names(source: str) -> list[str]:
             match = _IMPORT_AT_LINE_START.match(source, line)
             if match is not None:
                 names.append(match.group(1) or match.group(2))
+                if members and match.group(1):
+                    names.extend(_joined(match.group(1), member) for member in _imported_members(source, match.end()))
         at = source.find("import", at + 6)
     return names
 
 
-def dependency_digest(path: str, data: bytes, content_hash, hash_of_file=None) -> str:  # type: ignore[no-untyped-def]
-    """The file's own hash, combined with the hashes of the project modules it imports directly.
+_MEMBER = re.compile(r"[A-Za-z_]\w*")
 
-    `hash_of_file(path)` (default: read and hash it) lets a run hash each imported module once.
+
+def _imported_members(source: str, start: int) -> list[str]:
+    """The names after `from X import` (up to the line's end, or the closing parenthesis)."""
+    rest = source[start : start + 2000]
+    stripped = rest.lstrip(" \t")
+    if stripped.startswith("("):
+        text = stripped[1 : stripped.find(")") if ")" in stripped else len(stripped)]
+    else:
+        text = rest.split("\n", 1)[0]
+        while text.rstrip().endswith("\\"):  # a continued line
+            consumed = len(text) + 1
+            text = text.rstrip()[:-1] + " " + rest[consumed:].split("\n", 1)[0]
+    members = []
+    for part in text.split("#", 1)[0].split(","):
+        words = part.split()
+        if words and _MEMBER.fullmatch(words[0]):
+            members.append(words[0])
+    return members
+
+
+def _joined(module: str, member: str) -> str:
+    return f"{module}{member}" if module.endswith(".") else f"{module}.{member}"
+
+
+class ImportGraph:
+    """The project modules each file imports, transitively: every module read and scanned once per run.
+
+    A file linted in the run is registered with its own hash when its digest is taken, and not read again.
+    """
+
+    def __init__(self, content_hash) -> None:  # type: ignore[no-untyped-def]
+        self.content_hash = content_hash
+        self._imports: dict[Path, list[Path]] = {}
+        self._hashes: dict[Path, str] = {}
+
+    def _read(self, file: Path) -> None:
+        try:
+            data = file.read_bytes()
+        except OSError:
+            self._hashes[file], self._imports[file] = "-", []
+            return
+        self._hashes[file] = self.content_hash(data)
+        source = data.decode("utf-8", errors="replace")
+        self._imports[file] = imported_files(str(file), source) if "import" in source else []
+
+    def closure(self, path: str, source: str, own_hash: str | None = None) -> list[Path]:
+        """The project modules `source` (the text of `path`) imports, directly or through others."""
+        own = Path(os.path.abspath(path))
+        direct = self._imports.get(own)
+        if direct is None:
+            direct = self._imports[own] = imported_files(path, source)
+            if own_hash is not None:
+                self._hashes[own] = own_hash
+        seen: set[Path] = {own}
+        queue = list(direct)
+        found: list[Path] = []
+        while queue:
+            file = queue.pop()
+            if file in seen:
+                continue
+            seen.add(file)
+            found.append(file)
+            if file not in self._imports:
+                self._read(file)
+            queue.extend(self._imports[file])
+        return sorted(found)
+
+    def hash_of(self, file: Path) -> str:
+        if file not in self._hashes:
+            self._read(file)
+        return self._hashes[file]
+
+
+def dependency_digest(path: str, data: bytes, content_hash, graph: ImportGraph | None = None) -> str:  # type: ignore[no-untyped-def]
+    """The file's own hash, combined with the hashes of every project module it imports, directly or
+    through other project modules (a summary may read a helper any number of imports away).
+
+    A run passes one `graph` for all its files, so each module is read and scanned once.
     """
     own = content_hash(data)
     try:
@@ -177,37 +457,34 @@ def dependency_digest(path: str, data: bytes, content_hash, hash_of_file=None) -
         return own
     if "import" not in source:
         return own
-    files = imported_files(path, source)
+    graph = graph or ImportGraph(content_hash)
+    files = graph.closure(path, source, own)
     if not files:
         return own
     digest = hashlib.blake2b(own.encode(), digest_size=16)
-    for file in sorted(files):
-        try:
-            digest.update((hash_of_file(file) if hash_of_file else content_hash(file.read_bytes())).encode())
-        except OSError:
-            digest.update(b"-")
+    for file in files:
+        digest.update(graph.hash_of(file).encode())
     return digest.hexdigest()
 
 
-def external_facts(file: Path, config) -> FactBase | None:  # type: ignore[no-untyped-def]
-    """The fact base of another project module (cached per process by path, size and mtime)."""
+def _module_index_of_file(file: Path) -> ModuleIndex | None:
+    """The parse and index of a project module, shared by every lint of the process (by path, size
+    and mtime): they depend on the file's text alone, unlike its summaries."""
     from geolint.factbase.index import ModuleIndex
-    from geolint.factbase.model import FactBase
 
     try:
         stat = file.stat()
     except OSError:
         return None
-    key = (str(file), stat.st_size, stat.st_mtime_ns, hash(config))
+    key = (str(file), stat.st_size, stat.st_mtime_ns)
     with _lock:
         cached = _modules.get(key)
     if cached is None:
         try:
             source = file.read_bytes().decode("utf-8", errors="replace")
-            tree = ast.parse(source)
-            cached = FactBase(ModuleIndex(tree, source), config, str(file), cross_module=False)
+            cached = ModuleIndex(ast.parse(source), source)
         except (SyntaxError, ValueError, MemoryError, RecursionError, OSError):
-            cached = False  # type: ignore[assignment]
+            cached = False
         with _lock:
             if len(_modules) > 512:
                 _modules.clear()

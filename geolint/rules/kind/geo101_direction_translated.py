@@ -7,6 +7,7 @@ import ast
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE
 from geolint.factbase.model import GEOMETRIC, keyword, last_name, last_name_target, positional_args, replace_span, transposed_value
+from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.semantic.names import Kind as NameKind, kind_of_name
 
@@ -123,7 +124,7 @@ class DirectionTranslated(FactRule):
                     node,
                     f"`{helper}` rotates and translates its parameter `{summary.parameters[index]}`, but "
                     f"`{self.code_of(positional[index])}` is a direction; a direction only rotates",
-                    evidence=(f"summary of `{helper}`: translates parameter {index}",),
+                    evidence=(f"summary of `{helper}`: translates parameter {index}" + _through(summary, index),),
                 )
                 return
 
@@ -229,3 +230,9 @@ class DirectionTranslated(FactRule):
                     applicability="unsafe",
                     fix_description="use vector_to_direction",
                 )
+
+
+def _through(summary: FunctionSummary, index: int) -> str:
+    """`, through `move` -> `apply_pose``: the helpers a summary's translation comes through."""
+    chain = summary.translates_through.get(index)
+    return f", through {chain}" if chain else ""

@@ -23,7 +23,8 @@ from dataclasses import dataclass
 
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import FactBase, keyword, number, positional_args
+from geolint.factbase.model import FactBase, keyword, last_name, number, positional_args, string
+from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 
 DEGREES, RADIANS = "deg", "rad"
 _DEGREE_WORDS = frozenset({"deg", "degs", "degree", "degrees"})
@@ -35,6 +36,9 @@ _TO_RADIANS = frozenset({"radians", "deg2rad"})
 _INVERSE_TRIG = frozenset({"arctan2", "arctan", "arcsin", "arccos", "atan2", "atan", "asin", "acos"})
 _ANGLE_MODULES = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"})
 _MAX_DEPTH = 10
+_SPATIALMATH_ANGLE_CALLS = frozenset(
+    {"Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz", "rpy2r", "eul2r", "rpy2tr", "eul2tr"}
+)
 
 
 @dataclass(frozen=True)
@@ -124,6 +128,11 @@ class AngleUnits:
         converted = self.converts(call)
         if converted is not None:
             return Unit(converted, f"`{facts.code_of(call.func)}` returns {_word(converted)}", False)
+        if facts.may_have_summary(call):  # a project helper whose every `return` agrees on a unit
+            summary = facts.function_summary(call)
+            if summary is not None and summary.angle_unit is not None:
+                unit, evidence, by_name = summary.angle_unit
+                return Unit(unit, f"`{facts.code_of(call.func)}` returns {_word(unit)}: {evidence}", by_name)
         qualified = facts.qualified_name(call.func) or ""
         module, _, name = qualified.rpartition(".")
         if module in _ANGLE_MODULES and name in _INVERSE_TRIG:
@@ -180,3 +189,108 @@ def _is_conversion_factor(value: float | None) -> bool:
 
 def _word(unit: str | None) -> str:
     return "degrees" if unit == DEGREES else "radians"
+
+
+def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
+    """The angle arguments of a call to a radian API, or None when the call is not one (or opted into degrees)."""
+    func = node.func
+    positional = positional_args(node)
+    name = last_name(func) or ""
+    if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
+        degrees = keyword(node, "degrees")
+        if degrees is not None and not (isinstance(degrees.value, ast.Constant) and degrees.value.value is False):
+            return None
+        if name == "from_euler":
+            angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
+        else:
+            angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
+        return [angles] if angles is not None else None
+    qualified = facts.qualified_name(func) or ""
+    name = qualified.rsplit(".", 1)[-1] if qualified else name  # through `import ... as`
+    if qualified.startswith("transforms3d."):
+        if name.startswith("euler2"):
+            return positional[:3]
+        if name.startswith("axangle2") and len(positional) > 1:
+            return [positional[1]]
+    if qualified.startswith("pytransform3d."):
+        if name.endswith("_from_euler") and positional:
+            return [positional[0]]
+        if name.endswith("_from_angle") and len(positional) > 1:
+            return [positional[1]]
+    if qualified.startswith("spatialmath") and name in _SPATIALMATH_ANGLE_CALLS:
+        if keyword(node, "unit") is not None or any(string(value) is not None for value in positional[1:]):
+            return None
+        return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
+    if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
+        return positional[:3]
+    if is_trig_or_conversion(facts, node):
+        return positional[:1]
+    return None
+
+
+def is_trig_or_conversion(facts: FactBase, node: ast.Call) -> bool:
+    """`np.sin(x)`, `math.cos(x)`, and `np.degrees(x)` / `np.rad2deg(x)` (which read radians too)."""
+    func = node.func
+    qualified = facts.qualified_name(func) or ""
+    module, _, name = qualified.rpartition(".")
+    if len(positional_args(node)) != 1:
+        return False
+    if name in TRIG_FUNCTIONS:
+        return facts.is_array_call(func, *TRIG_FUNCTIONS) or module == "math"
+    return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
+
+
+def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:
+    """The unit `call` reads its argument `argument` in, when the call always runs with it (not under
+    a condition of its function): RADIANS for a radian API (`np.cos(theta)`, `from_euler` without
+    `degrees=True`), DEGREES for a conversion from degrees (`np.radians(a)`) or `from_euler(...,
+    degrees=True)`; None otherwise."""
+    if not _unconditional(facts, call):
+        return None
+    if any(element is argument for found in radian_arguments(facts, call) or () for element in _angle_elements(found)):
+        return RADIANS
+    positional = positional_args(call)
+    if AngleUnits(facts).converts(call) == RADIANS and positional and positional[0] is argument:
+        return DEGREES
+    if is_scipy_rotation_method(facts, call.func, "from_euler"):
+        degrees = keyword(call, "degrees")
+        if degrees is not None and isinstance(degrees.value, ast.Constant) and degrees.value.value is True:
+            angles = positional[1] if len(positional) > 1 else getattr(keyword(call, "angles"), "value", None)
+            if angles is not None and any(element is argument for element in _angle_elements(angles)):
+                return DEGREES
+    return None
+
+
+def _angle_elements(node: ast.expr) -> list[ast.expr]:
+    if isinstance(node, (ast.List, ast.Tuple)):
+        return list(node.elts)
+    return [node]
+
+
+_BRANCHES = (ast.If, ast.IfExp, ast.Try, getattr(ast, "TryStar", ast.Try), ast.While, ast.BoolOp, ast.comprehension, ast.Match, ast.Lambda)
+
+
+def _unconditional(facts: FactBase, node: ast.AST) -> bool:
+    """No branch between `node` and its function: it runs whenever the function does."""
+    current = facts.parent(node)
+    while current is not None and not isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Module)):
+        if isinstance(current, _BRANCHES):
+            return False
+        current = facts.parent(current)
+    return True
+
+
+def helper_reads(facts: FactBase, call: ast.Call, unit: str) -> list[tuple[ast.expr, str]]:
+    """The arguments of a call to a project helper that passes them, unchanged and unconditionally,
+    to an API reading `unit` (directly or through further helpers), each with how it gets there."""
+    if not call.args or any(isinstance(arg, ast.Starred) for arg in call.args) or not facts.may_have_summary(call):
+        return []
+    summary = facts.function_summary(call)
+    if summary is None or not summary.reads_unit:
+        return []
+    helper = facts.code_of(call.func)
+    return [
+        (call.args[index], f"`{helper}` passes its parameter `{summary.parameters[index]}` to {where}")
+        for index, (read, where) in sorted(summary.reads_unit.items())
+        if read == unit and index < len(call.args)
+    ]

@@ -9,17 +9,14 @@ import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.index import ParamBinding
-from geolint.factbase.model import keyword, last_name, number, positional_args, string
+from geolint.factbase.model import keyword, last_name, number, positional_args
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, helper_reads, is_trig_or_conversion, radian_arguments
 
 _TWO_PI = 2 * math.pi
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
 _RADIAN_NAME = re.compile(r"(?i)rad")
-_SPATIALMATH_ANGLE_CALLS = frozenset(
-    {"Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz", "rpy2r", "eul2r", "rpy2tr", "eul2tr"}
-)
 
 
 class DegreesAsRadians(FactRule):
@@ -145,10 +142,24 @@ class DegreesAsRadians(FactRule):
                 )
                 return
         self._check_units(node, units)
+        self._check_helper(node, units)
+
+    def _check_helper(self, node: ast.Call, units: AngleUnits) -> None:
+        """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
+        where `rot_z(theta)` computes `np.cos(theta)`)."""
+        for argument, how in helper_reads(self.facts, node, RADIANS):
+            unit = units.unit_of(argument)
+            if unit is not None and unit.unit == DEGREES:
+                self.report(
+                    argument,
+                    f"{how}, which takes radians, but `{self.code_of(argument)}` is in degrees ({unit.evidence})",
+                    evidence=(how, unit.evidence),
+                )
+                return
 
     def _check_units(self, node: ast.Call, units: AngleUnits) -> None:
         """A value the code itself puts in degrees (`yaw_deg`, `np.degrees(...)`) passed as radians."""
-        arguments = self._radian_arguments(node)
+        arguments = radian_arguments(self.facts, node)
         if not arguments:
             return
         elements = [element for argument in arguments for element in _elements(argument)]
@@ -187,47 +198,10 @@ class DegreesAsRadians(FactRule):
             if value is not None and value == int(value) and int(value) % 15 == 0 and abs(value) <= 720:
                 return [float(value)]
             return None
-        arguments = self._radian_arguments(node)
-        if arguments is None or _is_trig_or_conversion(facts, node):
+        arguments = radian_arguments(self.facts, node)
+        if arguments is None or is_trig_or_conversion(facts, node):
             return None
         return _literals_of(arguments)
-
-    def _radian_arguments(self, node: ast.Call) -> list[ast.expr] | None:
-        """The angle arguments of a call to a radian API, or None when the call is not one (or opted into degrees)."""
-        facts = self.facts
-        func = node.func
-        positional = positional_args(node)
-        name = last_name(func) or ""
-        if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
-            degrees = keyword(node, "degrees")
-            if degrees is not None and not (isinstance(degrees.value, ast.Constant) and degrees.value.value is False):
-                return None
-            if name == "from_euler":
-                angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
-            else:
-                angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
-            return [angles] if angles is not None else None
-        qualified = facts.qualified_name(func) or ""
-        name = qualified.rsplit(".", 1)[-1] if qualified else name  # through `import ... as`
-        if qualified.startswith("transforms3d."):
-            if name.startswith("euler2"):
-                return positional[:3]
-            if name.startswith("axangle2") and len(positional) > 1:
-                return [positional[1]]
-        if qualified.startswith("pytransform3d."):
-            if name.endswith("_from_euler") and positional:
-                return [positional[0]]
-            if name.endswith("_from_angle") and len(positional) > 1:
-                return [positional[1]]
-        if qualified.startswith("spatialmath") and name in _SPATIALMATH_ANGLE_CALLS:
-            if keyword(node, "unit") is not None or any(string(value) is not None for value in positional[1:]):
-                return None
-            return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
-        if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
-            return positional[:3]
-        if _is_trig_or_conversion(facts, node):
-            return positional[:1]
-        return None
 
     def _angle_through_data(self, node: ast.expr) -> float | None:
         """`np.tan(self.fovy / 2)` where `fovy` only ever holds a literal (a default `fovy=30`): that
@@ -286,18 +260,6 @@ def _elements(node: ast.expr) -> list[ast.expr]:
     if isinstance(node, (ast.List, ast.Tuple)):
         return [found for element in node.elts for found in _elements(element)]
     return [node]
-
-
-def _is_trig_or_conversion(facts: object, node: ast.Call) -> bool:
-    """`np.sin(x)`, `math.cos(x)`, and `np.degrees(x)` / `np.rad2deg(x)` (which read radians too)."""
-    func = node.func
-    qualified = facts.qualified_name(func) or ""  # type: ignore[attr-defined]
-    module, _, name = qualified.rpartition(".")
-    if len(positional_args(node)) != 1:
-        return False
-    if name in TRIG_FUNCTIONS:
-        return facts.is_array_call(func, *TRIG_FUNCTIONS) or module == "math"  # type: ignore[attr-defined]
-    return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
 
 
 def _format(value: float) -> str:

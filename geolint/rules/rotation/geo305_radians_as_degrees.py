@@ -9,7 +9,7 @@ from geolint.factbase.rotations import is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.pose_parts import AllOf
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, helper_reads
 
 
 class RadiansAsDegrees(FactRule):
@@ -81,6 +81,15 @@ class RadiansAsDegrees(FactRule):
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         facts = self.facts
+        for argument, how in helper_reads(facts, node, DEGREES):
+            unit = units.unit_of(argument)
+            if unit is not None and unit.unit == RADIANS:
+                self.report(
+                    argument,
+                    f"{how}, which reads degrees, but `{self.code_of(argument)}` is in radians ({unit.evidence})",
+                    evidence=(how, unit.evidence),
+                )
+                return
         if units.converts(node) == RADIANS:
             argument = positional_args(node)[0]
             unit = units.unit_of(argument)

@@ -282,6 +282,11 @@ class QuaternionFlow:
             order = _spelled_order(elements)
             if order is not None:
                 return Order(order, f"from components spelled out at line {call.lineno}")
+        if facts.may_have_summary(call):  # a project helper whose every `return` agrees on an order
+            summary = facts.function_summary(call)
+            if summary is not None and summary.quaternion_order is not None:
+                order, evidence, batch = summary.quaternion_order
+                return Order(order, f"from `{facts.code_of(call.func)}`, which returns it {evidence}", local=False, batch=batch)
         return None
 
     def _order_of_row(self, node: ast.Subscript) -> Order | None:

@@ -1,0 +1,176 @@
+"""Function summaries that compose across the project's modules: a finding reaches a script through a
+helper that calls another helper two modules away, recursion and import cycles settle to a fixpoint,
+and the findings cache re-lints a module when a module two imports away changes."""
+
+from __future__ import annotations
+
+import ast
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+from geolint.factbase import facts_for_module
+from geolint.factbase.model import FactBase
+from geolint.factbase.summaries import ImportGraph, ProjectSummaries, dependency_digest, imported_names
+from geolint.lint_types import Config
+from geolint.engine import lint_source
+
+FIXTURES = Path(__file__).resolve().parents[2] / "fixtures" / "projects"
+RUN = "lidar/scripts/run.py"
+
+
+def _check(project: Path, *extra: str) -> tuple[set[tuple[str, int, str]], str]:
+    result = subprocess.run(
+        [sys.executable, "-m", "geolint", "check", "--format", "json", "--select", "GEO1,GEO2,GEO3", *extra, "."],
+        cwd=project,
+        capture_output=True,
+        text=True,
+    )
+    assert result.returncode in (0, 1), result.stderr
+    return {(Path(f["path"]).as_posix(), f["line"], f["code"]) for f in json.loads(result.stdout)}, result.stderr
+
+
+def _copy(tmp_path: Path) -> Path:
+    project = tmp_path / "lidar_chain"
+    shutil.copytree(FIXTURES / "lidar_chain", project)
+    return project
+
+
+def test_a_correct_helper_two_modules_away_keeps_the_script_silent(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    before, _ = _check(project, "--no-cache")
+    assert (RUN, 13, "GEO101") in before  # cloud_to_world -> move (alias) -> apply_pose: R x + t
+    assert (RUN, 15, "GEO302") in before  # yaw_rotation -> rot_z (relative import) -> np.cos
+    transforms = project / "lidar" / "geom" / "transforms.py"
+    text = transforms.read_text()
+    text = text.replace("return points @ rotation.T + translation", "return points @ rotation.T")
+    text = text.replace("c, s = np.cos(theta), np.sin(theta)", "c, s = np.cos(np.deg2rad(theta)), np.sin(np.deg2rad(theta))")
+    transforms.write_text(text)
+    after, _ = _check(project, "--no-cache")
+    assert (RUN, 13, "GEO101") not in after
+    assert (RUN, 15, "GEO302") not in after
+    assert (RUN, 14, "GEO101") in after  # the other chains still speak
+
+
+def test_the_cache_relints_a_script_when_a_module_two_imports_away_changes(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, _ = _check(project)
+    assert (RUN, 13, "GEO101") in first
+    again, _ = _check(project)
+    assert again == first
+    transforms = project / "lidar" / "geom" / "transforms.py"  # run.py -> utils/points.py -> geom/transforms.py
+    transforms.write_text(transforms.read_text().replace("return points @ rotation.T + translation", "return points @ rotation.T"))
+    after, _ = _check(project)
+    assert (RUN, 13, "GEO101") not in after
+    assert after == first - {(RUN, 13, "GEO101")}
+
+
+def test_the_digest_covers_modules_imported_through_other_modules(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    run = project / RUN
+
+    def digest() -> str:
+        return dependency_digest(str(run), run.read_bytes(), lambda data: str(hash(data)), ImportGraph(lambda data: str(hash(data))))
+
+    before = digest()
+    chain = project / "lidar" / "geom" / "chain.py"  # imported by run.py; imports utils/walk.py, which imports it back
+    walk = project / "lidar" / "utils" / "walk.py"
+    walk.write_text(walk.read_text() + "\n")
+    assert digest() != before
+    unrelated = project / "setup.py"
+    unrelated.write_text(unrelated.read_text() + "\n")
+    assert chain.exists() and digest() != before
+
+
+def test_from_imports_name_submodules() -> None:
+    text = "from lidar.utils import points, walk as w\nfrom . import (\n    chain,\n    tree)\nfrom .x import y  # z\n"
+    assert imported_names(text, members=True) == [
+        "lidar.utils", "lidar.utils.points", "lidar.utils.walk", ".", ".chain", ".tree", ".x", ".x.y",
+    ]
+    assert imported_names(text) == ["lidar.utils", ".", ".x"]
+
+
+def _codes(source: str) -> list[tuple[int, str]]:
+    return sorted((f.line, f.code) for f in lint_source(source, "<string>", Config()))
+
+
+def test_recursion_settles_on_what_every_return_agrees_on() -> None:
+    recursive = (
+        "def unit_normals(mesh, depth):\n"
+        "    if depth == 0:\n"
+        "        return mesh.vertex_normals\n"
+        "    return unit_normals(mesh.parent, depth - 1)\n"
+        "\n"
+        "def move(T, mesh):\n"
+        "    n = unit_normals(mesh, 3)\n"
+        "    return n @ T[:3, :3].T + T[:3, 3]\n"
+    )
+    assert _codes(recursive) == [(8, "GEO101")]
+    disagreeing = recursive.replace("return unit_normals(mesh.parent, depth - 1)", "return mesh.vertices")
+    assert _codes(disagreeing) == []  # a point on one path, a direction on the other: unknown
+
+
+def test_mutual_recursion_gives_the_same_summaries_whichever_is_asked_first() -> None:
+    source = (
+        "import numpy as np\n"
+        "def even(points, n):\n"
+        "    if n == 0:\n"
+        "        return np.hstack([points, np.ones((len(points), 1))])\n"
+        "    return odd(points, n - 1)\n"
+        "def odd(points, n):\n"
+        "    return even(points, n - 1)\n"
+    )
+    tree = ast.parse(source)
+    answers = []
+    for order in (("even", "odd"), ("odd", "even")):
+        facts = facts_for_module(tree, source, "<string>", Config())
+        project = ProjectSummaries(Config())
+        answers.append([project.summary(facts, facts.index.functions[name]) for name in order])
+    (even_first, odd_second), (odd_first, even_second) = answers
+    assert even_first == even_second and odd_first == odd_second
+    assert even_first is not None and even_first.homogenizes == {0: 1}
+    assert odd_first is not None and odd_first.homogenizes == {0: 1}
+
+
+def test_a_chain_deeper_than_the_bound_is_unknown_from_its_top() -> None:
+    depth = 20
+    lines = ["import numpy as np", "def h0(theta):", "    return np.cos(theta)"]
+    for level in range(1, depth):
+        lines += [f"def h{level}(theta):", f"    return h{level - 1}(theta)"]
+    source = "\n".join(lines) + "\n"
+    facts = facts_for_module(ast.parse(source), source, "<string>", Config())
+    top = facts.project.summary(facts, facts.index.functions[f"h{depth - 1}"])
+    assert top is not None and top.reads_unit == {}  # the stack stopped short of `np.cos`: nothing known
+    assert facts.project.computed <= depth  # and nothing was computed twice
+    bottom = facts.project.summary(facts, facts.index.functions["h3"])
+    assert bottom is not None and bottom.reads_unit[0][0] == "rad"
+    # linting asks every call on the way, bottom first, so a whole chain is known there
+    assert len(_codes(source + "def far(yaw_deg):\n    return h19(yaw_deg)\n")) == 1
+
+
+def test_a_parameter_read_under_a_condition_says_nothing() -> None:
+    source = (
+        "import numpy as np\n"
+        "def rot(angle, degrees=False):\n"
+        "    a = np.deg2rad(angle) if degrees else angle\n"
+        "    return np.cos(a)\n"
+        "def convert(angle, degrees=False):\n"
+        "    if degrees:\n"
+        "        return np.deg2rad(angle)\n"
+        "    return angle\n"
+        "def f(theta_rad):\n"
+        "    return rot(theta_rad), convert(theta_rad)\n"
+    )
+    assert _codes(source) == []
+
+
+def test_summaries_are_kept_per_lint() -> None:
+    """Each linted module gets its own summaries: a long-running process never serves one computed
+    against an older version of a module."""
+    tree = ast.parse("x = 1\n")
+    first = facts_for_module(tree, "x = 1\n", "<string>", Config())
+    second = facts_for_module(tree, "x = 1\n", "<string>", Config())
+    assert isinstance(first, FactBase) and first.project is not second.project
+    assert first.scratch().project is first.project
