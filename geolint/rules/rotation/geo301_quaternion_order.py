@@ -142,6 +142,11 @@ class QuaternionOrder(FactRule):
         Valid("import numpy as np\ndef to_xyzw(quats_wxyz):\n    return np.roll(quats_wxyz, -1, axis=1)\n"),
         Valid("import numpy as np\ndef to_xyzw(frames):\n    return np.roll(frames[:, 3:7], -1, axis=1)\n"),
         Valid("import numpy as np\ndef to_xyzw(frame):\n    return np.roll(frame[3:7], -1)\n"),  # one row: 1-D
+        Valid(
+            "from scipy.spatial.transform import Rotation as R\ndef to_wxyz(euler):\n"
+            "    quats_wxyz = R.from_euler('xyz', euler).as_quat()\n"
+            "    quats_wxyz = quats_wxyz[:, [3, 0, 1, 2]]\n    return quats_wxyz\n"
+        ),  # named for its value after the reorder on the next line
         Valid("import numpy as np\ndef to_xyzw(quat_wxyz):\n    return np.roll(quat_wxyz, -1)\n"),  # one quaternion
         Valid(
             "import pybullet as p\ndef place(body, position, yaw):\n"
@@ -279,6 +284,8 @@ class QuaternionOrder(FactRule):
         order = flow.order_of(node.value)
         if order is None or order.order.index("w") == stated.index("w"):
             return
+        if isinstance(target, ast.Name) and _rebound_from_itself(self.facts, target):
+            return  # `q_wxyz = r.as_quat()` then `q_wxyz = q_wxyz[:, [3, 0, 1, 2]]`: named for its final value
         self.report(
             node.value,
             f"`{self.code_of(target)}` says {convention(stated)}, but the value is in {convention(order.order)} order "
@@ -558,3 +565,13 @@ def _offset_in(outer: ast.AST, inner: ast.AST, index: object) -> int | None:
         return None
     line = index.source.splitlines()[outer.lineno - 1].encode()  # type: ignore[attr-defined]
     return len(line[outer.col_offset : inner.col_offset].decode(errors="replace"))  # type: ignore[attr-defined]
+
+
+def _rebound_from_itself(facts: FactBase, target: ast.Name) -> bool:
+    """Whether a later binding of the target's name is computed from the name itself."""
+    later = facts.index.scope_of(target).bindings.get(target.id, [])
+    return any(
+        isinstance(value, ast.expr) and value.lineno > target.lineno
+        and any(isinstance(node, ast.Name) and node.id == target.id for node in ast.walk(value))
+        for value in later
+    )

@@ -309,6 +309,8 @@ class QuaternionFlow:
         by_value: Order | None = None
         if bound and not self._modified(node):
             found = [self._order_of_binding(binding) for binding in bound]
+            if by_name is not None and any(item is not None and item.order != by_name.order for item in found):
+                return None  # `q_wxyz = r.as_quat()` then `q_wxyz = q_wxyz[:, [3, 0, 1, 2]]`: the name holds at the end only
             if all(item is not None for item in found):
                 orders = {item.order for item in found}  # type: ignore[union-attr]
                 if len(orders) == 1:
