@@ -28,6 +28,7 @@ from geolint.algebra import FREE, Kind
 from geolint.factbase import summaries
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.summaries import FunctionSummary
+from geolint.factbase.reaching import reaching_bindings
 from geolint.factbase.index import (
     Binding,
     child_nodes,
@@ -248,7 +249,13 @@ class FactBase:
         return self.index.code_of(node)
 
     def bindings(self, name: ast.Name) -> list[Binding] | None:
-        return self.index.lookup(name.id, self.index.scope_of(name))
+        """The bindings of `name` that can reach it: in its own scope, in order (`reaching`);
+        from an enclosing scope, all of them."""
+        scope = self.index.scope_of(name)
+        own = scope.bindings.get(name.id)
+        if own is not None:
+            return reaching_bindings(self.index, scope, name, own)
+        return self.index.lookup(name.id, scope)
 
     def qualified_name(self, node: ast.AST) -> str | None:
         """The dotted name with its first component resolved through the module's imports."""
