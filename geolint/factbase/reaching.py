@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass
-from typing import Iterator, Sequence
+from typing import Callable, Iterator, Sequence
 
 from geolint.factbase.index import Binding, LoopBinding, ModuleIndex, OpaqueBinding, ParamBinding, Scope, UnpackBinding
 
@@ -173,31 +173,37 @@ def _bound_by(statement: ast.stmt, name: str) -> Iterator[_Event]:
 
 
 def _target_events(target: ast.expr, value: ast.expr, name: str, statement: ast.stmt, end: tuple[int, int]) -> Iterator[_Event]:
-    if isinstance(target, ast.Name):
-        if target.id == name:
-            yield _Event(value, statement, end, False)
-    elif isinstance(target, (ast.Tuple, ast.List)):
-        for position, element in enumerate(target.elts):
-            if isinstance(element, ast.Name):
-                if element.id == name:
-                    yield _Event(UnpackBinding(value, position), statement, end, False)
-            elif _binds(element, name):
-                yield _Event(OpaqueBinding(), statement, end, False)
-    elif isinstance(target, ast.Starred) and _binds(target.value, name):
-        yield _Event(OpaqueBinding(), statement, end, False)
+    """`name = value`, `a, name = value`: as the index binds an assignment's targets."""
+    return _unpacked(target, name, value, lambda position: UnpackBinding(value, position), statement, end, False)
 
 
 def _loop_events(target: ast.expr, iterable: ast.expr, name: str, statement: ast.stmt, point: tuple[int, int]) -> Iterator[_Event]:
+    """`for name in iterable`, `for i, name in ...`: as the index binds a loop's targets."""
+    whole = LoopBinding(iterable)
+    return _unpacked(target, name, whole, lambda position: LoopBinding(iterable, position), statement, point, True)
+
+
+def _unpacked(
+    target: ast.expr,
+    name: str,
+    whole: Binding,
+    element: Callable[[int], Binding],
+    statement: ast.stmt,
+    point: tuple[int, int],
+    only_inside: bool,
+) -> Iterator[_Event]:
     if isinstance(target, ast.Name):
         if target.id == name:
-            yield _Event(LoopBinding(iterable), statement, point, True)
+            yield _Event(whole, statement, point, only_inside)
     elif isinstance(target, (ast.Tuple, ast.List)):
-        for position, element in enumerate(target.elts):
-            if isinstance(element, ast.Name):
-                if element.id == name:
-                    yield _Event(LoopBinding(iterable, position), statement, point, True)
-            elif _binds(element, name):
-                yield _Event(OpaqueBinding(), statement, point, True)
+        for position, item in enumerate(target.elts):
+            if isinstance(item, ast.Name):
+                if item.id == name:
+                    yield _Event(element(position), statement, point, only_inside)
+            elif _binds(item, name):
+                yield _Event(OpaqueBinding(), statement, point, only_inside)
+    elif isinstance(target, ast.Starred) and _binds(target.value, name):
+        yield _Event(OpaqueBinding(), statement, point, only_inside)
 
 
 def _binds(target: ast.expr, name: str) -> bool:
