@@ -56,8 +56,9 @@ class FunctionSummary:
     angle_unit: tuple[str, str, bool] | None = None
     # the quaternion order every `return` agrees on: (order, evidence, a stack of quaternions)
     quaternion_order: tuple[str, str, bool] | None = None
-    # parameter index -> (unit, where): parameters passed as they are to an API that reads that unit
-    reads_unit: dict[int, tuple[str, str]] = field(default_factory=dict)
+    # parameter index -> (unit, where, decided by its name alone): parameters passed as they are to an
+    # API that reads that unit, or named in it (`angle_in_degrees`)
+    reads_unit: dict[int, tuple[str, str, bool]] = field(default_factory=dict)
     # a summary still being computed, on a cycle's first pass: its `return`s constrain nothing yet
     pending: bool = False
 
@@ -110,6 +111,7 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
                     operator = product.right if operand is product.left else product.left
                     if facts.kind_of(operator) not in (Kind.POINT, Kind.VECTOR, Kind.DIRECTION):
                         summary.translates.add(params.index(operand.id))
+    _add_named_units(summary)
     return summary
 
 
@@ -148,9 +150,13 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
                         summary.translates.add(own)
                         through = callee.translates_through.get(index)
                         summary.translates_through[own] = f"`{helper}`" + (f" -> {through}" if through else "")
-            for index, (unit, where) in callee.reads_unit.items():
-                if index in passed:
-                    _add_unit_read(summary, passed[index], unit, f"`{helper}` -> {where}")
+            for index, (unit, where, by_name) in callee.reads_unit.items():
+                if index in passed and unit:
+                    if where:
+                        where = f"`{helper}` -> {where}"
+                    else:
+                        where = f"`{helper}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
+                    _add_unit_read(summary, passed[index], unit, where, by_name)
             return
     from geolint.rules.rotation.angle_units import unit_read_by
 
@@ -160,15 +166,26 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
             _add_unit_read(summary, own, unit, f"`{facts.code_of(call.func)}`")
 
 
-_CONFLICT = ("", "")
+_CONFLICT = ("", "", False)
 
 
-def _add_unit_read(summary: FunctionSummary, index: int, unit: str, where: str) -> None:
+def _add_unit_read(summary: FunctionSummary, index: int, unit: str, where: str, by_name: bool = False) -> None:
     known = summary.reads_unit.get(index)
     if known is None:
-        summary.reads_unit[index] = (unit, where)
+        summary.reads_unit[index] = (unit, where, by_name)
     elif known[0] != unit:
         summary.reads_unit[index] = _CONFLICT  # read as both units: no evidence
+
+
+def _add_named_units(summary: FunctionSummary) -> None:
+    """`def normalize(angle_in_degrees)`: a parameter named in a unit is read in it, unless its body
+    reads it in the other unit (then nothing is known)."""
+    from geolint.rules.rotation.angle_units import name_unit
+
+    for index, name in enumerate(summary.parameters):
+        unit = name_unit(name)
+        if unit is not None:
+            _add_unit_read(summary, index, unit, "", by_name=True)  # no call: the name itself
 
 
 def _returned_unit(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:

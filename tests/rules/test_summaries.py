@@ -41,30 +41,30 @@ def _copy(tmp_path: Path) -> Path:
 def test_a_correct_helper_two_modules_away_keeps_the_script_silent(tmp_path: Path) -> None:
     project = _copy(tmp_path)
     before, _ = _check(project, "--no-cache")
-    assert (RUN, 13, "GEO101") in before  # cloud_to_world -> move (alias) -> apply_pose: R x + t
-    assert (RUN, 15, "GEO302") in before  # yaw_rotation -> rot_z (relative import) -> np.cos
+    assert (RUN, 14, "GEO101") in before  # cloud_to_world -> move (alias) -> apply_pose: R x + t
+    assert (RUN, 16, "GEO302") in before  # yaw_rotation -> rot_z (relative import) -> np.cos
     transforms = project / "lidar" / "geom" / "transforms.py"
     text = transforms.read_text()
     text = text.replace("return points @ rotation.T + translation", "return points @ rotation.T")
     text = text.replace("c, s = np.cos(theta), np.sin(theta)", "c, s = np.cos(np.deg2rad(theta)), np.sin(np.deg2rad(theta))")
     transforms.write_text(text)
     after, _ = _check(project, "--no-cache")
-    assert (RUN, 13, "GEO101") not in after
-    assert (RUN, 15, "GEO302") not in after
-    assert (RUN, 14, "GEO101") in after  # the other chains still speak
+    assert (RUN, 14, "GEO101") not in after
+    assert (RUN, 16, "GEO302") not in after
+    assert (RUN, 15, "GEO101") in after  # the other chains still speak
 
 
 def test_the_cache_relints_a_script_when_a_module_two_imports_away_changes(tmp_path: Path) -> None:
     project = _copy(tmp_path)
     first, _ = _check(project)
-    assert (RUN, 13, "GEO101") in first
+    assert (RUN, 14, "GEO101") in first
     again, _ = _check(project)
     assert again == first
     transforms = project / "lidar" / "geom" / "transforms.py"  # run.py -> utils/points.py -> geom/transforms.py
     transforms.write_text(transforms.read_text().replace("return points @ rotation.T + translation", "return points @ rotation.T"))
     after, _ = _check(project)
-    assert (RUN, 13, "GEO101") not in after
-    assert after == first - {(RUN, 13, "GEO101")}
+    assert (RUN, 14, "GEO101") not in after
+    assert after == first - {(RUN, 14, "GEO101")}
 
 
 def test_the_digest_covers_modules_imported_through_other_modules(tmp_path: Path) -> None:
@@ -164,6 +164,24 @@ def test_a_parameter_read_under_a_condition_says_nothing() -> None:
         "    return rot(theta_rad), convert(theta_rad)\n"
     )
     assert _codes(source) == []
+
+
+def test_a_parameter_named_in_a_unit_is_read_in_it() -> None:
+    source = (
+        "import numpy as np\n"
+        "def normalize(angle_in_degrees):\n"
+        "    angle_in_degrees = angle_in_degrees % 360.0\n"
+        "    return angle_in_degrees - 360.0 if angle_in_degrees > 180 else angle_in_degrees\n"
+        "def wrap(a):\n"
+        "    return normalize(a)\n"
+        "def f(dx, dy, theta_rad, yaw_deg):\n"
+        "    heading = np.arctan2(dy, dx)\n"
+        "    return normalize(heading), wrap(heading), normalize(theta_rad), normalize(yaw_deg)\n"
+    )
+    # computed radians into a degrees parameter, directly and through `wrap`; a name against a name says nothing
+    assert _codes(source) == [(9, "GEO305"), (9, "GEO305")]
+    contradicted = source.replace("    angle_in_degrees = angle_in_degrees % 360.0\n", "    np.cos(angle_in_degrees)\n")
+    assert _codes(contradicted) == [(3, "GEO302")]  # the helper's own bug; its callers get no summary unit
 
 
 def test_summaries_are_kept_per_lint() -> None:

@@ -280,17 +280,23 @@ def _unconditional(facts: FactBase, node: ast.AST) -> bool:
     return True
 
 
-def helper_reads(facts: FactBase, call: ast.Call, unit: str) -> list[tuple[ast.expr, str]]:
+def helper_reads(facts: FactBase, call: ast.Call, unit: str) -> list[tuple[ast.expr, str, bool]]:
     """The arguments of a call to a project helper that passes them, unchanged and unconditionally,
-    to an API reading `unit` (directly or through further helpers), each with how it gets there."""
+    to an API reading `unit` (directly or through further helpers), or names its parameter in that
+    unit, each with how it gets there and whether only a name says so."""
     if not call.args or any(isinstance(arg, ast.Starred) for arg in call.args) or not facts.may_have_summary(call):
         return []
     summary = facts.function_summary(call)
     if summary is None or not summary.reads_unit:
         return []
     helper = facts.code_of(call.func)
-    return [
-        (call.args[index], f"`{helper}` passes its parameter `{summary.parameters[index]}` to {where}")
-        for index, (read, where) in sorted(summary.reads_unit.items())
-        if read == unit and index < len(call.args)
-    ]
+    found = []
+    for index, (read, where, by_name) in sorted(summary.reads_unit.items()):
+        if read == unit and index < len(call.args):
+            parameter = summary.parameters[index]
+            if by_name and not where:
+                how = f"`{helper}` names its parameter `{parameter}` in {_word(unit)}"
+            else:
+                how = f"`{helper}` passes its parameter `{parameter}` to {where}, which reads {_word(unit)}"
+            found.append((call.args[index], how, by_name))
+    return found

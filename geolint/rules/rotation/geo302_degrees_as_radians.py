@@ -147,12 +147,12 @@ class DegreesAsRadians(FactRule):
     def _check_helper(self, node: ast.Call, units: AngleUnits) -> None:
         """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
         where `rot_z(theta)` computes `np.cos(theta)`)."""
-        for argument, how in helper_reads(self.facts, node, RADIANS):
+        for argument, how, by_name in helper_reads(self.facts, node, RADIANS):
             unit = units.unit_of(argument)
-            if unit is not None and unit.unit == DEGREES:
+            if unit is not None and unit.unit == DEGREES and not (by_name and unit.by_name):  # a name against a name: too weak
                 self.report(
                     argument,
-                    f"{how}, which takes radians, but `{self.code_of(argument)}` is in degrees ({unit.evidence})",
+                    f"{how}, but `{self.code_of(argument)}` is in degrees ({unit.evidence})",
                     evidence=(how, unit.evidence),
                 )
                 return

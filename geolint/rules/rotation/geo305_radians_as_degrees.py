@@ -49,7 +49,8 @@ class RadiansAsDegrees(FactRule):
 
     code = "GEO305"
     name = "radians-as-degrees"
-    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True")  # type: ignore[assignment]
+    # a conversion from degrees, or (for a project helper that reads degrees) radians in plain sight
+    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler")  # type: ignore[assignment]
 
     VALID = [
         Valid("import numpy as np\ndef f(heading_deg):\n    return np.deg2rad(heading_deg)\n"),
@@ -81,12 +82,12 @@ class RadiansAsDegrees(FactRule):
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         facts = self.facts
-        for argument, how in helper_reads(facts, node, DEGREES):
+        for argument, how, by_name in helper_reads(facts, node, DEGREES):
             unit = units.unit_of(argument)
-            if unit is not None and unit.unit == RADIANS:
+            if unit is not None and unit.unit == RADIANS and not (by_name and unit.by_name):  # a name against a name: too weak
                 self.report(
                     argument,
-                    f"{how}, which reads degrees, but `{self.code_of(argument)}` is in radians ({unit.evidence})",
+                    f"{how}, but `{self.code_of(argument)}` is in radians ({unit.evidence})",
                     evidence=(how, unit.evidence),
                 )
                 return
