@@ -88,8 +88,9 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
             callee = facts.function_summary(value)
             arguments = positional_args(value)
             for index, w in (callee.homogenizes.items() if callee is not None else ()):
-                if index < len(arguments) and isinstance(arguments[index], ast.Name) and arguments[index].id in plain:
-                    summary.homogenizes.setdefault(params.index(arguments[index].id), w)
+                argument = arguments[index] if index < len(arguments) else None
+                if isinstance(argument, ast.Name) and argument.id in plain:
+                    summary.homogenizes.setdefault(params.index(argument.id), w)
     if returns:
         summary.angle_unit = _returned_unit(facts, returns)
         summary.quaternion_order = _returned_order(facts, returns)
@@ -153,17 +154,17 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
             for index, (unit, where, by_name) in callee.reads_unit.items():
                 if index in passed and unit:
                     if where:
-                        where = f"`{helper}` -> {where}"
+                        through = f"`{helper}` -> {where}"
                     else:
-                        where = f"`{helper}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
-                    _add_unit_read(summary, passed[index], unit, where, by_name)
+                        through = f"`{helper}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
+                    _add_unit_read(summary, passed[index], unit, through, by_name)
             return
     from geolint.rules.rotation.angle_units import unit_read_by
 
     for index, own in passed.items():
-        unit = unit_read_by(facts, call, arguments[index])
-        if unit is not None:
-            _add_unit_read(summary, own, unit, f"`{facts.code_of(call.func)}`")
+        read = unit_read_by(facts, call, arguments[index])
+        if read is not None:
+            _add_unit_read(summary, own, read, f"`{facts.code_of(call.func)}`")
 
 
 _CONFLICT = ("", "", False)
