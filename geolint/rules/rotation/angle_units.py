@@ -280,12 +280,16 @@ def _unconditional(facts: FactBase, node: ast.AST) -> bool:
     return True
 
 
-def helper_reads(facts: FactBase, call: ast.Call, unit: str) -> list[tuple[ast.expr, str, bool]]:
+def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:
     """The arguments of a call to a project helper that passes them, unchanged and unconditionally,
     to an API reading `unit` (directly or through further helpers), or names its parameter in that
     unit, each with how it gets there and whether only a name says so."""
     if not call.args or any(isinstance(arg, ast.Starred) for arg in call.args) or not facts.may_have_summary(call):
         return []
+    units = AngleUnits(facts) if units is None else units
+    other = RADIANS if unit == DEGREES else DEGREES
+    if not any((found := units.unit_of(arg)) is not None and found.unit == other for arg in call.args):
+        return []  # no argument in the other unit: the helper's summary cannot matter
     summary = facts.function_summary(call)
     if summary is None or not summary.reads_unit:
         return []

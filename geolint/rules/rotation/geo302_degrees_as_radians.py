@@ -147,7 +147,7 @@ class DegreesAsRadians(FactRule):
     def _check_helper(self, node: ast.Call, units: AngleUnits) -> None:
         """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
         where `rot_z(theta)` computes `np.cos(theta)`)."""
-        for argument, how, by_name in helper_reads(self.facts, node, RADIANS):
+        for argument, how, by_name in helper_reads(self.facts, node, RADIANS, units):
             unit = units.unit_of(argument)
             if unit is not None and unit.unit == DEGREES and not (by_name and unit.by_name):  # a name against a name: too weak
                 self.report(

@@ -82,7 +82,7 @@ class RadiansAsDegrees(FactRule):
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         facts = self.facts
-        for argument, how, by_name in helper_reads(facts, node, DEGREES):
+        for argument, how, by_name in helper_reads(facts, node, DEGREES, units):
             unit = units.unit_of(argument)
             if unit is not None and unit.unit == RADIANS and not (by_name and unit.by_name):  # a name against a name: too weak
                 self.report(
