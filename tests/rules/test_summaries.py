@@ -186,6 +186,22 @@ def test_a_parameter_named_in_a_unit_is_read_in_it() -> None:
     assert _codes(contradicted) == [(3, "GEO302")]  # the helper's own bug; its callers get no summary unit
 
 
+def test_a_helper_returns_its_quaternion_order() -> None:
+    source = (
+        "from scipy.spatial.transform import Rotation\n"
+        "from transforms3d.quaternions import quat2mat\n"
+        "def orientation_of(matrix):\n"
+        "    return Rotation.from_matrix(matrix).as_quat()\n"
+        "def wrapped(matrix):\n"
+        "    return orientation_of(matrix)\n"
+        "def relative(matrix):\n"
+        "    return quat2mat(wrapped(matrix))\n"
+        "def reordered(matrix):\n"
+        "    return quat2mat(wrapped(matrix)[[3, 0, 1, 2]])\n"
+    )
+    assert _codes(source) == [(8, "GEO301")]
+
+
 def test_summaries_are_kept_per_lint() -> None:
     """Each linted module gets its own summaries: a long-running process never serves one computed
     against an older version of a module."""

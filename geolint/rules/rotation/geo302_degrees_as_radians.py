@@ -31,8 +31,11 @@ class DegreesAsRadians(FactRule):
     puts in degrees passed to those APIs (and to `np.degrees` / `np.rad2deg`): a name that says
     so (`yaw_deg`, `fov_degrees`, `tiltDeg`), the result of `np.degrees` / `np.rad2deg` /
     `math.degrees` or of scipy `as_euler(..., degrees=True)`, followed through local variables,
-    `self` attributes, elements (`angles[2]`), negation, halving and sums of degrees; and a
-    parameter whose only value is a literal default above 2 pi (`fovy=30`).
+    `self` attributes, elements (`angles[2]`), negation, halving and sums of degrees; a
+    parameter whose only value is a literal default above 2 pi (`fovy=30`); and such a value
+    passed to a project helper (here or in another module, through helpers that call helpers)
+    that hands the parameter unchanged to one of those APIs, or names it in radians (`theta_rad`)
+    when the value's degrees are computed rather than only named.
 
     ## Why is this bad?
     90 radians is about 5157 degrees, i.e. 117 degrees after wrapping: a valid, silently wrong
@@ -84,9 +87,25 @@ class DegreesAsRadians(FactRule):
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("z", angle)\n'),
         Valid("import numpy as np\ndef f(h, fov_deg):\n    return h / (2 * np.tan(np.deg2rad(fov_deg) / 2))\n"),
         Valid("import numpy as np\ndef f(x):\n    return np.sin(30 * DEG) + np.cos(x * DEG2RAD)\n"),
+        Valid(  # a name against a name: too weak at a helper's call
+            "import numpy as np\ndef rot(theta_rad):\n    return theta_rad\ndef f(yaw_deg):\n    return rot(yaw_deg)\n"
+        ),
+        Valid(  # the helper converts under a condition: what it reads is not known
+            "import numpy as np\ndef rot(a, degrees=False):\n    return np.cos(np.deg2rad(a) if degrees else a)\n"
+            "def f(yaw_deg):\n    return rot(yaw_deg, degrees=True)\n"
+        ),
         Valid("import numpy as np\ndef f(yaw_deg_per_s, dt):\n    return np.cos(yaw_deg_per_s * dt)\n"),
     ]
     INVALID = [
+        Invalid(
+            "import numpy as np\n"
+            "def rot_z(theta):\n"
+            "    return np.array([[np.cos(theta), -np.sin(theta)], [np.sin(theta), np.cos(theta)]])\n"
+            "def yaw_matrix(angle):\n"
+            "    return rot_z(angle)\n"
+            "def f(yaw_deg):\n"
+            "    return yaw_matrix(yaw_deg)\n"
+        ),
         Invalid(
             "import numpy as np\n"
             "class Orbit:\n"

@@ -21,7 +21,10 @@ class RadiansAsDegrees(FactRule):
     are known from the code itself: an inverse trigonometric function (`np.arctan2`,
     `math.acos`), a previous `np.radians`, scipy's `as_euler` without `degrees=True`, `np.pi`,
     or a name that says so (`theta_rad`, `yaw_radians`), followed through local variables and
-    halving or negation.
+    halving or negation, and through project helpers whose every `return` is in radians. A value
+    in radians passed to a project helper that hands the parameter unchanged to one of those
+    conversions, or names it in degrees (`angle_in_degrees`), is flagged too (not when only names
+    say so on both sides).
 
     ## Why is this bad?
     Converting radians "to radians" divides the angle by about 57.3: a 90 degree heading becomes
@@ -63,6 +66,13 @@ class RadiansAsDegrees(FactRule):
         Valid("import numpy as np\ndef f(x):\n    theta_rad = np.degrees(x)\n    return np.radians(theta_rad)\n"),  # conflicting
     ]
     INVALID = [
+        Invalid(
+            "import numpy as np\n"
+            "def wrap_degrees(angle_deg):\n"
+            "    return (angle_deg + 180.0) % 360.0 - 180.0\n"
+            "def f(dy, dx):\n"
+            "    return wrap_degrees(np.arctan2(dy, dx))\n"
+        ),
         Invalid(
             "import numpy as np\ndef f(dy, dx):\n    return np.deg2rad(np.arctan2(dy, dx))\n",
             expected_fix="import numpy as np\ndef f(dy, dx):\n    return np.arctan2(dy, dx)\n",
