@@ -147,6 +147,11 @@ class QuaternionOrder(FactRule):
             "    quats_wxyz = R.from_euler('xyz', euler).as_quat()\n"
             "    quats_wxyz = quats_wxyz[:, [3, 0, 1, 2]]\n    return quats_wxyz\n"
         ),  # named for its value after the reorder on the next line
+        Valid(
+            "import numpy as np\nfrom scipy.spatial.transform import Rotation as sRot\ndef smooth(rotvecs, smooth_rows):\n"
+            "    q = sRot.from_rotvec(rotvecs).as_quat()[:, [1, 2, 3, 0]]\n    q = smooth_rows(q)\n"
+            "    return sRot.from_quat(q[:, [3, 0, 1, 2]]).as_rotvec()\n"
+        ),  # the function applied the inverse reorder first: the two cancel
         Valid("import numpy as np\ndef to_xyzw(quat_wxyz):\n    return np.roll(quat_wxyz, -1)\n"),  # one quaternion
         Valid(
             "import pybullet as p\ndef place(body, position, yaw):\n"
@@ -383,7 +388,8 @@ class QuaternionOrder(FactRule):
         else:
             if permuted(expected, reorder.permutation) != other:
                 return  # the reorder turns the other convention into this one: what the API wants
-            if flow.module_applies(permutation_between(permuted("wxyz", reorder.permutation), "wxyz")):
+            inverse = permutation_between(permuted("wxyz", reorder.permutation), "wxyz")
+            if flow.module_applies(inverse) or flow.scope_applies(reorder.node, inverse):
                 # the module also applies the inverse reorder somewhere: the data may carry a
                 # non-standard order that this reorder undoes (two rolls that cancel)
                 return

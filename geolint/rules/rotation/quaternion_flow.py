@@ -223,6 +223,18 @@ class QuaternionFlow:
             self._module_permutations = found
         return permutation in self._module_permutations
 
+    def scope_applies(self, node: ast.AST, permutation: tuple[int, ...]) -> bool:
+        """Whether the function (or module body) holding `node` reorders some data by `permutation`
+        (`q = q[:, :, [1, 2, 3, 0]]` before a smoothing that ignores component order)."""
+        scope = self.facts.index.scope_of(node).node
+        for candidate in self.facts.index.nodes(ast.Subscript, ast.Call):
+            if self.facts.index.scope_of(candidate).node is not scope:
+                continue
+            reorder = self.reorder_of(candidate, through_names=False)  # type: ignore[arg-type]
+            if reorder is not None and reorder.permutation == permutation:
+                return True
+        return False
+
     def _stored_in_container(self, node: ast.expr) -> bool:
         parent = self.facts.parent(node)
         if isinstance(parent, ast.Dict):
