@@ -116,9 +116,12 @@ def lint_paths(
         except OSError as error:
             results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
             continue
+        if cache is None:  # nothing to look up or store: no digest to compute
+            pending.append((source, data, ""))
+            continue
         # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
         digest = dependency_digest(str(source.path), data, content_hash, imports)
-        cached = cache.get(source.real_path(), digest, source.display) if cache else None
+        cached = cache.get(source.real_path(), digest, source.display)
         if cached is not None:
             results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
         else:

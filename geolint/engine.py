@@ -118,6 +118,7 @@ def lint_source(
     syntax_error = None
     checked = SYNTAX_ERROR in on or guards.TOO_COMPLEX in on or bool(visitors)
     if checked:
+        _reuse_shared_parse(path, source)
         # size and CPython's parser before any analysis; the nesting depth below, before any analysis
         # and before libcst's parser (measured on the fact base's walk when an AstRule runs)
         limit = guards.exceeded_limit(source, config, measure_depth=False)
@@ -145,6 +146,8 @@ def lint_source(
     findings: list[Finding] = []
     if ast_rules:
         findings += _run_ast_rules(source, path, config, ast_rules)
+    if checked and syntax_error is None:
+        _share_parse(path, source, indexed=bool(ast_rules))
     if cst_rules:
         if module is None:
             module, parse_error = _libcst_parse(source)
@@ -182,6 +185,30 @@ def _depth_limit(source: str, config: Config, analysed: bool, verdict_needed: bo
         index = module_index(cached_ast(source), source, limit)
         return guards.past_depth_limit(index.too_deep_at, limit) if index.too_deep else None
     return guards.too_deep(cached_ast(source), limit) if verdict_needed else None
+
+
+def _reuse_shared_parse(path: str, source: str) -> None:
+    """Take the tree (and index) of this very text when the process parsed it already (a project
+    module another linted module imports): the syntax check and the fact base then find them."""
+    from geolint.factbase import index as index_module, remember_index
+
+    shared = index_module.shared_parse(path, source)
+    if shared is not None:
+        tree, index = shared
+        _last_tree.value = (source, tree)
+        if index is not None:
+            remember_index(index)
+
+
+def _share_parse(path: str, source: str, indexed: bool) -> None:
+    """Leave this file's tree (and its index, when the rules built one) for the modules that import it."""
+    from geolint.factbase import index as index_module, last_index
+
+    tree = cached_ast(source)
+    index = last_index(tree) if indexed else None
+    if index is not None:
+        index.forget_derived()  # what the rules built on it is rebuilt if an importer asks
+    index_module.share_parse(path, source, tree, index)
 
 
 def _may_fire(rule: AnyRule, source: str, config: Config) -> bool:

@@ -25,12 +25,24 @@ _last_index = threading.local()
 def module_index(tree: ast.Module, source: str, depth_limit: int | None = None) -> ModuleIndex:
     """The index of `tree` (whose text is `source`), walked once for everyone who asks."""
     cached: ModuleIndex | None = getattr(_last_index, "value", None)
-    if cached is not None and cached.tree is tree and cached.source is source and not cached.too_deep:
+    # (a shared parse's index holds an equal text, read by another decoder: same tree, same text)
+    if cached is not None and cached.tree is tree and (cached.source is source or cached.source == source) and not cached.too_deep:
         if depth_limit is None or cached.depth_limit == depth_limit:  # measured against the same limit
             return cached
     index = ModuleIndex(tree, source, depth_limit)
     _last_index.value = index
     return index
+
+
+def remember_index(index: ModuleIndex) -> None:
+    """Make `index` the one `module_index` and `index_of` find for its tree (a shared parse)."""
+    _last_index.value = index
+
+
+def last_index(tree: ast.Module) -> ModuleIndex | None:
+    """The index last built, when it is `tree`'s."""
+    cached: ModuleIndex | None = getattr(_last_index, "value", None)
+    return cached if cached is not None and cached.tree is tree else None
 
 
 def index_of(tree: ast.Module) -> ModuleIndex:

@@ -8,8 +8,13 @@ stack), and the rules iterate the per-type node lists instead of walking the tre
 from __future__ import annotations
 
 import ast
+import os
+import threading
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Union
+
+from geolint.lint_types import Config
 
 ScopeNode = Union[ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda]
 FUNCTION_NODES = (ast.FunctionDef, ast.AsyncFunctionDef)
@@ -312,6 +317,14 @@ class ModuleIndex:
                 else:
                     self._bind_target(element, OpaqueBinding(), scope)
 
+    def forget_derived(self) -> None:
+        """Drop what queries built on the index (merged node lists, lines, local values): they are
+        rebuilt on demand, and a kept index then takes no more memory than a fresh one."""
+        self._merged = {}
+        self.__dict__.pop("_lines", None)
+        self._lines = None
+        self.local_values = None
+
     # -- queries ------------------------------------------------------------------------
     def nodes(self, *kinds: type) -> list[ast.AST]:
         """Every node of these types, in source order (a list several rules share: never change it)."""
@@ -448,3 +461,113 @@ def _matmul_operands(scope: Scope, *operands: ast.expr) -> None:
             operand = operand.value
         if isinstance(operand, ast.Name):
             scope.matmul_operands.add(operand.id)
+
+
+# --- the project modules parsed in this process ------------------------------------------------
+# A module that is both linted and imported by another linted module is parsed and indexed once per
+# process, whichever comes first: the engine leaves each linted file's tree here, and the summaries
+# of imported helpers (`index_of_file`) take it, or leave theirs for the engine. Kept least recently
+# used first, up to a total text size (a tree and its index take about 40 bytes per character).
+_SHARED_BUDGET = 1_000_000  # characters
+_DEFAULT_DEPTH_LIMIT = Config.max_nesting_depth
+_shared: OrderedDict[str, _SharedModule] = OrderedDict()
+_shared_size = 0
+_shared_lock = threading.Lock()
+
+
+class _SharedModule:
+    """One module's text and parse; `signature` (size, mtime) once the text was checked against the file."""
+
+    __slots__ = ("source", "tree", "index", "signature")
+
+    def __init__(self, source: str, tree: ast.Module | None, index: ModuleIndex | None, signature: tuple[int, int] | None) -> None:
+        self.source = source
+        self.tree = tree  # None: the text does not parse
+        self.index = index  # built on first use when the engine left only a tree
+        self.signature = signature
+
+
+def index_of_file(file: str | os.PathLike[str]) -> ModuleIndex | None:
+    """The index of the project module at `file` (its text decoded as UTF-8, bad bytes replaced), or
+    None when it cannot be read or does not parse. Shared by the whole process, and valid while the
+    file's size and mtime (or, for a tree the engine left, its very text) are unchanged."""
+    key = os.path.abspath(file)
+    try:
+        stat = os.stat(key)
+    except OSError:
+        return None
+    signature = (stat.st_size, stat.st_mtime_ns)
+    entry = _shared_entry(key)
+    if entry is None or entry.signature != signature:
+        try:
+            with open(key, "rb") as stream:
+                source = stream.read().decode("utf-8", errors="replace")
+        except OSError:
+            return None
+        if entry is not None and entry.source == source:
+            entry.signature = signature  # the engine's tree of this very text
+        else:
+            try:
+                tree: ast.Module | None = ast.parse(source)
+            except (SyntaxError, ValueError, MemoryError, RecursionError):
+                tree = None
+            entry = _SharedModule(source, tree, None, signature)
+            _share(key, entry)
+    if entry.tree is None:
+        return None
+    index = entry.index
+    if index is None or index.too_deep:
+        # walked against the default depth limit, so the engine can take it for a file it lints
+        # (past it, walked whole: the summaries read every function)
+        index = ModuleIndex(entry.tree, entry.source, _DEFAULT_DEPTH_LIMIT)
+        if index.too_deep:
+            index = ModuleIndex(entry.tree, entry.source)
+        entry.index = index
+    return index
+
+
+def shared_parse(path: str, source: str) -> tuple[ast.Module, ModuleIndex | None] | None:
+    """The tree (and index, if built) of the module at `path` when one was kept for exactly `source`."""
+    if path.startswith("<"):
+        return None
+    entry = _shared_entry(os.path.abspath(path))
+    if entry is None or entry.tree is None or entry.source != source:
+        return None
+    return entry.tree, entry.index
+
+
+def share_parse(path: str, source: str, tree: ast.Module, index: ModuleIndex | None) -> None:
+    """Keep the engine's tree of `path` (and its index, when complete) for the modules that import it."""
+    if path.startswith("<"):
+        return
+    key = os.path.abspath(path)
+    entry = _shared_entry(key)
+    if entry is not None and entry.tree is tree:
+        if entry.index is None and index is not None and not index.too_deep:
+            entry.index = index
+        return
+    complete = index if index is not None and not index.too_deep and index.tree is tree else None
+    _share(key, _SharedModule(source, tree, complete, None))
+
+
+def _shared_entry(key: str) -> _SharedModule | None:
+    with _shared_lock:
+        entry = _shared.get(key)
+        if entry is not None:
+            _shared.move_to_end(key)
+        return entry
+
+
+def _share(key: str, entry: _SharedModule) -> None:
+    global _shared_size
+    with _shared_lock:
+        old = _shared.pop(key, None)
+        if old is not None:
+            _shared_size -= len(old.source)
+        if len(entry.source) > _SHARED_BUDGET:
+            return
+        _shared[key] = entry
+        _shared_size += len(entry.source)
+        while _shared_size > _SHARED_BUDGET:
+            _, evicted = _shared.popitem(last=False)
+            _shared_size -= len(evicted.source)

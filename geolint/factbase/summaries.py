@@ -21,7 +21,6 @@ import ast
 import hashlib
 import os
 import re
-import threading
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -300,9 +299,6 @@ class ProjectSummaries:
 
 # --- the project: modules imported by qualified name ------------------------------------------
 
-_lock = threading.Lock()
-_modules: dict[tuple[str, int, int], object] = {}
-
 
 def project_root(path: str) -> Path | None:
     return _root_of_folder(_folder_of(path))
@@ -486,25 +482,8 @@ def dependency_digest(path: str, data: bytes, content_hash, graph: ImportGraph |
 
 
 def _module_index_of_file(file: Path) -> ModuleIndex | None:
-    """The parse and index of a project module, shared by every lint of the process (by path, size
-    and mtime): they depend on the file's text alone, unlike its summaries."""
-    from geolint.factbase.index import ModuleIndex
+    """The parse and index of a project module, shared by every lint of the process (and with the
+    engine, when the module is linted too): they depend on the file's text alone, unlike its summaries."""
+    from geolint.factbase.index import index_of_file
 
-    try:
-        stat = file.stat()
-    except OSError:
-        return None
-    key = (str(file), stat.st_size, stat.st_mtime_ns)
-    with _lock:
-        cached = _modules.get(key)
-    if cached is None:
-        try:
-            source = file.read_bytes().decode("utf-8", errors="replace")
-            cached = ModuleIndex(ast.parse(source), source)
-        except (SyntaxError, ValueError, MemoryError, RecursionError, OSError):
-            cached = False
-        with _lock:
-            if len(_modules) > 512:
-                _modules.clear()
-            _modules[key] = cached
-    return cached or None  # type: ignore[return-value]
+    return index_of_file(file)

@@ -1,0 +1,59 @@
+"""A project module that is both linted and imported is parsed once per process (the engine and the
+summaries of imported helpers share its tree), and the shared tree never stands in for other text:
+an unsaved editor buffer, or a file edited on disk since."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from geolint import api, engine
+from geolint.factbase.index import index_of_file
+
+FIXTURES = Path(__file__).resolve().parents[2] / "fixtures" / "projects"
+TRANSLATED = "points @ rotation.T + translation"
+
+
+@pytest.fixture
+def project(tmp_path: Path) -> Path:
+    root = tmp_path / "slam_helpers"
+    shutil.copytree(FIXTURES / "slam_helpers", root)
+    return root
+
+
+def _mapping_findings(project: Path) -> set[tuple[int, str]]:
+    mapping = project / "slam" / "mapping.py"
+    return {(finding.line, finding.code) for finding in api.lint_text(mapping.read_text(), mapping)}
+
+
+def test_the_engine_takes_the_tree_the_summaries_parsed(project: Path) -> None:
+    assert {(20, "GEO101"), (21, "GEO101")} <= _mapping_findings(project)  # reads geometry.py's summaries
+    geometry = project / "slam" / "geometry.py"
+    text = geometry.read_text()
+    api.lint_text(text, geometry)
+    assert engine.cached_ast(text) is index_of_file(geometry).tree  # not parsed a second time
+
+
+def test_the_summaries_take_the_tree_the_engine_parsed(project: Path) -> None:
+    geometry = project / "slam" / "geometry.py"
+    text = geometry.read_text()
+    api.lint_text(text, geometry)
+    assert index_of_file(geometry).tree is engine.cached_ast(text)
+    assert {(20, "GEO101"), (21, "GEO101")} <= _mapping_findings(project)
+
+
+def test_an_unsaved_buffer_never_stands_in_for_the_file(project: Path) -> None:
+    geometry = project / "slam" / "geometry.py"
+    buffer = geometry.read_text().replace(TRANSLATED, "points @ rotation.T")
+    api.lint_text(buffer, geometry)  # an editor lints its unsaved text under the file's path
+    assert (20, "GEO101") in _mapping_findings(project)  # the importer reads the file on disk
+
+
+def test_a_module_edited_on_disk_is_read_again(project: Path) -> None:
+    geometry = project / "slam" / "geometry.py"
+    api.lint_text(geometry.read_text(), geometry)
+    assert (20, "GEO101") in _mapping_findings(project)
+    geometry.write_text(geometry.read_text().replace(TRANSLATED, "points @ rotation.T"))
+    assert (20, "GEO101") not in _mapping_findings(project)
