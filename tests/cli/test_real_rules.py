@@ -27,10 +27,12 @@ def test_real_findings_follow_the_json_contract_and_fix_to_a_fixed_point(cli_rea
     codes = {f["code"] for f in findings}
     assert {"GEO302", "GEO201"} <= codes
     for finding in findings:
-        assert set(finding) - {"evidence"} == {
+        assert set(finding) - {"evidence", "frames"} == {
             "path", "line", "column", "end_line", "end_column", "code", "name", "message", "severity", "fix",
         }  # fmt: skip
         assert all(isinstance(reason, str) for reason in finding.get("evidence", []))  # optional: why
+        # optional, frame mismatches only: the frame the operation needs and the one it got
+        assert "frames" not in finding or (finding["code"].startswith("GEO2") and len(finding["frames"]) == 2)
         assert finding["path"] == "robot.py"
         assert finding["severity"] in {"error", "warning", "info", "hint"}
 
