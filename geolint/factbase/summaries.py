@@ -96,6 +96,9 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
     for node in walk_within(function):
         if isinstance(node, ast.Call) and node.args:
             _record_call(facts, node, params, plain, summary)
+        if isinstance(node, (ast.BinOp, ast.Call)):
+            _record_homogeneous_product(facts, node, plain, summary)
+        if isinstance(node, ast.Call):
             continue
         # `R @ x + t` (or row form `x @ R.T + t`) on a parameter x
         if not isinstance(node, ast.BinOp) or not isinstance(node.op, ast.Add):
@@ -113,6 +116,23 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
                         summary.translates.add(params.index(operand.id))
     _add_named_units(summary)
     return summary
+
+
+def _record_homogeneous_product(facts: FactBase, node: ast.AST, plain: set[str], summary: FunctionSummary) -> None:
+    """`T @ to_homogeneous(x).T`, `np.hstack([x, ones]) @ T.T`: a parameter given w = 1 and
+    multiplied by an operator is translated along with the rotation."""
+    from geolint.factbase.model import GEOMETRIC, transposed_value
+
+    product = facts.matmul(node)
+    if product is None:
+        return
+    for operand, operator in ((product.left, product.right), (product.right, product.left)):
+        homogeneous = facts.homogeneous(transposed_value(operand) or operand)
+        if homogeneous is None or homogeneous.w != 1 or not isinstance(homogeneous.inner, ast.Name):
+            continue
+        name = homogeneous.inner.id
+        if name in plain and facts.kind_of(homogeneous.inner) not in FREE and facts.kind_of(operator) not in GEOMETRIC:
+            summary.translates.add(summary.parameters.index(name))
 
 
 def _pending(facts: FactBase, value: ast.expr) -> bool:

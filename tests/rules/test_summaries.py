@@ -202,6 +202,23 @@ def test_a_helper_returns_its_quaternion_order() -> None:
     assert _codes(source) == [(8, "GEO301")]
 
 
+def test_a_parameter_given_w_1_and_multiplied_is_translated() -> None:
+    source = (
+        "import numpy as np\n"
+        "def transform_points(T, pts):\n"
+        "    homog = np.concatenate([pts, np.ones((len(pts), 1))], axis=1)\n"
+        "    return (homog @ T.T)[:, :3]\n"
+        "def transform_vectors(T, vecs):\n"
+        "    homog = np.concatenate([vecs, np.zeros((len(vecs), 1))], axis=1)\n"
+        "    return (homog @ T.T)[:, :3]\n"
+        "def use(T_world_cam, normals_cam, points_cam):\n"
+        "    a = transform_points(T_world_cam, normals_cam)\n"
+        "    b = transform_vectors(T_world_cam, normals_cam)\n"
+        "    return a, b, transform_points(T_world_cam, points_cam)\n"
+    )
+    assert _codes(source) == [(9, "GEO101")]
+
+
 def test_summaries_are_kept_per_lint() -> None:
     """Each linted module gets its own summaries: a long-running process never serves one computed
     against an older version of a module."""
