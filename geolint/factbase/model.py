@@ -465,6 +465,8 @@ class FactBase:
         func = call.func
         if isinstance(func, ast.Name):
             return func.id in self.index.functions or (self.cross_module and func.id in self.index.imports)
+        if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "self":
+            return func.attr in self.index.methods
         head = dotted_name(func)
         if head is None or not self.cross_module:
             return False
@@ -477,7 +479,32 @@ class FactBase:
 
     def _function_summary(self, call: ast.Call) -> FunctionSummary | None:
         found = self.called_function(call)
-        return None if found is None else self.project.summary(*found)
+        if found is not None:
+            return self.project.summary(*found)
+        method = self.own_method(call)
+        if method is None:
+            return None
+        summary = self.project.summary(self, method)
+        return None if summary is None else summaries.bound(summary)
+
+    def own_method(self, call: ast.Call) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
+        """For `self.helper(...)` inside a method: the one `helper` of the same class, when it takes
+        `self` (not a static or class method); else None."""
+        func = call.func
+        if not (isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "self"):
+            return None
+        candidates = self.index.methods.get(func.attr, [])
+        if not candidates:
+            return None
+        enclosing = self.parent(call)
+        while enclosing is not None and not isinstance(enclosing, ast.ClassDef):
+            enclosing = self.parent(enclosing)
+        if enclosing is None:
+            return None
+        own = [method for method in candidates if self.parent(method) is enclosing]
+        if len(own) != 1 or own[0].decorator_list or not (own[0].args.posonlyargs or own[0].args.args):
+            return None  # overloads, properties, static/class methods: no plain bound method
+        return own[0]
 
     def called_function(self, call: ast.Call) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
         """The project function a call runs (of this module, or of a project module it imports,

@@ -62,6 +62,25 @@ class FunctionSummary:
     pending: bool = False
 
 
+def bound(summary: FunctionSummary) -> FunctionSummary:
+    """A method's summary as its call `self.method(a, b)` sees it: `self` dropped, positions shifted."""
+
+    def shifted(mapping: dict) -> dict:  # type: ignore[type-arg]
+        return {index - 1: value for index, value in mapping.items() if index > 0}
+
+    return FunctionSummary(
+        parameters=summary.parameters[1:],
+        returns=summary.returns,
+        homogenizes=shifted(summary.homogenizes),
+        translates={index - 1 for index in summary.translates if index > 0},
+        translates_through=shifted(summary.translates_through),
+        angle_unit=summary.angle_unit,
+        quaternion_order=summary.quaternion_order,
+        reads_unit=shifted(summary.reads_unit),
+        pending=summary.pending,
+    )
+
+
 def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary:
     """The summary of a function of `facts`' module (helpers it calls answer through their summaries)."""
     from geolint.factbase.model import positional_args, transposed_value, walk_within

@@ -219,6 +219,29 @@ def test_a_parameter_given_w_1_and_multiplied_is_translated() -> None:
     assert _codes(source) == [(9, "GEO101")]
 
 
+def test_a_method_of_the_same_class_is_read_through_self() -> None:
+    source = (
+        "import numpy as np\n"
+        "class Mapper:\n"
+        "    def __init__(self, pose):\n"
+        "        self.pose = pose\n"
+        "    def to_world(self, points):\n"
+        "        return points @ self.pose[:3, :3].T + self.pose[:3, 3]\n"
+        "    def rotate(self, vectors):\n"
+        "        return vectors @ self.pose[:3, :3].T\n"
+        "    def insert(self, scan, scan_normals):\n"
+        "        return self.to_world(scan), self.to_world(scan_normals), self.rotate(scan_normals)\n"
+        "class Other:\n"
+        "    def place(self, scan_normals):\n"
+        "        return self.to_world(scan_normals)  # another class's method, maybe not this one's\n"
+        "    @staticmethod\n"
+        "    def rotate(vectors):\n"
+        "        return vectors\n"
+    )
+    found = _codes(source)
+    assert found == [(10, "GEO101")]
+
+
 def test_summaries_are_kept_per_lint() -> None:
     """Each linted module gets its own summaries: a long-running process never serves one computed
     against an older version of a module."""
