@@ -188,11 +188,11 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
                     if own not in summary.translates:
                         summary.translates.add(own)
                         through = callee.translates_through.get(index)
-                        summary.translates_through[own] = f"`{helper}`" + (f" -> {through}" if through else "")
+                        summary.translates_through[own] = _chain(f"`{helper}`", through)
             for index, (unit, where, by_name) in callee.reads_unit.items():
                 if index in passed and unit:
                     if where:
-                        through = f"`{helper}` -> {where}"
+                        through = _chain(f"`{helper}`", where)
                     else:
                         through = f"`{helper}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
                     _add_unit_read(summary, passed[index], unit, through, by_name)
@@ -206,6 +206,17 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
 
 
 _CONFLICT = ("", "", False)
+_ARROW = " -> "
+_SHOWN_HOPS = 5  # a longer chain of helpers is shown as its first hops, "...", and its end
+
+
+def _chain(helper: str, rest: str | None) -> str:
+    """`helper -> rest`, with at most `_SHOWN_HOPS` hops spelled out (chains nest one helper at a
+    time, so an unbounded text would grow with the square of the chain's length)."""
+    hops = [helper, *rest.split(_ARROW)] if rest else [helper]
+    if len(hops) > _SHOWN_HOPS:
+        hops = [*hops[: _SHOWN_HOPS - 2], "...", hops[-1]]
+    return _ARROW.join(hops)
 
 
 def _add_unit_read(summary: FunctionSummary, index: int, unit: str, where: str, by_name: bool = False) -> None:

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import FactBase, keyword, last_name, number, positional_args, string
+from geolint.factbase.model import FactBase, keyword, last_name, number, positional_args, string, walk_within
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 
 DEGREES, RADIANS = "deg", "rad"
@@ -271,13 +271,37 @@ _BRANCHES = (ast.If, ast.IfExp, ast.Try, getattr(ast, "TryStar", ast.Try), ast.W
 
 
 def _unconditional(facts: FactBase, node: ast.AST) -> bool:
-    """No branch between `node` and its function: it runs whenever the function does."""
+    """No branch between `node` and its function, and no earlier statement of the function that may
+    return early (`if degrees: return ...`): it runs whenever the function does."""
     current = facts.parent(node)
+    statement = node
     while current is not None and not isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Module)):
         if isinstance(current, _BRANCHES):
             return False
+        statement = current
         current = facts.parent(current)
-    return True
+    if not isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        return True
+    key = ("early-exit", id(current), "")
+    first_exit = facts._memo.get(key)
+    if first_exit is None:
+        first_exit = facts._memo[key] = _first_early_exit(current)
+    return getattr(statement, "lineno", 0) <= first_exit  # type: ignore[operator]
+
+
+_DEFINITIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+
+
+def _first_early_exit(function: ast.FunctionDef | ast.AsyncFunctionDef) -> int:
+    """The last line of the first statement of the function's body that holds a `return` or `raise`
+    under a branch (statements after it may not run); past the end when there is none."""
+    for statement in function.body:
+        if isinstance(statement, (ast.Return, ast.Raise, ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign, *_DEFINITIONS)):
+            continue  # straight-line statements (a top-level `return` ends the function for every path alike)
+        for inner in walk_within(statement):
+            if isinstance(inner, (ast.Return, ast.Raise)):
+                return statement.end_lineno or statement.lineno
+    return 1 << 30
 
 
 def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:
