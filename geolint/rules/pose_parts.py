@@ -928,9 +928,15 @@ class AllOf:
 
     def __init__(self, *patterns: str | TextTest) -> None:
         self.patterns = tuple(_text_test(pattern) for pattern in patterns)
+        self._last: tuple[str, bool] | None = None  # rules sharing a trigger ask about the same text in a row
 
     def search(self, source: str, /) -> bool:
-        return all(pattern.search(source) for pattern in self.patterns)
+        last = self._last
+        if last is not None and last[0] is source:
+            return last[1]
+        found = all(pattern.search(source) for pattern in self.patterns)
+        self._last = (source, found)
+        return found
 
     def search_with(self, source: str, config: object, /) -> bool:
         """The engine's prefilter entry point (no configuration read). Text that does not parse
@@ -959,10 +965,46 @@ class _AnyAlternative:
         self.pattern = pattern
         alternatives = _top_level_alternatives(pattern)
         self.words = tuple(part for part in alternatives if part and re.escape(part) == part)
-        self.regexes = tuple(re.compile(part) for part in alternatives if not (part and re.escape(part) == part))
+        self.regexes = tuple(_regex_test(part) for part in alternatives if not (part and re.escape(part) == part))
 
     def search(self, source: str, /) -> bool:
         return any(word in source for word in self.words) or any(regex.search(source) for regex in self.regexes)
+
+
+def _regex_test(pattern: str) -> re.Pattern[str] | _LeftContext:
+    r"""The regex, or for one led by `\b` or `\w\s*` the rest of it with that lead checked in Python:
+    the regex engine scans quickly for the rest's first characters (`inv(`, `[`), and not at all for
+    a lead that can start anywhere."""
+    for lead, check in ((r"\b", _at_word_boundary), (r"\w\s*", _after_word_and_spaces)):
+        rest = pattern[len(lead) :]
+        if pattern.startswith(lead) and rest and rest[0] not in "*+?{|" and not rest.startswith(r"\s"):
+            return _LeftContext(re.compile(rest), check)
+    return re.compile(pattern)
+
+
+class _LeftContext:
+    """`lead + rest` searched as `rest`, each match kept when `accept(source, start)` holds for its lead."""
+
+    def __init__(self, rest: re.Pattern[str], accept) -> None:  # type: ignore[no-untyped-def]
+        self.rest = rest
+        self.accept = accept
+
+    def search(self, source: str) -> bool:
+        return _any_at(self.rest, source, lambda text, match: self.accept(text, match.start()))
+
+
+def _at_word_boundary(source: str, at: int) -> bool:
+    r"""`\b` at `at`: a word character on exactly one side."""
+    before = at > 0 and _is_word_character(source[at - 1])
+    return before != (at < len(source) and _is_word_character(source[at]))
+
+
+def _after_word_and_spaces(source: str, at: int) -> bool:
+    r"""`\w\s*` ends at `at`: past any whitespace before it, a word character."""
+    at -= 1
+    while at >= 0 and source[at].isspace():
+        at -= 1
+    return at >= 0 and _is_word_character(source[at])
 
 
 def _text_test(pattern: str | TextTest) -> TextTest:

@@ -76,7 +76,7 @@ class MisplacedTranslation(AstRule):
     name = "misplaced-translation"
     triggers = AllOf(
         r"\[[^\]\n]*(?:\b3|:\s*3)\s*,\s*(?::\s*3|0\s*:\s*3|[012])\s*\]\s*[-+*/]?="
-        r"|(?:translate|translation_matrix|set_translation|from_translation)\("
+        r"|translate\(|translation_matrix\(|set_translation\(|from_translation\("  # each led by its own word
     )
 
     VALID = [
