@@ -8,6 +8,7 @@ stack), and the rules iterate the per-type node lists instead of walking the tre
 from __future__ import annotations
 
 import ast
+import operator
 import os
 import threading
 from collections import OrderedDict
@@ -333,7 +334,8 @@ class ModuleIndex:
         found = self._merged.get(kinds)
         if found is None:
             found = [node for kind in kinds for node in self.by_type.get(kind, [])]
-            found.sort(key=_position)
+            positioned = all("lineno" in kind._attributes for kind in kinds)  # then in C, not `_position`
+            found.sort(key=_LINE_AND_COLUMN if positioned else _position)
             self._merged[kinds] = found
         return found
 
@@ -449,6 +451,9 @@ def _runs_in_inner_scope(node: ast.AST, child: ast.AST) -> bool:
     if isinstance(node, ast.ClassDef):
         return not any(child is other for other in (*node.bases, *node.keywords, *node.decorator_list))
     return True
+
+
+_LINE_AND_COLUMN = operator.attrgetter("lineno", "col_offset")
 
 
 def _position(node: ast.AST) -> tuple[int, int]:
