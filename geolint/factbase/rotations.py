@@ -47,6 +47,8 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
         return SCALAR_FIRST
     if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
         return SCALAR_FIRST
+    if is_numpy_quaternion_constructor(facts, qualified):
+        return SCALAR_FIRST
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and "quaternion" in name:
         return SCALAR_LAST
     if qualified.startswith("geometry_msgs.") and name == "Quaternion":
@@ -73,13 +75,37 @@ def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         if given is not None and not positional:
             return given.value
         return positional[0] if len(positional) == 1 and not call.keywords else None
-    if qualified.startswith("geometry_msgs."):
-        return None  # a message takes its components one by one
+    if qualified.startswith("geometry_msgs.") or is_numpy_quaternion_constructor(facts, qualified):
+        return None  # takes its components one by one
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name not in _TF_QUATERNION_INPUTS:
         return None  # quaternion_from_euler & co take angles or matrices
     if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
         return positional[0] if len(positional) == 1 and not call.keywords else None
     return positional[0] if positional else None
+
+
+def is_numpy_quaternion_constructor(facts: FactBase, qualified: str) -> bool:
+    """numpy-quaternion's `np.quaternion(w, x, y, z)` / `quaternion.quaternion(...)`: numpy has the
+    type only once the module imports `quaternion`, and a bare `quaternion` must be that import."""
+    imported = facts.index.imports.values()
+    if qualified == "quaternion.quaternion":
+        return "quaternion" in imported or "quaternion.quaternion" in imported
+    return qualified == "numpy.quaternion" and "quaternion" in imported
+
+
+def spread_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
+    """`Quaternion(*q)`: the one starred argument spread into an API that takes the four
+    components one by one (pyquaternion, numpy-quaternion, ROS messages), or None."""
+    if len(call.args) != 1 or not isinstance(call.args[0], ast.Starred) or call.keywords:
+        return None
+    qualified = facts.qualified_name(call.func) or ""
+    if (
+        qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion")
+        or (qualified.startswith("geometry_msgs.") and qualified.endswith(".Quaternion"))
+        or is_numpy_quaternion_constructor(facts, qualified)
+    ):
+        return call.args[0].value
+    return None
 
 
 def pybullet_orientation_arguments(call: ast.Call) -> list[ast.expr]:

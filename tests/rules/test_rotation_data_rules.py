@@ -86,3 +86,23 @@ def test_a_record_filled_elsewhere_stays_silent(tmp_path: Path) -> None:
         "    return [{'x': l.quaternion[0], 'y': l.quaternion[1], 'z': l.quaternion[2], 'w': l.quaternion[3]} for l in labels]\n"
     )
     assert check(["writer.py"], cwd=tmp_path) == []
+
+
+def test_a_quaternion_spread_into_a_component_constructor(tmp_path: Path) -> None:
+    """`np.quaternion(*q)` / `Quaternion(*q)` spread four values into (w, x, y, z) parameters: scipy's
+    x, y, z, w is flagged there, a w-first spread and an unrelated `np.quaternion` are not."""
+    (tmp_path / "spread.py").write_text(
+        "import numpy as np\nimport quaternion\nfrom pyquaternion import Quaternion\n"
+        "from scipy.spatial.transform import Rotation\n"
+        "def numpy_quaternion(M):\n    return quaternion.quaternion(*Rotation.from_matrix(M).as_quat())\n"
+        "def pyquaternion(M):\n    return Quaternion(*Rotation.from_matrix(M).as_quat())\n"
+        "def w_first(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat(scalar_first=True))\n"
+        "def listed(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat(), 1.0)\n"
+    )
+    (tmp_path / "other.py").write_text(
+        "import numpy as np\nfrom scipy.spatial.transform import Rotation\n"
+        "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
+    )
+    findings = check(["spread.py", "other.py"], cwd=tmp_path)
+    assert sorted((f["path"], f["line"]) for f in findings) == [("spread.py", 6), ("spread.py", 8)], findings
+    assert all("expects scalar-first (w, x, y, z)" in f["message"] for f in findings)

@@ -14,6 +14,7 @@ from geolint.factbase.rotations import (
     pybullet_orientation_arguments,
     quaternion_argument,
     quaternion_order,
+    spread_argument,
 )
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
@@ -60,7 +61,8 @@ class QuaternionOrder(FactRule):
     pytransform3d `*_from_quaternion`, pyquaternion `Quaternion` and spatialmath
     `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` and ROS 1 `geometry_msgs.msg.Quaternion`
     (x, y, z, w); also trimesh's
-    `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array`, Open3D
+    `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array` and `np.quaternion` (a
+    4-vector spread with `*` into a constructor that takes components counts too), Open3D
     `get_rotation_matrix_from_quaternion` (w, x, y, z), roma `unitquat_*` (x, y, z, w) and pybullet
     (`get*FromQuaternion`, and the orientation arguments of `resetBasePositionAndOrientation`,
     `loadURDF`, `multiplyTransforms`, `invertTransform`, `calculateInverseKinematics`). Through
@@ -243,6 +245,18 @@ class QuaternionOrder(FactRule):
             "    return o3d.geometry.get_rotation_matrix_from_quaternion(quat)\n"
         ),
         Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
+        Invalid(  # numpy-quaternion's constructor takes w first; scipy's as_quat() spreads x, y, z, w into it
+            "import numpy as np\nimport quaternion\nfrom scipy.spatial.transform import Rotation\n"
+            "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
+        ),
+        Valid(
+            "import numpy as np\nimport quaternion\nfrom scipy.spatial.transform import Rotation\n"
+            "def f(M):\n    x, y, z, w = Rotation.from_matrix(M).as_quat()\n    return np.quaternion(w, x, y, z)\n"
+        ),
+        Valid(  # without `import quaternion`, `np.quaternion` is not numpy-quaternion's type
+            "import numpy as np\nfrom scipy.spatial.transform import Rotation\n"
+            "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
+        ),
         Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
             expected_fix="from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.x, o.y, o.z, o.w)\n",
@@ -334,7 +348,7 @@ class QuaternionOrder(FactRule):
                     if order != expected and _is_other_convention(order, expected):
                         self._report(positional[0], node, elements, order, expected)
                     return
-        argument = quaternion_argument(facts, node)
+        argument = quaternion_argument(facts, node) or spread_argument(facts, node)
         if argument is not None:
             self._check_value(node, argument, expected, flow)
 
