@@ -121,7 +121,7 @@ _FRAME_WORDS = "|".join(sorted(names.KNOWN_FRAMES | {"c", "w", "cam"}))
 GATE = re.compile(
     r"[\w)\]]\s*@=?\s*[\w(\[-]|\.dot\(|matmul|\.m?T\b|\b[TRXH]_[A-Za-z0-9]|_[TRXH]_|"
     rf"\b(?:{_FRAME_WORDS})[0-9]*(?:2|_to_|_from_|_in_)(?:{_FRAME_WORDS})|\b[pv]_(?:{_FRAME_WORDS})\b|"
-    r"_h\b|_hom|homog|\b(?:sin|cos|tan)\(|euler2|axangle2|_from_angle\(|"
+    r"_h\b|_hom|homog|\b(?:sin|cos|tan)\(|euler2|axangle2|_from_angle\(|QuaternionFromEuler\(|"
     r"(?:\b|_)(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_|s\b)",
 )
 
@@ -200,6 +200,7 @@ def gate_matches(source: str) -> bool:
         or "euler2" in source
         or "axangle2" in source
         or "_from_angle(" in source
+        or "QuaternionFromEuler(" in source  # pybullet's getQuaternionFromEuler (radians)
     )
 
 

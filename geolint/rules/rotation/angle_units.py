@@ -223,6 +223,9 @@ def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
         return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
         return positional[:3]
+    if name == "getQuaternionFromEuler" and (qualified.startswith("pybullet") or isinstance(func, ast.Attribute)):
+        # pybullet, on the module or on a BulletClient: one (roll, pitch, yaw) sequence in radians
+        return positional[:1] or [given.value for given in node.keywords if given.arg == "eulerAngles"]
     if is_trig_or_conversion(facts, node):
         return positional[:1]
     return None

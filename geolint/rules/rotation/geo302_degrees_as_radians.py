@@ -26,8 +26,8 @@ class DegreesAsRadians(FactRule):
     Flags literal angles larger than 2 pi passed where radians are expected: scipy
     `Rotation.from_euler` / `from_rotvec` without `degrees=True`, transforms3d `euler2*` and
     `axangle2*`, pytransform3d `*_from_euler` / `*_from_angle`, spatialmath `SE3.Rx` and friends
-    without `unit="deg"`, ROS `quaternion_from_euler`, and `np.sin`/`math.cos` of a whole
-    multiple of 15 degrees (`np.cos(90)`). Through data it also flags a value the code itself
+    without `unit="deg"`, ROS `quaternion_from_euler`, pybullet `getQuaternionFromEuler`, and
+    `np.sin`/`math.cos` of a whole multiple of 15 degrees (`np.cos(90)`). Through data it also flags a value the code itself
     puts in degrees passed to those APIs (and to `np.degrees` / `np.rad2deg`): a name that says
     so (`yaw_deg`, `fov_degrees`, `tiltDeg`), the result of `np.degrees` / `np.rad2deg` /
     `math.degrees` or of scipy `as_euler(..., degrees=True)`, followed through local variables,
@@ -87,6 +87,7 @@ class DegreesAsRadians(FactRule):
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("z", angle)\n'),
         Valid("import numpy as np\ndef f(h, fov_deg):\n    return h / (2 * np.tan(np.deg2rad(fov_deg) / 2))\n"),
         Valid("import numpy as np\ndef f(x):\n    return np.sin(30 * DEG) + np.cos(x * DEG2RAD)\n"),
+        Valid("import numpy as np\nimport pybullet as p\nplate_orientation = p.getQuaternionFromEuler([np.pi / 2, 0, 0])\n"),
         Valid(  # a name against a name: too weak at a helper's call
             "import numpy as np\ndef rot(theta_rad):\n    return theta_rad\ndef f(yaw_deg):\n    return rot(yaw_deg)\n"
         ),
@@ -135,6 +136,7 @@ class DegreesAsRadians(FactRule):
             "    heading = np.degrees(np.arctan2(dy, dx))\n    return Rotation.from_euler('z', heading, degrees=True)\n",
         ),
         Invalid("from transforms3d.euler import euler2mat\ndef f(tilt_degrees):\n    return euler2mat(0, tilt_degrees, 0)\n"),
+        Invalid("import pybullet as p\nplate_orientation = p.getQuaternionFromEuler([90, 0, 0])\n"),
         Invalid("import numpy as np\ndef f(r):\n    angles = r.as_euler('xyz', degrees=True)\n    return np.cos(angles[2])\n"),
     ]
 
