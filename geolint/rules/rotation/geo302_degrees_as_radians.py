@@ -63,6 +63,9 @@ class DegreesAsRadians(FactRule):
     All-caps names (`DEG`, `DEG2RAD`) and a bare `deg` are read as conversion factors, not angles,
     so `np.sin(30 * DEG)` stays silent; a `*_deg` name that actually holds radians (a stale
     name) is flagged. A value mixed with radians evidence in the same argument is left alone.
+    Literal angles given to pybullet's `getQuaternionFromEuler` are judged only when every large
+    one is a whole multiple of 15 (`[90, 0, 0]`): scene constants such as `[0, 160, -80]` are
+    often tuned by eye in the simulator, so the rotation they give is the one wanted.
     """
 
     code = "GEO302"
@@ -88,6 +91,7 @@ class DegreesAsRadians(FactRule):
         Valid("import numpy as np\ndef f(h, fov_deg):\n    return h / (2 * np.tan(np.deg2rad(fov_deg) / 2))\n"),
         Valid("import numpy as np\ndef f(x):\n    return np.sin(30 * DEG) + np.cos(x * DEG2RAD)\n"),
         Valid("import numpy as np\nimport pybullet as p\nplate_orientation = p.getQuaternionFromEuler([np.pi / 2, 0, 0])\n"),
+        Valid("import pybullet as p\nHAND_BASE_ROT = p.getQuaternionFromEuler([0, 160, -80])\n"),  # tuned by eye (FP20)
         Valid(  # a name against a name: too weak at a helper's call
             "import numpy as np\ndef rot(theta_rad):\n    return theta_rad\ndef f(yaw_deg):\n    return rot(yaw_deg)\n"
         ),
@@ -149,6 +153,8 @@ class DegreesAsRadians(FactRule):
         angles = self._radian_angles(node)
         if angles is not None:
             too_big = [value for value in angles if abs(value) > _TWO_PI]
+            if too_big and last_name(node.func) == "getQuaternionFromEuler" and not all(_round_degrees(value) for value in too_big):
+                too_big = []  # pybullet scene constants tuned by eye (FP20): only round angles are a degree slip
             if too_big:
                 shown = _format(too_big[0])
                 fix = None
@@ -216,7 +222,7 @@ class DegreesAsRadians(FactRule):
             value = number(positional[0])
             if value is None:
                 value = self._angle_through_data(positional[0])
-            if value is not None and value == int(value) and int(value) % 15 == 0 and abs(value) <= 720:
+            if value is not None and _round_degrees(value) and abs(value) <= 720:
                 return [float(value)]
             return None
         arguments = radian_arguments(self.facts, node)
@@ -268,6 +274,11 @@ def _literals(node: ast.AST) -> list[float]:
     if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and node.args:
         return _literals(node.args[0])
     return []
+
+
+def _round_degrees(value: float) -> bool:
+    """90, 180, -45, 360...: a whole multiple of 15, the angles people write in degrees."""
+    return value == int(value) and int(value) % 15 == 0
 
 
 def _literals_of(nodes: list[ast.expr]) -> list[float]:
