@@ -331,3 +331,17 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
                 how = f"`{helper}` passes its parameter `{parameter}` to {where}, which reads {_word(unit)}"
             found.append((call.args[index], how, by_name))
     return found
+
+
+def wrong_unit_passed(
+    facts: FactBase, call: ast.Call, read: str, units: AngleUnits
+) -> tuple[ast.expr, str, tuple[str, str]] | None:
+    """The first argument of a call to a project helper that reads `read` (`helper_reads`) whose
+    value is in the other unit: (argument, message, evidence). A name against a name is too weak."""
+    given = RADIANS if read == DEGREES else DEGREES
+    for argument, how, by_name in helper_reads(facts, call, read, units):
+        unit = units.unit_of(argument)
+        if unit is not None and unit.unit == given and not (by_name and unit.by_name):
+            message = f"{how}, but `{facts.code_of(argument)}` is in {_word(given)} ({unit.evidence})"
+            return argument, message, (how, unit.evidence)
+    return None

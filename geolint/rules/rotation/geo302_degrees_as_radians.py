@@ -12,7 +12,7 @@ from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, helper_reads, is_trig_or_conversion, radian_arguments
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, is_trig_or_conversion, radian_arguments, wrong_unit_passed
 
 _TWO_PI = 2 * math.pi
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
@@ -174,15 +174,10 @@ class DegreesAsRadians(FactRule):
     def _check_helper(self, node: ast.Call, units: AngleUnits) -> None:
         """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
         where `rot_z(theta)` computes `np.cos(theta)`)."""
-        for argument, how, by_name in helper_reads(self.facts, node, RADIANS, units):
-            unit = units.unit_of(argument)
-            if unit is not None and unit.unit == DEGREES and not (by_name and unit.by_name):  # a name against a name: too weak
-                self.report(
-                    argument,
-                    f"{how}, but `{self.code_of(argument)}` is in degrees ({unit.evidence})",
-                    evidence=(how, unit.evidence),
-                )
-                return
+        found = wrong_unit_passed(self.facts, node, RADIANS, units)
+        if found is not None:
+            argument, message, evidence = found
+            self.report(argument, message, evidence=evidence)
 
     def _check_units(self, node: ast.Call, units: AngleUnits) -> None:
         """A value the code itself puts in degrees (`yaw_deg`, `np.degrees(...)`) passed as radians."""

@@ -9,7 +9,7 @@ from geolint.factbase.rotations import is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.pose_parts import AllOf
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, helper_reads
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, wrong_unit_passed
 
 
 class RadiansAsDegrees(FactRule):
@@ -92,15 +92,11 @@ class RadiansAsDegrees(FactRule):
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         facts = self.facts
-        for argument, how, by_name in helper_reads(facts, node, DEGREES, units):
-            unit = units.unit_of(argument)
-            if unit is not None and unit.unit == RADIANS and not (by_name and unit.by_name):  # a name against a name: too weak
-                self.report(
-                    argument,
-                    f"{how}, but `{self.code_of(argument)}` is in radians ({unit.evidence})",
-                    evidence=(how, unit.evidence),
-                )
-                return
+        found = wrong_unit_passed(facts, node, DEGREES, units)
+        if found is not None:
+            argument, message, evidence = found
+            self.report(argument, message, evidence=evidence)
+            return
         if units.converts(node) == RADIANS:
             argument = positional_args(node)[0]
             unit = units.unit_of(argument)
