@@ -104,8 +104,30 @@ class AngleUnits:
             return self.unit_of(node.value)  # `angles_deg[0]`: an element of an array of angles has its unit
         return None
 
+    def converts_by_hand(self, node: ast.BinOp) -> tuple[str, ast.expr] | None:
+        """`x * np.pi / 180`, `x / 180 * math.pi`, `x * (np.pi / 180)`, `x * 0.0174533`: (RADIANS, x);
+        `x * 180 / np.pi`, `x * 57.2958`: (DEGREES, x); None for any other product."""
+        numerator: list[ast.expr] = []
+        denominator: list[ast.expr] = []
+        _factors(node, numerator, denominator)
+        values = [factor for factor in numerator + denominator if number(factor) is None and not self._is_pi(factor)]
+        if len(values) != 1 or values[0] not in numerator:
+            return None
+        pi_above = any(self._is_pi(factor) for factor in numerator)
+        pi_below = any(self._is_pi(factor) for factor in denominator)
+        above = [abs(value) for value in map(number, numerator) if value is not None]
+        below = [abs(value) for value in map(number, denominator) if value is not None]
+        if (pi_above and below == [180] and not above) or (not pi_above and not pi_below and not below and len(above) == 1 and abs(above[0] - 0.0174533) < 1e-4):
+            return RADIANS, values[0]
+        if (pi_below and above == [180] and not below) or (not pi_above and not pi_below and not below and len(above) == 1 and abs(above[0] - 57.29578) < 1e-2):
+            return DEGREES, values[0]
+        return None
+
     def _unit_of_arithmetic(self, node: ast.BinOp) -> Unit | None:
         if isinstance(node.op, (ast.Mult, ast.Div)):
+            converted = self.converts_by_hand(node)
+            if converted is not None:
+                return Unit(converted[0], f"`{self.facts.code_of(node)}` converts to {_word(converted[0])}", False)
             # halving or scaling by a plain number keeps the unit; anything else may convert it
             if number(node.right) is not None and not _is_conversion_factor(number(node.right)):
                 return self.unit_of(node.left)
@@ -180,6 +202,15 @@ class AngleUnits:
     def _is_pi(self, node: ast.AST) -> bool:
         qualified = self.facts.qualified_name(node) or ""
         return qualified in ("numpy.pi", "math.pi", "torch.pi")
+
+
+def _factors(node: ast.expr, numerator: list[ast.expr], denominator: list[ast.expr], inverted: bool = False) -> None:
+    """The factors of a chain of `*` and `/` (`a * b / c` -> [a, b] over [c])."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.Div)):
+        _factors(node.left, numerator, denominator, inverted)
+        _factors(node.right, numerator, denominator, inverted != isinstance(node.op, ast.Div))
+        return
+    (denominator if inverted else numerator).append(node)
 
 
 def _is_conversion_factor(value: float | None) -> bool:

@@ -16,8 +16,9 @@ class RadiansAsDegrees(FactRule):
     """An angle the code already has in radians is converted from degrees again, or passed as degrees.
 
     ## What it does
-    Flags `np.deg2rad` / `np.radians` / `math.radians` / `torch.deg2rad` applied to a value that
-    is already in radians, and scipy `Rotation.from_euler(..., degrees=True)` given one. Radians
+    Flags `np.deg2rad` / `np.radians` / `math.radians` / `torch.deg2rad`, or the same conversion
+    written by hand (`x * np.pi / 180`, `x * (math.pi / 180)`, `x * 0.0174533`), applied to a
+    value that is already in radians, and scipy `Rotation.from_euler(..., degrees=True)` given one. Radians
     are known from the code itself: an inverse trigonometric function (`np.arctan2`,
     `math.acos`), a previous `np.radians`, scipy's `as_euler` without `degrees=True`, `np.pi`,
     or a name that says so (`theta_rad`, `yaw_radians`), followed through local variables and
@@ -59,6 +60,8 @@ class RadiansAsDegrees(FactRule):
         Valid("import numpy as np\ndef f(heading_deg):\n    return np.deg2rad(heading_deg)\n"),
         Valid("import numpy as np\ndef f(dy, dx):\n    return np.degrees(np.arctan2(dy, dx))\n"),
         Valid("import math\ndef f(angle):\n    return math.radians(angle)\n"),
+        Valid("import numpy as np\ndef f(yaw_deg):\n    return yaw_deg * np.pi / 180\n"),
+        Valid("import numpy as np\ndef f(dy, dx):\n    return np.arctan2(dy, dx) * 180 / np.pi\n"),  # to degrees: right
         Valid(
             "from scipy.spatial.transform import Rotation\ndef f(yaw_deg):\n"
             "    return Rotation.from_euler('z', yaw_deg, degrees=True)\n"
@@ -78,6 +81,10 @@ class RadiansAsDegrees(FactRule):
             expected_fix="import numpy as np\ndef f(dy, dx):\n    return np.arctan2(dy, dx)\n",
         ),
         Invalid("import math\ndef f(theta_rad):\n    return math.radians(theta_rad)\n"),
+        Invalid(
+            "import numpy as np\ndef f(dy, dx):\n    yaw = np.arctan2(dy, dx)\n    return yaw * np.pi / 180\n",
+            expected_fix="import numpy as np\ndef f(dy, dx):\n    yaw = np.arctan2(dy, dx)\n    return yaw\n",
+        ),
         Invalid("import numpy as np\ndef f(c):\n    half = np.arccos(c) / 2\n    return np.radians(half)\n"),
         Invalid(
             "import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef f(dy, dx):\n"
@@ -89,6 +96,29 @@ class RadiansAsDegrees(FactRule):
         units = AngleUnits(self.facts)
         for node in self.facts.index.nodes(ast.Call):
             self._check(node, units)  # type: ignore[arg-type]
+        for node in self.facts.index.nodes(ast.BinOp):
+            self._check_by_hand(node, units)  # type: ignore[arg-type]
+
+    def _check_by_hand(self, node: ast.BinOp, units: AngleUnits) -> None:
+        """`yaw * np.pi / 180` on a `yaw` already in radians: the hand-written twin of `np.radians`."""
+        if not isinstance(node.op, (ast.Mult, ast.Div)):
+            return
+        converted = units.converts_by_hand(node)
+        if converted is None or converted[0] != RADIANS:
+            return
+        argument = converted[1]
+        unit = units.unit_of(argument)
+        if unit is None or unit.unit != RADIANS:
+            return
+        self.report(
+            node,
+            f"`{self.code_of(node)}` converts degrees to radians, but `{self.code_of(argument)}` is already in "
+            f"radians ({unit.evidence})",
+            replacement=self.facts.index.segment(argument) or None,
+            applicability="unsafe",
+            fix_description="drop the conversion",
+            evidence=(unit.evidence,),
+        )
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         facts = self.facts
