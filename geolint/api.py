@@ -22,7 +22,7 @@ from geolint import config as config_module
 from geolint import engine
 from geolint.cache import FindingsCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
-from geolint.factbase.summaries import ImportGraph, dependency_digest
+from geolint.factbase.summaries import ImportGraph, dependency_digest, folder_listings
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 
@@ -110,22 +110,23 @@ def lint_paths(
     total = len(sources)
     imports = ImportGraph(content_hash)  # each imported module is read, hashed and scanned once
 
-    for source in sources:
-        try:
-            data = source.path.read_bytes()
-        except OSError as error:
-            results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
-            continue
-        if cache is None:  # nothing to look up or store: no digest to compute
-            pending.append((source, data, ""))
-            continue
-        # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
-        digest = dependency_digest(str(source.path), data, content_hash, imports)
-        cached = cache.get(source.real_path(), digest, source.display)
-        if cached is not None:
-            results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
-        else:
-            pending.append((source, data, digest))
+    with folder_listings():  # the imports of every file resolved against one listing per folder
+        for source in sources:
+            try:
+                data = source.path.read_bytes()
+            except OSError as error:
+                results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
+                continue
+            if cache is None:  # nothing to look up or store: no digest to compute
+                pending.append((source, data, ""))
+                continue
+            # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
+            digest = dependency_digest(str(source.path), data, content_hash, imports)
+            cached = cache.get(source.real_path(), digest, source.display)
+            if cached is not None:
+                results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
+            else:
+                pending.append((source, data, digest))
     if progress:
         progress(len(results), total)
 

@@ -21,10 +21,11 @@ import ast
 import hashlib
 import os
 import re
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Iterator
 
 from geolint.algebra import FREE, Kind
 
@@ -372,31 +373,87 @@ def _folder_of(path: str) -> Path:
     return Path(os.path.dirname(os.path.abspath(path)))
 
 
-@lru_cache(maxsize=16384)
+@lru_cache(maxsize=65536)
 def _module_file_from(module: str, here: Path, level: int) -> Path | None:
-    parts = [part for part in module.split(".") if part]
+    parts = tuple(part for part in module.split(".") if part)
+    if not parts:
+        return None
+    for base in _search_folders(here, level):
+        found = _module_in(base, parts)
+        if found is not None:
+            return _one_path(found)
+    return None
+
+
+@lru_cache(maxsize=4096)
+def _search_folders(here: Path, level: int) -> tuple[str, ...]:
+    """Where a module name imported from folder `here` may live (relative: `level` folders up)."""
     if level:
         base = here
         for _ in range(level - 1):
             base = base.parent
-        candidates = [base]
-    else:
-        root = _root_of_folder(here)
-        if root is None:
-            return None
-        candidates = []
-        folder = here
-        while True:  # src layouts and scripts next to their package: any folder up to the root
-            candidates.append(folder)
-            if folder == root or folder.parent == folder:
-                break
-            folder = folder.parent
-    for base in candidates:
-        target = base.joinpath(*parts)
-        for file in (target.with_suffix(".py"), target / "__init__.py"):
-            if parts and file.is_file():
-                return file
+        return (str(base),)
+    root = _root_of_folder(here)
+    if root is None:
+        return ()
+    candidates = []
+    folder = here
+    while True:  # src layouts and scripts next to their package: any folder up to the root
+        candidates.append(str(folder))
+        if folder == root or folder.parent == folder:
+            break
+        folder = folder.parent
+    return tuple(candidates)
+
+
+@lru_cache(maxsize=65536)
+def _one_path(file: str) -> Path:
+    """One `Path` object per module file: the import graph's sets and dicts then find it by identity."""
+    return Path(file)
+
+
+@lru_cache(maxsize=65536)
+def _module_in(base: str, parts: tuple[str, ...]) -> str | None:
+    """`base/a/b.py` or `base/a/b/__init__.py` for module `a.b`, when it is a file: asked once per folder
+    (the modules of sibling folders share the folders above them)."""
+    if not _may_hold(base, parts[0]) and not (len(parts) == 1 and _may_hold(base, parts[0] + ".py")):
+        return None
+    target = os.path.join(base, *parts)
+    for file in (target + ".py", os.path.join(target, "__init__.py")):
+        if os.path.isfile(file):
+            return file
     return None
+
+
+# folder -> its entries' names, casefolded, while `folder_listings` is active (one listing per folder
+# instead of a stat per module name per folder: `import numpy` is looked for in every folder up to the root)
+_listings: dict[str, frozenset[str]] | None = None
+
+
+@contextmanager
+def folder_listings() -> Iterator[None]:
+    """Within this block, a folder's listing says which module names it cannot hold (for a run that
+    resolves the imports of many files at one moment; the files found are still checked one by one)."""
+    global _listings
+    _listings = {}
+    try:
+        yield
+    finally:
+        _listings = None
+
+
+def _may_hold(folder: str, name: str) -> bool:
+    listings = _listings
+    if listings is None:
+        return True
+    names = listings.get(folder)
+    if names is None:
+        try:
+            names = frozenset(entry.casefold() for entry in os.listdir(folder))
+        except OSError:
+            names = frozenset()
+        listings[folder] = names
+    return name.casefold() in names  # casefolded: a case-insensitive file system finds `Geometry.py` too
 
 
 def imported_files(path: str, source: str) -> list[Path]:

@@ -66,3 +66,25 @@ def test_jobs_2_gives_the_same_output_as_jobs_1(cli):
     assert parallel.stdout == serial.stdout
     paths = [f["path"] for f in json.loads(serial.stdout)]
     assert paths == sorted(paths) and len(set(paths)) == 25
+
+
+def test_an_imported_module_created_after_a_run_relints_its_importer(cli_real):
+    """The first run finds no `slam/geometry.py` (its folder listing says so); once the module exists,
+    the importer's digest changes and the next run reads the helper's summary."""
+    cli_real.write("setup.py", "")
+    cli_real.write("slam/__init__.py", "")
+    cli_real.write(
+        "slam/mapping.py",
+        "from slam.geometry import apply_pose\n\n\ndef move(pose, mesh):\n"
+        "    normals = mesh.vertex_normals\n    return apply_pose(pose, normals)\n",
+    )
+    first = cli_real("check", "--verbose", "--format", "json")
+    assert counts(first.stderr) == (0, 3) and json.loads(first.stdout) == []
+    cli_real.write(
+        "slam/geometry.py",
+        "def apply_pose(pose, points):\n    rotation, translation = pose[:3, :3], pose[:3, 3]\n"
+        "    return points @ rotation.T + translation\n",
+    )
+    second = cli_real("check", "--verbose", "--format", "json")
+    assert counts(second.stderr) == (2, 2)  # setup.py and __init__.py unchanged; mapping.py and the new module linted
+    assert [(f["path"], f["code"]) for f in json.loads(second.stdout)] == [("slam/mapping.py", "GEO101")]
