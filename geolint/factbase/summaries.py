@@ -242,23 +242,22 @@ def _add_named_units(summary: FunctionSummary) -> None:
 def _returned_unit(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
     from geolint.rules.rotation.angle_units import AngleUnits
 
-    units = AngleUnits(facts)
-    found = [units.unit_of(value) for value in returns]
-    if any(unit is None for unit in found) or len({unit.unit for unit in found}) != 1:  # type: ignore[union-attr]
-        return None
-    first = found[0]
-    return first.unit, first.evidence, any(unit.by_name for unit in found)  # type: ignore[union-attr]
+    found = _agreed([AngleUnits(facts).unit_of(value) for value in returns], "unit")
+    return None if found is None else (found[0].unit, found[0].evidence, any(unit.by_name for unit in found))
 
 
 def _returned_order(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
     from geolint.rules.rotation.quaternion_flow import QuaternionFlow
 
-    flow = QuaternionFlow(facts)
-    found = [flow.order_of(value) for value in returns]
-    if any(order is None for order in found) or len({order.order for order in found}) != 1:  # type: ignore[union-attr]
+    found = _agreed([QuaternionFlow(facts).order_of(value) for value in returns], "order")
+    return None if found is None else (found[0].order, found[0].evidence, all(order.batch for order in found))
+
+
+def _agreed(found: list, field: str) -> list | None:  # type: ignore[type-arg]
+    """`found` when every `return` has a fact and all agree on `field`, else None."""
+    if not found or any(fact is None for fact in found) or len({getattr(fact, field) for fact in found}) != 1:
         return None
-    first = found[0]
-    return first.order, first.evidence, all(order.batch for order in found)  # type: ignore[union-attr]
+    return found
 
 
 # --- composition: summaries of one linted module's helpers, to a fixpoint ------------------------

@@ -106,13 +106,16 @@ class RadiansAsDegrees(FactRule):
         converted = units.converts_by_hand(node)
         if converted is None or converted[0] != RADIANS:
             return
-        argument = converted[1]
+        self._report_conversion_of_radians(node, self.code_of(node), converted[1], units)
+
+    def _report_conversion_of_radians(self, node: ast.expr, conversion: str, argument: ast.expr, units: AngleUnits) -> None:
+        """`conversion` (degrees to radians) applied to `argument`: flagged when it is already in radians."""
         unit = units.unit_of(argument)
         if unit is None or unit.unit != RADIANS:
             return
         self.report(
             node,
-            f"`{self.code_of(node)}` converts degrees to radians, but `{self.code_of(argument)}` is already in "
+            f"`{conversion}` converts degrees to radians, but `{self.code_of(argument)}` is already in "
             f"radians ({unit.evidence})",
             replacement=self.facts.index.segment(argument) or None,
             applicability="unsafe",
@@ -128,19 +131,7 @@ class RadiansAsDegrees(FactRule):
             self.report(argument, message, evidence=evidence)
             return
         if units.converts(node) == RADIANS:
-            argument = positional_args(node)[0]
-            unit = units.unit_of(argument)
-            if unit is None or unit.unit != RADIANS:
-                return
-            self.report(
-                node,
-                f"`{self.code_of(node.func)}` converts degrees to radians, but `{self.code_of(argument)}` is already in "
-                f"radians ({unit.evidence})",
-                replacement=facts.index.segment(argument) or None,
-                applicability="unsafe",
-                fix_description="drop the conversion",
-                evidence=(unit.evidence,),
-            )
+            self._report_conversion_of_radians(node, self.code_of(node.func), positional_args(node)[0], units)
             return
         if not is_scipy_rotation_method(facts, node.func, "from_euler"):
             return
