@@ -106,3 +106,40 @@ def test_a_quaternion_spread_into_a_component_constructor(tmp_path: Path) -> Non
     findings = check(["spread.py", "other.py"], cwd=tmp_path)
     assert sorted((f["path"], f["line"]) for f in findings) == [("spread.py", 6), ("spread.py", 8)], findings
     assert all("expects scalar-first (w, x, y, z)" in f["message"] for f in findings)
+
+
+def test_px4_messages_are_known_only_from_their_class(tmp_path: Path) -> None:
+    """px4_msgs quaternions are (w, x, y, z): flagged when the class is known (subscription callback,
+    `self` attribute stored from it, constructor), silent when it is not imported, when the callback
+    is also called directly, when it is registered through a lambda, or when another store is unknown."""
+    (tmp_path / "known.py").write_text(
+        "from px4_msgs.msg import VehicleAttitude, VehicleOdometry\nfrom scipy.spatial.transform import Rotation\n"
+        "class Node:\n"
+        "    def __init__(self):\n        self.attitude = None\n"
+        "        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
+        "        self.create_subscription(VehicleAttitude, 'att', self.on_attitude, 10)\n"
+        "    def on_odometry(self, msg):\n        return Rotation.from_quat(msg.q)\n"
+        "    def on_attitude(self, msg):\n        self.attitude = msg\n"
+        "    def yaw(self):\n        q = self.attitude.q\n        return Rotation.from_quat([q[0], q[1], q[2], q[3]])\n"
+    )
+    (tmp_path / "unknown.py").write_text(
+        "from px4_msgs.msg import VehicleOdometry\nfrom nav_msgs.msg import Odometry\nfrom scipy.spatial.transform import Rotation\n"
+        "class Node:\n"
+        "    def __init__(self, other):\n        self.pose = other\n"
+        "        self.create_subscription(Odometry, 'a', self.on_ros_odometry, 10)\n"
+        "        self.create_subscription(VehicleOdometry, 'b', self.on_odometry, 10)\n"
+        "        self.create_subscription(VehicleOdometry, 'c', lambda m: self.on_lambda(m), 10)\n"
+        "    def on_ros_odometry(self, msg):\n        return Rotation.from_quat(msg.q)\n"
+        "    def on_odometry(self, msg):\n        self.pose = msg\n        return Rotation.from_quat(msg.q)\n"
+        "    def replay(self, recorded):\n        return self.on_odometry(recorded)\n"
+        "    def on_lambda(self, msg):\n        return Rotation.from_quat(msg.q)\n"
+        "    def later(self):\n        return Rotation.from_quat(self.pose.q)\n"
+    )
+    (tmp_path / "not_imported.py").write_text(
+        "from scipy.spatial.transform import Rotation\nclass Node:\n"
+        "    def __init__(self):\n        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
+        "    def on_odometry(self, msg):\n        return Rotation.from_quat(msg.q)\n"
+    )
+    findings = check(["known.py", "unknown.py", "not_imported.py"], cwd=tmp_path)
+    assert sorted((f["path"], f["line"]) for f in findings) == [("known.py", 9), ("known.py", 14)], findings
+    assert all("px4_msgs `Vehicle" in f["message"] for f in findings)

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import ast
 import re
+from dataclasses import dataclass
 
 from geolint.rules.base import Invalid, Valid
+from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_order, short_name
 from geolint.factbase.model import FactBase, last_name, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import (
     SCALAR_FIRST,
@@ -30,9 +32,26 @@ from geolint.rules.rotation.quaternion_flow import (
     permuted,
     same_base,
     spelled_components,
+    unwrapped_scalar,
 )
 
 _COMPONENTS = "wxyz"
+
+
+@dataclass(frozen=True)
+class _MessageField:
+    """`msg.q_d = value`: a quaternion field of a message whose class fixes the order."""
+
+    target: ast.Attribute
+    cls: str
+
+    @property
+    def library(self) -> str:
+        return self.cls.split(".", 1)[0]
+
+    @property
+    def name(self) -> str:
+        return f"{short_name(self.cls)}.{self.target.attr}"
 
 
 class _GateOrOrderName:
@@ -83,6 +102,12 @@ class QuaternionOrder(FactRule):
       the flattened array so each quaternion takes a component from its neighbour;
     - a name that states an order (`quat_xyzw`, `q_wxyz`) bound to data in another one
       (`quat_xyzw = mat2quat(R)`, `q_xyzw = (q_wxyz[3], q_wxyz[0], q_wxyz[1], q_wxyz[2])`);
+    - PX4 messages (`px4_msgs`: `VehicleOdometry.q`, `VehicleAttitude.q`, `VehicleAttitudeSetpoint.q_d`...),
+      which are (w, x, y, z), read into a scalar-last API or written from a scalar-last value, when the
+      message's class is known: built by its constructor, an annotated parameter, or the message
+      parameter of a callback the module registers with `create_subscription(VehicleOdometry, ...)`
+      (also through `self` attributes every store of which is such a message); the name `q` alone
+      is no evidence;
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -116,7 +141,9 @@ class QuaternionOrder(FactRule):
     A wrong-way reorder of data whose order nothing states is not flagged in a module that also
     stores data reordered the opposite way in a container (`batch["quat"] = torch.roll(q, 1, -1)`):
     two rolls that cancel are correct, and such data may travel in that non-standard order. Evidence is followed within one module only: a record field filled in another module, or a
-    parameter, has no known order and stays silent. When a name (`quat_xyzw`) and its value
+    parameter, has no known order and stays silent. A message callback that is also called directly
+    (`self.on_odometry(recorded)`), or registered through a lambda or `functools.partial`, gives its
+    parameter no known class. When a name (`quat_xyzw`) and its value
     (`mat2quat(R)`) disagree, the binding is flagged once and the later uses of the name are not
     judged.
     """
@@ -160,6 +187,12 @@ class QuaternionOrder(FactRule):
             "    orientation = p.getQuaternionFromEuler([0, 0, yaw])\n    p.resetBasePositionAndOrientation(body, position, orientation)\n"
         ),
         Valid("def enu_to_ned(q):\n    return {'x': q.y, 'y': q.x, 'z': -q.z, 'w': q.w}\n"),  # an axis change
+        Valid("from scipy.spatial.transform import Rotation\ndef on_odometry(msg):\n    return Rotation.from_quat(msg.q)\n"),  # type unknown
+        Valid(
+            "from px4_msgs.msg import VehicleOdometry\nfrom scipy.spatial.transform import Rotation\nclass Node:\n"
+            "    def __init__(self):\n        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
+            "    def on_odometry(self, msg):\n        return Rotation.from_quat(msg.q, scalar_first=True)\n"
+        ),
         Valid(
             "from transforms3d.quaternions import mat2quat\ndef f(R):\n    q = mat2quat(R)\n"
             "    return {'x': q[2], 'y': q[1], 'z': q[3], 'w': q[0]}\n"
@@ -245,6 +278,15 @@ class QuaternionOrder(FactRule):
             "    return o3d.geometry.get_rotation_matrix_from_quaternion(quat)\n"
         ),
         Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
+        Invalid(  # px4_msgs quaternions are (w, x, y, z); the subscription says what `msg` is
+            "from px4_msgs.msg import VehicleOdometry\nfrom scipy.spatial.transform import Rotation\nclass Node:\n"
+            "    def __init__(self):\n        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
+            "    def on_odometry(self, msg):\n        return Rotation.from_quat(msg.q)\n"
+        ),
+        Invalid(
+            "from px4_msgs.msg import VehicleAttitudeSetpoint\nfrom scipy.spatial.transform import Rotation\n"
+            "def setpoint(yaw):\n    msg = VehicleAttitudeSetpoint()\n    msg.q_d = Rotation.from_euler('z', yaw).as_quat()\n    return msg\n"
+        ),
         Invalid(  # numpy-quaternion's constructor takes w first; scipy's as_quat() spreads x, y, z, w into it
             "import numpy as np\nimport quaternion\nfrom scipy.spatial.transform import Rotation\n"
             "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
@@ -271,6 +313,7 @@ class QuaternionOrder(FactRule):
         self._check_component_writes(flow)
         for node in facts.index.nodes(ast.Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
+            self._check_message_field(node, flow)  # type: ignore[arg-type]
         for node in facts.index.nodes(ast.Call):
             self._check_flat_roll(node, flow)  # type: ignore[arg-type]
 
@@ -312,6 +355,26 @@ class QuaternionOrder(FactRule):
             evidence=(order.evidence,),
         )
 
+    def _check_message_field(self, node: ast.Assign, flow: QuaternionFlow) -> None:
+        """`setpoint.q_d = Rotation.from_euler(...).as_quat()`: a quaternion written into a message field
+        whose order the message class fixes (px4_msgs: w, x, y, z)."""
+        if len(node.targets) != 1 or not isinstance(node.targets[0], ast.Attribute) or node.targets[0].attr not in QUATERNION_FIELD_NAMES:
+            return
+        target = node.targets[0]
+        cls = flow.messages.class_of(target.value)
+        expected = field_order(cls, target.attr)
+        if cls is None or expected is None:
+            return
+        field = _MessageField(target, cls)
+        elements = spelled_components(self.facts, node.value)
+        if elements is not None:
+            order = _order(self.facts, elements)
+            if order is not None:
+                if order != expected and _is_other_convention(order, expected):
+                    self._report(node.value, field, elements, order, expected)
+                return
+        self._check_value(field, node.value, expected, flow)
+
     def _name_contradicted(self, name: ast.Name, flow: QuaternionFlow) -> bool:
         stated = name_order(name.id)
         if stated is None:
@@ -352,19 +415,24 @@ class QuaternionOrder(FactRule):
         if argument is not None:
             self._check_value(node, argument, expected, flow)
 
-    def _report(self, reported: ast.expr, call: ast.Call, items: list[ast.expr], order: str, expected: str) -> None:
+    def _report(self, reported: ast.expr, call: ast.Call | _MessageField, items: list[ast.expr], order: str, expected: str) -> None:
         by_component = {component: item for component, item in zip(order, items)}
         edits = [(item, self.facts.index.segment(by_component[component])) for item, component in zip(items, expected)]
         self.report(
             reported,
             f"quaternion components are in ({', '.join(order)}) order, but "
-            f"`{self.code_of(call.func)}` expects {api_label(expected)}",
+            f"{self._consumer(call)} expects {api_label(expected)}",
             replacement=replace_span(self.facts.index, reported, edits),  # type: ignore[arg-type]
             fix_description=f"reorder to {', '.join(expected)}",
         )
 
     # -- through data: reorders and producers ----------------------------------------------
-    def _check_value(self, call: ast.Call, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
+    def _consumer(self, consumer: ast.Call | _MessageField) -> str:
+        if isinstance(consumer, _MessageField):
+            return f"`{self.code_of(consumer.target)}` ({consumer.library} `{consumer.name}`)"
+        return f"`{self.code_of(consumer.func)}`"
+
+    def _check_value(self, call: ast.Call | _MessageField, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
         if isinstance(argument, ast.Name) and self._name_contradicted(argument, flow):
             return  # reported once, where the name is bound
         reorder = flow.reorder_of(argument)
@@ -377,24 +445,24 @@ class QuaternionOrder(FactRule):
         self.report(
             argument,
             f"`{self.code_of(argument)}` is {convention(order.order)} ({order.evidence}), but "
-            f"`{self.code_of(call.func)}` expects {api_label(expected)}",
+            f"{self._consumer(call)} expects {api_label(expected)}",
             evidence=(order.evidence,),
         )
 
-    def _check_reorder(self, call: ast.Call, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
+    def _check_reorder(self, call: ast.Call | _MessageField, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
         facts = self.facts
         other = SCALAR_FIRST if expected == SCALAR_LAST else SCALAR_LAST
         base = flow.order_of(reorder.base)
         if base is not None and (base.order not in STANDARD_ORDERS or base.batch and reorder.spelling in ("spelled", "arguments")):
             return  # rows of a stack picked one by one, or an unusual order: not a component reorder we can judge
-        shown, func = facts.code_of(reorder.node), self.code_of(call.func)
+        shown, func = facts.code_of(reorder.node), self._consumer(call)
         if base is not None:
             result = permuted(base.order, reorder.permutation)
             if result.index("w") == expected.index("w"):
                 return  # right, or x, y, z permuted among themselves: an axis change, not a convention slip
             message = (
                 f"`{facts.code_of(reorder.base)}` is {convention(base.order)} ({base.evidence}); `{shown}` makes it "
-                f"{label(result)}, but `{func}` expects {api_label(expected)}"
+                f"{label(result)}, but {func} expects {api_label(expected)}"
             )
             right = permutation_between(base.order, expected)
             applicability = "safe" if base.local else "unsafe"
@@ -408,7 +476,7 @@ class QuaternionOrder(FactRule):
                 # non-standard order that this reorder undoes (two rolls that cancel)
                 return
             message = (
-                f"`{shown}` turns {label(expected)} into {label(other)}, but `{func}` expects {api_label(expected)}: "
+                f"`{shown}` turns {label(expected)} into {label(other)}, but {func} expects {api_label(expected)}: "
                 f"the reorder goes the wrong way (in either convention the result is not {label(expected)})"
             )
             right = permutation_between(other, expected)
@@ -568,14 +636,16 @@ def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
     return None
 
 
-def _takes_stacks(call: ast.Call) -> bool:
+def _takes_stacks(call: ast.Call | _MessageField) -> bool:
     """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion)."""
+    if isinstance(call, _MessageField):
+        return False
     name = last_name(call.func) or ""
     return name in ("from_quat", "from_float_array", "as_quat_array") or name.startswith("quaternion_")
 
 
 def _last_index(node: ast.AST) -> ast.expr:
-    parts = subscript_parts(node)  # type: ignore[arg-type]
+    parts = subscript_parts(unwrapped_scalar(node))  # type: ignore[arg-type]
     return parts[-1]
 
 

@@ -10,7 +10,7 @@ from geolint.factbase.rotations import quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.pose_parts import AllOf
-from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base
+from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base, unwrapped_scalar
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness
 # (in robotics `q` is just as often a joint configuration).
@@ -133,7 +133,7 @@ class QuaternionComponentReused(FactRule):
             if candidate in _CYCLES:
                 element = elements[position]
                 text = facts.index.segment(element)
-                old = facts.index.segment(subscript_parts(element)[-1])  # type: ignore[arg-type]
+                old = facts.index.segment(subscript_parts(unwrapped_scalar(element))[-1])  # type: ignore[arg-type]
                 at = text.rfind(old)
                 if not old or at <= 0:
                     return None

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 from geolint.factbase.index import LoopBinding, ParamBinding, UnpackBinding
 from geolint.factbase.memo import NodeMemo
+from geolint.factbase.messages import QUATERNION_FIELD_NAMES, MessageTypes, field_order, short_name
 from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, quaternion_producer
 from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
@@ -98,7 +99,8 @@ def name_order(name: str) -> str | None:
 
 
 def component_index(node: ast.expr) -> tuple[ast.expr, int] | None:
-    """`q[3]`, `q[:, 3]`, `q[..., 3]`: (q, 3) for an integer last index after full slices only."""
+    """`q[3]`, `q[:, 3]`, `q[..., 3]`, `float(q[3])`: (q, 3) for an integer last index after full slices only."""
+    node = unwrapped_scalar(node)
     if not isinstance(node, ast.Subscript):
         return None
     parts = subscript_parts(node)
@@ -121,6 +123,16 @@ def spelled_components(facts: FactBase, node: ast.expr) -> list[ast.expr] | None
     if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 4 and not any(isinstance(e, ast.Starred) for e in node.elts):
         return list(node.elts)
     return None
+
+
+def unwrapped_scalar(node: ast.expr) -> ast.expr:
+    """`float(q[3])` -> `q[3]`: the builtin conversion keeps the component's value."""
+    if (
+        isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "float"
+        and len(node.args) == 1 and not node.keywords
+    ):
+        return node.args[0]
+    return node
 
 
 def same_base(facts: FactBase, elements: list[ast.expr]) -> tuple[ast.expr, list[int]] | None:
@@ -150,6 +162,7 @@ class QuaternionFlow:
         self._orders: NodeMemo[Order] = NodeMemo(_MAX_DEPTH)
         self._keyword_stores: dict[tuple[str, str], list[ast.expr | None]] | None = None
         self._module_permutations: set[tuple[int, ...]] | None = None
+        self.messages = MessageTypes(facts)
 
     # -- reorders ------------------------------------------------------------------------
     def reorder_of(self, node: ast.expr, through_names: bool = True) -> Reorder | None:
@@ -276,9 +289,19 @@ class QuaternionFlow:
             return self._order_of_row(node)
         elements = spelled_components(facts, node)
         if elements is not None:
-            order = _spelled_order(elements)
-            if order is not None:
-                return Order(order, f"from components spelled out at line {node.lineno}")
+            return self._order_of_spelled(node, elements)
+        return None
+
+    def _order_of_spelled(self, node: ast.expr, elements: list[ast.expr]) -> Order | None:
+        """`[qw, qx, qy, qz]`, `[o.x, o.y, o.z, o.w]`, or `[q[0], q[1], q[2], q[3]]` of a quaternion `q`."""
+        order = _spelled_order(elements)
+        if order is not None:
+            return Order(order, f"from components spelled out at line {node.lineno}")
+        spelled = same_base(self.facts, elements)
+        if spelled is not None and spelled[1] == [0, 1, 2, 3]:
+            base = self.order_of(spelled[0])
+            if base is not None and not base.batch:  # a stack's rows, not components
+                return Order(base.order, base.evidence, base.local)
         return None
 
     def _order_of_call(self, call: ast.Call) -> Order | None:
@@ -291,9 +314,7 @@ class QuaternionFlow:
             return Order(SCALAR_FIRST, f"from mujoco's `{name}`, line {call.lineno}")
         elements = spelled_components(facts, call)
         if elements is not None:
-            order = _spelled_order(elements)
-            if order is not None:
-                return Order(order, f"from components spelled out at line {call.lineno}")
+            return self._order_of_spelled(call, elements)
         if facts.may_have_summary(call):  # a project helper whose every `return` agrees on an order
             summary = facts.function_summary(call)
             if summary is not None and summary.quaternion_order is not None:
@@ -351,6 +372,11 @@ class QuaternionFlow:
             return Order(SCALAR_FIRST, f"from mujoco's `{attr}`", batch=True)
         if attr in ("elements", "q") and self._is_pyquaternion(node.value):
             return Order(SCALAR_FIRST, f"from pyquaternion's `.{attr}`")
+        if attr in QUATERNION_FIELD_NAMES:
+            cls = self.messages.class_of(node.value)
+            order = field_order(cls, attr)
+            if cls is not None and order is not None:
+                return Order(order, f"from {cls.split('.', 1)[0]} `{short_name(cls)}.{attr}`", local=isinstance(node.value, ast.Name))
         stated = name_order(attr)
         by_name = Order(stated, f"from its name `{attr}`", local=False) if stated else None
         if isinstance(node.value, ast.Name) and node.value.id == "self":

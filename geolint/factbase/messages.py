@@ -1,0 +1,148 @@
+"""ROS message types of values, and the quaternion fields whose component order a message type fixes.
+
+A value's message class is known when every binding says it: a constructor call (`VehicleOdometry()`),
+a parameter annotated with the class, the message parameter of a subscription callback registered
+for the class in the same module (`create_subscription(VehicleOdometry, topic, self.on_odometry, qos)`),
+or a `self` attribute every store of which is one of those (or None). Classes are qualified names
+resolved through the module's imports, so `q` alone, or an unimported `VehicleOdometry`, is no evidence.
+"""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.factbase.index import FUNCTION_NODES, ParamBinding
+from geolint.factbase.memo import NodeMemo
+from geolint.factbase.model import FactBase, keyword, positional_args
+from geolint.factbase.rotations import SCALAR_FIRST
+
+# px4_msgs (PX4's uORB topics on the ROS 2 bridge): every quaternion is Hamilton (w, x, y, z), PX4's
+# matrix::Quatf layout ("the order is q(w, x, y, z)" in VehicleAttitude.msg).
+MESSAGE_QUATERNION_FIELDS: dict[str, dict[str, str]] = {
+    "px4_msgs.msg.VehicleOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
+    "px4_msgs.msg.VehicleAttitude": {"q": SCALAR_FIRST, "delta_q_reset": SCALAR_FIRST},
+    "px4_msgs.msg.VehicleAttitudeSetpoint": {"q_d": SCALAR_FIRST},
+    "px4_msgs.msg.VehicleVisualOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
+    "px4_msgs.msg.VehicleMocapOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
+}
+# The attribute names above: the one cheap test before any type is looked for.
+QUATERNION_FIELD_NAMES = frozenset(field for fields in MESSAGE_QUATERNION_FIELDS.values() for field in fields)
+_MAX_DEPTH = 8
+
+
+def field_order(cls: str | None, field: str) -> str | None:
+    """The component order of quaternion field `field` of message class `cls`, or None."""
+    return MESSAGE_QUATERNION_FIELDS.get(cls or "", {}).get(field)
+
+
+def short_name(cls: str) -> str:
+    return cls.rsplit(".", 1)[-1]
+
+
+class MessageTypes:
+    """The message class of values in one module (memoised per node)."""
+
+    def __init__(self, facts: FactBase) -> None:
+        self.facts = facts
+        self._classes: NodeMemo[str] = NodeMemo(_MAX_DEPTH)
+        self._callbacks: dict[str, set[str | None]] | None = None
+
+    def class_of(self, node: ast.expr) -> str | None:
+        """The qualified message class of `node`'s value, when every binding agrees on a known one."""
+        return self._classes.get(id(node), lambda: self._class(node))
+
+    def _class(self, node: ast.expr) -> str | None:
+        facts = self.facts
+        if isinstance(node, ast.Call):
+            qualified = facts.qualified_name(node.func)
+            return qualified if qualified in MESSAGE_QUATERNION_FIELDS and not node.args else None
+        if isinstance(node, ast.Name):
+            bound = facts.bindings(node) or []
+            return _agreed([self._class_of_binding(binding) for binding in bound])
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+            stores = facts.index.self_attribute_stores.get(node.attr, [])
+            # `self.odometry = None` before the first message: reading `.q` from it would fail anyway
+            return _agreed([self.class_of(store) for store in stores if not _is_none(store)])
+        return None
+
+    def _class_of_binding(self, binding: object) -> str | None:
+        if isinstance(binding, ast.expr):
+            return self.class_of(binding)
+        if not isinstance(binding, ParamBinding):
+            return None
+        annotation = binding.arg.annotation
+        if annotation is not None:
+            qualified = self.facts.qualified_name(annotation)
+            return qualified if qualified in MESSAGE_QUATERNION_FIELDS else None
+        return self._callback_class(binding)
+
+    def _callback_class(self, binding: ParamBinding) -> str | None:
+        """The class a subscription delivers to this parameter: it is the message parameter of a
+        function the module registers as a callback, and the function is never called directly."""
+        function = binding.function
+        if not isinstance(function, FUNCTION_NODES):
+            return None
+        parameters = [*function.args.posonlyargs, *function.args.args]
+        is_method = isinstance(self.facts.parent(function), ast.ClassDef)
+        if len(parameters) != 1 + is_method or parameters[is_method] is not binding.arg:
+            return None
+        return _agreed(list(self._registrations().get(function.name, ())))
+
+    def _registrations(self) -> dict[str, set[str | None]]:
+        """Function name -> the message classes it is registered for (None: unknown class, or called
+        directly somewhere, so its parameter may hold anything)."""
+        if self._callbacks is not None:
+            return self._callbacks
+        facts = self.facts
+        found: dict[str, set[str | None]] = {}
+        called: set[str] = set()
+        for call in facts.index.nodes(ast.Call):
+            func = call.func  # type: ignore[attr-defined]
+            called.add(func.attr if isinstance(func, ast.Attribute) else func.id if isinstance(func, ast.Name) else "")
+            registered = _subscription(call)  # type: ignore[arg-type]
+            name = _function_name(registered[1]) if registered is not None else None
+            if registered is not None and name is not None:
+                qualified = facts.qualified_name(registered[0])
+                found.setdefault(name, set()).add(qualified if qualified in MESSAGE_QUATERNION_FIELDS else None)
+        for name in found.keys() & called:
+            found[name].add(None)  # also called directly: its parameter may hold anything
+        self._callbacks = found
+        return found
+
+
+def _subscription(call: ast.Call) -> tuple[ast.expr, ast.expr] | None:
+    """`node.create_subscription(MsgType, topic, callback, qos)` (rclpy) or
+    `rospy.Subscriber(topic, MsgType, callback)`: (message type, callback)."""
+    func = call.func
+    name = func.attr if isinstance(func, ast.Attribute) else func.id if isinstance(func, ast.Name) else None
+    positional = positional_args(call)
+    if name == "create_subscription":
+        message_type, callback = _argument(call, positional, 0, "msg_type"), _argument(call, positional, 2, "callback")
+    elif name == "Subscriber":
+        message_type, callback = _argument(call, positional, 1, "data_class"), _argument(call, positional, 2, "callback")
+    else:
+        return None
+    return (message_type, callback) if message_type is not None and callback is not None else None
+
+
+def _argument(call: ast.Call, positional: list[ast.expr], position: int, name: str) -> ast.expr | None:
+    if len(positional) > position:
+        return positional[position]
+    given = keyword(call, name)
+    return given.value if given is not None else None
+
+
+def _function_name(callback: ast.expr) -> str | None:
+    """`self.on_odometry` or `on_odometry` (a lambda or a partial is not followed)."""
+    if isinstance(callback, ast.Attribute) and isinstance(callback.value, ast.Name) and callback.value.id == "self":
+        return callback.attr
+    return callback.id if isinstance(callback, ast.Name) else None
+
+
+def _agreed(classes: list[str | None]) -> str | None:
+    found = set(classes)
+    return found.pop() if len(found) == 1 and None not in found else None
+
+
+def _is_none(node: ast.expr) -> bool:
+    return isinstance(node, ast.Constant) and node.value is None
