@@ -12,9 +12,22 @@ from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
+from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, is_trig_or_conversion, radian_arguments, wrong_unit_passed
 
 _TWO_PI = 2 * math.pi
+# `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate reads.
+_DIVIDES_BY_PI = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b")
+
+
+class _GateOrDivisionByPi:
+    """The fact rules' gate, or a division by pi (one more regex, only on files the gate turns away)."""
+
+    def search(self, source: str, /) -> bool:
+        return GATE_TRIGGER.search(source) or _DIVIDES_BY_PI.search(source) is not None
+
+    def search_with(self, source: str, config: object, /) -> bool:
+        return GATE_TRIGGER.search_with(source, config) or _DIVIDES_BY_PI.search(source) is not None
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
 _RADIAN_NAME = re.compile(r"(?i)rad")
 
@@ -30,12 +43,14 @@ class DegreesAsRadians(FactRule):
     `np.sin`/`math.cos` of a whole multiple of 15 degrees (`np.cos(90)`). Through data it also flags a value the code itself
     puts in degrees passed to those APIs (and to `np.degrees` / `np.rad2deg`): a name that says
     so (`yaw_deg`, `fov_degrees`, `tiltDeg`), the result of `np.degrees` / `np.rad2deg` /
-    `math.degrees` or of scipy `as_euler(..., degrees=True)`, followed through local variables,
+    `math.degrees` or of scipy `as_euler(..., degrees=True)` or of a hand-written `x * 180 / np.pi`
+    (which is itself flagged when `x` is already in degrees), followed through local variables,
     `self` attributes, elements (`angles[2]`), negation, halving and sums of degrees; a
     parameter whose only value is a literal default above 2 pi (`fovy=30`); and such a value
     passed to a project helper (here or in another module, through helpers that call helpers)
     that hands the parameter unchanged to one of those APIs, or names it in radians (`theta_rad`)
-    when the value's degrees are computed rather than only named.
+    when the value's degrees are computed rather than only named; and a name or `self` attribute
+    bound only to literal angle lists (`UPRIGHT = [90, 0, 0]`) passed whole to those APIs.
 
     ## Why is this bad?
     90 radians is about 5157 degrees, i.e. 117 degrees after wrapping: a valid, silently wrong
@@ -63,13 +78,15 @@ class DegreesAsRadians(FactRule):
     All-caps names (`DEG`, `DEG2RAD`) and a bare `deg` are read as conversion factors, not angles,
     so `np.sin(30 * DEG)` stays silent; a `*_deg` name that actually holds radians (a stale
     name) is flagged. A value mixed with radians evidence in the same argument is left alone.
-    Literal angles given to pybullet's `getQuaternionFromEuler` are judged only when every large
+    Literal angles given to pybullet's `getQuaternionFromEuler`, and literal lists reaching a radian
+    API through a name (`UPRIGHT = [90, 0, 0]`), are judged only when every large
     one is a whole multiple of 15 (`[90, 0, 0]`): scene constants such as `[0, 160, -80]` are
     often tuned by eye in the simulator, so the rotation they give is the one wanted.
     """
 
     code = "GEO302"
     name = "degrees-as-radians"
+    triggers = _GateOrDivisionByPi()  # type: ignore[assignment]  # the gate, widened
 
     VALID = [
         Valid(
@@ -92,6 +109,7 @@ class DegreesAsRadians(FactRule):
         Valid("import numpy as np\ndef f(x):\n    return np.sin(30 * DEG) + np.cos(x * DEG2RAD)\n"),
         Valid("import numpy as np\nimport pybullet as p\nplate_orientation = p.getQuaternionFromEuler([np.pi / 2, 0, 0])\n"),
         Valid("import pybullet as p\nHAND_BASE_ROT = p.getQuaternionFromEuler([0, 160, -80])\n"),  # tuned by eye (FP20)
+        Valid("import numpy as np\nimport pybullet as p\nUPRIGHT = [90, 0, 0]\ndef place(body):\n    return p.getQuaternionFromEuler(np.radians(UPRIGHT))\n"),
         Valid(  # a name against a name: too weak at a helper's call
             "import numpy as np\ndef rot(theta_rad):\n    return theta_rad\ndef f(yaw_deg):\n    return rot(yaw_deg)\n"
         ),
@@ -100,6 +118,7 @@ class DegreesAsRadians(FactRule):
             "def f(yaw_deg):\n    return rot(yaw_deg, degrees=True)\n"
         ),
         Valid("import numpy as np\ndef f(yaw_deg_per_s, dt):\n    return np.cos(yaw_deg_per_s * dt)\n"),
+        Valid("import math\ndef f(dy, dx):\n    yaw = math.atan2(dy, dx)\n    return yaw * 180 / math.pi\n"),  # to degrees once
     ]
     INVALID = [
         Invalid(
@@ -141,13 +160,41 @@ class DegreesAsRadians(FactRule):
         ),
         Invalid("from transforms3d.euler import euler2mat\ndef f(tilt_degrees):\n    return euler2mat(0, tilt_degrees, 0)\n"),
         Invalid("import pybullet as p\nplate_orientation = p.getQuaternionFromEuler([90, 0, 0])\n"),
+        Invalid("import pybullet as p\nUPRIGHT = [90, 0, 0]\ndef place(body):\n    return p.getQuaternionFromEuler(UPRIGHT)\n"),
         Invalid("import numpy as np\ndef f(r):\n    angles = r.as_euler('xyz', degrees=True)\n    return np.cos(angles[2])\n"),
+        Invalid(
+            "import math\ndef f(dy, dx):\n    yaw = math.atan2(dy, dx) * 180 / math.pi\n    return yaw * 180 / math.pi\n",
+            expected_fix="import math\ndef f(dy, dx):\n    yaw = math.atan2(dy, dx) * 180 / math.pi\n    return yaw\n",
+        ),
     ]
 
     def run(self) -> None:
         units = AngleUnits(self.facts)
         for node in self.facts.index.nodes(ast.Call):
             self._check(node, units)  # type: ignore[arg-type]
+        for node in self.facts.index.nodes(ast.BinOp):
+            self._check_by_hand(node, units)  # type: ignore[arg-type]
+
+    def _check_by_hand(self, node: ast.BinOp, units: AngleUnits) -> None:
+        """`yaw * 180 / np.pi` on a `yaw` already in degrees: the hand-written twin of `np.degrees(yaw_deg)`."""
+        if not isinstance(node.op, (ast.Mult, ast.Div)):
+            return
+        converted = units.converts_by_hand(node)
+        if converted is None or converted[0] != DEGREES:
+            return
+        argument = converted[1]
+        unit = units.unit_of(argument)
+        if unit is None or unit.unit != DEGREES:
+            return
+        self.report(
+            node,
+            f"`{self.code_of(node)}` converts radians to degrees, but `{self.code_of(argument)}` is already in "
+            f"degrees ({unit.evidence})",
+            replacement=self.facts.index.segment(argument) or None,
+            applicability="unsafe",
+            fix_description="drop the conversion",
+            evidence=(unit.evidence,),
+        )
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         angles = self._radian_angles(node)
@@ -168,8 +215,57 @@ class DegreesAsRadians(FactRule):
                     fix_description="pass degrees=True",
                 )
                 return
+        if self._check_bound_literals(node):
+            return
         self._check_units(node, units)
         self._check_helper(node, units)
+
+    def _check_bound_literals(self, node: ast.Call) -> bool:
+        """`ORN = [90, 0, 0]` then `p.getQuaternionFromEuler(ORN)`: a name (or `self` attribute) whose
+        every binding is a literal list of angles, passed whole to a radian API. Judged like literals
+        in the call, and only when every large angle is a whole multiple of 15 (FP20)."""
+        if is_trig_or_conversion(self.facts, node):
+            return False  # trig of a named scalar has its own, name-guarded path
+        for argument in radian_arguments(self.facts, node) or []:
+            bound = self._literal_list_bindings(argument)
+            if not bound:
+                continue
+            values = [value for literal in bound for value in _literals(literal)]
+            too_big = [value for value in values if abs(value) > _TWO_PI]
+            if not too_big or not all(_round_degrees(value) for value in too_big):
+                continue
+            first = bound[0]
+            fix = None
+            if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
+                fix = with_keyword(self.facts.index.segment(node), "degrees=True")
+            self.report(
+                node if fix is not None else argument,  # the fix rewrites the whole call
+                f"`{self.code_of(node.func)}` takes radians, but `{self.code_of(argument)}` is `{self.code_of(first)}` "
+                f"(line {first.lineno}), whose angle {_format(too_big[0])} is above 2 pi: it looks like degrees",
+                replacement=fix,
+                applicability="unsafe",
+                fix_description="pass degrees=True",
+                evidence=(f"`{self.code_of(argument)}` is bound to `{self.code_of(first)}` at line {first.lineno}",),
+            )
+            return True
+        return False
+
+    def _literal_list_bindings(self, node: ast.expr) -> list[ast.expr]:
+        """The literal angle lists a name or `self` attribute holds, when it holds nothing else and no
+        element is rewritten (`ORN[0] = ...`, `ORN += ...`); else []."""
+        facts = self.facts
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+            values: list[object] = list(facts.index.self_attribute_stores.get(node.attr, []))
+        elif isinstance(node, ast.Name):
+            scope = facts.index.scope_of(node)
+            if node.id in scope.subscript_stores or node.id in scope.augmented:
+                return []
+            values = list(facts.bindings(node) or [])
+        else:
+            return []
+        if not values or not all(isinstance(value, ast.expr) and _is_literal_list(value) for value in values):
+            return []
+        return values  # type: ignore[return-value]
 
     def _check_helper(self, node: ast.Call, units: AngleUnits) -> None:
         """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
@@ -269,6 +365,13 @@ def _literals(node: ast.AST) -> list[float]:
     if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and node.args:
         return _literals(node.args[0])
     return []
+
+
+def _is_literal_list(node: ast.expr) -> bool:
+    """`[90, 0, 0]`, `(0, 0, -90.0)`, `np.array([90, 0, 0])`: a flat list of numeric literals."""
+    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and len(node.args) == 1 and not node.keywords:
+        node = node.args[0]
+    return isinstance(node, (ast.List, ast.Tuple)) and bool(node.elts) and all(number(element) is not None for element in node.elts)
 
 
 def _round_degrees(value: float) -> bool:
