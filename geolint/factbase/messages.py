@@ -61,8 +61,9 @@ class MessageTypes:
             return _agreed([self._class_of_binding(binding) for binding in bound])
         if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
             stores = facts.index.self_attribute_stores.get(node.attr, [])
-            # `self.odometry = None` before the first message: reading `.q` from it would fail anyway
-            return _agreed([self.class_of(store) for store in stores if not _is_none(store)])
+            # `self.odometry = None` before the first message, or the subscription handle stored under
+            # the same name: reading `.q` from either would fail, so where `.q` is read it is the message
+            return _agreed([self.class_of(store) for store in stores if not _has_no_fields(store)])
         return None
 
     def _class_of_binding(self, binding: object) -> str | None:
@@ -144,5 +145,11 @@ def _agreed(classes: list[str | None]) -> str | None:
     return found.pop() if len(found) == 1 and None not in found else None
 
 
-def _is_none(node: ast.expr) -> bool:
-    return isinstance(node, ast.Constant) and node.value is None
+def _has_no_fields(node: ast.expr) -> bool:
+    """None, or an rclpy handle (`self.create_subscription(...)`): values with no message field."""
+    if isinstance(node, ast.Constant):
+        return node.value is None
+    return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _NODE_HANDLES
+
+
+_NODE_HANDLES = frozenset({"create_subscription", "create_publisher", "create_timer", "create_client", "create_service"})

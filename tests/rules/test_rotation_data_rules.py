@@ -110,14 +110,14 @@ def test_a_quaternion_spread_into_a_component_constructor(tmp_path: Path) -> Non
 
 def test_px4_messages_are_known_only_from_their_class(tmp_path: Path) -> None:
     """px4_msgs quaternions are (w, x, y, z): flagged when the class is known (subscription callback,
-    `self` attribute stored from it, constructor), silent when it is not imported, when the callback
+    `self` attribute stored from it, besides None and the subscription handle), silent when it is not imported, when the callback
     is also called directly, when it is registered through a lambda, or when another store is unknown."""
     (tmp_path / "known.py").write_text(
         "from px4_msgs.msg import VehicleAttitude, VehicleOdometry\nfrom scipy.spatial.transform import Rotation\n"
         "class Node:\n"
         "    def __init__(self):\n        self.attitude = None\n"
         "        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
-        "        self.create_subscription(VehicleAttitude, 'att', self.on_attitude, 10)\n"
+        "        self.attitude = self.create_subscription(VehicleAttitude, 'att', self.on_attitude, 10)\n"
         "    def on_odometry(self, msg):\n        return Rotation.from_quat(msg.q)\n"
         "    def on_attitude(self, msg):\n        self.attitude = msg\n"
         "    def yaw(self):\n        q = self.attitude.q\n        return Rotation.from_quat([q[0], q[1], q[2], q[3]])\n"
