@@ -31,6 +31,7 @@ from geolint.lint_types import Config, Edit, Finding, Fix, Severity
 if TYPE_CHECKING:
     import libcst as cst
 
+    from geolint.factbase import FactBase
     from geolint.rules import Rule
     from geolint.rules.base import AnyRule, AstReport, AstRule, Report
 
@@ -234,8 +235,12 @@ def _run_ast_rules(source: str, path: str, config: Config, rule_classes: Sequenc
     facts = _facts_for(tree, source, path, config, rule_classes)
     context = RuleContext(path=path, config=config, source=source, facts=facts)
     instances = [rule_cls(context) for rule_cls in rule_classes]
-    for rule in instances:
-        rule.check(tree)
+    try:
+        for rule in instances:
+            rule.check(tree)
+    finally:
+        if facts is not None:
+            facts.project.close()
     if not any(rule.reports for rule in instances):
         return []
     columns = _CharacterColumns(source)
@@ -244,7 +249,7 @@ def _run_ast_rules(source: str, path: str, config: Config, rule_classes: Sequenc
 
 def _facts_for(
     tree: ast.Module, source: str, path: str, config: Config, rule_classes: Sequence[type[AstRule]]
-) -> object:
+) -> FactBase | None:
     """The file's fact base, built once for all rules that ask for it (`needs_facts`); None otherwise."""
     if not any(getattr(rule, "needs_facts", False) for rule in rule_classes):
         return None

@@ -292,6 +292,13 @@ class ProjectSummaries:
         if facts.path and os.path.isfile(facts.path):
             self._modules.setdefault(os.path.abspath(facts.path), facts)
 
+    def close(self) -> None:
+        """Forget the fact bases and summaries read for this lint. They refer back to this object, and
+        the cycle would keep every module's syntax tree alive until the cycle collector ran."""
+        self._modules.clear()
+        self._final.clear()
+        self._provisional.clear()
+
     def facts_of(self, file: Path) -> FactBase | None:
         """The fact base of another project module (its parse and index are shared by the process)."""
         from geolint.factbase.model import FactBase
