@@ -358,63 +358,77 @@ class ProjectSummaries:
 
 
 def project_root(path: str) -> Path | None:
-    return _root_of_folder(_folder_of(path))
+    root = _root_of_folder(_folder_of(path))
+    return None if root is None else Path(root)
 
 
+# Module resolution works on `str` paths: it runs for every import line of every file of a run, and
+# `Path` objects cost more to build, hash and compare than the lookups themselves.
 @lru_cache(maxsize=4096)
-def _root_of_folder(folder: Path) -> Path | None:
-    for candidate in (folder, *folder.parents):
-        if any((candidate / marker).exists() for marker in _PROJECT_MARKERS):
+def _root_of_folder(folder: str) -> str | None:
+    candidate = folder
+    while True:
+        if any(os.path.exists(os.path.join(candidate, marker)) for marker in _PROJECT_MARKERS):
             return candidate
-    return None
+        parent = os.path.dirname(candidate)
+        if parent == candidate:
+            return None
+        candidate = parent
 
 
 def module_file(module: str, importer: str, level: int = 0) -> Path | None:
     """The project file a module name resolves to from `importer` (absolute or relative), or None."""
+    found = module_path(module, importer, level)
+    return None if found is None else _one_path(found)
+
+
+def module_path(module: str, importer: str, level: int = 0) -> str | None:
+    """`module_file` as an absolute `str` path."""
     return _module_file_from(module, _folder_of(importer), level)
 
 
 @lru_cache(maxsize=4096)
-def _folder_of(path: str) -> Path:
-    return Path(os.path.dirname(os.path.abspath(path)))
+def _folder_of(path: str) -> str:
+    return os.path.dirname(os.path.abspath(path))
 
 
 @lru_cache(maxsize=65536)
-def _module_file_from(module: str, here: Path, level: int) -> Path | None:
+def _module_file_from(module: str, here: str, level: int) -> str | None:
     parts = tuple(part for part in module.split(".") if part)
     if not parts:
         return None
     for base in _search_folders(here, level):
         found = _module_in(base, parts)
         if found is not None:
-            return _one_path(found)
+            return found
     return None
 
 
 @lru_cache(maxsize=4096)
-def _search_folders(here: Path, level: int) -> tuple[str, ...]:
+def _search_folders(here: str, level: int) -> tuple[str, ...]:
     """Where a module name imported from folder `here` may live (relative: `level` folders up)."""
     if level:
         base = here
         for _ in range(level - 1):
-            base = base.parent
-        return (str(base),)
+            base = os.path.dirname(base)
+        return (base,)
     root = _root_of_folder(here)
     if root is None:
         return ()
     candidates = []
     folder = here
     while True:  # src layouts and scripts next to their package: any folder up to the root
-        candidates.append(str(folder))
-        if folder == root or folder.parent == folder:
+        candidates.append(folder)
+        parent = os.path.dirname(folder)
+        if folder == root or parent == folder:
             break
-        folder = folder.parent
+        folder = parent
     return tuple(candidates)
 
 
 @lru_cache(maxsize=65536)
 def _one_path(file: str) -> Path:
-    """One `Path` object per module file: the import graph's sets and dicts then find it by identity."""
+    """One `Path` object per module file: the summaries' dicts then find it by identity."""
     return Path(file)
 
 
@@ -462,7 +476,7 @@ def _may_hold(folder: str, name: str) -> bool:
     return name.casefold() in names  # casefolded: a case-insensitive file system finds `Geometry.py` too
 
 
-def imported_files(path: str, source: str) -> list[Path]:
+def imported_files(path: str, source: str) -> list[str]:
     """The project files `source` imports directly (by a cheap scan of its import lines): the modules
     named, and for `from pkg import geom` the submodule `pkg.geom` too."""
     if not os.path.isfile(path):
@@ -470,7 +484,7 @@ def imported_files(path: str, source: str) -> list[Path]:
     found = []
     for name in imported_names(source, members=True):
         level = len(name) - len(name.lstrip("."))
-        file = module_file(name.lstrip("."), path, level)
+        file = module_path(name.lstrip("."), path, level)
         if file is not None and file not in found:
             found.append(file)
     return found
@@ -523,56 +537,119 @@ def _joined(module: str, member: str) -> str:
 
 
 class ImportGraph:
-    """The project modules each file imports, transitively: every module read and scanned once per run.
+    """The project modules each file imports, transitively, and one digest of them per file.
 
-    A file linted in the run is registered with its own hash when its digest is taken, and not read again.
+    Files are registered with their text and hash as a run reads them (`register`); a module outside
+    the run is read when first reached. Digests are computed once per strongly connected component
+    of the import graph (an import cycle is one component): the digest of a component combines its
+    members' hashes with the digests of the components it imports, so each module is read, scanned
+    and hashed once and each edge followed once, however many files reach it.
     """
 
     def __init__(self, content_hash) -> None:  # type: ignore[no-untyped-def]
         self.content_hash = content_hash
-        self._imports: dict[Path, list[Path]] = {}
-        self._hashes: dict[Path, str] = {}
+        self._imports: dict[str, list[str]] = {}
+        self._hashes: dict[str, str] = {}
+        self._component: dict[str, int] = {}  # file -> its component's number
+        self._component_digest: list[str | None] = []  # None: the component imports nothing else
 
-    def _read(self, file: Path) -> None:
+    def register(self, path: str, source: str, own_hash: str) -> str:
+        """A file of the run, read by the caller: its hash and direct imports (its absolute path is returned)."""
+        key = os.path.abspath(path)
+        if key not in self._imports:
+            self._hashes[key] = own_hash
+            self._imports[key] = imported_files(path, source) if "import" in source else []
+        return key
+
+    def _read(self, file: str) -> None:
         try:
-            data = file.read_bytes()
+            with open(file, "rb") as stream:
+                data = stream.read()
         except OSError:
             self._hashes[file], self._imports[file] = "-", []
             return
         self._hashes[file] = self.content_hash(data)
         source = data.decode("utf-8", errors="replace")
-        self._imports[file] = imported_files(str(file), source) if "import" in source else []
+        self._imports[file] = imported_files(file, source) if "import" in source else []
 
-    def closure(self, path: str, source: str, own_hash: str | None = None) -> list[Path]:
-        """The project modules `source` (the text of `path`) imports, directly or through others."""
-        own = Path(os.path.abspath(path))
-        direct = self._imports.get(own)
-        if direct is None:
-            direct = self._imports[own] = imported_files(path, source)
-            if own_hash is not None:
-                self._hashes[own] = own_hash
-        seen: set[Path] = {own}
-        queue = list(direct)
-        found: list[Path] = []
-        while queue:
-            file = queue.pop()
-            if file in seen:
-                continue
-            seen.add(file)
-            found.append(file)
-            if file not in self._imports:
-                self._read(file)
-            queue.extend(self._imports[file])
-        return sorted(found)
-
-    def hash_of(self, file: Path) -> str:
-        if file not in self._hashes:
+    def _successors(self, file: str) -> list[str]:
+        if file not in self._imports:
             self._read(file)
-        return self._hashes[file]
+        return self._imports[file]
+
+    def digest(self, key: str) -> str | None:
+        """The digest of everything `key` (registered) imports, directly or not, itself included when
+        it is in a cycle; None when it imports no project module."""
+        if key not in self._component:
+            self._number_components(key)
+        return self._component_digest[self._component[key]]
+
+    def _number_components(self, start: str) -> None:
+        """Tarjan's algorithm, iterative, from `start`: number every new component and compute its
+        digest (a component is finished only after every component it imports)."""
+        index: dict[str, int] = {}
+        lowlink: dict[str, int] = {}
+        stack: list[str] = []
+        on_stack: set[str] = set()
+        work = [(start, iter(self._successors(start)))]
+        index[start] = lowlink[start] = 0
+        stack.append(start)
+        on_stack.add(start)
+        while work:
+            file, successors = work[-1]
+            pushed = False
+            for successor in successors:
+                if successor in self._component:
+                    continue  # finished in an earlier call
+                if successor not in index:
+                    index[successor] = lowlink[successor] = len(index)
+                    stack.append(successor)
+                    on_stack.add(successor)
+                    work.append((successor, iter(self._successors(successor))))
+                    pushed = True
+                    break
+                if successor in on_stack:
+                    lowlink[file] = min(lowlink[file], index[successor])
+            if pushed:
+                continue
+            work.pop()
+            if work:
+                parent = work[-1][0]
+                lowlink[parent] = min(lowlink[parent], lowlink[file])
+            if lowlink[file] == index[file]:
+                members = []
+                while True:
+                    member = stack.pop()
+                    on_stack.discard(member)
+                    members.append(member)
+                    if member == file:
+                        break
+                self._finish_component(members)
+
+    def _finish_component(self, members: list[str]) -> None:
+        number = len(self._component_digest)
+        for member in members:
+            self._component[member] = number
+        inside = set(members)
+        # a module that imports nothing stands for itself by its hash
+        imported = sorted(
+            {self._component_digest[self._component[file]] or self._hashes[file]
+             for member in members for file in self._imports[member] if file not in inside}
+        )  # fmt: skip
+        in_cycle = len(members) > 1 or members[0] in self._imports[members[0]]
+        if not imported and not in_cycle:
+            self._component_digest.append(None)
+            return
+        digest = hashlib.blake2b(digest_size=16)
+        for member in sorted(members):
+            digest.update(self._hashes[member].encode())
+        for part in imported:
+            digest.update(part.encode())
+        self._component_digest.append(digest.hexdigest())
 
 
 def dependency_digest(path: str, data: bytes, content_hash, graph: ImportGraph | None = None) -> str:  # type: ignore[no-untyped-def]
-    """The file's own hash, combined with the hashes of every project module it imports, directly or
+    """The file's own hash, combined with the digest of every project module it imports, directly or
     through other project modules (a summary may read a helper any number of imports away).
 
     A run passes one `graph` for all its files, so each module is read and scanned once.
@@ -585,13 +662,10 @@ def dependency_digest(path: str, data: bytes, content_hash, graph: ImportGraph |
     if "import" not in source:
         return own
     graph = graph or ImportGraph(content_hash)
-    files = graph.closure(path, source, own)
-    if not files:
+    imported = graph.digest(graph.register(path, source, own))
+    if imported is None:
         return own
-    digest = hashlib.blake2b(own.encode(), digest_size=16)
-    for file in files:
-        digest.update(graph.hash_of(file).encode())
-    return digest.hexdigest()
+    return hashlib.blake2b(f"{own}:{imported}".encode(), digest_size=16).hexdigest()
 
 
 def _module_index_of_file(file: Path) -> ModuleIndex | None:

@@ -84,6 +84,29 @@ def test_the_digest_covers_modules_imported_through_other_modules(tmp_path: Path
     assert chain.exists() and digest() != before
 
 
+def test_digests_do_not_depend_on_the_order_files_are_read(tmp_path: Path) -> None:
+    # one graph serves a whole run: an import cycle (chain.py <-> walk.py) reached from different files
+    # first, or a module read before or after the files that import it, must give the same digests
+    project = _copy(tmp_path)
+    files = sorted(project.rglob("*.py"))
+
+    def digests(order: list[Path]) -> dict[Path, str]:
+        graph = ImportGraph(lambda data: str(hash(data)))
+        return {file: dependency_digest(str(file), file.read_bytes(), lambda data: str(hash(data)), graph) for file in order}
+
+    one_by_one = {
+        file: dependency_digest(str(file), file.read_bytes(), lambda data: str(hash(data)), ImportGraph(lambda data: str(hash(data))))
+        for file in files
+    }
+    assert digests(files) == digests(files[::-1]) == one_by_one
+    chain, walk = project / "lidar" / "geom" / "chain.py", project / "lidar" / "utils" / "walk.py"
+    assert one_by_one[chain] != str(hash(chain.read_bytes()))  # it imports project modules: not its bare hash
+    walk.write_text(walk.read_text() + "\n")
+    changed = digests(files)
+    assert changed[chain] != one_by_one[chain] and changed[project / RUN] != one_by_one[project / RUN]
+    assert changed[project / "setup.py"] == one_by_one[project / "setup.py"]  # imports nothing of the project
+
+
 def test_from_imports_name_submodules() -> None:
     text = "from lidar.utils import points, walk as w\nfrom . import (\n    chain,\n    tree)\nfrom .x import y  # z\n"
     assert imported_names(text, members=True) == [
