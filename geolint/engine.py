@@ -117,7 +117,12 @@ def lint_source(
 
     module = None
     syntax_error = None
-    checked = SYNTAX_ERROR in on or guards.TOO_COMPLEX in on or bool(visitors)
+    active = [rule for rule in visitors if _may_fire(rule, source, config)]
+    # Parsing is the cost every file would pay: a file no enabled rule can read is parsed only when the
+    # syntax check, the complexity check or an unused-suppression verdict asks for it.
+    checked = SYNTAX_ERROR in on or guards.TOO_COMPLEX in on or bool(active) or (
+        suppression.UNUSED_SUPPRESSION in on and suppression.may_have_directives(source)
+    )
     if checked:
         _reuse_shared_parse(path, source)
         # size and CPython's parser before any analysis; the nesting depth below, before any analysis
@@ -135,7 +140,6 @@ def lint_source(
                 line, column, message = syntax_error
                 return _only_syntax_error(path, config, rules, line, column, f"syntax error: {message}")
 
-    active = [rule for rule in visitors if _may_fire(rule, source, config)]
     ast_rules = [rule for rule in active if _is_ast_rule(rule)] if syntax_error is None else []
     cst_rules = [rule for rule in active if not _is_ast_rule(rule)]
     if checked and syntax_error is None:

@@ -939,17 +939,8 @@ class AllOf:
         return found
 
     def search_with(self, source: str, config: object, /) -> bool:
-        """The engine's prefilter entry point (no configuration read). Text that does not parse
-        passes, as with every trigger, so the engine reports it rather than skipping it."""
-        if self.search(source):
-            return True
-        from geolint.engine import cached_ast  # the engine's syntax check parsed this text already
-
-        try:
-            cached_ast(source)
-        except (SyntaxError, ValueError, RecursionError, MemoryError):
-            return True
-        return False
+        """The engine's prefilter entry point (no configuration read)."""
+        return self.search(source)
 
 
 class TextTest(Protocol):

@@ -136,6 +136,25 @@ def test_cached_ast_parses_each_text_once():
         cached_ast("def f(:\n")
 
 
+def test_a_file_no_selected_rule_can_read_is_parsed_only_when_a_check_needs_its_tree(tmp_path: Path):
+    from geolint.factbase.index import shared_parse
+
+    def parsed(source: str, config: Config) -> bool:
+        path = tmp_path / f"m{len(list(tmp_path.iterdir()))}.py"
+        path.write_text(source)
+        lint_source(source, str(path), config)
+        return shared_parse(str(path), source) is not None  # the engine leaves every tree it parsed for importers
+
+    no_geometry = "import json\nrows = json.loads(text)\n"
+    geometry = "normal_world = T_world_cam @ normal_h\n"
+    semantic_only = Config(select=("GEO1", "GEO2", "GEO3"))
+    assert not parsed(no_geometry, semantic_only)  # nothing to read it: not parsed
+    assert parsed(geometry, semantic_only)
+    assert parsed(no_geometry, Config())  # the syntax check (GEO000) reads every file
+    assert parsed(no_geometry + "# geolint: ignore[GEO101]\n", Config(select=("GEO1", "GEO900")))  # is the directive unused?
+    assert lint_source("def f(:\n", config=semantic_only) == []
+
+
 def test_add_suppressions_extends_existing_directives_and_respects_strings():
     source = 'x = a  # geolint: ignore[GEO102]\ny = """\n  b\n"""\n'
     findings = [_finding(1, "GEO101"), _finding(3, "GEO103")]
