@@ -45,7 +45,7 @@ def run_in_workers(
     workers: list[_Worker] = []
     try:
         for _ in range(min(jobs, len(items))):
-            workers.append(_Worker(context, work))
+            workers.append(_Worker(context, work, items))
         for worker in workers:
             worker.give(pending, items)
         while any(worker.busy is not None for worker in workers):
@@ -61,7 +61,7 @@ def run_in_workers(
                     except Exception:  # EOF: the worker died holding this item
                         results[finished] = crashed(items[finished], worker.death())
                         worker.close()
-                        worker = workers[index] = _Worker(context, work)
+                        worker = workers[index] = _Worker(context, work, items)
                     worker.busy = None
                     if done is not None:
                         done(finished)
@@ -73,11 +73,17 @@ def run_in_workers(
 
 
 class _Worker:
-    """One worker process and the pipe to it; ``busy`` is the index of the item it holds."""
+    """One worker process and the pipe to it; ``busy`` is the index of the item it holds.
 
-    def __init__(self, context: Any, work: Callable[[Any], Any]) -> None:
+    A forked worker starts with a copy of ``items`` and is sent only indices: a file's bytes and the
+    config are not pickled through the pipe once per file.
+    """
+
+    def __init__(self, context: Any, work: Callable[[Any], Any], items: Sequence[Any]) -> None:
         self.connection, child_end = context.Pipe()
-        self.process = context.Process(target=_serve, args=(child_end, work, os.getpid()), daemon=True)
+        self.forked = context.get_start_method() == "fork"
+        known = items if self.forked else None
+        self.process = context.Process(target=_serve, args=(child_end, work, os.getpid(), known), daemon=True)
         self.process.start()
         child_end.close()
         self.busy: int | None = None
@@ -85,7 +91,7 @@ class _Worker:
     def give(self, pending: list[int], items: Sequence[Any]) -> None:
         if pending:
             self.busy = pending.pop()
-            self.connection.send(items[self.busy])
+            self.connection.send(self.busy if self.forked else items[self.busy])
 
     def death(self) -> str:
         """Why the process ended, in words (it has ended, or is about to)."""
@@ -112,16 +118,17 @@ class _Worker:
                 self.process.join()
 
 
-def _serve(connection: Connection, work: Callable[[Any], Any], parent: int) -> None:
-    """A worker's loop: take an item, send its result, until the pipe closes or the parent is gone."""
+def _serve(connection: Connection, work: Callable[[Any], Any], parent: int, items: Sequence[Any] | None) -> None:
+    """A worker's loop: take an item (or, forked with the items, its index), send its result, until the
+    pipe closes or the parent is gone."""
     _exit_with_parent(parent)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the parent, which ends us
     while True:
         try:
-            item = connection.recv()
+            received = connection.recv()
         except (EOFError, OSError):
             return
-        connection.send(work(item))
+        connection.send(work(items[received] if items is not None else received))
 
 
 def _exit_with_parent(parent: int) -> None:
