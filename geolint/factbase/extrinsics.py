@@ -31,11 +31,12 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import number, string
+from geolint.factbase.model import is_full_slice, is_slice_upto, number, string
+from geolint.factbase.pose_parts import call_name, int_value, matmul_operands, matrix_indices, peel_same_value, transposed_operand
+from geolint.factbase.reaching import Unpacked, binding_of, scope_of, statement_of, value_of
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase, FrameFact
-    from geolint.rules.pose_parts import LocalValues
 
 W2C = "w2c"
 C2W = "c2w"
@@ -203,12 +204,12 @@ def key_extrinsic(key: str) -> Extrinsic | None:
 
 class ExtrinsicsEvidence:
     """The extrinsics facts of one module: `of(node)` says which camera pose (part) an expression
-    is, from data first and names last. Built on the fact base (names, readings, imports) and the
-    flow-sensitive local values of `geolint.rules.pose_parts`."""
+    is, from data first and names last. Built on the fact base (names, readings, imports) and its
+    flow analysis (`geolint.factbase.reaching`: what a local name certainly holds)."""
 
-    def __init__(self, facts: FactBase, values: LocalValues) -> None:
+    def __init__(self, facts: FactBase) -> None:
         self.facts = facts
-        self.values = values
+        self.index = facts.index
         self._facts: NodeMemo[Extrinsic] = NodeMemo(max_depth=40)
 
     def of(self, node: ast.AST) -> Extrinsic | None:
@@ -216,8 +217,6 @@ class ExtrinsicsEvidence:
 
     # -- the evaluation ------------------------------------------------------------------------
     def _of(self, node: ast.AST) -> Extrinsic | None:
-        from geolint.rules.pose_parts import peel_same_value
-
         if not isinstance(node, ast.expr):
             return None
         peeled = peel_same_value(node)
@@ -243,9 +242,7 @@ class ExtrinsicsEvidence:
         return None
 
     def _of_name(self, node: ast.Name) -> Extrinsic | None:
-        from geolint.rules.pose_parts import Unpacked
-
-        value = self.values.value_of(node)
+        value = value_of(self.index, node)
         if isinstance(value, ast.expr):
             found = self.of(value)
             if found is not None:
@@ -274,8 +271,6 @@ class ExtrinsicsEvidence:
         return name_extrinsic(self.facts, node.attr)
 
     def _of_subscript(self, node: ast.Subscript) -> Extrinsic | None:
-        from geolint.rules.pose_parts import int_value, is_full_slice, is_slice_upto, matrix_indices
-
         key = string(node.slice)
         if key is not None:
             return key_extrinsic(key)
@@ -299,8 +294,6 @@ class ExtrinsicsEvidence:
         return None
 
     def _of_call(self, node: ast.Call) -> Extrinsic | None:
-        from geolint.rules.pose_parts import call_name, transposed_operand
-
         func = node.func
         name = call_name(node)
         if isinstance(func, ast.Attribute) and not node.args and not node.keywords:
@@ -344,8 +337,6 @@ class ExtrinsicsEvidence:
     def _of_product(self, node: ast.AST, negated: bool) -> Extrinsic | None:
         """`-R.T @ t` with R and t of one direction is the translation of the inverse pose
         (the camera centre when R, t are world-to-camera); row form `-t @ R` likewise."""
-        from geolint.rules.pose_parts import matmul_operands
-
         while isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
             node, negated = node.operand, not negated
         operands = matmul_operands(node)
@@ -378,20 +369,18 @@ class ExtrinsicsEvidence:
         """`T[:3, :3] = ...` / `T[:3, 3] = ...` writes into the value `name` reads (the same binding;
         for an assignment's own target, pass `binding=id(statement)`), in its function, before
         `before` when given."""
-        values = self.values
-        scope = values.scope_of(name)
+        index = self.index
         if binding is None:
-            binding = values.binding_of(name)
-        if scope is None or binding is None:
+            binding = binding_of(index, name)
+        if binding is None:
             return []
         stores = []
-        for statement, _ in _subscript_assignments(values, scope, name.id):
-            target = statement.targets[0]
-            assert isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name)
-            if before is not None and (statement.lineno, statement.col_offset) >= (before.lineno, before.col_offset):
+        for target, value in scope_of(index, name).subscript_stores.get(name.id, ()):
+            assert isinstance(target.value, ast.Name)
+            if before is not None and (target.lineno, target.col_offset) >= (before.lineno, before.col_offset):
                 continue
-            if values.binding_of(target.value) == binding:
-                stores.append((target, statement.value))
+            if binding_of(index, target.value) == binding:
+                stores.append((target, value))
         return stores
 
     def built_from_blocks(self, name: ast.Name, value: ast.expr) -> Extrinsic | None:
@@ -399,7 +388,7 @@ class ExtrinsicsEvidence:
         blocks state, when every known block agrees."""
         if not is_blank_matrix(value):
             return None
-        parts = self.block_parts(self.block_stores(name, self.values.statement_of(name)))
+        parts = self.block_parts(self.block_stores(name, statement_of(self.index, name)))
         if not parts:
             return None
         directions = {part.direction for _, part in parts}
@@ -410,8 +399,6 @@ class ExtrinsicsEvidence:
 
     def block_parts(self, stores: list[tuple[ast.Subscript, ast.expr]]) -> list[tuple[ast.expr, Extrinsic]]:
         """The rotation and translation blocks among `stores` whose values are known extrinsics parts."""
-        from geolint.rules.pose_parts import int_value, is_slice_upto, matrix_indices
-
         found = []
         for target, value in stores:
             indices = matrix_indices(target)
@@ -436,8 +423,6 @@ def _weakest(parts: list[Extrinsic]) -> str:
 
 
 def _from_column(node: ast.Slice, start: int) -> bool:
-    from geolint.rules.pose_parts import int_value
-
     if node.step is not None or int_value(node.lower) != start:
         return False
     return node.upper is None or int_value(node.upper) == start + 1
@@ -445,39 +430,12 @@ def _from_column(node: ast.Slice, start: int) -> bool:
 
 def is_blank_matrix(value: ast.expr) -> bool:
     """`np.eye(4)`, `np.identity(4)`, `torch.eye(4)`, `np.zeros((4, 4))`."""
-    from geolint.rules.pose_parts import call_name, int_value
-
     if not isinstance(value, ast.Call) or call_name(value) not in _BLOCK_MAKERS or not value.args:
         return False
     size = value.args[0]
     if isinstance(size, (ast.Tuple, ast.List)):
         return [int_value(element) for element in size.elts] in ([4, 4], [3, 4])
     return int_value(size) == 4
-
-
-def _subscript_assignments(values: LocalValues, scope: ast.AST, name: str) -> list[tuple[ast.Assign, ast.Subscript]]:
-    """Every `name[...] = value` statement directly in `scope` (cached per scope)."""
-    cache = values.__dict__.setdefault("_extrinsics_subscript_stores", {})
-    per_scope = cache.get(id(scope))
-    if per_scope is None:
-        per_scope = {}
-        stack = list(ast.iter_child_nodes(scope))
-        while stack:
-            node = stack.pop()
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
-                continue
-            if (
-                isinstance(node, ast.Assign)
-                and len(node.targets) == 1
-                and isinstance(node.targets[0], ast.Subscript)
-                and isinstance(node.targets[0].value, ast.Name)
-            ):
-                per_scope.setdefault(node.targets[0].value.id, []).append((node, node.targets[0]))
-            stack.extend(ast.iter_child_nodes(node))
-        for stores in per_scope.values():
-            stores.sort(key=lambda store: (store[0].lineno, store[0].col_offset))
-        cache[id(scope)] = per_scope
-    return per_scope.get(name, [])  # type: ignore[no-any-return]
 
 
 _CAMERA_CLOUD_MAKERS = frozenset({"create_from_rgbd_image", "create_from_depth_image"})
@@ -488,21 +446,19 @@ def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: as
     """Why `receiver` is an Open3D point cloud still in the camera frame where `use` runs: made by
     `PointCloud.create_from_rgbd_image` / `create_from_depth_image` without an extrinsic (with one,
     Open3D puts the cloud in the world frame), and not moved since. None otherwise."""
-    from geolint.rules.pose_parts import call_name
-
     if not isinstance(receiver, ast.Name):
         return None
-    values = evidence.values
-    made = values.value_of(receiver)
+    index = evidence.index
+    made = value_of(index, receiver)
     if not isinstance(made, ast.Call) or call_name(made) not in _CAMERA_CLOUD_MAKERS:
         return None
     if "PointCloud" not in (evidence.facts.qualified_name(made.func) or ""):
         return None
     if len(made.args) >= 3 or any(keyword.arg in ("extrinsic", "extrinsics") for keyword in made.keywords):
         return None
-    binding = values.binding_of(receiver)
-    made_at = values.statement_of(made)
-    used_at = values.statement_of(use)
+    binding = binding_of(index, receiver)
+    made_at = statement_of(index, made)
+    used_at = statement_of(index, use)
     if made_at is None or used_at is None or binding is None:
         return None
     start, end = (made_at.lineno, made_at.col_offset), (used_at.lineno, used_at.col_offset)
@@ -513,7 +469,7 @@ def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: as
         if func.value.id != receiver.id or call is use:
             continue
         position = (call.lineno, call.col_offset)  # type: ignore[attr-defined]
-        if start < position < end and values.binding_of(func.value) == binding:
+        if start < position < end and binding_of(index, func.value) == binding:
             return None  # moved in between: its frame is no longer the camera's for sure
     return f"`{receiver.id}` is an Open3D cloud in the camera frame (`{call_name(made)}` at line {made.lineno}, no extrinsic)"
 
@@ -530,8 +486,6 @@ OPEN3D_W2C_ARGUMENTS: dict[str, tuple[int | None, str]] = {
 
 def open3d_w2c_argument(evidence: ExtrinsicsEvidence, call: ast.Call) -> tuple[ast.expr, str] | None:
     """The argument of an Open3D call that must be a world-to-camera pose, and what says so."""
-    from geolint.rules.pose_parts import call_name
-
     name = call_name(call)
     wanted = OPEN3D_W2C_ARGUMENTS.get(name or "")
     if wanted is None or not isinstance(call.func, ast.Attribute):
@@ -557,7 +511,7 @@ def open3d_w2c_argument(evidence: ExtrinsicsEvidence, call: ast.Call) -> tuple[a
 def _is_tsdf_volume(evidence: ExtrinsicsEvidence, receiver: ast.expr) -> bool:
     """`volume = o3d.pipelines.integration.ScalableTSDFVolume(...)`, directly or as `self.volume`."""
     if isinstance(receiver, ast.Name):
-        made = evidence.values.value_of(receiver)
+        made = value_of(evidence.index, receiver)
         made_by = [made] if isinstance(made, ast.expr) else []
     elif isinstance(receiver, ast.Attribute) and isinstance(receiver.value, ast.Name) and receiver.value.id == "self":
         made_by = evidence.facts.index.self_attribute_stores.get(receiver.attr, [])
@@ -574,15 +528,13 @@ _PYRENDER_CAMERAS = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "Orthogr
 def pyrender_camera_pose(evidence: ExtrinsicsEvidence, call: ast.Call) -> ast.expr | None:
     """The `pose=` of `scene.add(camera, pose=...)` when `camera` is a pyrender camera: a scene
     node's pose maps the node into the scene, so a camera's is camera-to-world."""
-    from geolint.rules.pose_parts import call_name
-
     if call_name(call) != "add" or not call.args or not isinstance(call.func, ast.Attribute):
         return None
     pose = next((keyword.value for keyword in call.keywords if keyword.arg == "pose"), None)
     if pose is None:
         return None
     camera = call.args[0]
-    made = evidence.values.value_of(camera) if isinstance(camera, ast.Name) else camera
+    made = value_of(evidence.index, camera) if isinstance(camera, ast.Name) else camera
     if not isinstance(made, ast.Call) or call_name(made) not in _PYRENDER_CAMERAS:
         return None
     return pose if (evidence.facts.qualified_name(made.func) or "").startswith("pyrender") else None

@@ -100,7 +100,7 @@ class ModuleIndex:
         self.too_deep = False
         self.too_deep_at: ast.AST | None = None
         self._merged: dict[tuple[type, ...], list[ast.AST]] = {}
-        self.local_values: object = None  # `geolint.rules.pose_parts.LocalValues`, built on first use
+        self.flow: dict[str, dict] = {}  # type: ignore[type-arg]  # `geolint.factbase.reaching`'s tables, built on first use
         self._build(depth_limit if depth_limit is not None else 1 << 62)
 
     # -- the walk ----------------------------------------------------------------------
@@ -319,12 +319,12 @@ class ModuleIndex:
                     self._bind_target(element, OpaqueBinding(), scope)
 
     def forget_derived(self) -> None:
-        """Drop what queries built on the index (merged node lists, lines, local values): they are
+        """Drop what queries built on the index (merged node lists, lines, flow tables): they are
         rebuilt on demand, and a kept index then takes no more memory than a fresh one."""
         self._merged = {}
         self.__dict__.pop("_lines", None)
         self._lines = None
-        self.local_values = None
+        self.flow = {}
 
     # -- queries ------------------------------------------------------------------------
     def nodes(self, *kinds: type) -> list[ast.AST]:

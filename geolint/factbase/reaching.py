@@ -10,13 +10,18 @@ iteration carries back, unless the always-running one sits in the same loop.
 It is a reaching-definitions analysis on statement blocks, deliberately conservative: `try`
 bodies, branches and loop bodies never always-run for code after them, and whenever a binding
 cannot be placed (comprehension variables, `:=`, `global`), every binding counts, as before.
+
+The same flow answers the pose rules' questions about one use (`single_definition`, `value_of`,
+`resolve`, `binding_of`, `parameter_of`): the one definition that reaches it, if only one can. For
+them an augmented assignment `x -= t` is a definition too (`x = x - t`, whose `x` reads the value
+before), and `R, t = split_pose(T)` gives each name an element of the unpacked value (`Unpacked`).
 """
 
 from __future__ import annotations
 
 import ast
 from dataclasses import dataclass
-from typing import Callable, Iterator, Sequence
+from typing import Any, Callable, Iterator, Sequence
 
 from geolint.factbase.index import Binding, LoopBinding, ModuleIndex, OpaqueBinding, ParamBinding, Scope, UnpackBinding
 
@@ -27,32 +32,55 @@ _NESTED_SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
 
 
 @dataclass(frozen=True)
-class _Event:
-    """One binding of the name: `statement` binds it, effective from `point` on."""
+class Augmented:
+    """`x op= value`, read as `x = x op value`: `value` is that `BinOp` (made once per statement),
+    whose `x`, a copy of the target, reads what x held before the statement."""
 
-    binding: Binding
+    statement: ast.AugAssign
+    value: ast.BinOp
+
+
+@dataclass(frozen=True)
+class Definition:
+    """One binding of a name: `statement` binds it, effective from `point` on."""
+
+    binding: Binding | Augmented
     statement: ast.stmt
     point: tuple[int, int]
     only_inside: bool  # a loop target: bound in the loop's body only, maybe never (zero iterations)
+
+
+@dataclass(frozen=True)
+class Unpacked:
+    """`R, t = split_pose(T)`: element `index` of `value`, unpacked into `names` ("" for a target
+    that is not a plain name) by `statement`."""
+
+    value: ast.expr
+    index: int
+    names: tuple[str, ...]
+    statement: ast.stmt
 
 
 def reaching_bindings(index: ModuleIndex, scope: Scope, use: ast.Name, bindings: Sequence[Binding]) -> list[Binding]:
     """The bindings of `use.id` (all of them: `bindings`) that can reach `use`."""
     if len(bindings) < 2 or len(bindings) > _MAX_BINDINGS or not isinstance(use.ctx, ast.Load):
         return list(bindings)
-    uses = _memo(index, "_reaching_uses")
+    uses = _memo(index, "reaching_uses")
     known = uses.get(id(use))
     if known is None:
-        known = uses[id(use)] = _reaching(index, scope, use, bindings)
+        events = _events(index, scope, use.id, bindings, augmented=False)
+        reached = _reached(index, scope, use, events) if events is not None else None
+        known = uses[id(use)] = [event.binding for event in reached] if reached is not None else list(bindings)  # type: ignore[misc]
     return known
 
 
-def _reaching(index: ModuleIndex, scope: Scope, use: ast.Name, bindings: Sequence[Binding]) -> list[Binding]:
-    events = _events(index, scope, use.id, bindings)
-    if events is None:
-        return list(bindings)
+def _reached(index: ModuleIndex, scope: Scope, use: ast.Name, events: list[Definition]) -> list[Definition] | None:
+    """The definitions among `events` (all of the name's, in order) that can reach `use`; None when
+    none is placed before it (a loop's later one, or a closure's read)."""
     position = (use.lineno, use.col_offset)
     before = [event for event in events if event.point <= position]
+    if not before:
+        return None
     after = [event for event in events if event.point > position]
     ancestors = _ancestors(index, use, scope.node)
     start = 0
@@ -60,48 +88,64 @@ def _reaching(index: ModuleIndex, scope: Scope, use: ast.Name, bindings: Sequenc
         if _always_runs_before(index, before[number], ancestors):
             start = number
             break
-    else:
-        if not before:
-            return list(bindings)  # used before any binding here (a loop's later one, or a closure)
     reaching = before[start:]
-    dominating = before[start] if reaching and _always_runs_before(index, before[start], ancestors) else None
+    dominating = before[start] if _always_runs_before(index, before[start], ancestors) else None
     for loop in (node for node in ancestors if isinstance(node, _LOOPS)):
         if dominating is not None and _inside(index, dominating.statement, loop):
             break  # re-bound on every iteration before the use: nothing is carried back past it
         reaching.extend(event for event in after if _inside(index, event.statement, loop))
-    return [event.binding for event in reaching]
+    return reaching
 
 
-def _events(index: ModuleIndex, scope: Scope, name: str, bindings: Sequence[Binding]) -> list[_Event] | None:
-    """Every binding of `name` in the scope's body, placed; None when one cannot be placed."""
-    memo = _memo(index, "_reaching_events")
-    key = (id(scope.node), name)
+def _events(index: ModuleIndex, scope: Scope, name: str, bindings: Sequence[Binding], augmented: bool) -> list[Definition] | None:
+    """Every definition of `name` in the scope's body, placed, in order (augmented assignments when
+    `augmented`); None when one of the index's `bindings` cannot be placed."""
+    memo = _memo(index, "events")
+    key = (id(scope.node), name, augmented)
     if key in memo:
-        return memo[key]
-    events: list[_Event] = []
-    params = [binding for binding in bindings if isinstance(binding, ParamBinding)]
-    body = getattr(scope.node, "body", None)
-    if not isinstance(body, list):
-        memo[key] = None
-        return None
-    for binding in params:
-        events.append(_Event(binding, body[0], (0, 0), False))
-    for statement in _statements(body):
-        events.extend(_bound_by(statement, name))
-    placed = _match(events, bindings)
+        return memo[key]  # type: ignore[no-any-return]
+    table = _scope_definitions(index, scope)
+    placed = None
+    if table is not None:
+        first: ast.stmt = scope.node.body[0]  # type: ignore[index]  # a body that is a list (`table`)
+        events = [Definition(binding, first, (0, 0), False) for binding in bindings if isinstance(binding, ParamBinding)]
+        events.extend(event for event in table.get(name, ()) if augmented or not isinstance(event.binding, Augmented))
+        placed = _match(events, bindings)
     memo[key] = placed
     return placed
 
 
-def _match(events: list[_Event], bindings: Sequence[Binding]) -> list[_Event] | None:
+def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Definition]] | None:
+    """The definitions each statement of the scope's body makes, by name (one pass per scope);
+    None for a body that is an expression (a lambda)."""
+    memo = _memo(index, "scope_definitions")
+    key = id(scope.node)
+    if key in memo:
+        return memo[key]  # type: ignore[no-any-return]
+    body = getattr(scope.node, "body", None)
+    table: dict[str, list[Definition]] | None = None
+    if isinstance(body, list) and body:
+        table = {}
+        for statement in _statements(body):
+            for name, event in _bound_by(index, statement):
+                table.setdefault(name, []).append(event)
+    memo[key] = table
+    return table
+
+
+def _match(events: list[Definition], bindings: Sequence[Binding]) -> list[Definition] | None:
     """The events in source order, each holding the index's own binding object; None unless every
-    binding of the index is found (an unplaced binding makes order unsafe)."""
+    binding of the index is found (an unplaced binding makes order unsafe). Augmented assignments,
+    which the index does not bind, pass as they are."""
     remaining = list(bindings)
-    matched: list[_Event] = []
+    matched: list[Definition] = []
     for event in events:
+        if isinstance(event.binding, Augmented):
+            matched.append(event)
+            continue
         for number, binding in enumerate(remaining):
             if _same(event.binding, binding):
-                matched.append(_Event(binding, event.statement, event.point, event.only_inside))
+                matched.append(Definition(binding, event.statement, event.point, event.only_inside))
                 del remaining[number]
                 break
         else:
@@ -140,87 +184,112 @@ def _statements(body: list[ast.stmt]) -> Iterator[ast.stmt]:
         stack.extend(reversed(nested))
 
 
-def _bound_by(statement: ast.stmt, name: str) -> Iterator[_Event]:
-    """The bindings of `name` that `statement` itself makes (not its nested blocks')."""
+def _bound_by(index: ModuleIndex, statement: ast.stmt) -> Iterator[tuple[str, Definition]]:
+    """The names `statement` itself binds (not its nested blocks), with their definitions."""
     end = (statement.end_lineno or statement.lineno, statement.end_col_offset or 0)
     if isinstance(statement, ast.Assign):
         for target in statement.targets:
-            yield from _target_events(target, statement.value, name, statement, end)
+            yield from _target_events(target, statement.value, statement, end)
     elif isinstance(statement, ast.AnnAssign):
-        if isinstance(statement.target, ast.Name) and statement.target.id == name:
+        if isinstance(statement.target, ast.Name):
             value = statement.value if statement.value is not None else OpaqueBinding()
-            yield _Event(value, statement, end, False)
+            yield statement.target.id, Definition(value, statement, end, False)
+    elif isinstance(statement, ast.AugAssign):
+        if isinstance(statement.target, ast.Name):
+            yield statement.target.id, Definition(_augmented(index, statement), statement, end, False)
     elif isinstance(statement, (ast.For, ast.AsyncFor)):
         iterable = statement.iter
         point = (iterable.end_lineno or iterable.lineno, iterable.end_col_offset or 0)
-        yield from _loop_events(statement.target, iterable, name, statement, point)
+        yield from _loop_events(statement.target, iterable, statement, point)
     elif isinstance(statement, (ast.With, ast.AsyncWith)):
         for item in statement.items:
-            if item.optional_vars is not None and _binds(item.optional_vars, name):
-                yield _Event(OpaqueBinding(), statement, (item.context_expr.lineno, item.context_expr.col_offset), False)
+            if item.optional_vars is not None:
+                for name in _names_in(item.optional_vars):
+                    yield name, Definition(OpaqueBinding(), statement, (item.context_expr.lineno, item.context_expr.col_offset), False)
     elif isinstance(statement, _NESTED_SCOPES):
-        if statement.name == name:
-            yield _Event(OpaqueBinding(), statement, end, False)
+        yield statement.name, Definition(OpaqueBinding(), statement, end, False)
     elif isinstance(statement, (ast.Import, ast.ImportFrom)):
         for alias in statement.names:
-            local = alias.asname or alias.name.split(".")[0]
-            if local == name and alias.name != "*":
-                yield _Event(OpaqueBinding(), statement, end, False)
+            if alias.name != "*":
+                yield alias.asname or alias.name.split(".")[0], Definition(OpaqueBinding(), statement, end, False)
     elif isinstance(statement, ast.Try) or type(statement).__name__ == "TryStar":
         for handler in statement.handlers:  # type: ignore[attr-defined]
-            if handler.name == name:
-                yield _Event(OpaqueBinding(), handler.body[0], (handler.lineno, handler.col_offset), True)
+            if handler.name:
+                yield handler.name, Definition(OpaqueBinding(), handler.body[0], (handler.lineno, handler.col_offset), True)
 
 
-def _target_events(target: ast.expr, value: ast.expr, name: str, statement: ast.stmt, end: tuple[int, int]) -> Iterator[_Event]:
+def _augmented(index: ModuleIndex, statement: ast.AugAssign) -> Augmented:
+    """`x op= value` as `x op value`, its nodes placed under the statement (`statement_of`, `scope_of`)."""
+    target = statement.target
+    assert isinstance(target, ast.Name)
+    current = ast.copy_location(ast.Name(id=target.id, ctx=ast.Load()), target)
+    value = ast.copy_location(ast.BinOp(left=current, op=statement.op, right=statement.value), statement)
+    made = _memo(index, "made_parents")
+    made[value] = statement
+    made[current] = value
+    return Augmented(statement, value)
+
+
+def _target_events(target: ast.expr, value: ast.expr, statement: ast.stmt, end: tuple[int, int]) -> Iterator[tuple[str, Definition]]:
     """`name = value`, `a, name = value`: as the index binds an assignment's targets."""
-    return _unpacked(target, name, value, lambda position: UnpackBinding(value, position), statement, end, False)
+    return _unpacked(target, value, lambda position: UnpackBinding(value, position), statement, end, False)
 
 
-def _loop_events(target: ast.expr, iterable: ast.expr, name: str, statement: ast.stmt, point: tuple[int, int]) -> Iterator[_Event]:
+def _loop_events(target: ast.expr, iterable: ast.expr, statement: ast.stmt, point: tuple[int, int]) -> Iterator[tuple[str, Definition]]:
     """`for name in iterable`, `for i, name in ...`: as the index binds a loop's targets."""
     whole = LoopBinding(iterable)
-    return _unpacked(target, name, whole, lambda position: LoopBinding(iterable, position), statement, point, True)
+    return _unpacked(target, whole, lambda position: LoopBinding(iterable, position), statement, point, True)
 
 
 def _unpacked(
     target: ast.expr,
-    name: str,
     whole: Binding,
     element: Callable[[int], Binding],
     statement: ast.stmt,
     point: tuple[int, int],
     only_inside: bool,
-) -> Iterator[_Event]:
+) -> Iterator[tuple[str, Definition]]:
     if isinstance(target, ast.Name):
-        if target.id == name:
-            yield _Event(whole, statement, point, only_inside)
+        yield target.id, Definition(whole, statement, point, only_inside)
     elif isinstance(target, (ast.Tuple, ast.List)):
         for position, item in enumerate(target.elts):
             if isinstance(item, ast.Name):
-                if item.id == name:
-                    yield _Event(element(position), statement, point, only_inside)
-            elif _binds(item, name):
-                yield _Event(OpaqueBinding(), statement, point, only_inside)
-    elif isinstance(target, ast.Starred) and _binds(target.value, name):
-        yield _Event(OpaqueBinding(), statement, point, only_inside)
+                yield item.id, Definition(element(position), statement, point, only_inside)
+            else:
+                for name in _names_in(item):
+                    yield name, Definition(OpaqueBinding(), statement, point, only_inside)
+    elif isinstance(target, ast.Starred):
+        for name in _names_in(target.value):
+            yield name, Definition(OpaqueBinding(), statement, point, only_inside)
 
 
-def _binds(target: ast.expr, name: str) -> bool:
-    return any(isinstance(node, ast.Name) and node.id == name for node in ast.walk(target))
+def _names_in(target: ast.expr) -> list[str]:
+    """The distinct names a nested target binds, as the index binds them: through tuples, lists and
+    stars, not the names an item or attribute target (`a[i]`, `self.x`) writes into."""
+    names: list[str] = []
+    stack = [target]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ast.Name):
+            names.append(node.id)
+        elif isinstance(node, (ast.Tuple, ast.List)):
+            stack.extend(reversed(node.elts))
+        elif isinstance(node, ast.Starred):
+            stack.append(node.value)
+    return list(dict.fromkeys(names))
 
 
 def _ancestors(index: ModuleIndex, node: ast.AST, stop: ast.AST) -> list[ast.AST]:
     """The nodes enclosing `node`, innermost first, up to (not including) the scope node `stop`."""
     found = []
-    current = index.parents.get(node)
+    current = _parent(index, node)
     while current is not None and current is not stop:
         found.append(current)
         current = index.parents.get(current)
     return found
 
 
-def _always_runs_before(index: ModuleIndex, event: _Event, ancestors: list[ast.AST]) -> bool:
+def _always_runs_before(index: ModuleIndex, event: Definition, ancestors: list[ast.AST]) -> bool:
     """Whether `event`'s binding runs on every path to the use whose enclosing nodes are `ancestors`."""
     if event.point == (0, 0):
         return True  # a parameter
@@ -264,10 +333,151 @@ def _inside(index: ModuleIndex, node: ast.AST, container: ast.AST) -> bool:
     return False
 
 
-def _memo(index: ModuleIndex, name: str) -> dict:  # type: ignore[type-arg]
-    """A table kept on the module's index (it lives exactly as long as the syntax tree it is about)."""
-    memo = getattr(index, name, None)
+def _parent(index: ModuleIndex, node: ast.AST) -> ast.AST | None:
+    """The node enclosing `node`, for the nodes an augmented assignment's value is made of too."""
+    parent = index.parents.get(node)
+    return parent if parent is not None else _memo(index, "made_parents").get(node)
+
+
+def _memo(index: ModuleIndex, name: str) -> dict[Any, Any]:
+    """A table kept on the module's index (dropped with what else was derived from it, `forget_derived`)."""
+    memo = index.flow.get(name)
     if memo is None:
-        memo = {}
-        setattr(index, name, memo)
+        memo = index.flow[name] = {}
     return memo
+
+
+# --- the one definition that reaches a use -------------------------------------------------------
+
+
+def single_definition(index: ModuleIndex, use: ast.Name) -> Definition | None:
+    """The one definition of `use.id` in its own scope that reaches `use` (a parameter, or an
+    assignment certainly run before it with no other reaching it); None when several can reach it,
+    none is placed before it, or the name is not bound in its scope."""
+    memo = _memo(index, "single_definitions")
+    key = id(use)
+    if key in memo:
+        return memo[key]  # type: ignore[no-any-return]
+    found = None
+    scope = scope_of(index, use)
+    bindings = scope.bindings.get(use.id)
+    if bindings is not None and isinstance(scope.node, ast.Lambda):
+        if len(bindings) == 1 and isinstance(bindings[0], ParamBinding):  # its body is one expression
+            found = Definition(bindings[0], scope.node.body, (0, 0), False)  # type: ignore[arg-type]
+    elif bindings is not None or use.id in scope.augmented:
+        events = _events(index, scope, use.id, bindings or (), augmented=True)
+        reached = _reached(index, scope, use, events) if events is not None else None
+        if reached is not None and len(reached) == 1:
+            found = reached[0]
+    memo[key] = found
+    return found
+
+
+def value_of(index: ModuleIndex, use: ast.Name) -> ast.expr | Unpacked | None:
+    """The value `use` certainly holds: the one reaching definition's value (`x op value` for an
+    augmented one, a literal's element or an `Unpacked` for a tuple target); None when unknown."""
+    definition = single_definition(index, use)
+    if definition is None:
+        return None
+    binding = definition.binding
+    if isinstance(binding, Augmented):
+        return binding.value
+    if isinstance(binding, ast.expr):
+        return binding
+    if isinstance(binding, UnpackBinding) and isinstance(definition.statement, ast.Assign):
+        return _element(binding, definition.statement, use.id)
+    return None
+
+
+def _element(binding: UnpackBinding, statement: ast.Assign, name: str) -> ast.expr | Unpacked | None:
+    for target in statement.targets:
+        if not isinstance(target, (ast.Tuple, ast.List)) or binding.position >= len(target.elts):
+            continue
+        element = target.elts[binding.position]
+        if not (isinstance(element, ast.Name) and element.id == name):
+            continue
+        value = binding.value
+        if isinstance(value, (ast.Tuple, ast.List)) and len(value.elts) == len(target.elts):
+            return value.elts[binding.position]
+        names = tuple(item.id if isinstance(item, ast.Name) else "" for item in target.elts)
+        return Unpacked(value, binding.position, names, statement)
+    return None
+
+
+def resolve(index: ModuleIndex, node: ast.expr, depth: int = 8) -> ast.expr | Unpacked:
+    """Follow local names to the value they certainly hold (the last name reached when unknown)."""
+    while isinstance(node, ast.Name) and depth > 0:
+        value = value_of(index, node)
+        if value is None:
+            return node
+        if isinstance(value, Unpacked):
+            return value
+        node = value
+        depth -= 1
+    return node
+
+
+def binding_of(index: ModuleIndex, use: ast.Name) -> object:
+    """Which definition `use` reads, as a comparable token (a rebound name reads another); a name
+    its scope does not bind reads the enclosing one's, `("free", name)`; None when several reach."""
+    scope = scope_of(index, use)
+    if use.id not in scope.bindings and use.id not in scope.augmented:
+        return ("free", use.id)
+    definition = single_definition(index, use)
+    if definition is None:
+        return None
+    if isinstance(definition.binding, ParamBinding):
+        return ("param", id(scope.node), use.id)
+    return id(definition.statement)
+
+
+def parameter_of(index: ModuleIndex, use: ast.Name) -> ast.arg | None:
+    """The parameter `use` reads, when nothing assigned in its function can reach it instead."""
+    definition = single_definition(index, use)
+    return definition.binding.arg if definition is not None and isinstance(definition.binding, ParamBinding) else None
+
+
+def assigned_values(index: ModuleIndex, use: ast.Name) -> list[ast.expr | Unpacked | None]:
+    """Every value `use.id` is given in its scope, in order (None for a parameter, a loop target or
+    anything else whose value is unknown), whichever of them reaches `use`."""
+    scope = scope_of(index, use)
+    bindings = scope.bindings.get(use.id) or ()
+    events = _events(index, scope, use.id, bindings, augmented=True)
+    if events is None:  # not every binding placed: the index's own, in its order
+        return [binding if isinstance(binding, ast.expr) else None for binding in bindings]
+    values: list[ast.expr | Unpacked | None] = []
+    for event in events:
+        binding = event.binding
+        if isinstance(binding, Augmented):
+            values.append(binding.value)
+        elif isinstance(binding, ast.expr):
+            values.append(binding)
+        elif isinstance(binding, UnpackBinding) and isinstance(event.statement, ast.Assign):
+            values.append(_element(binding, event.statement, use.id))
+        else:
+            values.append(None)
+    return values
+
+
+def scope_of(index: ModuleIndex, node: ast.AST) -> Scope:
+    """The scope whose names `node` reads (an augmented assignment's made nodes: its statement's)."""
+    scope = index.scope_of_node.get(node)
+    if scope is not None:
+        return scope
+    parent = _memo(index, "made_parents").get(node)
+    return scope_of(index, parent) if parent is not None else index.scope_of(node)
+
+
+def statement_of(index: ModuleIndex, node: ast.AST) -> ast.stmt | None:
+    """The statement `node` is part of."""
+    current: ast.AST | None = node
+    while current is not None and not isinstance(current, ast.stmt):
+        current = _parent(index, current)
+    return current
+
+
+def runs_before(index: ModuleIndex, statement: ast.stmt, node: ast.AST) -> bool:
+    """`statement` runs, earlier, on every path to `node`: it sits in a block that encloses `node`."""
+    scope = scope_of(index, statement)
+    event = Definition(OpaqueBinding(), statement, (statement.end_lineno or statement.lineno, statement.end_col_offset or 0), False)
+    return _always_runs_before(index, event, _ancestors(index, node, scope.node))

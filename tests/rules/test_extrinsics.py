@@ -14,7 +14,6 @@ from geolint import api
 from geolint.factbase import facts_for_module
 from geolint.factbase.extrinsics import C2W, DATA, NAME, POSE, ROTATION, TRANSLATION, W2C, ExtrinsicsEvidence, name_extrinsic
 from geolint.lint_types import Config
-from geolint.rules.pose_parts import local_values
 
 
 def returned(code: str) -> tuple[str, str, str] | None:
@@ -22,7 +21,7 @@ def returned(code: str) -> tuple[str, str, str] | None:
     source = textwrap.dedent(code)
     tree = ast.parse(source)
     facts = facts_for_module(tree, source, "<test>", Config())
-    evidence = ExtrinsicsEvidence(facts, local_values(tree))
+    evidence = ExtrinsicsEvidence(facts)
     value = [node for node in ast.walk(tree) if isinstance(node, ast.Return)][-1].value
     found = evidence.of(value)
     return None if found is None else (found.direction, found.part, found.strength)

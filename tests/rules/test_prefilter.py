@@ -101,7 +101,7 @@ def test_fast_gates_answer_as_their_regexes() -> None:
     import re
 
     from geolint.factbase.vocabulary import GATE, gate_matches
-    from geolint.rules.pose_parts import AllOf, POSE_PART_TEXT
+    from geolint.rules.triggers import POSE_PART_TEXT, AllOf
 
     triggers = [(POSE_PART_TEXT.search, re.compile(POSE_PART_TEXT.pattern))]
     for rule in all_rules():
@@ -117,6 +117,6 @@ def test_fast_gates_answer_as_their_regexes() -> None:
 
 
 def test_a_regex_is_split_only_at_top_level_bars() -> None:
-    from geolint.rules.pose_parts import _top_level_alternatives
+    from geolint.rules.triggers import _top_level_alternatives
 
     assert _top_level_alternatives(r"a|b(c|d)|[|]|\||[]|]x|[^]|]") == ["a", "b(c|d)", "[|]", r"\|", "[]|]x", "[^]|]"]

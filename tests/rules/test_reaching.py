@@ -9,6 +9,7 @@ import pytest
 
 from geolint import api
 from geolint.algebra import Kind
+from geolint.factbase import reaching
 from geolint.factbase.index import ModuleIndex
 from geolint.factbase.model import DST_FIRST, FactBase
 from geolint.lint_types import Config
@@ -90,3 +91,54 @@ def test_rules_read_in_order(tmp_path) -> None:
     )
     found = [(finding.code, finding.line) for finding in api.lint_text(source, "move.py")]
     assert found == [("GEO101", 8)]
+
+
+def _read(source: str, line: int, name: str) -> tuple[ModuleIndex, ast.Name]:
+    """The module's index and the read of `name` on `line`."""
+    tree = ast.parse(source)
+    reads = [n for n in ast.walk(tree) if isinstance(n, ast.Name) and n.id == name and isinstance(n.ctx, ast.Load) and n.lineno == line]
+    assert len(reads) == 1
+    return ModuleIndex(tree, source), reads[0]
+
+
+@pytest.mark.parametrize(
+    ("body", "line", "value"),
+    [
+        ("x = a\nuse(x)\n", 3, "a"),
+        ("x = a\nif flag:\n    x = b\nuse(x)\n", 5, None),  # two definitions reach
+        ("if flag:\n    x = a\nuse(x)\n", 4, "a"),  # the only one that can reach
+        ("use(x)\nx = a\n", 2, None),  # nothing placed before the read
+        ("x = a\nx -= t\nuse(x)\n", 4, "x - t"),  # an augmented assignment is x = x - t
+        ("x, y = a, b\nuse(y)\n", 3, "b"),  # a literal's element
+        ("for x in xs:\n    pass\nuse(x)\n", 4, None),  # a loop target holds no one value
+    ],
+)
+def test_the_single_definition_reaching_a_read(body: str, line: int, value: str | None) -> None:
+    source = "def f(xs, flag):\n" + "".join(f"    {text}\n" for text in body.splitlines())
+    index, read = _read(source, line, "x" if "use(x)" in body else "y")
+    found = reaching.value_of(index, read)
+    assert (ast.unparse(found) if isinstance(found, ast.expr) else found) == value
+
+
+def test_an_augmented_value_reads_the_value_before_it() -> None:
+    index, read = _read("def f(T, p):\n    x = p\n    x -= T[:3, 3]\n    return x\n", 4, "x")
+    augmented = reaching.value_of(index, read)
+    assert isinstance(augmented, ast.BinOp) and isinstance(augmented.left, ast.Name)
+    assert ast.unparse(reaching.value_of(index, augmented.left)) == "p"  # type: ignore[arg-type]
+    assert reaching.statement_of(index, augmented.left) is reaching.statement_of(index, augmented)
+
+
+def test_unpacking_a_call_gives_each_name_its_element() -> None:
+    index, read = _read("def f(T):\n    R, t = split_pose(T)\n    return t\n", 3, "t")
+    unpacked = reaching.value_of(index, read)
+    assert isinstance(unpacked, reaching.Unpacked) and (unpacked.index, unpacked.names) == (1, ("R", "t"))
+
+
+def test_a_parameter_and_the_binding_a_read_sees() -> None:
+    source = "def f(T, S):\n    use(T)\n    T = S\n    use(T)\n    use(S)\n"
+    index, first = _read(source, 2, "T")
+    _, second = _read(source, 4, "T")
+    assert reaching.parameter_of(index, first) is not None and reaching.parameter_of(index, second) is None
+    assert reaching.binding_of(index, first) != reaching.binding_of(index, second)
+    _, free = _read("def f():\n    use(np)\n", 2, "np")
+    assert reaching.binding_of(ModuleIndex(ast.parse(""), ""), free) == ("free", "np")

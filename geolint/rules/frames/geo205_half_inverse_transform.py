@@ -4,21 +4,19 @@ from __future__ import annotations
 
 import ast
 
-from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import (
-    MATMUL_TEXT,
-    POSE_PART_TEXT,
-    AllOf,
+from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.pose_parts import (
     Application,
-    LocalValues,
     application,
     difference_with,
-    local_values,
     matmul_operands,
     pose_part,
     same_code,
     transposed_operand,
 )
+from geolint.factbase.reaching import scope_of
+from geolint.rules.base import AstRule, Invalid, Valid
+from geolint.rules.triggers import MATMUL_TEXT, POSE_PART_TEXT, AllOf
 
 # A product, or a transpose/inverse written into a pose's rotation block.
 _PRODUCT_OR_TRANSPOSE_TEXT = MATMUL_TEXT + r"|\.m?T\b|\.transpose\(|\binv\("
@@ -161,40 +159,40 @@ class HalfInverseTransform(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        values = local_values(tree)
+        index = index_of(tree)
         settled: set[ast.AST] = set()  # products already judged as part of a sum
-        for node in values.index.nodes(ast.BinOp):
+        for node in index.nodes(ast.BinOp):
             if isinstance(node.op, (ast.Add, ast.Sub)):
-                self._check_sum(node, values, settled)  # type: ignore[arg-type]
-        for node in values.index.nodes(ast.BinOp, ast.Call):
+                self._check_sum(node, index, settled)  # type: ignore[arg-type]
+        for node in index.nodes(ast.BinOp, ast.Call):
             if node not in settled and matmul_operands(node) is not None:
-                applied = application(node, values)  # type: ignore[arg-type]
+                applied = application(node, index)  # type: ignore[arg-type]
                 if applied is not None and applied.product is node:
-                    self._check_forward_of_difference(applied, values)
-        for node in values.index.nodes(ast.Assign, ast.AugAssign):
+                    self._check_forward_of_difference(applied, index)
+        for node in index.nodes(ast.Assign, ast.AugAssign):
             if isinstance(node, ast.Assign):
-                self._check_block_write(node, values)
+                self._check_block_write(node, index)
             elif isinstance(node, ast.AugAssign) and isinstance(node.op, (ast.Add, ast.Sub)):
-                self._check_in_place_row_form(node, values)
+                self._check_in_place_row_form(node, index)
 
-    def _check_block_write(self, node: ast.Assign, values: LocalValues) -> None:
+    def _check_block_write(self, node: ast.Assign, index: ModuleIndex) -> None:
         """`M[:3, 3] = -t` (or `t`) after `M[:3, :3] = R.T`, with R and t one pose's parts."""
         if len(node.targets) != 1:
             return
         target = node.targets[0]
         if not isinstance(target, ast.Subscript):
             return
-        written = pose_part(target, values)
+        written = pose_part(target, index)
         if written is None or written.kind != "translation":
             return
         value = node.value.operand if isinstance(node.value, ast.UnaryOp) and isinstance(node.value.op, ast.USub) else node.value
-        translation = pose_part(value, values)
+        translation = pose_part(value, index)
         if translation is None or translation.kind != "translation" or translation.pose == written.pose:
             return
-        rotation_write = self._earlier_rotation_write(node, target, values)
+        rotation_write = self._earlier_rotation_write(node, target, index)
         if rotation_write is None:
             return
-        rotation = pose_part(rotation_write.value, values)
+        rotation = pose_part(rotation_write.value, index)
         if rotation is None or rotation.kind != "rotation" or rotation.pose != translation.pose or not rotation.transposed:
             return
         self.report(
@@ -204,9 +202,9 @@ class HalfInverseTransform(AstRule):
             "The inverse's translation is -Rᵀ t",
         )
 
-    def _earlier_rotation_write(self, node: ast.Assign, target: ast.Subscript, values: LocalValues) -> ast.Assign | None:
+    def _earlier_rotation_write(self, node: ast.Assign, target: ast.Subscript, index: ModuleIndex) -> ast.Assign | None:
         """The last `M[:3, :3] = ...` before this statement in the same block, for the same M."""
-        block = self._block_of(node, values)
+        block = self._block_of(node, index)
         found = None
         for statement in block:
             if statement is node:
@@ -214,29 +212,29 @@ class HalfInverseTransform(AstRule):
             if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
                 other = statement.targets[0]
                 if isinstance(other, ast.Subscript) and same_code(other.value, target.value):
-                    part = pose_part(other, values)
+                    part = pose_part(other, index)
                     if part is not None and part.kind == "rotation":
                         found = statement
         return None
 
-    def _check_in_place_row_form(self, node: ast.AugAssign, values: LocalValues) -> None:
+    def _check_in_place_row_form(self, node: ast.AugAssign, index: ModuleIndex) -> None:
         """`x[:, :3] = x[:, :3] @ R` then `x[:, :3] -= t`: Rᵀ p - t, over two statements."""
-        translation = pose_part(node.value, values)
+        translation = pose_part(node.value, index)
         if translation is None or translation.kind != "translation" or translation.transposed:
             return
-        block = self._block_of(node, values)
+        block = self._block_of(node, index)
         position = next((i for i, statement in enumerate(block) if statement is node), 0)
         if position == 0:
             return
         previous = block[position - 1]
         if not (isinstance(previous, ast.Assign) and len(previous.targets) == 1 and same_code(previous.targets[0], node.target)):
             return
-        applied = application(previous.value, values)
+        applied = application(previous.value, index)
         if applied is None or not applied.inverse or applied.rotation.pose != translation.pose:
             return
         if not same_code(applied.operand, node.target):
             return  # `x = y @ R; x -= t`: not a point moved in place
-        if self._module_stores_key_computed(previous.value, values):
+        if self._module_stores_key_computed(previous.value, index):
             return  # `info["rot"] = R` with R composed for `points @ R`: the module chose the layout
         sign = "+" if isinstance(node.op, ast.Add) else "-"
         self.report(
@@ -247,7 +245,7 @@ class HalfInverseTransform(AstRule):
         )
 
     @staticmethod
-    def _module_stores_key_computed(product: ast.expr, values: LocalValues) -> bool:
+    def _module_stores_key_computed(product: ast.expr, index: ModuleIndex) -> bool:
         """Whether the rotation in `product` is read from a string key (`sweep["sweep2lidar_rotation"]`)
         that this module also writes from something other than a plain rotation: the stored layout
         (row-form, for `points @ R`) is then the module's own choice, and the read may be right."""
@@ -258,43 +256,43 @@ class HalfInverseTransform(AstRule):
                 keys.add(read.slice.value)
         if not keys:
             return False
-        for node in values.nodes:
+        for node in index.nodes(ast.Assign):
             if isinstance(node, ast.Assign) and len(node.targets) == 1:
                 target = node.targets[0]
                 if isinstance(target, ast.Subscript) and isinstance(target.slice, ast.Constant) and target.slice.value in keys:
-                    stored = pose_part(node.value, values)
+                    stored = pose_part(node.value, index)
                     if stored is None or stored.transposed:
                         return True
         return False
 
     @staticmethod
-    def _block_of(node: ast.stmt, values: LocalValues) -> list[ast.stmt]:
+    def _block_of(node: ast.stmt, index: ModuleIndex) -> list[ast.stmt]:
         """The statement list holding `node` (a function body, a loop or branch body, the module)."""
-        parent = next(iter(values.ancestors(node)), None)
+        parent = index.parents.get(node)
         for field in ("body", "orelse", "finalbody", "handlers"):
             block = getattr(parent, field, None)
             if isinstance(block, list) and any(statement is node for statement in block):
                 return block
         return [node]
 
-    def _check_sum(self, node: ast.BinOp, values: LocalValues, settled: set[ast.AST]) -> None:
+    def _check_sum(self, node: ast.BinOp, index: ModuleIndex, settled: set[ast.AST]) -> None:
         sides = [(node.left, node.right)]
         if isinstance(node.op, ast.Add):
             sides.append((node.right, node.left))
         for applied_side, other in sides:
-            applied = application(applied_side, values)
+            applied = application(applied_side, index)
             if applied is None:
                 continue
-            translation = pose_part(other, values)
+            translation = pose_part(other, index)
             if translation is None or translation.kind != "translation" or translation.pose != applied.rotation.pose:
                 continue
             settled.add(applied.product)
             if not applied.inverse:
                 return  # R @ p + t, or R @ (p - t) + t (a rotation about the pose's origin)
-            removed = difference_with(applied.operand, values)
+            removed = difference_with(applied.operand, index)
             if removed is not None and removed[1].pose == translation.pose:
                 return  # R.T @ (p - t) + t: an un-rotation about the pose's origin
-            operand_part = pose_part(applied.operand, values)
+            operand_part = pose_part(applied.operand, index)
             if operand_part is not None and operand_part.kind == "translation":
                 return  # R.T @ t: a camera centre being computed, not a point mapped
             sign = "+" if isinstance(node.op, ast.Add) else "-"
@@ -306,13 +304,13 @@ class HalfInverseTransform(AstRule):
             )
             return
 
-    def _check_forward_of_difference(self, applied: Application, values: LocalValues) -> None:
+    def _check_forward_of_difference(self, applied: Application, index: ModuleIndex) -> None:
         if applied.inverse:
             return  # Rᵀ (p - t): the true inverse
-        removed = difference_with(applied.operand, values)
+        removed = difference_with(applied.operand, index)
         if removed is None or removed[1].pose != applied.rotation.pose:
             return
-        if self._adds_translation_back(applied, values):
+        if self._adds_translation_back(applied, index):
             return
         self.report(
             applied.product,
@@ -321,20 +319,18 @@ class HalfInverseTransform(AstRule):
             "(rows: (p - t) @ R)",
         )
 
-    def _adds_translation_back(self, applied: Application, values: LocalValues) -> bool:
+    def _adds_translation_back(self, applied: Application, index: ModuleIndex) -> bool:
         """`x = x - t; x = x @ R.T; x = x + t` (a rotation about the pose's origin, in steps)."""
-        scope = values.scope_of(applied.product)
-        if scope is None:
-            return False
+        scope = scope_of(index, applied.product).node
         start = (applied.product.lineno, applied.product.col_offset)  # type: ignore[attr-defined]
         for node in ast.walk(scope):
             if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add) and (node.lineno, node.col_offset) >= start:
                 for side in (node.left, node.right):
-                    part = pose_part(side, values)
+                    part = pose_part(side, index)
                     if part is not None and part.kind == "translation" and part.pose == applied.rotation.pose:
                         return True
             if isinstance(node, ast.AugAssign) and isinstance(node.op, ast.Add) and (node.lineno, node.col_offset) >= start:
-                part = pose_part(node.value, values)
+                part = pose_part(node.value, index)
                 if part is not None and part.kind == "translation" and part.pose == applied.rotation.pose:
                     return True
         return False

@@ -5,9 +5,12 @@ from __future__ import annotations
 import ast
 import re
 
-from geolint.factbase import index_of
+from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.model import is_slice_upto
+from geolint.factbase.pose_parts import int_value, matrix_indices
+from geolint.factbase.reaching import parameter_of, value_of
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import AllOf, LocalValues, int_value, is_slice_upto, local_values, matrix_indices
+from geolint.rules.triggers import AllOf
 
 # Attribute words that name a part of a transform or pose message (geometry_msgs Transform/Pose).
 _PART_ATTRIBUTES = frozenset({"translation", "rotation", "position", "orientation"})
@@ -87,8 +90,8 @@ class CallerTransformMutated(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        values: LocalValues | None = None
-        for function in index_of(tree).nodes(ast.FunctionDef, ast.AsyncFunctionDef):
+        index = index_of(tree)
+        for function in index.nodes(ast.FunctionDef, ast.AsyncFunctionDef):
             assert isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
             if _MUTATOR_NAME.search(function.name) or not _returns_value(function):
                 continue
@@ -98,8 +101,7 @@ class CallerTransformMutated(AstRule):
                     root = _transform_part_root(target)
                     if root is None:
                         continue
-                    values = values or local_values(tree)
-                    parameter = _parameter_read_by(root, values)
+                    parameter = _parameter_read_by(root, index)
                     if parameter is None or parameter in ("self", "cls") or _returns_name(function, {parameter, root.id}):
                         continue  # returned: an update-and-return helper whose caller rebinds
                     self.report(
@@ -166,12 +168,12 @@ def _transform_part_root(target: ast.expr) -> ast.Name | None:
     return node if isinstance(node, ast.Name) else None
 
 
-def _parameter_read_by(name: ast.Name, values: LocalValues) -> str | None:
+def _parameter_read_by(name: ast.Name, index: ModuleIndex) -> str | None:
     """The parameter `name` still is where it is written (through plain aliases `out = T`)."""
     for _ in range(6):
-        if values.is_parameter(name):
+        if parameter_of(index, name) is not None:
             return name.id
-        value = values.value_of(name)
+        value = value_of(index, name)
         if not isinstance(value, ast.Name):
             return None
         name = value

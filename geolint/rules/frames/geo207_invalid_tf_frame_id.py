@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import ast
 
+from geolint.factbase.pose_parts import call_name
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import AllOf, call_name
+from geolint.rules.triggers import AllOf
 
 # tf2 calls whose leading positional arguments are frame ids, and how many of them.
 _FRAME_ARGUMENTS = {"lookup_transform": 2, "can_transform": 2, "lookup_transform_async": 2, "wait_for_transform_async": 2}

@@ -4,8 +4,11 @@ from __future__ import annotations
 
 import ast
 
+from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.pose_parts import call_name
+from geolint.factbase.reaching import resolve, runs_before, scope_of, statement_of
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import AllOf, LocalValues, call_name, local_values
+from geolint.rules.triggers import AllOf
 
 
 class TfLookupSourceMismatch(AstRule):
@@ -77,21 +80,21 @@ class TfLookupSourceMismatch(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        values = local_values(tree)
-        for node in values.index.nodes(ast.Call):
+        index = index_of(tree)
+        for node in index.nodes(ast.Call):
             if not (isinstance(node, ast.Call) and (call_name(node) or "").startswith("do_transform_") and len(node.args) >= 2):
                 continue
             message, transform = node.args[0], node.args[1]
             if not isinstance(message, ast.Name) or not isinstance(transform, ast.Name):
                 continue
-            lookup = values.resolve(transform)
+            lookup = resolve(index, transform)
             if not (isinstance(lookup, ast.Call) and call_name(lookup) == "lookup_transform" and len(lookup.args) >= 2):
                 continue
-            source = _literal(lookup.args[1], values)
-            stamped = self._frame_set_before(message, node, values)
+            source = _literal(lookup.args[1], index)
+            stamped = self._frame_set_before(message, node, index)
             if source is None or stamped is None or stamped.lstrip("/") == source.lstrip("/"):
                 continue
-            target = _literal(lookup.args[0], values)
+            target = _literal(lookup.args[0], index)
             self.report(
                 node,
                 f"`{message.id}` is stamped in {stamped!r}, but `{transform.id}` is "
@@ -100,14 +103,12 @@ class TfLookupSourceMismatch(AstRule):
                 frames=(source.lstrip("/"), stamped.lstrip("/")),
             )
 
-    def _frame_set_before(self, message: ast.Name, call: ast.Call, values: LocalValues) -> str | None:
+    def _frame_set_before(self, message: ast.Name, call: ast.Call, index: ModuleIndex) -> str | None:
         """The literal of the last `message.header.frame_id = ...` before the call, in its function."""
-        scope = values.scope_of(call)
-        if scope is None:
-            return None
+        scope = scope_of(index, call)
         position = (call.lineno, call.col_offset)
         found: tuple[tuple[int, int], ast.expr] | None = None
-        for node in ast.walk(scope):
+        for node in ast.walk(scope.node):
             if not isinstance(node, ast.Assign) or len(node.targets) != 1:
                 continue
             target = node.targets[0]
@@ -119,35 +120,35 @@ class TfLookupSourceMismatch(AstRule):
                 and isinstance(target.value.value, ast.Name)
                 and target.value.value.id == message.id
                 and (node.lineno, node.col_offset) < position
-                and values.scope_of(node) is scope
+                and scope_of(index, node) is scope
             ):
                 if found is None or (node.lineno, node.col_offset) > found[0]:
                     found = ((node.lineno, node.col_offset), node.value)
-        if found is None or values.statement_of(call) is None:
+        if found is None:
             return None
         # The assignment must run whenever the call does (same block or an enclosing one).
-        assignment = values.statement_of(found[1])
-        if assignment is None or not values.dominates(assignment, values.statement_of(call)):
+        assignment = statement_of(index, found[1])
+        if assignment is None or not runs_before(index, assignment, call):
             return None
-        return _literal(found[1], values)
+        return _literal(found[1], index)
 
 
-def _literal(node: ast.expr, values: LocalValues) -> str | None:
+def _literal(node: ast.expr, index: ModuleIndex) -> str | None:
     """A string literal, or a name that certainly holds one (a module constant)."""
     if isinstance(node, ast.Name):
-        resolved = values.resolve(node)
+        resolved = resolve(index, node)
         if isinstance(resolved, ast.Name):
-            resolved = _module_constant(node, values)
+            resolved = _module_constant(node, index)
         node = resolved if isinstance(resolved, ast.expr) else node
     if isinstance(node, ast.Constant) and isinstance(node.value, str):
         return node.value
     return None
 
 
-def _module_constant(name: ast.Name, values: LocalValues) -> ast.expr | None:
+def _module_constant(name: ast.Name, index: ModuleIndex) -> ast.expr | None:
     """A module-level name assigned exactly once."""
-    module = values.tree
-    found = values.assignments(module, name.id)  # type: ignore[arg-type]
-    if len(found) == 1 and isinstance(found[0][1], ast.expr):
-        return found[0][1]
+    module = index.scopes[index.tree]
+    found = module.bindings.get(name.id) or []
+    if len(found) == 1 and isinstance(found[0], ast.expr) and name.id not in module.augmented:
+        return found[0]
     return None

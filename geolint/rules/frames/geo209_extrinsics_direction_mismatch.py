@@ -22,7 +22,7 @@ from geolint.factbase.extrinsics import (
 from geolint.factbase.model import string, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.pose_parts import AllOf, local_values
+from geolint.rules.triggers import AllOf
 
 TRIGGER = AllOf(
     r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
@@ -157,7 +157,7 @@ class ExtrinsicsDirectionMismatch(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        self.evidence = ExtrinsicsEvidence(facts, local_values(facts.index.tree))
+        self.evidence = ExtrinsicsEvidence(facts)
         for node in facts.index.nodes(ast.Assign, ast.AnnAssign, ast.Call, ast.Dict):
             if isinstance(node, ast.Assign):
                 for target in node.targets:

@@ -8,7 +8,6 @@ from geolint.factbase.extrinsics import TRANSLATION, W2C, ExtrinsicsEvidence
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.frames.geo209_extrinsics_direction_mismatch import TRIGGER
-from geolint.rules.pose_parts import local_values
 
 _CENTRE_WORDS = frozenset({"center", "centre", "centers", "centres", "position", "positions", "pos", "location", "loc", "origin", "origins"})
 _CAMERA_WORDS = frozenset({"cam", "camera", "cams", "cameras", "c", "view", "viewpoint", "eye"})
@@ -89,7 +88,7 @@ class CameraCenterFromTranslation(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        evidence = ExtrinsicsEvidence(facts, local_values(facts.index.tree))
+        evidence = ExtrinsicsEvidence(facts)
         for node in facts.index.nodes(ast.Assign, ast.AnnAssign):
             targets = node.targets if isinstance(node, ast.Assign) else [node.target]  # type: ignore[attr-defined]
             value = node.value  # type: ignore[attr-defined]

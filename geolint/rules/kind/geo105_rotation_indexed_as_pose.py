@@ -4,18 +4,12 @@ from __future__ import annotations
 
 import ast
 
-from geolint.factbase import index_of
+from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.model import subscript_parts
+from geolint.factbase.pose_parts import ROTATION_MAKERS, call_name, int_value, matrix_shape
+from geolint.factbase.reaching import scope_of
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import (
-    ROTATION_MAKERS,
-    AllOf,
-    LocalValues,
-    call_name,
-    int_value,
-    local_values,
-    matrix_shape,
-    subscript_indices,
-)
+from geolint.rules.triggers import AllOf
 
 
 class RotationIndexedAsPose(AstRule):
@@ -83,7 +77,6 @@ class RotationIndexedAsPose(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        values: LocalValues | None = None
         candidates: list[ast.Subscript] = []
         square_names: set[str] = set()  # names some assignment may make 3x3 (a cheap first cut)
         index = index_of(tree)
@@ -93,14 +86,13 @@ class RotationIndexedAsPose(AstRule):
         for node in index.nodes(ast.Subscript):
             if not isinstance(node, ast.Subscript) or not isinstance(node.value, ast.Name):
                 continue
-            indices = subscript_indices(node)
-            if len(indices) <= 2 and any(_past_third(index) for index in indices[:2]):
+            indices = subscript_parts(node)
+            if len(indices) <= 2 and any(_past_third(part) for part in indices[:2]):
                 candidates.append(node)
         for node in candidates:
             if node.value.id not in square_names:  # type: ignore[attr-defined]
                 continue
-            values = values or local_values(tree)
-            if matrix_shape(node.value, values) != 3 or _resized_in_place(node.value, values):
+            if matrix_shape(node.value, index) != 3 or _resized_in_place(node.value, index):
                 continue
             self.report(
                 node,
@@ -133,9 +125,9 @@ def _past_third(index: ast.expr) -> bool:
     return isinstance(index, ast.Slice) and (int_value(index.lower) or 0) >= 3
 
 
-def _resized_in_place(name: ast.Name, values: LocalValues) -> bool:
-    scope = values.scope_of(name)
-    return scope is not None and any(
+def _resized_in_place(name: ast.Name, index: ModuleIndex) -> bool:
+    scope = scope_of(index, name).node
+    return any(
         isinstance(node, ast.Call)
         and isinstance(node.func, ast.Attribute)
         and node.func.attr in ("resize", "resize_")

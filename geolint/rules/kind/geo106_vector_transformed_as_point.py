@@ -4,8 +4,11 @@ from __future__ import annotations
 
 import ast
 
+from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.pose_parts import call_name
+from geolint.factbase.reaching import parameter_of, resolve, scope_of
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import AllOf, LocalValues, call_name, local_values
+from geolint.rules.triggers import AllOf
 
 # Fields of geometry_msgs Twist / Wrench / Accel / Vector3Stamped: free vectors, never positions.
 _FREE_VECTOR_FIELDS = frozenset({"linear", "angular", "force", "torque", "vector"})
@@ -68,14 +71,14 @@ class VectorTransformedAsPoint(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        values = local_values(tree)
-        for node in values.index.nodes(ast.Call):
+        index = index_of(tree)
+        for node in index.nodes(ast.Call):
             if not (isinstance(node, ast.Call) and call_name(node) == "do_transform_point" and node.args):
                 continue
             message = node.args[0]
             if not isinstance(message, ast.Name):
                 continue
-            why = _free_vector_evidence(message, values)
+            why = _free_vector_evidence(message, index)
             if why is None:
                 continue
             text = ast.get_source_segment(self.context.source, node) or ast.unparse(node)
@@ -90,18 +93,16 @@ class VectorTransformedAsPoint(AstRule):
             )
 
 
-def _free_vector_evidence(message: ast.Name, values: LocalValues) -> str | None:
-    value = values.resolve(message)
+def _free_vector_evidence(message: ast.Name, index: ModuleIndex) -> str | None:
+    value = resolve(index, message)
     if isinstance(value, ast.Call) and call_name(value) == "Vector3Stamped":
         return "made by Vector3Stamped()"
-    scope = values.scope_of(message)
-    if values.is_parameter(message) and scope is not None and not isinstance(scope, (ast.Module, ast.ClassDef)):
-        argument = values.parameters.get((id(scope), message.id))
-        annotation = argument.annotation if argument is not None else None
-        if annotation is not None and ast.unparse(annotation).split(".")[-1] == "Vector3Stamped":
-            return "annotated Vector3Stamped"
-    if isinstance(value, ast.Call) and call_name(value) == "PointStamped" and scope is not None:
-        for node in ast.walk(scope):
+    argument = parameter_of(index, message)
+    annotation = argument.annotation if argument is not None else None
+    if annotation is not None and ast.unparse(annotation).split(".")[-1] == "Vector3Stamped":
+        return "annotated Vector3Stamped"
+    if isinstance(value, ast.Call) and call_name(value) == "PointStamped":
+        for node in ast.walk(scope_of(index, message).node):
             if isinstance(node, ast.Assign) and len(node.targets) == 1 and _fills_point_of(node.targets[0], message.id):
                 field = _free_vector_field(node.value)
                 if field is not None:

@@ -4,24 +4,24 @@ from __future__ import annotations
 
 import ast
 
-from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.pose_parts import (
-    AllOf,
-    LocalValues,
+from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.model import is_slice_upto
+from geolint.factbase.pose_parts import (
     call_name,
     int_value,
-    is_slice_upto,
-    local_values,
     matmul_operands,
     matrix_indices,
-    pose_part,
     pose_key,
+    pose_part,
     same_code,
     square_shape,
     stack_key,
     translation_source,
     transposed_operand,
 )
+from geolint.factbase.reaching import resolve, scope_of
+from geolint.rules.base import AstRule, Invalid, Valid
+from geolint.rules.triggers import AllOf
 
 
 class MisplacedTranslation(AstRule):
@@ -126,7 +126,7 @@ class MisplacedTranslation(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        values: LocalValues | None = None
+        index: ModuleIndex | None = None
         for node in ast.walk(tree):
             if isinstance(node, ast.Call) and call_name(node) in _TRANSLATING_CALLS:
                 self._check_translation_argument(node)
@@ -147,10 +147,10 @@ class MisplacedTranslation(AstRule):
                 rotation_block = is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)
                 if not bottom_row and not rotation_block:
                     continue
-                values = values or local_values(tree)
-                from_translation = self._comes_from_own_translation(target, indices[0], value, values)
+                index = index or index_of(tree)
+                from_translation = self._comes_from_own_translation(target, indices[0], value, index)
                 if bottom_row and (
-                    from_translation or self._is_column_convention_pose(target, bool(indices[0]), values, _has_product(value))
+                    from_translation or self._is_column_convention_pose(target, bool(indices[0]), index, _has_product(value))
                 ):
                     self._report_bottom_row(target, indices[2])
                 elif rotation_block and from_translation:
@@ -183,42 +183,40 @@ class MisplacedTranslation(AstRule):
             )
 
     def _comes_from_own_translation(
-        self, target: ast.Subscript, batch: list[ast.expr], value: ast.expr, values: LocalValues
+        self, target: ast.Subscript, batch: list[ast.expr], value: ast.expr, index: ModuleIndex
     ) -> bool:
         """The value is (a mean, negation or scaling of) the same array's translation column `X[..., :3, 3]`."""
-        key = pose_key(target.value, values)
-        source = translation_source(value, values)
+        key = pose_key(target.value, index)
+        source = translation_source(value, index)
         if source is None:
             return False
         return source.pose in (key, f"{key}[{stack_key(batch)}]") or source.pose.startswith(f"{key}[")
 
     def _is_column_convention_pose(
-        self, target: ast.Subscript, stacked: bool, values: LocalValues, computed_translation: bool = False
+        self, target: ast.Subscript, stacked: bool, index: ModuleIndex, computed_translation: bool = False
     ) -> bool:
-        shape = square_shape(target.value, values)
+        shape = square_shape(target.value, index)
         if shape is None or shape[0] != 4 or (shape[1] and not stacked):
             return False
-        scope = values.scope_of(target)
-        if scope is None:
-            return False
+        scope = scope_of(index, target).node
         base = target.value
         states_pose = False
         reads_translation_column = False
         row_layout = False
         for node in ast.walk(scope):
             if isinstance(node, ast.Subscript) and node is not target and same_code(node.value, base):
-                part = pose_part(node, values)
+                part = pose_part(node, index)
                 states_pose = states_pose or part is not None
                 reads_translation_column = reads_translation_column or (part is not None and part.kind == "translation")
-                if _writes_projective_corner(node, values):
+                if _writes_projective_corner(node, index):
                     return False  # M[3, 3] = d: a projection, whose bottom row is meant to be full
-            if not computed_translation and _writes_transposed_rotation(node, base, values):
+            if not computed_translation and _writes_transposed_rotation(node, base, index):
                 row_layout = True  # [R^T 0; t 1]: the transpose of a pose, laid out for row vectors
             transposed = transposed_operand(node) if isinstance(node, ast.expr) else None
             if transposed is not None and same_code(transposed, base):
                 row_layout = True  # built transposed (row-vector layout), then transposed into place
             operands = matmul_operands(node)
-            if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], values):
+            if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], index):
                 row_layout = True  # points_h @ T: the row-vector convention
         return states_pose and (reads_translation_column or not row_layout)
 
@@ -263,12 +261,12 @@ def _is_zero(value: ast.expr) -> bool:
     return False
 
 
-def _writes_projective_corner(node: ast.Subscript, values: LocalValues) -> bool:
+def _writes_projective_corner(node: ast.Subscript, index: ModuleIndex) -> bool:
     """`M[3, 3] = value` with anything but 1: the matrix is projective, not a rigid pose."""
     indices = matrix_indices(node)
     if indices is None or int_value(indices[1]) not in (3, -1) or int_value(indices[2]) not in (3, -1):
         return False
-    statement = values.parents.get(node)
+    statement = index.parents.get(node)
     if isinstance(statement, ast.Assign) and node in statement.targets:
         return not (isinstance(statement.value, ast.Constant) and statement.value.value == 1)
     return isinstance(statement, ast.AugAssign) and statement.target is node
@@ -279,7 +277,7 @@ def _has_product(value: ast.expr) -> bool:
     return any(matmul_operands(node) is not None for node in ast.walk(value))
 
 
-def _writes_transposed_rotation(node: ast.AST, base: ast.expr, values: LocalValues) -> bool:
+def _writes_transposed_rotation(node: ast.AST, base: ast.expr, index: ModuleIndex) -> bool:
     """`M[..., :3, :3] = R.T` (or a name bound to `R.permute(0, 2, 1)`): the rotation block of `base`
     is written transposed, so a translation in its bottom row is the same layout, not a slip."""
     if not isinstance(node, ast.Assign) or len(node.targets) != 1:
@@ -290,12 +288,12 @@ def _writes_transposed_rotation(node: ast.AST, base: ast.expr, values: LocalValu
     indices = matrix_indices(target)
     if indices is None or not (is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)):
         return False
-    value = values.resolve(node.value)
+    value = resolve(index, node.value)
     if not isinstance(value, ast.expr) or transposed_operand(value) is None:
         return False
     return not (isinstance(value, ast.Call) and call_name(value) in ("inverse", "inv", "pinv"))
 
 
-def _is_pose_like(node: ast.expr, values: LocalValues) -> bool:
-    shape = square_shape(node, values)
+def _is_pose_like(node: ast.expr, index: ModuleIndex) -> bool:
+    shape = square_shape(node, index)
     return shape is not None and shape[0] == 4

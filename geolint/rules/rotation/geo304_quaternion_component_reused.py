@@ -9,8 +9,8 @@ from geolint.factbase.model import replace_span, subscript_parts
 from geolint.factbase.rotations import quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.pose_parts import AllOf
 from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base, unwrapped_scalar
+from geolint.rules.triggers import AllOf
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness
 # (in robotics `q` is just as often a joint configuration).

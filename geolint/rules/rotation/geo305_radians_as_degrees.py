@@ -8,8 +8,8 @@ from geolint.factbase.model import keyword, positional_args
 from geolint.factbase.rotations import is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.pose_parts import AllOf
 from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, wrong_unit_passed
+from geolint.rules.triggers import AllOf
 
 
 class RadiansAsDegrees(FactRule):

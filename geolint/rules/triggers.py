@@ -1,0 +1,190 @@
+"""Rule triggers: cheap text tests the engine's prefilter runs on a module's source before any tree
+is walked (`AllOf`), and the texts the pose rules look for (`POSE_PART_TEXT`, `MATMUL_TEXT`)."""
+
+from __future__ import annotations
+
+import re
+from typing import Protocol
+
+
+class AllOf:
+    """A rule trigger: the source matches every pattern (a cheap gate before any tree is walked).
+
+    A pattern is a regex, or an object with `search(text)` (`POSE_PART_TEXT`). A regex is searched
+    one top-level alternative at a time, a plain word with `in`: the regex engine scans quickly
+    for a pattern's first characters, and an alternation of many has no first character to scan for.
+    """
+
+    def __init__(self, *patterns: str | TextTest) -> None:
+        self.patterns = tuple(_text_test(pattern) for pattern in patterns)
+        self._last: tuple[str, bool] | None = None  # rules sharing a trigger ask about the same text in a row
+
+    def search(self, source: str, /) -> bool:
+        last = self._last
+        if last is not None and last[0] is source:
+            return last[1]
+        found = all(pattern.search(source) for pattern in self.patterns)
+        self._last = (source, found)
+        return found
+
+    def search_with(self, source: str, config: object, /) -> bool:
+        """The engine's prefilter entry point (no configuration read)."""
+        return self.search(source)
+
+
+class TextTest(Protocol):
+    pattern: str
+
+    def search(self, source: str, /) -> object: ...
+
+
+class _AnyAlternative:
+    """A regex as its top-level alternatives, each searched on its own (plain words with `in`)."""
+
+    def __init__(self, pattern: str) -> None:
+        self.pattern = pattern
+        alternatives = _top_level_alternatives(pattern)
+        self.words = tuple(part for part in alternatives if part and re.escape(part) == part)
+        self.regexes = tuple(_regex_test(part) for part in alternatives if not (part and re.escape(part) == part))
+
+    def search(self, source: str, /) -> bool:
+        return any(word in source for word in self.words) or any(regex.search(source) for regex in self.regexes)
+
+
+def _regex_test(pattern: str) -> re.Pattern[str] | _LeftContext:
+    r"""The regex, or for one led by `\b` or `\w\s*` the rest of it with that lead checked in Python:
+    the regex engine scans quickly for the rest's first characters (`inv(`, `[`), and not at all for
+    a lead that can start anywhere."""
+    for lead, check in ((r"\b", _at_word_boundary), (r"\w\s*", _after_word_and_spaces)):
+        rest = pattern[len(lead) :]
+        if pattern.startswith(lead) and rest and rest[0] not in "*+?{|" and not rest.startswith(r"\s"):
+            return _LeftContext(re.compile(rest), check)
+    return re.compile(pattern)
+
+
+class _LeftContext:
+    """`lead + rest` searched as `rest`, each match kept when `accept(source, start)` holds for its lead."""
+
+    def __init__(self, rest: re.Pattern[str], accept) -> None:  # type: ignore[no-untyped-def]
+        self.rest = rest
+        self.accept = accept
+
+    def search(self, source: str) -> bool:
+        return _any_at(self.rest, source, lambda text, match: self.accept(text, match.start()))
+
+
+def _at_word_boundary(source: str, at: int) -> bool:
+    r"""`\b` at `at`: a word character on exactly one side."""
+    before = at > 0 and _is_word_character(source[at - 1])
+    return before != (at < len(source) and _is_word_character(source[at]))
+
+
+def _after_word_and_spaces(source: str, at: int) -> bool:
+    r"""`\w\s*` ends at `at`: past any whitespace before it, a word character."""
+    at -= 1
+    while at >= 0 and source[at].isspace():
+        at -= 1
+    return at >= 0 and _is_word_character(source[at])
+
+
+def _text_test(pattern: str | TextTest) -> TextTest:
+    return _AnyAlternative(pattern) if isinstance(pattern, str) else pattern
+
+
+def _top_level_alternatives(pattern: str) -> list[str]:
+    """`a|b(c|d)|[|]` -> ["a", "b(c|d)", "[|]"]: split at `|` outside groups and character classes."""
+    parts, current, depth, position = [], [], 0, 0
+    in_class = False
+    while position < len(pattern):
+        character = pattern[position]
+        if character == "\\":
+            current.append(pattern[position : position + 2])
+            position += 2
+            continue
+        if in_class:
+            if character == "]" and not _opens_class_at(pattern, position):
+                in_class = False
+        elif character == "[":
+            in_class = True
+        elif character == "(":
+            depth += 1
+        elif character == ")":
+            depth -= 1
+        elif character == "|" and depth == 0:
+            parts.append("".join(current))
+            current = []
+            position += 1
+            continue
+        current.append(character)
+        position += 1
+    parts.append("".join(current))
+    return parts
+
+
+def _opens_class_at(pattern: str, position: int) -> bool:
+    """A `]` right after `[` or `[^` is a literal member of the class, not its end."""
+    return pattern[position - 1] == "[" or (pattern[position - 2 : position] == "[^")
+
+
+class _PosePartText:
+    """Source text that can hold a pose's rotation or translation: a `[:3, 3]`-style slice, a part
+    attribute or key, or `R, t` unpacked together. `search` answers as `pattern` would, faster
+    (the unpacking alternative starts at every word and backtracks through it)."""
+
+    pattern = (
+        r"\[[^\]\n]*:\s*3\s*,\s*(?:3|-1|3:)|\.(?:rotation|translation|R|t|rot|trans|tvec)\b"
+        r"|['\"]\w*(?:_R_|_t_|rotation|translation)\w*['\"]|['\"](?:R|t)['\"]"
+        r"|\b\w*(?:R|rot|rotation)\w*\s*,\s*\w*(?:t|trans|translation)\w*\s*="
+    )
+    _SLICE_OR_ATTRIBUTE = re.compile(r"\[[^\]\n]*:\s*3\s*,\s*(?:3|-1|3:)|\.(?:rotation|translation|R|t|rot|trans|tvec)\b")
+    _QUOTED_LETTER = tuple(f"{a}{letter}{b}" for letter in "Rt" for a in "'\"" for b in "'\"")
+    _KEY_WORD = re.compile(r"_R_|_t_|rotation|translation")
+    _UNPACKED_SECOND = re.compile(r",\s*\w*t\w*\s*=")
+
+    def search(self, source: str, /) -> bool:
+        return (
+            self._SLICE_OR_ATTRIBUTE.search(source) is not None
+            or any(text in source for text in self._QUOTED_LETTER)
+            or _any_at(self._KEY_WORD, source, _inside_quoted_word)
+            or _any_at(self._UNPACKED_SECOND, source, _after_rotation_word)
+        )
+
+
+def _is_word_character(character: str) -> bool:
+    return character == "_" or character.isalnum()  # exactly `\w` for str patterns
+
+
+def _any_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
+    """Whether `accept(source, match)` holds for a match starting anywhere (overlapping ones included)."""
+    match = pattern.search(source)
+    while match is not None:
+        if accept(source, match):
+            return True
+        match = pattern.search(source, match.start() + 1)
+    return False
+
+
+def _inside_quoted_word(source: str, match: re.Match[str]) -> bool:
+    r"""`['"]\w*<match>\w*['"]`: the word around the match is quoted on both sides."""
+    start, end = match.start(), match.end()
+    while start > 0 and _is_word_character(source[start - 1]):
+        start -= 1
+    while end < len(source) and _is_word_character(source[end]):
+        end += 1
+    return start > 0 and source[start - 1] in "'\"" and end < len(source) and source[end] in "'\""
+
+
+def _after_rotation_word(source: str, match: re.Match[str]) -> bool:
+    r"""`\b\w*(?:R|rot)\w*\s*` right before the comma: the word before it names a rotation."""
+    end = match.start()
+    while end > 0 and source[end - 1].isspace():
+        end -= 1
+    start = end
+    while start > 0 and _is_word_character(source[start - 1]):
+        start -= 1
+    word = source[start:end]
+    return "R" in word or "rot" in word
+
+
+POSE_PART_TEXT = _PosePartText()
+MATMUL_TEXT = r"@|\.dot\(|matmul\(|bmm\("
