@@ -59,6 +59,9 @@ class FunctionSummary:
     # parameter index -> (unit, where, decided by its name alone): parameters passed as they are to an
     # API that reads that unit, or named in it (`angle_in_degrees`)
     reads_unit: dict[int, tuple[str, str, bool]] = field(default_factory=dict)
+    # parameter index -> (quaternion order, where): parameters passed as they are, unconditionally, as
+    # the quaternion of an API that reads that order (`Rotation.from_quat(q)`), directly or through helpers
+    reads_quaternion: dict[int, tuple[str, str]] = field(default_factory=dict)
     # a summary still being computed, on a cycle's first pass: its `return`s constrain nothing yet
     pending: bool = False
 
@@ -78,6 +81,7 @@ def bound(summary: FunctionSummary) -> FunctionSummary:
         angle_unit=summary.angle_unit,
         quaternion_order=summary.quaternion_order,
         reads_unit=shifted(summary.reads_unit),
+        reads_quaternion=shifted(summary.reads_quaternion),
         pending=summary.pending,
     )
 
@@ -197,6 +201,9 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
                     else:
                         through = f"`{helper}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
                     _add_unit_read(summary, passed[index], unit, through, by_name)
+            for index, (order, where) in callee.reads_quaternion.items():
+                if index in passed and order:
+                    _add_quaternion_read(summary, passed[index], order, _chain(f"`{helper}`", where))
             return
     from geolint.rules.rotation.angle_units import unit_read_by
 
@@ -204,6 +211,32 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
         read = unit_read_by(facts, call, arguments[index])
         if read is not None:
             _add_unit_read(summary, own, read, f"`{facts.code_of(call.func)}`")
+        order = quaternion_read_by(facts, call, arguments[index])
+        if order is not None:
+            _add_quaternion_read(summary, own, order, f"`{facts.code_of(call.func)}`")
+
+
+def quaternion_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:
+    """The component order `call` reads `argument` in, when it is the call's whole quaternion (scipy
+    `from_quat(q)`, pybullet's orientation arguments...) and the call runs whenever its function does."""
+    from geolint.factbase.rotations import pybullet_orientation_arguments, quaternion_argument, quaternion_order, SCALAR_LAST
+    from geolint.rules.rotation.angle_units import _unconditional
+
+    if any(found is argument for found in pybullet_orientation_arguments(call)):
+        order: str | None = SCALAR_LAST
+    else:
+        order = quaternion_order(facts, call)
+        if order is None or quaternion_argument(facts, call) is not argument:
+            return None
+    return order if _unconditional(facts, call) else None
+
+
+def _add_quaternion_read(summary: FunctionSummary, index: int, order: str, where: str) -> None:
+    known = summary.reads_quaternion.get(index)
+    if known is None:
+        summary.reads_quaternion[index] = (order, where)
+    elif known[0] != order:
+        summary.reads_quaternion[index] = ("", "")  # read in both orders: no evidence
 
 
 _CONFLICT = ("", "", False)

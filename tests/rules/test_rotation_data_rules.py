@@ -143,3 +143,27 @@ def test_px4_messages_are_known_only_from_their_class(tmp_path: Path) -> None:
     findings = check(["known.py", "unknown.py", "not_imported.py"], cwd=tmp_path)
     assert sorted((f["path"], f["line"]) for f in findings) == [("known.py", 9), ("known.py", 14)], findings
     assert all("px4_msgs `Vehicle" in f["message"] for f in findings)
+
+
+def test_a_quaternion_passed_to_a_helper_of_another_module(tmp_path: Path) -> None:
+    """A known order handed to a project helper (in another module) that passes its parameter to
+    scipy's from_quat: flagged at the call; a helper that reorders first, or only under a flag, is not."""
+    (tmp_path / "setup.py").write_text("")
+    (tmp_path / "drone").mkdir()
+    (tmp_path / "drone" / "__init__.py").write_text("")
+    (tmp_path / "drone" / "geometry.py").write_text(
+        "from scipy.spatial.transform import Rotation\n"
+        "def heading(q):\n    return Rotation.from_quat(q).as_euler('zyx')[0]\n"
+        "def heading_wxyz(q):\n    return Rotation.from_quat([q[1], q[2], q[3], q[0]]).as_euler('zyx')[0]\n"
+        "def heading_maybe(q, wxyz):\n    if wxyz:\n        return Rotation.from_quat(q, scalar_first=True)\n    return Rotation.from_quat(q)\n"
+    )
+    (tmp_path / "drone" / "node.py").write_text(
+        "from px4_msgs.msg import VehicleAttitude\nfrom drone.geometry import heading, heading_wxyz, heading_maybe\n"
+        "class Node:\n"
+        "    def __init__(self):\n        self.create_subscription(VehicleAttitude, 'att', self.on_attitude, 10)\n"
+        "    def on_attitude(self, msg):\n"
+        "        return heading(msg.q), heading_wxyz(msg.q), heading_maybe(msg.q, True)\n"
+    )
+    findings = check(["drone"], cwd=tmp_path)
+    assert [(f["path"], f["line"], f["column"]) for f in findings] == [("drone/node.py", 7, 24)], findings
+    assert "`heading` (which passes its parameter `q` to `Rotation.from_quat`)" in findings[0]["message"]

@@ -39,6 +39,15 @@ _COMPONENTS = "wxyz"
 
 
 @dataclass(frozen=True)
+class _Helper:
+    """`yaw_from_quat(q)`: a project helper that hands its parameter to a quaternion API."""
+
+    call: ast.Call
+    parameter: str
+    where: str
+
+
+@dataclass(frozen=True)
 class _MessageField:
     """`msg.q_d = value`: a quaternion field of a message whose class fixes the order."""
 
@@ -108,6 +117,9 @@ class QuaternionOrder(FactRule):
       parameter of a callback the module registers with `create_subscription(VehicleOdometry, ...)`
       (also through `self` attributes every store of which is such a message); the name `q` alone
       is no evidence;
+    - a value whose order is known passed to a project helper (here or in another module) that
+      hands the parameter, unchanged and unconditionally, to one of those APIs
+      (`yaw_from_quat(msg.q)` where `def yaw_from_quat(q): return Rotation.from_quat(q)...`);
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -187,6 +199,11 @@ class QuaternionOrder(FactRule):
             "    orientation = p.getQuaternionFromEuler([0, 0, yaw])\n    p.resetBasePositionAndOrientation(body, position, orientation)\n"
         ),
         Valid("def enu_to_ned(q):\n    return {'x': q.y, 'y': q.x, 'z': -q.z, 'w': q.w}\n"),  # an axis change
+        Valid(
+            "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
+            "def yaw_of(q, wxyz=False):\n    if wxyz:\n        q = [q[1], q[2], q[3], q[0]]\n"
+            "    return Rotation.from_quat(q).as_euler('xyz')[2]\ndef f(R):\n    return yaw_of(mat2quat(R), wxyz=True)\n"
+        ),  # the helper reorders under a condition: what it reads is not known
         Valid("from scipy.spatial.transform import Rotation\ndef on_odometry(msg):\n    return Rotation.from_quat(msg.q)\n"),  # type unknown
         Valid(
             "from px4_msgs.msg import VehicleOdometry\nfrom scipy.spatial.transform import Rotation\nclass Node:\n"
@@ -278,6 +295,10 @@ class QuaternionOrder(FactRule):
             "    return o3d.geometry.get_rotation_matrix_from_quaternion(quat)\n"
         ),
         Invalid("def to_json(quat):\n    return {'x': quat.w, 'y': quat.x, 'z': quat.y, 'w': quat.z}\n"),
+        Invalid(
+            "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
+            "def yaw_of(q):\n    return Rotation.from_quat(q).as_euler('xyz')[2]\ndef f(R):\n    return yaw_of(mat2quat(R))\n"
+        ),
         Invalid(  # px4_msgs quaternions are (w, x, y, z); the subscription says what `msg` is
             "from px4_msgs.msg import VehicleOdometry\nfrom scipy.spatial.transform import Rotation\nclass Node:\n"
             "    def __init__(self):\n        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
@@ -388,6 +409,7 @@ class QuaternionOrder(FactRule):
 
     def _check(self, node: ast.Call, flow: QuaternionFlow) -> None:
         facts = self.facts
+        self._check_helper(node, flow)
         for orientation in pybullet_orientation_arguments(node):
             self._check_value(node, orientation, SCALAR_LAST, flow)
         expected = quaternion_order(facts, node)
@@ -415,7 +437,7 @@ class QuaternionOrder(FactRule):
         if argument is not None:
             self._check_value(node, argument, expected, flow)
 
-    def _report(self, reported: ast.expr, call: ast.Call | _MessageField, items: list[ast.expr], order: str, expected: str) -> None:
+    def _report(self, reported: ast.expr, call: ast.Call | _MessageField | _Helper, items: list[ast.expr], order: str, expected: str) -> None:
         by_component = {component: item for component, item in zip(order, items)}
         edits = [(item, self.facts.index.segment(by_component[component])) for item, component in zip(items, expected)]
         self.report(
@@ -427,12 +449,29 @@ class QuaternionOrder(FactRule):
         )
 
     # -- through data: reorders and producers ----------------------------------------------
-    def _consumer(self, consumer: ast.Call | _MessageField) -> str:
+    def _consumer(self, consumer: ast.Call | _MessageField | _Helper) -> str:
         if isinstance(consumer, _MessageField):
             return f"`{self.code_of(consumer.target)}` ({consumer.library} `{consumer.name}`)"
+        if isinstance(consumer, _Helper):
+            return f"`{self.code_of(consumer.call.func)}` (which passes its parameter `{consumer.parameter}` to {consumer.where})"
         return f"`{self.code_of(consumer.func)}`"
 
-    def _check_value(self, call: ast.Call | _MessageField, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
+    def _check_helper(self, node: ast.Call, flow: QuaternionFlow) -> None:
+        """A quaternion whose order is known passed to a project helper that hands the parameter,
+        unchanged and unconditionally, to an API reading the other order (`yaw_from_quat(msg.q)`)."""
+        facts = self.facts
+        if not node.args or any(isinstance(arg, ast.Starred) for arg in node.args) or not facts.may_have_summary(node):
+            return
+        if not any(flow.reorder_of(arg) is not None or flow.order_of(arg) is not None for arg in node.args):
+            return  # nothing with a known order or a reorder: the helper's summary cannot matter
+        summary = facts.function_summary(node)
+        if summary is None:
+            return
+        for index, (order, where) in sorted(summary.reads_quaternion.items()):
+            if order and index < len(node.args):
+                self._check_value(_Helper(node, summary.parameters[index], where), node.args[index], order, flow)
+
+    def _check_value(self, call: ast.Call | _MessageField | _Helper, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
         if isinstance(argument, ast.Name) and self._name_contradicted(argument, flow):
             return  # reported once, where the name is bound
         reorder = flow.reorder_of(argument)
@@ -449,7 +488,7 @@ class QuaternionOrder(FactRule):
             evidence=(order.evidence,),
         )
 
-    def _check_reorder(self, call: ast.Call | _MessageField, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
+    def _check_reorder(self, call: ast.Call | _MessageField | _Helper, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
         facts = self.facts
         other = SCALAR_FIRST if expected == SCALAR_LAST else SCALAR_LAST
         base = flow.order_of(reorder.base)
@@ -636,10 +675,10 @@ def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
     return None
 
 
-def _takes_stacks(call: ast.Call | _MessageField) -> bool:
+def _takes_stacks(call: ast.Call | _MessageField | _Helper) -> bool:
     """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion)."""
-    if isinstance(call, _MessageField):
-        return False
+    if isinstance(call, (_MessageField, _Helper)):
+        return False  # a message field holds one; a helper may index its parameter as one
     name = last_name(call.func) or ""
     return name in ("from_quat", "from_float_array", "as_quat_array") or name.startswith("quaternion_")
 
