@@ -13,6 +13,7 @@ from __future__ import annotations
 import gc
 import os
 import traceback
+from collections import Counter
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
@@ -22,7 +23,7 @@ from geolint import config as config_module
 from geolint import engine
 from geolint.cache import FindingsCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
-from geolint.factbase.summaries import ImportGraph, dependency_digest, folder_listings
+from geolint.factbase.summaries import ImportGraph, dependency_digest, folder_listings, project_root
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 
@@ -191,8 +192,16 @@ def _lint_all(
     from geolint.workers import run_in_workers
 
     engine.registered_rules()  # import the rules once, so forked workers inherit them
-    # Big files first, so one large file does not finish alone at the end.
-    order = sorted(range(len(work)), key=lambda index: -len(work[index][2]))
+    # A worker keeps to one project while it has files left: the helper modules it parsed and indexed
+    # for one file's summaries serve the next. Largest projects first, and big files first within one,
+    # so one large file does not finish alone at the end.
+    project_of = {location: str(project_root(location)) for _, location, _, _ in work}
+    size_of_project: Counter[str] = Counter()
+    for _, location, data, _ in work:
+        size_of_project[project_of[location]] += len(data)
+    order = sorted(range(len(work)), key=lambda index: (
+        -size_of_project[project_of[work[index][1]]], project_of[work[index][1]], -len(work[index][2])
+    ))
 
     def finished(_: int) -> None:
         nonlocal done
@@ -200,7 +209,7 @@ def _lint_all(
         if progress:
             progress(done, total)
 
-    ordered = run_in_workers([work[i] for i in order], _lint_one, _crashed, jobs, finished)
+    ordered = run_in_workers([work[i] for i in order], _lint_one, _crashed, jobs, finished, group=lambda item: project_of[item[1]])
     results_by_index = dict(zip(order, ordered))
     return [results_by_index[index] for index in range(len(work))]
 

@@ -16,7 +16,8 @@ import sys
 import threading
 import time
 from multiprocessing.connection import Connection, wait
-from typing import Any, Callable, Sequence, TypeVar
+from collections import deque
+from typing import Any, Callable, Hashable, Sequence, TypeVar
 
 Item = TypeVar("Item")
 Result = TypeVar("Result")
@@ -31,17 +32,19 @@ def run_in_workers(
     crashed: Callable[[Item, str], Result],
     jobs: int,
     done: Callable[[int], None] | None = None,
+    group: Callable[[Item], Hashable] | None = None,
 ) -> list[Result]:
     """``work(item)`` for every item across ``jobs`` processes, results in the items' order.
 
     ``crashed(item, why)`` makes the result of an item whose worker died; ``done(index)`` is called
     as each item finishes. ``work`` and the items must be picklable when processes are spawned.
+    Items are handed out in the given order, except that a worker keeps to the ``group`` of its last
+    item while that group has items left (what a worker parsed for one file, its neighbours reuse).
     """
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
     results: dict[int, Result] = {}
-    pending = list(range(len(items)))
-    pending.reverse()  # pop() from the end takes them in the given order
+    pending = _Pending([group(item) for item in items] if group is not None else [None] * len(items))
     workers: list[_Worker] = []
     try:
         for _ in range(min(jobs, len(items))):
@@ -72,6 +75,38 @@ def run_in_workers(
     return [results[index] for index in range(len(items))]
 
 
+class _Pending:
+    """The items not handed out yet, by group, each group in the given order; groups in the order of
+    their first item."""
+
+    def __init__(self, groups: list[Hashable]) -> None:
+        self._queues: dict[Hashable, deque[int]] = {}
+        for index, key in enumerate(groups):
+            self._queues.setdefault(key, deque()).append(index)
+        self._held: dict[Hashable, int] = {}  # group -> how many workers are on it
+
+    def take(self, previous: Hashable, first: bool) -> tuple[int, Hashable] | None:
+        """The next item for a worker whose last item was of group `previous` (`first`: it had none)."""
+        if not first:
+            self._held[previous] -= 1
+            queue = self._queues.get(previous)
+            if queue:
+                return self._hand_out(previous, queue)
+            self._queues.pop(previous, None)
+        free = next((key for key in self._queues if not self._held.get(key)), None)
+        key = free if free is not None else next(iter(self._queues), None)
+        if key is None:
+            return None
+        return self._hand_out(key, self._queues[key])
+
+    def _hand_out(self, key: Hashable, queue: deque[int]) -> tuple[int, Hashable]:
+        index = queue.popleft()
+        if not queue:
+            del self._queues[key]
+        self._held[key] = self._held.get(key, 0) + 1
+        return index, key
+
+
 class _Worker:
     """One worker process and the pipe to it; ``busy`` is the index of the item it holds.
 
@@ -87,11 +122,17 @@ class _Worker:
         self.process.start()
         child_end.close()
         self.busy: int | None = None
+        self.group: Hashable = None
+        self.started = False
 
-    def give(self, pending: list[int], items: Sequence[Any]) -> None:
-        if pending:
-            self.busy = pending.pop()
+    def give(self, pending: _Pending, items: Sequence[Any]) -> None:
+        taken = pending.take(self.group, first=not self.started)
+        self.started = True
+        if taken is not None:
+            self.busy, self.group = taken
             self.connection.send(self.busy if self.forked else items[self.busy])
+        else:
+            self.started = False  # holds no group any more
 
     def death(self) -> str:
         """Why the process ended, in words (it has ended, or is about to)."""

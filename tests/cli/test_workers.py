@@ -108,3 +108,32 @@ def test_workers_exit_with_their_parent(cli_real, how):
         if process.poll() is None:
             process.kill()
             process.wait()
+
+
+def test_a_worker_keeps_to_its_project_while_it_has_files_left():
+    from geolint.workers import _Pending
+
+    pending = _Pending(["big", "small", "big", "small", "big"])  # the order api gives: largest project first
+    first = pending.take(None, first=True)
+    second = pending.take(None, first=True)
+    assert (first, second) == ((0, "big"), (1, "small"))  # the second worker starts on a project nobody holds
+    assert pending.take("big", first=False) == (2, "big")
+    assert pending.take("big", first=False) == (4, "big")  # not 3: that one is the other worker's project's
+    assert pending.take("big", first=False) == (3, "small")  # its project done, it helps with the other
+    assert pending.take("small", first=False) is None
+
+
+def test_results_come_back_in_the_given_order_whatever_the_groups():
+    from geolint.workers import run_in_workers
+
+    items = list(range(40))
+    results = run_in_workers(items, _square, _crashed_item, 2, group=lambda item: item % 3)
+    assert results == [item * item for item in items]
+
+
+def _square(item: int) -> int:
+    return item * item
+
+
+def _crashed_item(item: int, why: str) -> int:
+    return -1
