@@ -170,6 +170,7 @@ class DegreesAsRadians(FactRule):
 
     def run(self) -> None:
         units = AngleUnits(self.facts)
+        self._arguments: dict[int, list[ast.expr] | None] = {}
         for node in self.facts.index.nodes(ast.Call):
             self._check(node, units)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.BinOp):
@@ -195,6 +196,13 @@ class DegreesAsRadians(FactRule):
             fix_description="drop the conversion",
             evidence=(unit.evidence,),
         )
+
+    def _radian_arguments(self, node: ast.Call) -> list[ast.expr] | None:
+        """`radian_arguments`, worked out once per call (three of the checks below ask)."""
+        key = id(node)
+        if key not in self._arguments:
+            self._arguments[key] = radian_arguments(self.facts, node)
+        return self._arguments[key]
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         angles = self._radian_angles(node)
@@ -226,7 +234,7 @@ class DegreesAsRadians(FactRule):
         in the call, and only when every large angle is a whole multiple of 15 (FP20)."""
         if is_trig_or_conversion(self.facts, node):
             return False  # trig of a named scalar has its own, name-guarded path
-        for argument in radian_arguments(self.facts, node) or []:
+        for argument in self._radian_arguments(node) or []:
             bound = self._literal_list_bindings(argument)
             if not bound:
                 continue
@@ -277,7 +285,7 @@ class DegreesAsRadians(FactRule):
 
     def _check_units(self, node: ast.Call, units: AngleUnits) -> None:
         """A value the code itself puts in degrees (`yaw_deg`, `np.degrees(...)`) passed as radians."""
-        arguments = radian_arguments(self.facts, node)
+        arguments = self._radian_arguments(node)
         if not arguments:
             return
         elements = [element for argument in arguments for element in _elements(argument)]
@@ -316,7 +324,7 @@ class DegreesAsRadians(FactRule):
             if value is not None and _round_degrees(value) and abs(value) <= 720:
                 return [float(value)]
             return None
-        arguments = radian_arguments(self.facts, node)
+        arguments = self._radian_arguments(node)
         if arguments is None or is_trig_or_conversion(facts, node):
             return None
         return _literals_of(arguments)
