@@ -9,7 +9,9 @@ iteration carries back, unless the always-running one sits in the same loop.
 
 It is a reaching-definitions analysis on statement blocks, deliberately conservative: `try`
 bodies, branches and loop bodies never always-run for code after them, and whenever a binding
-cannot be placed (comprehension variables, `:=`, `global`), every binding counts, as before.
+cannot be placed (`:=`, `global`), every binding counts, as before. A comprehension's target
+(which the index binds in the enclosing function) is the one binding its comprehension reads, and
+reaches nothing outside it.
 
 The same flow answers the pose rules' questions about one use (`single_definition`, `value_of`,
 `resolve`, `binding_of`, `parameter_of`): the one definition that reaches it, if only one can. For
@@ -20,7 +22,7 @@ before), and `R, t = split_pose(T)` gives each name an element of the unpacked v
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Callable, Iterator, Sequence
 
 from geolint.factbase.index import Binding, LoopBinding, ModuleIndex, OpaqueBinding, ParamBinding, Scope, UnpackBinding
@@ -48,6 +50,7 @@ class Definition:
     statement: ast.stmt
     point: tuple[int, int]
     only_inside: bool  # a loop target: bound in the loop's body only, maybe never (zero iterations)
+    within: ast.AST | None = None  # a comprehension's target: bound inside that comprehension only
 
 
 @dataclass(frozen=True)
@@ -77,12 +80,19 @@ def reaching_bindings(index: ModuleIndex, scope: Scope, use: ast.Name, bindings:
 def _reached(index: ModuleIndex, scope: Scope, use: ast.Name, events: list[Definition]) -> list[Definition] | None:
     """The definitions among `events` (all of the name's, in order) that can reach `use`; None when
     none is placed before it (a loop's later one, or a closure's read)."""
+    ancestors = _ancestors(index, use, scope.node)
+    if any(event.within is not None for event in events):
+        # a comprehension's target is the only binding its comprehension reads, and none outside it
+        for node in ancestors:
+            inside = [event for event in events if event.within is node]
+            if inside and not _in_first_iterable(node, use, ancestors):
+                return inside
+        events = [event for event in events if event.within is None]
     position = (use.lineno, use.col_offset)
     before = [event for event in events if event.point <= position]
     if not before:
         return None
     after = [event for event in events if event.point > position]
-    ancestors = _ancestors(index, use, scope.node)
     start = 0
     for number in range(len(before) - 1, -1, -1):
         if _always_runs_before(index, before[number], ancestors):
@@ -129,8 +139,29 @@ def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Defin
         for statement in _statements(body):
             for name, event in _bound_by(index, statement):
                 table.setdefault(name, []).append(event)
+        for comprehension in _comprehensions(index).get(key, ()):
+            statement = statement_of(index, comprehension)
+            for generator in comprehension.generators:  # type: ignore[attr-defined]
+                iterable = generator.iter
+                point = (iterable.end_lineno or iterable.lineno, iterable.end_col_offset or 0)
+                for name, event in _loop_events(generator.target, iterable, statement, point):  # type: ignore[arg-type]
+                    table.setdefault(name, []).append(replace(event, within=comprehension))
     memo[key] = table
     return table
+
+
+_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+
+
+def _comprehensions(index: ModuleIndex) -> dict[int, list[ast.AST]]:
+    """The module's comprehensions by the scope their targets are bound in (the index binds them
+    in the enclosing function's), in source order."""
+    by_scope = index.flow.get("comprehensions")
+    if by_scope is None:
+        by_scope = index.flow["comprehensions"] = {}
+        for comprehension in index.nodes(*_COMPREHENSIONS):
+            by_scope.setdefault(id(index.scope_of(comprehension).node), []).append(comprehension)
+    return by_scope
 
 
 def _match(events: list[Definition], bindings: Sequence[Binding]) -> list[Definition] | None:
@@ -145,7 +176,7 @@ def _match(events: list[Definition], bindings: Sequence[Binding]) -> list[Defini
             continue
         for number, binding in enumerate(remaining):
             if _same(event.binding, binding):
-                matched.append(Definition(binding, event.statement, event.point, event.only_inside))
+                matched.append(replace(event, binding=binding))
                 del remaining[number]
                 break
         else:
@@ -277,6 +308,12 @@ def _names_in(target: ast.expr) -> list[str]:
         elif isinstance(node, ast.Starred):
             stack.append(node.value)
     return list(dict.fromkeys(names))
+
+
+def _in_first_iterable(comprehension: ast.AST, use: ast.AST, ancestors: list[ast.AST]) -> bool:
+    """`[... for x in <here>]`: the first iterable is read in the enclosing scope, not the comprehension's."""
+    first = comprehension.generators[0].iter  # type: ignore[attr-defined]
+    return use is first or any(node is first for node in ancestors)
 
 
 def _ancestors(index: ModuleIndex, node: ast.AST, stop: ast.AST) -> list[ast.AST]:

@@ -67,9 +67,24 @@ def test_a_parameter_rebound_later_is_the_parameter_before() -> None:
 
 
 def test_bindings_that_cannot_be_placed_keep_every_binding() -> None:
-    # a comprehension variable binds the same name in this scope: order is not attempted
-    source = "def f(mesh):\n    x = mesh.vertices\n    y = [x for x in mesh.face_normals]\n    x = mesh.face_normals\n    use(x)\n"
+    # `:=` binds the same name in this scope at a place order does not track: order is not attempted
+    source = "def f(mesh):\n    x = mesh.vertices\n    if (x := mesh.face_normals) is not None:\n        pass\n    x = mesh.face_normals\n    use(x)\n"
     assert kind_at_marker(source) is None
+
+
+@pytest.mark.parametrize(
+    ("body", "kind"),
+    [
+        # after the comprehension, its target is gone: the function's own binding reaches
+        ("x = mesh.face_normals\ny = [x for x in mesh.vertices]\nuse(x)\n", Kind.DIRECTION),
+        ("x = mesh.vertices\ny = [x for x in mesh.face_normals]\nx = mesh.face_normals\nuse(x)\n", Kind.DIRECTION),
+        # inside it, the target is what is read (the first iterable is read outside)
+        ("x = mesh.vertices\ny = [use(x) for x in x]\n", Kind.POINT),
+    ],
+)
+def test_a_comprehension_target_reaches_only_its_comprehension(body: str, kind: Kind | None) -> None:
+    source = "def f(mesh):\n" + "".join(f"    {line}\n" for line in body.splitlines())
+    assert kind_at_marker(source) == kind
 
 
 def test_rules_read_in_order(tmp_path) -> None:
