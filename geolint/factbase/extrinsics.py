@@ -32,7 +32,15 @@ from typing import TYPE_CHECKING
 
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import is_full_slice, is_slice_upto, number, string
-from geolint.factbase.pose_parts import call_name, int_value, matmul_operands, matrix_indices, peel_same_value, transposed_operand
+from geolint.factbase.pose_parts import (
+    call_name,
+    int_value,
+    is_column_slice_from,
+    matmul_operands,
+    matrix_indices,
+    peel_same_value,
+    transposed_operand,
+)
 from geolint.factbase.reaching import Unpacked, binding_of, scope_of, statement_of, value_of
 
 if TYPE_CHECKING:
@@ -287,7 +295,7 @@ class ExtrinsicsEvidence:
         rows_of_pose = is_slice_upto(row, 3) or is_slice_upto(row, 4) or is_full_slice(row) or isinstance(row, ast.List)
         if is_slice_upto(row, 3) and is_slice_upto(column, 3):
             return base.as_part(ROTATION)
-        if is_slice_upto(row, 3) and (int_value(column) in (3, -1) if not isinstance(column, ast.Slice) else _from_column(column, 3)):
+        if is_slice_upto(row, 3) and (int_value(column) in (3, -1) or is_column_slice_from(column, 3)):
             return base.as_part(TRANSLATION)
         if rows_of_pose and (is_slice_upto(column, 4) or is_full_slice(column) or isinstance(column, ast.List)):
             return base
@@ -420,12 +428,6 @@ class ExtrinsicsEvidence:
 def _weakest(parts: list[Extrinsic]) -> str:
     order = (ORDERED_NAME, NAME, DATA)
     return min((part.strength for part in parts), key=order.index)
-
-
-def _from_column(node: ast.Slice, start: int) -> bool:
-    if node.step is not None or int_value(node.lower) != start:
-        return False
-    return node.upper is None or int_value(node.upper) == start + 1
 
 
 def is_blank_matrix(value: ast.expr) -> bool:

@@ -195,7 +195,7 @@ def _sliced_part(node: ast.Subscript, index: ModuleIndex) -> PosePart | None:
         return None
     if is_slice_upto(column, 3):
         kind = "rotation"
-    elif int_value(column) in (3, -1) or _is_column_slice_from(column, 3):
+    elif int_value(column) in (3, -1) or is_column_slice_from(column, 3):
         kind = "translation"
     else:
         return None
@@ -203,7 +203,8 @@ def _sliced_part(node: ast.Subscript, index: ModuleIndex) -> PosePart | None:
     return PosePart(kind, f"{key}[{stack_key(batch)}]" if batch else key, batched=bool(batch))
 
 
-def _is_column_slice_from(node: ast.expr, start: int) -> bool:
+def is_column_slice_from(node: ast.expr, start: int) -> bool:
+    """`3:` or `3:4`: the one column `start` as a slice."""
     if not isinstance(node, ast.Slice) or node.step is not None or int_value(node.lower) != start:
         return False
     return node.upper is None or int_value(node.upper) == start + 1
