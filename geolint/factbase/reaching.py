@@ -140,11 +140,13 @@ def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Defin
             for name, event in _bound_by(index, statement):
                 table.setdefault(name, []).append(event)
         for comprehension in _comprehensions(index).get(key, ()):
-            statement = statement_of(index, comprehension)
+            holder = statement_of(index, comprehension)
+            if holder is None:
+                continue  # its targets stay unplaced: every binding of theirs counts
             for generator in comprehension.generators:  # type: ignore[attr-defined]
                 iterable = generator.iter
                 point = (iterable.end_lineno or iterable.lineno, iterable.end_col_offset or 0)
-                for name, event in _loop_events(generator.target, iterable, statement, point):  # type: ignore[arg-type]
+                for name, event in _loop_events(generator.target, iterable, holder, point):
                     table.setdefault(name, []).append(replace(event, within=comprehension))
     memo[key] = table
     return table
