@@ -99,9 +99,9 @@ def main() -> int:
 
     # Byte-compile geolint as `pip install` does for a wheel: with PYTHONDONTWRITEBYTECODE set (as on
     # this machine) an editable checkout would otherwise recompile every module at each start.
-    import geolint
+    import geolint as package
 
-    subprocess.run([sys.executable, "-m", "compileall", "-q", str(Path(geolint.__file__).parent)], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(Path(package.__file__).parent)], check=True, stdout=subprocess.DEVNULL)
     print(f"tree: {tree}")
     print(f"files: {len(files)}, lines: {lines}, cores: {jobs}, repeats: {args.repeats} (fixit: {args.fixit_repeats})")
     print(f"date: {time.strftime('%Y-%m-%d %H:%M')} (figures are medians; a shared machine adds noise)")
