@@ -23,7 +23,7 @@ from geolint import config as config_module
 from geolint import engine
 from geolint.cache import FindingsCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
-from geolint.factbase.summaries import ImportGraph, dependency_digest, folder_listings, project_root
+from geolint.factbase.summaries import ImportGraph, folder_listings, project_root
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 
@@ -111,6 +111,7 @@ def lint_paths(
     total = len(sources)
     imports = ImportGraph(content_hash)  # each imported module is read, hashed and scanned once
 
+    read: list[tuple[SourceFile, bytes, str, str]] = []
     with folder_listings():  # the imports of every file resolved against one listing per folder
         for source in sources:
             try:
@@ -121,8 +122,11 @@ def lint_paths(
             if cache is None:  # nothing to look up or store: no digest to compute
                 pending.append((source, data, ""))
                 continue
+            # every file of the run registered before any digest: an imported one is then never read twice
+            read.append((source, data, *imports.register_file(str(source.path), data)))
+        for source, data, own, key in read:
             # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
-            digest = dependency_digest(str(source.path), data, content_hash, imports)
+            digest = imports.file_digest(key, own)
             cached = cache.get(source.real_path(), digest, source.display)
             if cached is not None:
                 results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)

@@ -397,7 +397,7 @@ def project_root(path: str) -> Path | None:
 
 # Module resolution works on `str` paths: it runs for every import line of every file of a run, and
 # `Path` objects cost more to build, hash and compare than the lookups themselves.
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=65536)
 def _root_of_folder(folder: str) -> str | None:
     candidate = folder
     while True:
@@ -420,7 +420,7 @@ def module_path(module: str, importer: str, level: int = 0) -> str | None:
     return _module_file_from(module, _folder_of(importer), level)
 
 
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=65536)
 def _folder_of(path: str) -> str:
     return os.path.dirname(os.path.abspath(path))
 
@@ -437,7 +437,7 @@ def _module_file_from(module: str, here: str, level: int) -> str | None:
     return None
 
 
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=65536)
 def _search_folders(here: str, level: int) -> tuple[str, ...]:
     """Where a module name imported from folder `here` may live (relative: `level` folders up)."""
     if level:
@@ -594,6 +594,19 @@ class ImportGraph:
             self._imports[key] = imported_files(path, source) if "import" in source else []
         return key
 
+    def register_file(self, path: str, data: bytes) -> tuple[str, str]:
+        """`register` from the file's bytes: (its hash, its key)."""
+        own = self.content_hash(data)
+        source = data.decode("utf-8", errors="replace")
+        return own, self.register(path, source, own)
+
+    def file_digest(self, key: str, own_hash: str) -> str:
+        """The digest a registered file is cached under: its own hash, combined with `digest(key)`."""
+        imported = self.digest(key)
+        if imported is None:
+            return own_hash
+        return hashlib.blake2b(f"{own_hash}:{imported}".encode(), digest_size=16).hexdigest()
+
     def _read(self, file: str) -> None:
         try:
             with open(file, "rb") as stream:
@@ -685,20 +698,12 @@ def dependency_digest(path: str, data: bytes, content_hash, graph: ImportGraph |
     """The file's own hash, combined with the digest of every project module it imports, directly or
     through other project modules (a summary may read a helper any number of imports away).
 
-    A run passes one `graph` for all its files, so each module is read and scanned once.
+    A run passes one `graph` for all its files, so each module is read and scanned once; a run that
+    registers all its files first (`register_file`) never reads one of them a second time.
     """
-    own = content_hash(data)
-    try:
-        source = data.decode("utf-8", errors="replace")
-    except Exception:  # noqa: BLE001 - a digest never fails
-        return own
-    if "import" not in source:
-        return own
     graph = graph or ImportGraph(content_hash)
-    imported = graph.digest(graph.register(path, source, own))
-    if imported is None:
-        return own
-    return hashlib.blake2b(f"{own}:{imported}".encode(), digest_size=16).hexdigest()
+    own, key = graph.register_file(path, data)
+    return graph.file_digest(key, own)
 
 
 def _module_index_of_file(file: Path) -> ModuleIndex | None:
