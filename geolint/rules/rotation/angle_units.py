@@ -218,6 +218,33 @@ def _is_conversion_factor(value: float | None) -> bool:
     return value is not None and (abs(abs(value) - 0.0174533) < 1e-4 or abs(abs(value) - 57.29578) < 1e-2 or abs(value) == 180)
 
 
+def report_hand_conversion_of_converted(rule, node: ast.BinOp, into: str, units: AngleUnits) -> None:  # type: ignore[no-untyped-def]
+    """`yaw * 180 / np.pi` (into degrees) or `yaw * np.pi / 180` (into radians) written by hand, of a
+    value already in that unit: the twin of `np.degrees(yaw_deg)` / `np.radians(yaw)`."""
+    if not isinstance(node.op, (ast.Mult, ast.Div)):
+        return
+    converted = units.converts_by_hand(node)
+    if converted is not None and converted[0] == into:
+        report_conversion_of_converted(rule, node, rule.code_of(node), converted[1], into, units)
+
+
+def report_conversion_of_converted(rule, node: ast.expr, conversion: str, argument: ast.expr, into: str, units: AngleUnits) -> None:  # type: ignore[no-untyped-def]
+    """`conversion` (into unit `into`, `np.radians(x)` or `x * 180 / pi`) applied to `argument`, reported
+    on `rule` (GEO302, GEO305) when the argument is already in that unit."""
+    unit = units.unit_of(argument)
+    if unit is None or unit.unit != into:
+        return
+    rule.report(
+        node,
+        f"`{conversion}` converts {_word(RADIANS if into == DEGREES else DEGREES)} to {_word(into)}, but "
+        f"`{rule.code_of(argument)}` is already in {_word(into)} ({unit.evidence})",
+        replacement=rule.facts.index.segment(argument) or None,
+        applicability="unsafe",
+        fix_description="drop the conversion",
+        evidence=(unit.evidence,),
+    )
+
+
 def _word(unit: str | None) -> str:
     return "degrees" if unit == DEGREES else "radians"
 

@@ -13,7 +13,7 @@ from geolint.factbase.model import keyword, last_name, number, positional_args
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, is_trig_or_conversion, radian_arguments, wrong_unit_passed
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, is_trig_or_conversion, radian_arguments, report_hand_conversion_of_converted, wrong_unit_passed
 
 _TWO_PI = 2 * math.pi
 # `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate reads.
@@ -174,28 +174,7 @@ class DegreesAsRadians(FactRule):
         for node in self.facts.index.nodes(ast.Call):
             self._check(node, units)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.BinOp):
-            self._check_by_hand(node, units)  # type: ignore[arg-type]
-
-    def _check_by_hand(self, node: ast.BinOp, units: AngleUnits) -> None:
-        """`yaw * 180 / np.pi` on a `yaw` already in degrees: the hand-written twin of `np.degrees(yaw_deg)`."""
-        if not isinstance(node.op, (ast.Mult, ast.Div)):
-            return
-        converted = units.converts_by_hand(node)
-        if converted is None or converted[0] != DEGREES:
-            return
-        argument = converted[1]
-        unit = units.unit_of(argument)
-        if unit is None or unit.unit != DEGREES:
-            return
-        self.report(
-            node,
-            f"`{self.code_of(node)}` converts radians to degrees, but `{self.code_of(argument)}` is already in "
-            f"degrees ({unit.evidence})",
-            replacement=self.facts.index.segment(argument) or None,
-            applicability="unsafe",
-            fix_description="drop the conversion",
-            evidence=(unit.evidence,),
-        )
+            report_hand_conversion_of_converted(self, node, DEGREES, units)  # type: ignore[arg-type]
 
     def _radian_arguments(self, node: ast.Call) -> list[ast.expr] | None:
         """`radian_arguments`, worked out once per call (three of the checks below ask)."""

@@ -8,7 +8,7 @@ from geolint.factbase.model import keyword, positional_args
 from geolint.factbase.rotations import is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, wrong_unit_passed
+from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, report_conversion_of_converted, report_hand_conversion_of_converted, wrong_unit_passed
 from geolint.rules.triggers import AllOf
 
 
@@ -97,31 +97,7 @@ class RadiansAsDegrees(FactRule):
         for node in self.facts.index.nodes(ast.Call):
             self._check(node, units)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.BinOp):
-            self._check_by_hand(node, units)  # type: ignore[arg-type]
-
-    def _check_by_hand(self, node: ast.BinOp, units: AngleUnits) -> None:
-        """`yaw * np.pi / 180` on a `yaw` already in radians: the hand-written twin of `np.radians`."""
-        if not isinstance(node.op, (ast.Mult, ast.Div)):
-            return
-        converted = units.converts_by_hand(node)
-        if converted is None or converted[0] != RADIANS:
-            return
-        self._report_conversion_of_radians(node, self.code_of(node), converted[1], units)
-
-    def _report_conversion_of_radians(self, node: ast.expr, conversion: str, argument: ast.expr, units: AngleUnits) -> None:
-        """`conversion` (degrees to radians) applied to `argument`: flagged when it is already in radians."""
-        unit = units.unit_of(argument)
-        if unit is None or unit.unit != RADIANS:
-            return
-        self.report(
-            node,
-            f"`{conversion}` converts degrees to radians, but `{self.code_of(argument)}` is already in "
-            f"radians ({unit.evidence})",
-            replacement=self.facts.index.segment(argument) or None,
-            applicability="unsafe",
-            fix_description="drop the conversion",
-            evidence=(unit.evidence,),
-        )
+            report_hand_conversion_of_converted(self, node, RADIANS, units)  # type: ignore[arg-type]
 
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         facts = self.facts
@@ -131,7 +107,7 @@ class RadiansAsDegrees(FactRule):
             self.report(argument, message, evidence=evidence)
             return
         if units.converts(node) == RADIANS:
-            self._report_conversion_of_radians(node, self.code_of(node.func), positional_args(node)[0], units)
+            report_conversion_of_converted(self, node, self.code_of(node.func), positional_args(node)[0], RADIANS, units)
             return
         if not is_scipy_rotation_method(facts, node.func, "from_euler"):
             return
