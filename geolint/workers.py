@@ -15,8 +15,8 @@ import signal
 import sys
 import threading
 import time
-from multiprocessing.connection import Connection, wait
 from collections import deque
+from multiprocessing.connection import Connection, wait
 from typing import Any, Callable, Hashable, Sequence, TypeVar
 
 Item = TypeVar("Item")
@@ -75,6 +75,9 @@ def run_in_workers(
     return [results[index] for index in range(len(items))]
 
 
+NO_GROUP = object()  # a worker that holds no group yet (or any more)
+
+
 class _Pending:
     """The items not handed out yet, by group, each group in the given order; groups in the order of
     their first item."""
@@ -85,17 +88,17 @@ class _Pending:
             self._queues.setdefault(key, deque()).append(index)
         self._held: dict[Hashable, int] = {}  # group -> how many workers are on it
 
-    def take(self, previous: Hashable, first: bool) -> tuple[int, Hashable] | None:
-        """The next item for a worker whose last item was of group `previous` (`first`: it had none)."""
-        if not first:
+    def take(self, previous: Hashable) -> tuple[int, Hashable] | None:
+        """The next item for a worker whose last item was of group `previous` (`NO_GROUP`: it had none)."""
+        if previous is not NO_GROUP:
             self._held[previous] -= 1
             queue = self._queues.get(previous)
             if queue:
                 return self._hand_out(previous, queue)
-            self._queues.pop(previous, None)
-        free = next((key for key in self._queues if not self._held.get(key)), None)
-        key = free if free is not None else next(iter(self._queues), None)
-        if key is None:
+        key = next((key for key in self._queues if not self._held.get(key)), NO_GROUP)  # one nobody holds
+        if key is NO_GROUP:
+            key = next(iter(self._queues), NO_GROUP)  # else help with a held one
+        if key is NO_GROUP:
             return None
         return self._hand_out(key, self._queues[key])
 
@@ -122,17 +125,13 @@ class _Worker:
         self.process.start()
         child_end.close()
         self.busy: int | None = None
-        self.group: Hashable = None
-        self.started = False
+        self.group: Hashable = NO_GROUP
 
     def give(self, pending: _Pending, items: Sequence[Any]) -> None:
-        taken = pending.take(self.group, first=not self.started)
-        self.started = True
-        if taken is not None:
-            self.busy, self.group = taken
+        taken = pending.take(self.group)
+        self.busy, self.group = taken if taken is not None else (None, NO_GROUP)
+        if self.busy is not None:
             self.connection.send(self.busy if self.forked else items[self.busy])
-        else:
-            self.started = False  # holds no group any more
 
     def death(self) -> str:
         """Why the process ended, in words (it has ended, or is about to)."""

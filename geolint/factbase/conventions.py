@@ -24,11 +24,11 @@ import os
 import re
 import threading
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames
-from geolint.semantic.names import TRANSFORM_LETTERS, ROTATION_LETTERS
+from geolint.factbase.summaries import project_root
+from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS
 
 _ORDER_NAME = re.compile(r"^_*([TRXH])_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)$")
 _COMPOSITION = re.compile(
@@ -129,33 +129,6 @@ def votes_of_source(source: str, tree: ast.Module | None = None) -> Votes:
 
 _lock = threading.Lock()
 _project_votes: dict[Path, Votes] = {}
-
-
-def project_root(path: str) -> Path | None:
-    """The nearest folder above `path` that holds a project marker (pyproject.toml, setup.py, .git)."""
-    if not os.path.islink(path):  # its folder resolves as the folder of its resolved path: asked once per folder
-        return _project_root_of_folder(os.path.join(os.getcwd(), os.path.dirname(path)))
-    try:
-        current = Path(path).resolve().parent
-    except (OSError, RuntimeError):
-        return None
-    return _nearest_marked(current)
-
-
-@lru_cache(maxsize=4096)
-def _project_root_of_folder(folder: str) -> Path | None:
-    try:
-        current = Path(folder).resolve()
-    except (OSError, RuntimeError):
-        return None
-    return _nearest_marked(current)
-
-
-def _nearest_marked(current: Path) -> Path | None:
-    for folder in (current, *current.parents):
-        if any((folder / marker).exists() for marker in ("pyproject.toml", "setup.py", "setup.cfg", ".git")):
-            return folder
-    return None
 
 
 def _is_project(folder: str) -> bool:

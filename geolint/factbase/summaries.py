@@ -391,8 +391,17 @@ class ProjectSummaries:
 
 
 def project_root(path: str) -> Path | None:
-    root = _root_of_folder(_folder_of(path))
+    """The nearest folder above `path`, symlinks resolved, that holds a project marker (pyproject.toml,
+    setup.py, setup.cfg, .git): the project whose naming votes the file reads, and whose files one
+    worker takes in a row."""
+    folder = os.path.dirname(os.path.realpath(path)) if os.path.islink(path) else _real_folder(_folder_of(path))
+    root = _root_of_folder(folder)
     return None if root is None else Path(root)
+
+
+@lru_cache(maxsize=65536)
+def _real_folder(folder: str) -> str:
+    return os.path.realpath(folder)  # asked once per folder, not once per file
 
 
 # Module resolution works on `str` paths: it runs for every import line of every file of a run, and

@@ -111,16 +111,16 @@ def test_workers_exit_with_their_parent(cli_real, how):
 
 
 def test_a_worker_keeps_to_its_project_while_it_has_files_left():
-    from geolint.workers import _Pending
+    from geolint.workers import NO_GROUP, _Pending
 
     pending = _Pending(["big", "small", "big", "small", "big"])  # the order api gives: largest project first
-    first = pending.take(None, first=True)
-    second = pending.take(None, first=True)
+    first = pending.take(NO_GROUP)
+    second = pending.take(NO_GROUP)
     assert (first, second) == ((0, "big"), (1, "small"))  # the second worker starts on a project nobody holds
-    assert pending.take("big", first=False) == (2, "big")
-    assert pending.take("big", first=False) == (4, "big")  # not 3: that one is the other worker's project's
-    assert pending.take("big", first=False) == (3, "small")  # its project done, it helps with the other
-    assert pending.take("small", first=False) is None
+    assert pending.take("big") == (2, "big")
+    assert pending.take("big") == (4, "big")  # not 3: that one is the other worker's project's
+    assert pending.take("big") == (3, "small")  # its project done, it helps with the other
+    assert pending.take("small") is None
 
 
 def test_results_come_back_in_the_given_order_whatever_the_groups():
