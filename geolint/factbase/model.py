@@ -242,6 +242,13 @@ class FactBase:
         self._memo[key] = value
         return value
 
+    def memoised(self, tag: str, node: ast.AST, compute: Callable[[], _T]) -> _T:
+        """`compute()` once per `node` and `tag` for this module (no cycle guard: for facts that ask no others)."""
+        key = (tag, id(node), "")
+        if key not in self._memo:
+            self._memo[key] = compute()
+        return self._memo[key]  # type: ignore[return-value]
+
     def parent(self, node: ast.AST) -> ast.AST | None:
         return self.index.parents.get(node)
 

@@ -195,6 +195,119 @@ def test_a_parameter_read_under_a_condition_says_nothing() -> None:
     assert _codes(source) == []
 
 
+_GUARDED_HELPERS = """\
+import threading
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+_state_lock = threading.Lock()
+
+
+def yaw_rotation(yaw):
+    with _state_lock:
+        c, s = np.cos(yaw), np.sin(yaw)
+        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def yaw_rotation_or_identity(yaw):
+    with _state_lock:
+        if yaw is None:
+            return np.eye(3)
+        c, s = np.cos(yaw), np.sin(yaw)
+        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def yaw_of(q):
+    with _state_lock:
+        return Rotation.from_quat(q).as_euler("zyx")[0]
+
+
+def yaw_or_zero(q):
+    with _state_lock:
+        if q is None:
+            return 0.0
+        return Rotation.from_quat(q).as_euler("zyx")[0]
+
+
+def yaw_checked(q):
+    with _state_lock, open("/tmp/log", "a") as log:
+        if len(q) != 4:
+            raise ValueError(f"not a quaternion: {q}")
+        log.write("yaw")
+        return Rotation.from_quat(q).as_euler("zyx")[0]
+
+
+async def yaw_when_ready(q, ready):
+    async with ready:
+        with _state_lock:
+            if ready.cancelled:
+                return None
+        return Rotation.from_quat(q).as_euler("zyx")[0]
+
+
+async def yaw_nested(q, ready):
+    async with ready:
+        with _state_lock:
+            if ready.cancelled:
+                return None
+            return Rotation.from_quat(q).as_euler("zyx")[0]
+
+
+def yaw_logged(q):
+    with _state_lock:
+        yaw = Rotation.from_quat(q).as_euler("zyx")[0]
+        if abs(yaw) > 3.0:
+            return None  # an exit after the read: the read still always happens
+        return yaw
+
+
+def yaw_retrying(q, busy):
+    for _attempt in range(3):
+        if busy():
+            continue
+        return Rotation.from_quat(q).as_euler("zyx")[0]
+    return None
+"""
+
+
+def test_a_with_block_that_may_return_before_the_read_reads_nothing() -> None:
+    """A helper that leaves its `with` (or `async with`) block early, by `return` or `raise`, before the
+    API call does not always read its parameter: no unit or order in its summary, and its callers stay
+    silent. A `with` body that reaches the call with no exit before it still reads it; so does one
+    whose exit comes after the call. A loop body may not run at all."""
+    facts = facts_for_module(ast.parse(_GUARDED_HELPERS), _GUARDED_HELPERS, "<string>", Config())
+
+    def summary(name: str):  # type: ignore[no-untyped-def]
+        found = facts.project.summary(facts, facts.index.functions[name])
+        assert found is not None
+        return found
+
+    assert summary("yaw_rotation").reads_unit[0][0] == "rad"
+    assert summary("yaw_rotation_or_identity").reads_unit == {}
+    assert summary("yaw_of").reads_quaternion[0][0] == summary("yaw_logged").reads_quaternion[0][0] != ""
+    for conditional in ("yaw_or_zero", "yaw_checked", "yaw_when_ready", "yaw_nested", "yaw_retrying"):
+        assert summary(conditional).reads_quaternion == {}, conditional
+
+    calls = (
+        "from transforms3d.quaternions import mat2quat\n"
+        "def heading(R, heading_deg, ready):\n"
+        "    q = mat2quat(R)\n"
+        "    yaw_rotation(heading_deg)\n"
+        "    yaw_rotation_or_identity(heading_deg)\n"
+        "    yaw_of(q)\n"
+        "    yaw_or_zero(q)\n"
+        "    yaw_checked(q)\n"
+        "    yaw_when_ready(q, ready)\n"
+        "    yaw_nested(q, ready)\n"
+        "    yaw_logged(q)\n"
+        "    yaw_retrying(q, ready.busy)\n"
+    )
+    source = _GUARDED_HELPERS + calls
+    lines = source.splitlines()
+    findings = sorted((lines[f.line - 1].strip(), f.code) for f in lint_source(source, "<string>", Config()))
+    assert findings == [("yaw_logged(q)", "GEO301"), ("yaw_of(q)", "GEO301"), ("yaw_rotation(heading_deg)", "GEO302")]
+
+
 def test_a_parameter_named_in_a_unit_is_read_in_it() -> None:
     source = (
         "import numpy as np\n"

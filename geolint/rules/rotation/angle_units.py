@@ -328,37 +328,49 @@ def _angle_elements(node: ast.expr) -> list[ast.expr]:
     return [node]
 
 
-_BRANCHES = (ast.If, ast.IfExp, ast.Try, getattr(ast, "TryStar", ast.Try), ast.While, ast.BoolOp, ast.comprehension, ast.Match, ast.Lambda)
+_Block = ast.FunctionDef | ast.AsyncFunctionDef | ast.With | ast.AsyncWith  # a body that may be left early
+
+# a loop's body may run no time at all, like a branch's
+_BRANCHES = (
+    ast.If, ast.IfExp, ast.Try, getattr(ast, "TryStar", ast.Try), ast.While, ast.For, ast.AsyncFor, ast.BoolOp,
+    ast.comprehension, ast.Match, ast.Lambda,
+)  # fmt: skip
 
 
 def _unconditional(facts: FactBase, node: ast.AST) -> bool:
-    """No branch between `node` and its function, and no earlier statement of the function that may
-    return early (`if degrees: return ...`): it runs whenever the function does."""
+    """No branch between `node` and its function, and no statement before it, in the function's body
+    or in the body of a `with` around it, that may leave early (`if degrees: return ...`): it runs
+    whenever the function does."""
     current = facts.parent(node)
     statement = node
+    blocks: list[tuple[_Block, ast.AST]] = []  # each block around `node` with its statement that holds `node`
     while current is not None and not isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Module)):
         if isinstance(current, _BRANCHES):
             return False
+        if isinstance(current, (ast.With, ast.AsyncWith)) and statement in current.body:
+            blocks.append((current, statement))  # (not in its items, which run before any exit of its body)
         statement = current
         current = facts.parent(current)
     if not isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef)):
         return True
-    key = ("early-exit", id(current), "")
-    first_exit = facts._memo.get(key)
-    if first_exit is None:
-        first_exit = facts._memo[key] = _first_early_exit(current)
-    return getattr(statement, "lineno", 0) <= first_exit  # type: ignore[operator]
+    blocks.append((current, statement))
+    return all(getattr(held, "lineno", 0) <= _first_early_exit(facts, block) for block, held in blocks)
 
 
 _DEFINITIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
 
 
-def _first_early_exit(function: ast.FunctionDef | ast.AsyncFunctionDef) -> int:
-    """The last line of the first statement of the function's body that holds a `return` or `raise`
-    under a branch (statements after it may not run); past the end when there is none."""
-    for statement in function.body:
+def _first_early_exit(facts: FactBase, block: _Block) -> int:
+    """The last line of the first statement of a block's body (a function's, a `with`'s) that holds a
+    `return` or `raise` under a branch or a nested block (statements after it may not run); past the
+    end when there is none."""
+    return facts.memoised("early-exit", block, lambda: _early_exit_line(block.body))
+
+
+def _early_exit_line(body: list[ast.stmt]) -> int:
+    for statement in body:
         if isinstance(statement, (ast.Return, ast.Raise, ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign, *_DEFINITIONS)):
-            continue  # straight-line statements (a top-level `return` ends the function for every path alike)
+            continue  # straight-line statements (a `return` of the block itself ends it for every path alike)
         for inner in walk_within(statement):
             if isinstance(inner, (ast.Return, ast.Raise)):
                 return statement.end_lineno or statement.lineno
