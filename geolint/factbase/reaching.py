@@ -9,9 +9,14 @@ iteration carries back, unless the always-running one sits in the same loop.
 
 It is a reaching-definitions analysis on statement blocks, deliberately conservative: `try`
 bodies, branches and loop bodies never always-run for code after them, and whenever a binding
-cannot be placed (`:=`, `global`), every binding counts, as before. A comprehension's target
-(which the index binds in the enclosing function) is the one binding its comprehension reads, and
-reaches nothing outside it.
+cannot be placed (`global`), every binding counts, as before. A comprehension's target (which the
+index binds in the enclosing function) is the one binding its comprehension reads, and reaches
+nothing outside it. An assignment expression `(n := value)` binds where it is evaluated: before the
+blocks of the statement it is in (`if (n := f()) is not None: use(n)`) and the statements after
+it; it always runs with its statement unless it sits where evaluation may skip it (after `and` /
+`or`, in a branch of `a if c else b`, in a comprehension, whose `:=` binds the function's name);
+a read in the same statement as a `:=` of its name has no one definition (there source order is
+not evaluation order: `use(n) if (n := f()) else 0`).
 
 The same flow answers the pose rules' questions about one use (`single_definition`, `value_of`,
 `resolve`, `binding_of`, `parameter_of`): the one definition that reaches it, if only one can. For
@@ -51,6 +56,7 @@ class Definition:
     point: tuple[int, int]
     only_inside: bool  # a loop target: bound in the loop's body only, maybe never (zero iterations)
     within: ast.AST | None = None  # a comprehension's target: bound inside that comprehension only
+    walrus: ast.NamedExpr | None = None  # `(name := value)`, somewhere in `statement`'s own expressions
 
 
 @dataclass(frozen=True)
@@ -88,6 +94,10 @@ def _reached(index: ModuleIndex, scope: Scope, use: ast.Name, events: list[Defin
             if inside and not _in_first_iterable(node, use, ancestors):
                 return inside
         events = [event for event in events if event.within is None]
+    if any(event.walrus is not None for event in events):
+        own = statement_of(index, use)
+        if any(event.walrus is not None and event.statement is own for event in events):
+            return None  # a `:=` in the read's own statement: source order is not evaluation order there
     position = (use.lineno, use.col_offset)
     before = [event for event in events if event.point <= position]
     if not before:
@@ -101,9 +111,9 @@ def _reached(index: ModuleIndex, scope: Scope, use: ast.Name, events: list[Defin
     reaching = before[start:]
     dominating = before[start] if _always_runs_before(index, before[start], ancestors) else None
     for loop in (node for node in ancestors if isinstance(node, _LOOPS)):
-        if dominating is not None and _inside(index, dominating.statement, loop):
+        if dominating is not None and _repeats_in(index, dominating, loop):
             break  # re-bound on every iteration before the use: nothing is carried back past it
-        reaching.extend(event for event in after if _inside(index, event.statement, loop))
+        reaching.extend(event for event in after if _repeats_in(index, event, loop))
     return reaching
 
 
@@ -148,6 +158,12 @@ def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Defin
                 point = (iterable.end_lineno or iterable.lineno, iterable.end_col_offset or 0)
                 for name, event in _loop_events(generator.target, iterable, holder, point):
                     table.setdefault(name, []).append(replace(event, within=comprehension))
+        for walrus in _walruses(index).get(key, ()):
+            holder = statement_of(index, walrus)
+            if holder is not None and isinstance(walrus.target, ast.Name):
+                point = (walrus.end_lineno or walrus.lineno, walrus.end_col_offset or 0)
+                definition = Definition(walrus.value, holder, point, False, walrus=walrus)
+                table.setdefault(walrus.target.id, []).append(definition)
     memo[key] = table
     return table
 
@@ -164,6 +180,53 @@ def _comprehensions(index: ModuleIndex) -> dict[int, list[ast.AST]]:
         for comprehension in index.nodes(*_COMPREHENSIONS):
             by_scope.setdefault(id(index.scope_of(comprehension).node), []).append(comprehension)
     return by_scope
+
+
+def _walruses(index: ModuleIndex) -> dict[int, list[ast.NamedExpr]]:
+    """The module's assignment expressions by the scope they bind in (the index's: a comprehension's
+    `:=` binds in the enclosing function, PEP 572)."""
+    by_scope = index.flow.get("walruses")
+    if by_scope is None:
+        by_scope = index.flow["walruses"] = {}
+        for walrus in index.nodes(ast.NamedExpr):
+            by_scope.setdefault(id(index.scope_of(walrus).node), []).append(walrus)
+    return by_scope
+
+
+# where evaluation may skip an expression although its statement runs: the node's fields that
+# always run (none of a comprehension's: it may iterate no time)
+_MAYBE_SKIPPED: dict[type, tuple[str, ...]] = {
+    ast.IfExp: ("test",),
+    ast.ListComp: (), ast.SetComp: (), ast.DictComp: (), ast.GeneratorExp: (),
+    ast.ExceptHandler: (), ast.match_case: (), ast.Lambda: (),
+    ast.Assert: ("test",),
+}  # fmt: skip
+
+
+def _always_evaluated(index: ModuleIndex, walrus: ast.NamedExpr, statement: ast.stmt) -> bool:
+    """Whether `walrus` runs whenever `statement` does (no `and`/`or` tail, conditional branch,
+    comprehension, handler or case guard between them)."""
+    child: ast.AST = walrus
+    current = index.parents.get(walrus)
+    while current is not None:
+        if isinstance(current, ast.BoolOp) and child is not current.values[0]:
+            return False
+        kept = _MAYBE_SKIPPED.get(type(current))
+        if kept is not None and not any(getattr(current, field, None) is child for field in kept):
+            return False
+        if current is statement:
+            return True
+        child, current = current, index.parents.get(current)
+    return False
+
+
+def _repeats_in(index: ModuleIndex, event: Definition, loop: ast.AST) -> bool:
+    """Whether `event` binds anew on each iteration of `loop` (a `:=` in a `for`'s iterable runs once)."""
+    if event.walrus is None:
+        return _inside(index, event.statement, loop)
+    if isinstance(loop, (ast.For, ast.AsyncFor)) and _inside(index, event.walrus, loop.iter):
+        return False
+    return _inside(index, event.walrus, loop)
 
 
 def _match(events: list[Definition], bindings: Sequence[Binding]) -> list[Definition] | None:
@@ -333,6 +396,11 @@ def _always_runs_before(index: ModuleIndex, event: Definition, ancestors: list[a
     if event.point == (0, 0):
         return True  # a parameter
     statement = event.statement
+    if event.walrus is not None:
+        if not _always_evaluated(index, event.walrus, statement):
+            return False
+        if any(node is statement for node in ancestors):
+            return True  # the read is in a block of the statement whose test, iterable... binds it
     if event.only_inside:
         # a loop target reaches its own body for sure (a `for` with zero iterations never runs it)
         return any(node is statement for node in ancestors) and _in_block(statement, "body", ancestors)
@@ -467,7 +535,7 @@ def binding_of(index: ModuleIndex, use: ast.Name) -> object:
         return None
     if isinstance(definition.binding, ParamBinding):
         return ("param", id(scope.node), use.id)
-    return id(definition.statement)
+    return id(definition.walrus or definition.statement)
 
 
 def parameter_of(index: ModuleIndex, use: ast.Name) -> ast.arg | None:

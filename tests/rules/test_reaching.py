@@ -66,10 +66,30 @@ def test_a_parameter_rebound_later_is_the_parameter_before() -> None:
     assert kind_at_marker(source) == Kind.DIRECTION
 
 
-def test_bindings_that_cannot_be_placed_keep_every_binding() -> None:
-    # `:=` binds the same name in this scope at a place order does not track: order is not attempted
-    source = "def f(mesh):\n    x = mesh.vertices\n    if (x := mesh.face_normals) is not None:\n        pass\n    x = mesh.face_normals\n    use(x)\n"
-    assert kind_at_marker(source) is None
+@pytest.mark.parametrize(
+    ("body", "kind"),
+    [
+        # `:=` in an `if`'s test binds before its blocks and before the statements after it
+        ("x = mesh.vertices\nif (x := mesh.face_normals) is not None:\n    use(x)\n", Kind.DIRECTION),
+        ("x = mesh.face_normals\nif (x := mesh.vertices) is not None:\n    pass\nuse(x)\n", Kind.POINT),
+        ("x = mesh.vertices\nif (x := mesh.face_normals) is not None:\n    pass\nx = mesh.vertices\nuse(x)\n", Kind.POINT),
+        ("x = mesh.vertices\nwhile (x := mesh.face_normals) is not None:\n    use(x)\n", Kind.DIRECTION),
+        # the test of a conditional expression always runs; an operand after `or` may not
+        ("x = mesh.vertices\ny = 1 if (x := mesh.face_normals) is not None else 0\nuse(x)\n", Kind.DIRECTION),
+        ("x = mesh.vertices\nok = flag or (x := mesh.face_normals) is not None\nuse(x)\n", None),
+        # in a comprehension `:=` binds the function's name (PEP 572), on iterations that may not happen
+        ("x = mesh.vertices\nys = [(x := n) for n in mesh.face_normals]\nuse(x)\n", None),
+        # a `for`'s iterable runs once: a binding later in the body is carried to the next iteration
+        ("for v in (x := mesh.vertices):\n    use(x)\n    x = mesh.face_normals\n", None),
+        # source order is not evaluation order inside one statement: the body of a conditional
+        # expression runs after its test, a comprehension's element after its conditions
+        ("x = mesh.vertices\ny = use(x) if (x := mesh.face_normals) is not None else 0\n", None),
+        ("x = mesh.vertices\nys = [use(x) for n in mesh.face_normals if (x := n) is not None]\n", None),
+    ],
+)
+def test_an_assignment_expression_binds_in_evaluation_order(body: str, kind: Kind | None) -> None:
+    source = "def f(mesh, flag):\n" + "".join(f"    {line}\n" for line in body.splitlines())
+    assert kind_at_marker(source) == kind
 
 
 @pytest.mark.parametrize(
@@ -108,6 +128,28 @@ def test_rules_read_in_order(tmp_path) -> None:
     assert found == [("GEO101", 8)]
 
 
+def test_rules_read_an_assignment_expression_where_it_binds() -> None:
+    source = (
+        "import numpy as np\n"
+        "\n"
+        "def move(T_world_cam, mesh):\n"
+        "    x = mesh.vertices\n"
+        "    moved = (T_world_cam @ np.hstack([x, np.ones((len(x), 1))]).T).T\n"
+        "    if (x := mesh.vertex_normals) is not None:\n"
+        "        turned = (T_world_cam @ np.hstack([x, np.ones((len(x), 1))]).T).T  # the normals get w = 1\n"
+        "        return moved, turned\n"
+        "    return moved, None\n"
+        "\n"
+        "def fine(T_world_cam, mesh):\n"
+        "    x = mesh.vertex_normals\n"
+        "    if (x := mesh.vertices) is not None:\n"
+        "        return (T_world_cam @ np.hstack([x, np.ones((len(x), 1))]).T).T\n"
+        "    return None\n"
+    )
+    found = [(finding.code, finding.line) for finding in api.lint_text(source, "move.py")]
+    assert found == [("GEO101", 7)]
+
+
 def _read(source: str, line: int, name: str) -> tuple[ModuleIndex, ast.Name]:
     """The module's index and the read of `name` on `line`."""
     tree = ast.parse(source)
@@ -126,6 +168,15 @@ def _read(source: str, line: int, name: str) -> tuple[ModuleIndex, ast.Name]:
         ("x = a\nx -= t\nuse(x)\n", 4, "x - t"),  # an augmented assignment is x = x - t
         ("x, y = a, b\nuse(y)\n", 3, "b"),  # a literal's element
         ("for x in xs:\n    pass\nuse(x)\n", 4, None),  # a loop target holds no one value
+        ("if (x := a) is not None:\n    use(x)\n", 3, "a"),  # `:=` in the test, before the block
+        ("x = a\nif (x := b) is not None:\n    pass\nuse(x)\n", 5, "b"),
+        ("x = a\nif flag and (x := b):\n    pass\nuse(x)\n", 5, None),  # `:=` may not run
+        ("x = a\nys = [(x := y) for y in xs]\nuse(x)\n", 4, None),
+        ("x = a\nuse(x) if (x := b) else None\n", 3, None),  # the test runs first
+        ("x = a\nassert flag, (x := b)\nuse(x)\n", 4, None),  # a message runs only on failure
+        ("x = b\nmatch flag:\n    case 1 if (x := a):\n        pass\nuse(x)\n", 6, None),  # nor a case's guard
+        ("match (x := a):\n    case 1:\n        use(x)\n", 4, "a"),
+        ("with open((x := a)) as fh:\n    use(x)\n", 3, "a"),
     ],
 )
 def test_the_single_definition_reaching_a_read(body: str, line: int, value: str | None) -> None:
