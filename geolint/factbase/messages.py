@@ -13,7 +13,7 @@ import ast
 
 from geolint.factbase.index import FUNCTION_NODES, ParamBinding
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import FactBase, keyword, positional_args
+from geolint.factbase.model import FactBase, keyword, last_name, positional_args
 from geolint.factbase.rotations import SCALAR_FIRST
 
 # px4_msgs (PX4's uORB topics on the ROS 2 bridge): every quaternion is Hamilton (w, x, y, z), PX4's
@@ -37,6 +37,11 @@ def field_order(cls: str | None, field: str) -> str | None:
 
 def short_name(cls: str) -> str:
     return cls.rsplit(".", 1)[-1]
+
+
+def field_label(cls: str, field: str) -> str:
+    """How a finding names a message field: "px4_msgs `VehicleOdometry.q`"."""
+    return f"{cls.split('.', 1)[0]} `{short_name(cls)}.{field}`"
 
 
 class MessageTypes:
@@ -99,7 +104,7 @@ class MessageTypes:
         called: set[str] = set()
         for call in facts.index.nodes(ast.Call):
             func = call.func  # type: ignore[attr-defined]
-            called.add(func.attr if isinstance(func, ast.Attribute) else func.id if isinstance(func, ast.Name) else "")
+            called.add(last_name(func) or "")
             registered = _subscription(call)  # type: ignore[arg-type]
             name = _function_name(registered[1]) if registered is not None else None
             if registered is not None and name is not None:
@@ -115,7 +120,7 @@ def _subscription(call: ast.Call) -> tuple[ast.expr, ast.expr] | None:
     """`node.create_subscription(MsgType, topic, callback, qos)` (rclpy) or
     `rospy.Subscriber(topic, MsgType, callback)`: (message type, callback)."""
     func = call.func
-    name = func.attr if isinstance(func, ast.Attribute) else func.id if isinstance(func, ast.Name) else None
+    name = last_name(func)
     positional = positional_args(call)
     if name == "create_subscription":
         message_type, callback = _argument(call, positional, 0, "msg_type"), _argument(call, positional, 2, "callback")

@@ -117,9 +117,10 @@ class AngleUnits:
         pi_below = any(self._is_pi(factor) for factor in denominator)
         above = [abs(value) for value in map(number, numerator) if value is not None]
         below = [abs(value) for value in map(number, denominator) if value is not None]
-        if (pi_above and below == [180] and not above) or (not pi_above and not pi_below and not below and len(above) == 1 and abs(above[0] - 0.0174533) < 1e-4):
+        only = above[0] if len(above) == 1 and not (pi_above or pi_below or below) else None  # `x * 0.0174533`
+        if (pi_above and below == [180] and not above) or (only is not None and _is_radians_per_degree(only)):
             return RADIANS, values[0]
-        if (pi_below and above == [180] and not below) or (not pi_above and not pi_below and not below and len(above) == 1 and abs(above[0] - 57.29578) < 1e-2):
+        if (pi_below and above == [180] and not below) or (only is not None and _is_degrees_per_radian(only)):
             return DEGREES, values[0]
         return None
 
@@ -215,7 +216,17 @@ def _factors(node: ast.expr, numerator: list[ast.expr], denominator: list[ast.ex
 
 def _is_conversion_factor(value: float | None) -> bool:
     """pi / 180 and 180 / pi written as numbers (and 180 itself, as in `x / 180 * pi`)."""
-    return value is not None and (abs(abs(value) - 0.0174533) < 1e-4 or abs(abs(value) - 57.29578) < 1e-2 or abs(value) == 180)
+    return value is not None and (_is_radians_per_degree(value) or _is_degrees_per_radian(value) or abs(value) == 180)
+
+
+def _is_radians_per_degree(value: float) -> bool:
+    """pi / 180 written as a number (0.0174533)."""
+    return abs(abs(value) - 0.0174533) < 1e-4
+
+
+def _is_degrees_per_radian(value: float) -> bool:
+    """180 / pi written as a number (57.2958)."""
+    return abs(abs(value) - 57.29578) < 1e-2
 
 
 def report_hand_conversion_of_converted(rule, node: ast.BinOp, into: str, units: AngleUnits) -> None:  # type: ignore[no-untyped-def]
@@ -385,7 +396,7 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
         return []
     units = AngleUnits(facts) if units is None else units
     other = RADIANS if unit == DEGREES else DEGREES
-    if not any((found := units.unit_of(arg)) is not None and found.unit == other for arg in call.args):
+    if not any((given := units.unit_of(arg)) is not None and given.unit == other for arg in call.args):
         return []  # no argument in the other unit: the helper's summary cannot matter
     summary = facts.function_summary(call)
     if summary is None or not summary.reads_unit:

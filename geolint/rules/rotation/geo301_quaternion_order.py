@@ -7,7 +7,7 @@ import re
 from dataclasses import dataclass
 
 from geolint.rules.base import Invalid, Valid
-from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_order, short_name
+from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_label, field_order
 from geolint.factbase.model import FactBase, last_name, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import (
     SCALAR_FIRST,
@@ -53,14 +53,6 @@ class _MessageField:
 
     target: ast.Attribute
     cls: str
-
-    @property
-    def library(self) -> str:
-        return self.cls.split(".", 1)[0]
-
-    @property
-    def name(self) -> str:
-        return f"{short_name(self.cls)}.{self.target.attr}"
 
 
 class _GateOrOrderName:
@@ -451,7 +443,7 @@ class QuaternionOrder(FactRule):
     # -- through data: reorders and producers ----------------------------------------------
     def _consumer(self, consumer: ast.Call | _MessageField | _Helper) -> str:
         if isinstance(consumer, _MessageField):
-            return f"`{self.code_of(consumer.target)}` ({consumer.library} `{consumer.name}`)"
+            return f"`{self.code_of(consumer.target)}` ({field_label(consumer.cls, consumer.target.attr)})"
         if isinstance(consumer, _Helper):
             return f"`{self.code_of(consumer.call.func)}` (which passes its parameter `{consumer.parameter}` to {consumer.where})"
         return f"`{self.code_of(consumer.func)}`"

@@ -191,9 +191,7 @@ class DegreesAsRadians(FactRule):
                 too_big = []  # pybullet scene constants tuned by eye (FP20): only round angles are a degree slip
             if too_big:
                 shown = _format(too_big[0])
-                fix = None
-                if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
-                    fix = with_keyword(self.facts.index.segment(node), "degrees=True")
+                fix = self._degrees_keyword_fix(node)
                 self.report(
                     node,
                     f"`{self.code_of(node.func)}` takes radians, but the literal angle {shown} is above 2 pi: "
@@ -222,9 +220,7 @@ class DegreesAsRadians(FactRule):
             if not too_big or not all(_round_degrees(value) for value in too_big):
                 continue
             first = bound[0]
-            fix = None
-            if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
-                fix = with_keyword(self.facts.index.segment(node), "degrees=True")
+            fix = self._degrees_keyword_fix(node)
             self.report(
                 node if fix is not None else argument,  # the fix rewrites the whole call
                 f"`{self.code_of(node.func)}` takes radians, but `{self.code_of(argument)}` is `{self.code_of(first)}` "
@@ -254,6 +250,12 @@ class DegreesAsRadians(FactRule):
             return []
         return values  # type: ignore[return-value]
 
+    def _degrees_keyword_fix(self, node: ast.Call) -> str | None:
+        """The call with `degrees=True` added: for scipy's `from_euler` / `from_rotvec` that do not say."""
+        if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
+            return with_keyword(self.facts.index.segment(node), "degrees=True")
+        return None
+
     def _check_helper(self, node: ast.Call, units: AngleUnits) -> None:
         """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
         where `rot_z(theta)` computes `np.cos(theta)`)."""
@@ -272,12 +274,11 @@ class DegreesAsRadians(FactRule):
         if not in_degrees or any(unit.unit == RADIANS for element in elements if (unit := units.unit_of(element)) is not None):
             return  # nothing in degrees, or radians beside it: mixed evidence, say nothing
         element, unit = in_degrees[0]
-        fix = None
         applicability = "unsafe" if any(found.by_name for _, found in in_degrees) else "safe"
-        if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
-            degree_nodes = {id(found) for found, _ in in_degrees}
-            if all(id(other) in degree_nodes or number(other) == 0 for other in elements):
-                fix = with_keyword(self.facts.index.segment(node), "degrees=True")
+        fix = self._degrees_keyword_fix(node)
+        degree_nodes = {id(found) for found, _ in in_degrees}
+        if fix is not None and not all(id(other) in degree_nodes or number(other) == 0 for other in elements):
+            fix = None  # an angle in radians beside them would be read as degrees too
         self.report(
             node if fix is not None else element,  # the fix rewrites the whole call
             f"`{self.code_of(node.func)}` takes radians, but `{self.code_of(element)}` is in degrees ({unit.evidence})",

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 from geolint.factbase.index import LoopBinding, ParamBinding, UnpackBinding
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.messages import QUATERNION_FIELD_NAMES, MessageTypes, field_order, short_name
+from geolint.factbase.messages import QUATERNION_FIELD_NAMES, MessageTypes, field_label, field_order
 from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, quaternion_producer
 from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
@@ -376,7 +376,7 @@ class QuaternionFlow:
             cls = self.messages.class_of(node.value)
             order = field_order(cls, attr)
             if cls is not None and order is not None:
-                return Order(order, f"from {cls.split('.', 1)[0]} `{short_name(cls)}.{attr}`", local=isinstance(node.value, ast.Name))
+                return Order(order, f"from {field_label(cls, attr)}", local=isinstance(node.value, ast.Name))
         stated = name_order(attr)
         by_name = Order(stated, f"from its name `{attr}`", local=False) if stated else None
         if isinstance(node.value, ast.Name) and node.value.id == "self":
