@@ -908,6 +908,9 @@ class FactBase:
     def homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
         """The homogeneous value whose construction is exactly `node` (including an `np.ones(4)`
         buffer filled later), or None."""
+        return self._cached("built", node, lambda: self._homogeneous_built_by(node))
+
+    def _homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
         if not self._may_build_homogeneous(node):
             return None
         found = self.homogeneous(node)
@@ -928,11 +931,13 @@ class FactBase:
         if kind is not ast.Call:
             return True
         func = node.func  # type: ignore[attr-defined]
-        qualified = self.qualified_name(func)
-        if qualified is not None:
-            module, _, name = qualified.rpartition(".")
-            if name in _HOMOGENEOUS_MAKERS and module in vocab.ARRAY_MODULES:
-                return True
+        # the qualified name ends in the called name, except for a name imported under an alias
+        if last_name(func) in _HOMOGENEOUS_MAKERS or (type(func) is ast.Name and func.id in self.index.imports):  # type: ignore[attr-defined]
+            qualified = self.qualified_name(func)
+            if qualified is not None:
+                module, _, name = qualified.rpartition(".")
+                if name in _HOMOGENEOUS_MAKERS and module in vocab.ARRAY_MODULES:
+                    return True
         return type(func) in (ast.Name, ast.Attribute) and self._feeds_a_product(node)
 
     def _homogeneous(self, node: ast.AST) -> Homogeneous | None:

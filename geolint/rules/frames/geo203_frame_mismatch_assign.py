@@ -80,9 +80,13 @@ class FrameMismatchAssign(FactRule):
                 self._check(node.target, node.value)
 
     def _check(self, target: ast.expr, value: ast.expr) -> None:
-        if not isinstance(target, ast.Name) or _mentions_name(value, target.id):
-            return  # `world2cam = inv(world2cam)`, `T_a_b = T_a_b @ D`: a name updated from itself
+        if not isinstance(target, ast.Name):
+            return
         facts = self.facts
+        if any(facts.name_frames(target.id, order) is None for order in facts.readings()):
+            return  # the name states no frames (most names): nothing to compare, and the tests below walk the value
+        if _mentions_name(value, target.id):
+            return  # `world2cam = inv(world2cam)`, `T_a_b = T_a_b @ D`: a name updated from itself
         if _is_copy(facts, value) or _edited_in_place(facts, target):
             return  # `T_new = T.copy(); T_new[:3, 3] -= d`: the name describes the value after the edit
         messages = []
