@@ -245,6 +245,7 @@ def _run_ast_rules(source: str, path: str, config: Config, rule_classes: Sequenc
     finally:
         if facts is not None:
             facts.project.close()
+            facts.close()
     if not any(rule.reports for rule in instances):
         return []
     columns = _CharacterColumns(source)

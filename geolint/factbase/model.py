@@ -49,6 +49,7 @@ from geolint.semantic.names import (
 )
 
 _T = TypeVar("_T")
+_A = TypeVar("_A")  # an analysis built on one fact base
 
 DST_FIRST = "dst-first"
 SRC_FIRST = "src-first"
@@ -228,6 +229,17 @@ class FactBase:
         return fresh
 
     # -- plumbing -------------------------------------------------------------------------
+    def shared(self, analysis: Callable[[FactBase], _A]) -> _A:
+        """The one instance of an analysis built on this fact base (`AngleUnits`, `QuaternionFlow`):
+        every rule that asks gets it, and with it what it has memoised already. The analysis refers
+        back to this fact base: `close` breaks that cycle."""
+        return self.memoised("analysis", analysis, lambda: analysis(self))  # type: ignore[arg-type]
+
+    def close(self) -> None:
+        """Forget the memoised facts and shared analyses (which refer back to this fact base, a cycle
+        only the cycle collector would otherwise free, with the syntax tree it keeps alive)."""
+        self._memo.clear()
+
     def _cached(self, tag: str, node: ast.AST, compute: Callable[[], _T], order: str = "") -> _T | None:
         key = (tag, id(node), order)
         if key in self._memo:

@@ -275,14 +275,14 @@ def _add_named_units(summary: FunctionSummary) -> None:
 def _returned_unit(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
     from geolint.rules.rotation.angle_units import AngleUnits
 
-    found = _agreed([AngleUnits(facts).unit_of(value) for value in returns], "unit")
+    found = _agreed([facts.shared(AngleUnits).unit_of(value) for value in returns], "unit")
     return None if found is None else (found[0].unit, found[0].evidence, any(unit.by_name for unit in found))
 
 
 def _returned_order(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
     from geolint.rules.rotation.quaternion_flow import QuaternionFlow
 
-    found = _agreed([QuaternionFlow(facts).order_of(value) for value in returns], "order")
+    found = _agreed([facts.shared(QuaternionFlow).order_of(value) for value in returns], "order")
     return None if found is None else (found[0].order, found[0].evidence, all(order.batch for order in found))
 
 
@@ -328,6 +328,9 @@ class ProjectSummaries:
     def close(self) -> None:
         """Forget the fact bases and summaries read for this lint. They refer back to this object, and
         the cycle would keep every module's syntax tree alive until the cycle collector ran."""
+        for facts in self._modules.values():
+            if facts is not None:
+                facts.close()
         self._modules.clear()
         self._final.clear()
         self._provisional.clear()
@@ -361,7 +364,11 @@ class ProjectSummaries:
         try:
             while True:
                 self.computed += 1
-                result: FunctionSummary | None = summarize(facts.scratch(), function)
+                scratch = facts.scratch()
+                try:
+                    result: FunctionSummary | None = summarize(scratch, function)
+                finally:
+                    scratch.close()
                 lowest = self._lowest_cut[position]
                 if lowest == _NO_CUT:
                     self._final[key] = result

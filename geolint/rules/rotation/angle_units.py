@@ -322,7 +322,7 @@ def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | N
     if any(element is argument for found in radian_arguments(facts, call) or () for element in _angle_elements(found)):
         return RADIANS
     positional = positional_args(call)
-    if AngleUnits(facts).converts(call) == RADIANS and positional and positional[0] is argument:
+    if facts.shared(AngleUnits).converts(call) == RADIANS and positional and positional[0] is argument:
         return DEGREES
     if is_scipy_rotation_method(facts, call.func, "from_euler"):
         degrees = keyword(call, "degrees")
@@ -394,7 +394,7 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
     unit, each with how it gets there and whether only a name says so."""
     if not call.args or any(isinstance(arg, ast.Starred) for arg in call.args) or not facts.may_have_summary(call):
         return []
-    units = AngleUnits(facts) if units is None else units
+    units = facts.shared(AngleUnits) if units is None else units
     other = RADIANS if unit == DEGREES else DEGREES
     if not any((given := units.unit_of(arg)) is not None and given.unit == other for arg in call.args):
         return []  # no argument in the other unit: the helper's summary cannot matter

@@ -320,15 +320,16 @@ class QuaternionOrder(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        flow = QuaternionFlow(facts)
+        flow = facts.shared(QuaternionFlow)
         for node in facts.index.nodes(ast.Call):
             self._check(node, flow)  # type: ignore[arg-type]
         self._check_component_writes(flow)
         for node in facts.index.nodes(ast.Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
             self._check_message_field(node, flow)  # type: ignore[arg-type]
-        for node in facts.index.nodes(ast.Call):
-            self._check_flat_roll(node, flow)  # type: ignore[arg-type]
+        if "roll" in facts.index.source:  # no `roll` in the text, no roll call (an alias is imported by name)
+            for node in facts.index.nodes(ast.Call):
+                self._check_flat_roll(node, flow)  # type: ignore[arg-type]
 
     def _check_flat_roll(self, node: ast.Call, flow: QuaternionFlow) -> None:
         """`np.roll(quats, -1)` without an axis on a stack of quaternions rolls the flattened array."""

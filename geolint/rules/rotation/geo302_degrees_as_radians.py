@@ -169,7 +169,7 @@ class DegreesAsRadians(FactRule):
     ]
 
     def run(self) -> None:
-        units = AngleUnits(self.facts)
+        units = self.facts.shared(AngleUnits)
         self._arguments: dict[int, list[ast.expr] | None] = {}
         for node in self.facts.index.nodes(ast.Call):
             self._check(node, units)  # type: ignore[arg-type]

@@ -126,8 +126,8 @@ class MisplacedTranslation(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        index: ModuleIndex | None = None
-        for node in ast.walk(tree):
+        index = index_of(tree)
+        for node in index.nodes(ast.Call, ast.Assign, ast.AugAssign):
             if isinstance(node, ast.Call) and call_name(node) in _TRANSLATING_CALLS:
                 self._check_translation_argument(node)
                 continue
@@ -147,7 +147,6 @@ class MisplacedTranslation(AstRule):
                 rotation_block = is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)
                 if not bottom_row and not rotation_block:
                     continue
-                index = index or index_of(tree)
                 from_translation = self._comes_from_own_translation(target, indices[0], value, index)
                 if bottom_row and (
                     from_translation or self._is_column_convention_pose(target, bool(indices[0]), index, _has_product(value))

@@ -93,7 +93,7 @@ class RadiansAsDegrees(FactRule):
     ]
 
     def run(self) -> None:
-        units = AngleUnits(self.facts)
+        units = self.facts.shared(AngleUnits)
         for node in self.facts.index.nodes(ast.Call):
             self._check(node, units)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.BinOp):
