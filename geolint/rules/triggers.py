@@ -70,7 +70,7 @@ class _LeftContext:
         self.accept = accept
 
     def search(self, source: str) -> bool:
-        return _any_at(self.rest, source, lambda text, match: self.accept(text, match.start()))
+        return any_match_at(self.rest, source, lambda text, match: self.accept(text, match.start()))
 
 
 def _at_word_boundary(source: str, at: int) -> bool:
@@ -145,8 +145,8 @@ class _PosePartText:
         return (
             self._SLICE_OR_ATTRIBUTE.search(source) is not None
             or any(text in source for text in self._QUOTED_LETTER)
-            or _any_at(self._KEY_WORD, source, _inside_quoted_word)
-            or _any_at(self._UNPACKED_SECOND, source, _after_rotation_word)
+            or any_match_at(self._KEY_WORD, source, _inside_quoted_word)
+            or any_match_at(self._UNPACKED_SECOND, source, _after_rotation_word)
         )
 
 
@@ -154,7 +154,7 @@ def _is_word_character(character: str) -> bool:
     return character == "_" or character.isalnum()  # exactly `\w` for str patterns
 
 
-def _any_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
+def any_match_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
     """Whether `accept(source, match)` holds for a match starting anywhere (overlapping ones included)."""
     match = pattern.search(source)
     while match is not None:

@@ -24,6 +24,10 @@ FLOWS = [
     "import numpy as np\ndef helper(mesh):\n    return mesh.face_normals\nh = np.append(helper(m), 1)\nout = T @ h\n",
     "import numpy as np\nfor n in np.cross(a, b):\n    h = np.r_[n, 1]\n    y = T @ h\n",
     "def f(points, normals, T):\n    moved = (T[:3, :3] @ points.T).T + T[:3, 3]\n    return moved, normals\n",
+    # GEO304 without a geometry word: two `q` names, a camelCase `Q`, an API known by its import
+    "def f(q):\n    q_out = [q[1], q[2], q[2], q[0]]\n    return q_out\n",
+    "def coreQToRosQ(qs):\n    return [qs[3], qs[0], qs[0], qs[2]]\n",
+    "from quaternion import from_float_array as ffa\ndef f(v):\n    return ffa([v[1], v[1], v[3], v[0]])\n",
 ]
 
 
@@ -120,3 +124,22 @@ def test_a_regex_is_split_only_at_top_level_bars() -> None:
     from geolint.rules.triggers import _top_level_alternatives
 
     assert _top_level_alternatives(r"a|b(c|d)|[|]|\||[]|]x|[^]|]") == ["a", "b(c|d)", "[|]", r"\|", "[]|]x", "[^]|]"]
+
+
+def test_geo304_trigger_lets_through_every_name_the_rule_accepts() -> None:
+    """GEO304's text test is a superset of `_says_quaternion`'s names: any name whose words hold a
+    quaternion word or a bare `q` / `qs` (generated from the letters that make them, in every case)."""
+    import itertools
+    import random
+
+    from geolint.rules.rotation import geo304_quaternion_component_reused as geo304
+
+    test = geo304._NamesQuaternion()
+    generator = random.Random(304)
+    letters = "qQsSuatUATvecVECrientRIENToO_1x"
+    names = {"".join(generator.choice(letters) for _ in range(generator.randint(1, 8))) for _ in range(50_000)}
+    names |= {"".join(parts) for parts in itertools.product(["", "a", "A", "_"], ["q", "Q", "qs", "Qs", "QS"], ["", "s", "x", "X", "_", "1"])}
+    accepted = [name for name in names if any(word in geo304._STRONG or word.startswith("quat") or word in geo304._WEAK for word in geo304._words(name))]
+    assert len(accepted) > 1000  # the generator does reach the words
+    assert [name for name in accepted if not test.search(f" {name} ")] == []
+    assert not test.search("def summarize(table):\n    return request.equal(unique)\n")

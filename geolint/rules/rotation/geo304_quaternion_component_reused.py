@@ -4,19 +4,44 @@ from __future__ import annotations
 
 import ast
 import re
+import string
 
 from geolint.factbase.model import replace_span, subscript_parts
 from geolint.factbase.rotations import quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base, unwrapped_scalar
-from geolint.rules.triggers import AllOf
+from geolint.rules.triggers import AllOf, any_match_at
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness
 # (in robotics `q` is just as often a joint configuration).
 _STRONG = frozenset({"quat", "quats", "quaternion", "quaternions", "qvec", "qvecs", "quatern", "orientation", "orientations", "rotq"})
 _WEAK = frozenset({"q", "qs"})
 _CYCLES = ((0, 1, 2, 3), (1, 2, 3, 0), (3, 0, 1, 2))
+
+
+class _NamesQuaternion:
+    """Text that can hold a name `_says_quaternion` accepts: one of `_STRONG` in any case, or a word
+    `q` / `qs` as `_words` splits names (`q_out`, `coreQ`, `QVec`)."""
+
+    pattern = r"quat|qvec|orientation|rotq (as a name's word), or a q / qs word"
+    # what `_words` makes one of `_STRONG` from (`quat`, `Quat`, `QUAT`...), as plain substrings
+    _STRONG_TEXT = ("uat", "UAT", "qvec", "Qvec", "QVEC", "rient", "RIENT", "otq", "OTQ")
+    # `(?:(?<![A-Za-z])q|Q)s?(?![a-z])`, the left context checked in Python (the regex engine scans
+    # for a leading `q` fast, and for a leading look-behind not at all)
+    _WEAK_WORD = re.compile(r"[qQ]s?(?![a-z])")
+
+    def search(self, source: str, /) -> bool:
+        return any(text in source for text in self._STRONG_TEXT) or any_match_at(self._WEAK_WORD, source, _starts_a_q_word)
+
+
+def _starts_a_q_word(source: str, match: re.Match[str]) -> bool:
+    at = match.start()
+    before = source[at - 1] if at else " "
+    return source[at] == "Q" or before not in _ASCII_LETTERS
+
+
+_ASCII_LETTERS = frozenset(string.ascii_letters)
 
 
 class QuaternionComponentReused(FactRule):
@@ -62,8 +87,9 @@ class QuaternionComponentReused(FactRule):
 
     code = "GEO304"
     name = "quaternion-component-reused"
-    # an indexed component followed by another element (`q[2], `), or a `.w` component
-    triggers = AllOf(r"\w\s*\[[^\[\]\n]*\d\s*\]\s*,|\.w\b")  # type: ignore[assignment]
+    # an indexed component followed by another element (`q[2], `), or a `.w` component; and a name
+    # `_says_quaternion` can accept (a quaternion API's name says quaternion too, or its import does)
+    triggers = AllOf(r"\w\s*\[[^\[\]\n]*\d\s*\]\s*,|\.w\b", _NamesQuaternion())  # type: ignore[assignment]
 
     VALID = [
         Valid("import numpy as np\ndef f(q_wxyz):\n    q_xyzw = np.array([q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0]])\n    return q_xyzw\n"),
