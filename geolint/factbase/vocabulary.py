@@ -140,13 +140,13 @@ _TRIG_CANDIDATE = re.compile(r"(?:sin|cos|tan)\(")
 _WORD_CANDIDATE = re.compile(r"(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_|s\b)")
 
 
-def _is_word_character(character: str) -> bool:
+def is_word_character(character: str) -> bool:
     return character == "_" or character.isalnum()  # exactly `\w` for str patterns
 
 
 def _starts_a_word(source: str, start: int) -> bool:
     r"""`\b` before a word character at `start`."""
-    return start == 0 or not _is_word_character(source[start - 1])
+    return start == 0 or not is_word_character(source[start - 1])
 
 
 def _any_candidate(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
@@ -158,7 +158,7 @@ def _any_candidate(pattern: re.Pattern[str], source: str, accept) -> bool:  # ty
     return False
 
 
-def _matrix_product_at(source: str) -> bool:
+def matrix_product_at(source: str) -> bool:
     r"""`[\w)\]]\s*@=?\s*[\w(\[-]`: an `@` between operands (a decorator follows a line break)."""
     at = source.find("@")
     while at >= 0:
@@ -166,7 +166,7 @@ def _matrix_product_at(source: str) -> bool:
             before = at - 1
             while before >= 0 and source[before].isspace():
                 before -= 1
-            if before >= 0 and (_is_word_character(source[before]) or source[before] in ")]"):
+            if before >= 0 and (is_word_character(source[before]) or source[before] in ")]"):
                 return True
         at = source.find("@", at + 1)
     return False
@@ -175,7 +175,7 @@ def _matrix_product_at(source: str) -> bool:
 def _frame_pair_ends_at(source: str, connector: int) -> bool:
     r"""`\b(?:frame)[0-9]*` right before `connector` (`cam2world`, `base_to_cam`)."""
     start = connector
-    while start > 0 and _is_word_character(source[start - 1]):
+    while start > 0 and is_word_character(source[start - 1]):
         start -= 1
     digits = connector
     while digits > start and source[digits - 1] in "0123456789":
@@ -190,7 +190,7 @@ def _after_boundary_or_underscore(source: str, start: int) -> bool:
 def gate_matches(source: str) -> bool:
     """Exactly `GATE.search(source) is not None`, several times faster."""
     return (
-        _matrix_product_at(source)
+        matrix_product_at(source)
         or _TRANSPOSE_OR_PRODUCT.search(source) is not None
         or _any_candidate(_WORD_CANDIDATE, source, _after_boundary_or_underscore)
         or _any_candidate(_NAMED_OPERATOR_CANDIDATE, source, _starts_a_word)

@@ -6,6 +6,8 @@ from __future__ import annotations
 import re
 from typing import Protocol
 
+from geolint.factbase.vocabulary import is_word_character, matrix_product_at
+
 
 class AllOf:
     """A rule trigger: the source matches every pattern (a cheap gate before any tree is walked).
@@ -30,6 +32,26 @@ class AllOf:
     def search_with(self, source: str, config: object, /) -> bool:
         """The engine's prefilter entry point (no configuration read)."""
         return self.search(source)
+
+
+class AnyOf:
+    """A text test that passes when one of its tests does (regexes, or objects with `search`)."""
+
+    def __init__(self, *tests: str | TextTest) -> None:
+        self.tests = tuple(_text_test(test) for test in tests)
+        self.pattern = "|".join(f"(?:{test.pattern})" for test in self.tests)
+
+    def search(self, source: str, /) -> bool:
+        return any(test.search(source) for test in self.tests)
+
+
+class _MatrixProductText:
+    """An `@` between two operands (`a @ b`, `x @= T`), never a decorator's."""
+
+    pattern = r"[\w)\]]\s*@=?\s*[\w(\[-]"
+
+    def search(self, source: str, /) -> bool:
+        return matrix_product_at(source)
 
 
 class TextTest(Protocol):
@@ -75,8 +97,8 @@ class _LeftContext:
 
 def _at_word_boundary(source: str, at: int) -> bool:
     r"""`\b` at `at`: a word character on exactly one side."""
-    before = at > 0 and _is_word_character(source[at - 1])
-    return before != (at < len(source) and _is_word_character(source[at]))
+    before = at > 0 and is_word_character(source[at - 1])
+    return before != (at < len(source) and is_word_character(source[at]))
 
 
 def _after_word_and_spaces(source: str, at: int) -> bool:
@@ -84,7 +106,7 @@ def _after_word_and_spaces(source: str, at: int) -> bool:
     at -= 1
     while at >= 0 and source[at].isspace():
         at -= 1
-    return at >= 0 and _is_word_character(source[at])
+    return at >= 0 and is_word_character(source[at])
 
 
 def _text_test(pattern: str | TextTest) -> TextTest:
@@ -150,10 +172,6 @@ class _PosePartText:
         )
 
 
-def _is_word_character(character: str) -> bool:
-    return character == "_" or character.isalnum()  # exactly `\w` for str patterns
-
-
 def any_match_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
     """Whether `accept(source, match)` holds for a match starting anywhere (overlapping ones included)."""
     match = pattern.search(source)
@@ -167,9 +185,9 @@ def any_match_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type
 def _inside_quoted_word(source: str, match: re.Match[str]) -> bool:
     r"""`['"]\w*<match>\w*['"]`: the word around the match is quoted on both sides."""
     start, end = match.start(), match.end()
-    while start > 0 and _is_word_character(source[start - 1]):
+    while start > 0 and is_word_character(source[start - 1]):
         start -= 1
-    while end < len(source) and _is_word_character(source[end]):
+    while end < len(source) and is_word_character(source[end]):
         end += 1
     return start > 0 and source[start - 1] in "'\"" and end < len(source) and source[end] in "'\""
 
@@ -180,11 +198,11 @@ def _after_rotation_word(source: str, match: re.Match[str]) -> bool:
     while end > 0 and source[end - 1].isspace():
         end -= 1
     start = end
-    while start > 0 and _is_word_character(source[start - 1]):
+    while start > 0 and is_word_character(source[start - 1]):
         start -= 1
     word = source[start:end]
     return "R" in word or "rot" in word
 
 
 POSE_PART_TEXT = _PosePartText()
-MATMUL_TEXT = r"@|\.dot\(|matmul\(|bmm\("
+MATMUL_TEXT = AnyOf(_MatrixProductText(), r"\.dot\(|matmul\(|bmm\(")

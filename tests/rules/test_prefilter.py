@@ -94,7 +94,7 @@ _PIECES = [
     "euler2", "axangle2", "_from_angle(", "_h", "hom", "homog", "x", "é", "٣", "\u00a0", "'", '"', "_R_", "_t_",
     "rotation", "translation", "rot", "trans", "cam", "c", "w", "world", "base", "points", "pts", "quat", "Frame",
     "lookup_transform", "do_transform_", "tf2_ros", "Vector3Stamped", ".linear", "eye(", "2mat(",
-    "inv(", "cw", "wc", "[1],", "\u2003", "translate(",  # led by `\b` or `\w\s*`, searched without the lead
+    "inv(", "cw", "wc", "[1],", "\u2003", "translate(", "q", "Q", "qs", "uat", "rient", "otq", "@\n", "\n@",  # led by `\b` or `\w\s*`, searched without the lead
 ]  # fmt: skip
 
 

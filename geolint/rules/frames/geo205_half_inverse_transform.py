@@ -16,10 +16,10 @@ from geolint.factbase.pose_parts import (
 )
 from geolint.factbase.reaching import scope_of
 from geolint.rules.base import AstRule, Invalid, Valid
-from geolint.rules.triggers import MATMUL_TEXT, POSE_PART_TEXT, AllOf
+from geolint.rules.triggers import MATMUL_TEXT, POSE_PART_TEXT, AllOf, AnyOf
 
 # A product, or a transpose/inverse written into a pose's rotation block.
-_PRODUCT_OR_TRANSPOSE_TEXT = MATMUL_TEXT + r"|\.m?T\b|\.transpose\(|\binv\("
+_PRODUCT_OR_TRANSPOSE_TEXT = AnyOf(MATMUL_TEXT, r"\.m?T\b|\.transpose\(|\binv\(")
 
 
 class HalfInverseTransform(AstRule):

@@ -21,12 +21,39 @@ from geolint.factbase.extrinsics import (
 )
 from geolint.factbase.model import string, walk_within
 from geolint.factbase.rule_support import FactRule
+from geolint.factbase.vocabulary import is_word_character
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.triggers import AllOf
+from geolint.rules.triggers import AllOf, AnyOf
+
+
+class _OrbSlamPoseName:
+    """ORB-SLAM's `Tcw`, `R_wc`, `twc`: `\b[TRt]_?(?:cw|wc)\b`, found from its rare `cw` / `wc` (the
+    regex engine has no literal to scan for in the regex, and tries it at every `t`)."""
+
+    pattern = r"\b[TRt]_?(?:cw|wc)\b"
+
+    def search(self, source: str, /) -> bool:
+        for pair in ("cw", "wc"):
+            at = source.find(pair)
+            while at >= 0:
+                lead = at - 2 if at >= 2 and source[at - 1] == "_" else at - 1
+                if (
+                    lead >= 0
+                    and source[lead] in "TRt"
+                    and (lead == 0 or not is_word_character(source[lead - 1]))
+                    and (at + 2 == len(source) or not is_word_character(source[at + 2]))
+                ):
+                    return True
+                at = source.find(pair, at + 1)
+        return False
+
 
 TRIGGER = AllOf(
-    r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
-    r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|pyrender|_from_world|world_from_cam|\b[TRt]_?(?:cw|wc)\b"
+    AnyOf(
+        r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
+        r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|pyrender|_from_world|world_from_cam",
+        _OrbSlamPoseName(),
+    )
 )
 
 

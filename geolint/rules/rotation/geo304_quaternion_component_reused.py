@@ -24,7 +24,7 @@ class _NamesQuaternion:
     """Text that can hold a name `_says_quaternion` accepts: one of `_STRONG` in any case, or a word
     `q` / `qs` as `_words` splits names (`q_out`, `coreQ`, `QVec`)."""
 
-    pattern = r"quat|qvec|orientation|rotq (as a name's word), or a q / qs word"
+    pattern = r"uat|UAT|qvec|Qvec|QVEC|rient|RIENT|otq|OTQ|(?:(?<![A-Za-z])q|Q)s?(?![a-z])"
     # what `_words` makes one of `_STRONG` from (`quat`, `Quat`, `QUAT`...), as plain substrings
     _STRONG_TEXT = ("uat", "UAT", "qvec", "Qvec", "QVEC", "rient", "RIENT", "otq", "OTQ")
     # `(?:(?<![A-Za-z])q|Q)s?(?![a-z])`, the left context checked in Python (the regex engine scans
