@@ -28,6 +28,9 @@ def is_scipy_rotation_method(facts: FactBase, func: ast.AST, *methods: str) -> b
 def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
     """The component order the called API expects for its quaternion argument, or None if unknown."""
     func = call.func
+    called = facts.called_name(func) or ""
+    if "uat" not in called and called != "from_float_array":
+        return None  # every API below says quat / Quat in its name, but numpy-quaternion's from_float_array
     if is_scipy_rotation_method(facts, func, "from_quat"):
         scalar_first = keyword(call, "scalar_first")
         if scalar_first is not None:

@@ -39,6 +39,11 @@ _MAX_DEPTH = 10
 _SPATIALMATH_ANGLE_CALLS = frozenset(
     {"Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz", "rpy2r", "eul2r", "rpy2tr", "eul2tr"}
 )
+# The names `radian_arguments` knows exactly (beside transforms3d's `euler2*` / `axangle2*` and
+# pytransform3d's `*_from_euler` / `*_from_angle`).
+_RADIAN_API_NAMES = frozenset(
+    {"from_euler", "from_rotvec", *_SPATIALMATH_ANGLE_CALLS, "quaternion_from_euler", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
+)
 
 
 @dataclass(frozen=True)
@@ -263,6 +268,9 @@ def _word(unit: str | None) -> str:
 def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
     """The angle arguments of a call to a radian API, or None when the call is not one (or opted into degrees)."""
     func = node.func
+    called = facts.called_name(func) or ""
+    if not (called in _RADIAN_API_NAMES or called.startswith(("euler2", "axangle2")) or called.endswith(("_from_euler", "_from_angle"))):
+        return None  # named like none of the APIs below (asked of every call of a module)
     positional = positional_args(node)
     name = last_name(func) or ""
     if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
@@ -303,6 +311,9 @@ def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
 def is_trig_or_conversion(facts: FactBase, node: ast.Call) -> bool:
     """`np.sin(x)`, `math.cos(x)`, and `np.degrees(x)` / `np.rad2deg(x)` (which read radians too)."""
     func = node.func
+    called = facts.called_name(func)
+    if called not in TRIG_FUNCTIONS and called not in ("degrees", "rad2deg"):
+        return False
     qualified = facts.qualified_name(func) or ""
     module, _, name = qualified.rpartition(".")
     if len(positional_args(node)) != 1:
