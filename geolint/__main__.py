@@ -1,7 +1,5 @@
 """`python -m geolint` is the `geolint` command."""
 
-import sys
+from geolint.cli import main_and_exit
 
-from geolint.cli import main
-
-sys.exit(main())
+main_and_exit()

@@ -11,7 +11,7 @@ import argparse
 import importlib
 import os
 import sys
-from typing import Sequence
+from typing import NoReturn, Sequence
 
 from geolint._version import __version__
 
@@ -79,5 +79,22 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_FINDINGS
 
 
+def main_and_exit() -> NoReturn:
+    """The `geolint` command: `main`, then an exit that skips tearing down what the run built (as
+    mypy's `hard_exit` does). Freeing a cold run's syntax trees, indexes and caches object by object
+    at interpreter exit took about a second of a 15 s run; output and logs are flushed first, and
+    nothing else is left to do (the findings cache is saved inside the run)."""
+    code = main()
+    logging = sys.modules.get("logging")  # imported by the language server only: not worth importing here
+    if logging is not None:
+        logging.shutdown()
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (BrokenPipeError, OSError, ValueError):  # a reader that left, or a closed stream
+            pass
+    os._exit(code)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    main_and_exit()

@@ -148,3 +148,24 @@ def test_json_frame_mismatches_name_the_two_frames_and_the_cache_keeps_them(cli_
         # the transform maps base_link data; it is given camera data
         assert findings[0]["frames"] == ["base_link", "camera"], run
         assert set(findings[0]) == JSON_KEYS | {"evidence", "frames"}
+
+
+def test_the_command_flushes_everything_before_its_fast_exit(tmp_path: Path) -> None:
+    """`python -m geolint` ends with `os._exit` (no teardown of the run's trees and caches): every
+    finding must still reach a pipe, in both formats, with the exit code of the run."""
+    from geolint.rules import all_rules
+    from tests.cli.conftest import run_module
+
+    lines = ["import pybullet as p"] + [f"orn_{i} = p.getQuaternionFromEuler([90, 0, {i % 7}])" for i in range(3000)]
+    (tmp_path / "scene.py").write_text("\n".join(lines) + "\n")
+    buffered = {"PYTHONUNBUFFERED": ""}
+    as_json = run_module("check", "scene.py", "--no-cache", "--select", "GEO302", "--format", "json", cwd=tmp_path, env=buffered)
+    assert as_json.returncode == 1, as_json.stderr
+    assert len(json.loads(as_json.stdout)) == 3000
+    as_text = run_module("check", "scene.py", "--no-cache", "--select", "GEO302", cwd=tmp_path, env=buffered)
+    assert as_text.returncode == 1, as_text.stderr
+    assert as_text.stdout.count("scene.py:") == 3000 and as_text.stdout.rstrip().endswith("Found 3000 findings.")
+    assert run_module("check", "scene.py", "--no-cache", "--select", "GEO302", "--exit-zero", cwd=tmp_path).returncode == 0
+    # `geolint rules` leaves its output to the interpreter's buffers: the exit flushes them
+    listed = run_module("rules", cwd=tmp_path, env={"PYTHONUNBUFFERED": ""})  # block-buffered, as in most shells' pipes
+    assert listed.returncode == 0 and all(rule.code in listed.stdout for rule in all_rules())
