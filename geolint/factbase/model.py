@@ -496,15 +496,21 @@ class FactBase:
     def may_have_summary(self, call: ast.Call) -> bool:
         """A cheap test: whether the callee can be a function of this module or of a project module."""
         func = call.func
-        if isinstance(func, ast.Name):
-            return func.id in self.index.functions or (self.cross_module and func.id in self.index.imports)
-        if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "self":
-            return func.attr in self.index.methods
-        head = dotted_name(func)
-        if head is None or not self.cross_module:
+        if type(func) is ast.Name:
+            if func.id in self.index.functions:
+                return True
+        elif type(func) is ast.Attribute and type(func.value) is ast.Name and func.value.id == "self":  # type: ignore[attr-defined]
+            return func.attr in self.index.methods  # type: ignore[attr-defined]
+        if not self.cross_module:
             return False
-        root = head.split(".")[0]
-        return root in self.index.imports and self.index.imports[root].split(".")[0] not in vocab.THIRD_PARTY_ROOTS
+        root = func
+        while type(root) is ast.Attribute:
+            root = root.value  # type: ignore[attr-defined]
+        if type(root) is not ast.Name:
+            return False
+        imported = self.index.imports.get(root.id)  # type: ignore[attr-defined]
+        # `from numpy import array` then `array(x)`: a third-party function has no summary either
+        return imported is not None and imported.split(".")[0] not in vocab.THIRD_PARTY_ROOTS
 
     def function_summary(self, call: ast.Call) -> FunctionSummary | None:
         """What the called helper does (a function of this module, or of a project module it imports)."""
