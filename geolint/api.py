@@ -135,7 +135,9 @@ def lint_paths(
     if progress:
         progress(len(results), total)
 
-    with _fewer_collections():
+    # one listing per folder while linting too: a module name a project folder does not hold (`gym`,
+    # `time`) is ruled out before any argument of its calls is looked at (the run reads one snapshot)
+    with _fewer_collections(), folder_listings():
         linted = _lint_all(pending, config, jobs, progress, len(results), total)
     for (source, _, digest), result in zip(pending, linted):
         results[source.display] = result

@@ -509,8 +509,12 @@ class FactBase:
         if type(root) is not ast.Name:
             return False
         imported = self.index.imports.get(root.id)  # type: ignore[attr-defined]
-        # `from numpy import array` then `array(x)`: a third-party function has no summary either
-        return imported is not None and imported.split(".")[0] not in vocab.THIRD_PARTY_ROOTS
+        if imported is None:
+            return False
+        # `from numpy import array` then `array(x)`: a third-party function has no summary either,
+        # nor one of a package the project's folders do not hold (`gym.make`, `time.sleep`)
+        top = imported.split(".")[0]
+        return top not in vocab.THIRD_PARTY_ROOTS and (not top or not self.path or summaries.may_be_project_module(top, self.path))
 
     def function_summary(self, call: ast.Call) -> FunctionSummary | None:
         """What the called helper does (a function of this module, or of a project module it imports)."""

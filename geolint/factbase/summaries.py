@@ -436,6 +436,19 @@ def module_path(module: str, importer: str, level: int = 0) -> str | None:
     return _module_file_from(module, _folder_of(importer), level)
 
 
+def may_be_project_module(top: str, importer: str) -> bool:
+    """Whether an absolute import whose first name is `top` can resolve to a project file from
+    `importer`: the first test `_module_in` makes in each folder `module_file` searches (`gym`,
+    `carla` and `time` are in none of them). Always True outside `folder_listings`."""
+    if _listings is None:
+        return True
+    key = (top, _folder_of(importer))
+    found = _listed_tops.get(key)
+    if found is None:
+        found = _listed_tops[key] = any(_may_hold(base, top) or _may_hold(base, top + ".py") for base in _search_folders(key[1], 0))
+    return found
+
+
 @lru_cache(maxsize=65536)
 def _folder_of(path: str) -> str:
     return os.path.dirname(os.path.abspath(path))
@@ -497,6 +510,7 @@ def _module_in(base: str, parts: tuple[str, ...]) -> str | None:
 # folder -> its entries' names, casefolded, while `folder_listings` is active (one listing per folder
 # instead of a stat per module name per folder: `import numpy` is looked for in every folder up to the root)
 _listings: dict[str, frozenset[str]] | None = None
+_listed_tops: dict[tuple[str, str], bool] = {}  # `may_be_project_module`'s answers, for one listing
 
 
 @contextmanager
@@ -505,10 +519,12 @@ def folder_listings() -> Iterator[None]:
     resolves the imports of many files at one moment; the files found are still checked one by one)."""
     global _listings
     _listings = {}
+    _listed_tops.clear()
     try:
         yield
     finally:
         _listings = None
+        _listed_tops.clear()
 
 
 def _may_hold(folder: str, name: str) -> bool:

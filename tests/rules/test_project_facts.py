@@ -43,3 +43,31 @@ def test_a_helper_edit_relints_its_importers(tmp_path: Path) -> None:
     after = [f for result in api.lint_paths([project], cache_dir=project / ".cache", stats=stats) for f in result.findings]
     assert ("mapping.py", 20, "GEO101") not in {(Path(f.path).name, f.line, f.code) for f in after}
     assert stats["linted"] >= 2  # the helper and the module that imports it
+
+
+def test_a_package_no_project_folder_holds_has_no_summary(tmp_path: Path) -> None:
+    """Calls into packages outside the project (`gym.make`, `time.sleep`) are ruled out by the run's
+    folder listings before any argument is looked at; the project's own packages still are read."""
+    import ast
+
+    from geolint.factbase import facts_for_module
+    from geolint.factbase.summaries import folder_listings, may_be_project_module
+    from geolint.lint_types import Config
+
+    (tmp_path / "pyproject.toml").write_text("[project]\nname = 'demo'\n")
+    (tmp_path / "geom").mkdir()
+    (tmp_path / "geom" / "__init__.py").write_text("")
+    (tmp_path / "geom" / "ops.py").write_text("def apply_pose(T, x):\n    return T[:3, :3] @ x + T[:3, 3]\n")
+    (tmp_path / "helpers.py").write_text("def scale(x):\n    return 2 * x\n")
+    main = tmp_path / "main.py"
+    source = "import gym, time\nfrom geom.ops import apply_pose\nimport helpers\ngym.make(n)\ntime.sleep(n)\napply_pose(T, n)\nhelpers.scale(n)\n"
+    main.write_text(source)
+    tree = ast.parse(source)
+    calls = [node for node in ast.walk(tree) if isinstance(node, ast.Call)]
+    calls.sort(key=lambda call: call.lineno)
+    with folder_listings():
+        assert not may_be_project_module("gym", str(main)) and may_be_project_module("geom", str(main))
+        assert may_be_project_module("helpers", str(main))  # a module file beside the importer
+        facts = facts_for_module(tree, source, str(main), Config())
+        assert [facts.may_have_summary(call) for call in calls] == [False, False, True, True]
+    assert may_be_project_module("gym", str(tmp_path / "other.py"))  # no listing: nothing is ruled out
