@@ -125,13 +125,13 @@ class ModuleIndex:
                 continue
             scope_of[node] = scope
             kind = type(node)
+            if kind in no_children:
+                continue  # names and constants are not listed by type: nearly half the nodes, never asked for
             bucket = by_type.get(kind)
             if bucket is None:
                 by_type[kind] = [node]
             else:
                 bucket.append(node)
-            if kind in no_children:
-                continue
             recorder = recorders.get(kind)
             inner = recorder(self, node, scope) if recorder is not None else scope
             # `child_nodes` inlined: this loop runs once per node of every module, and a call per
@@ -328,7 +328,10 @@ class ModuleIndex:
 
     # -- queries ------------------------------------------------------------------------
     def nodes(self, *kinds: type) -> list[ast.AST]:
-        """Every node of these types, in source order (a list several rules share: never change it)."""
+        """Every node of these types, in source order (a list several rules share: never change it).
+        Types without child nodes (`Name`, `Constant`...) are not listed."""
+        if not _NO_CHILDREN.isdisjoint(kinds):
+            raise ValueError(f"nodes of {', '.join(kind.__name__ for kind in kinds)}: childless types are not listed")
         if len(kinds) == 1:
             return self.by_type.get(kinds[0], [])
         found = self._merged.get(kinds)

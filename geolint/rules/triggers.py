@@ -151,24 +151,29 @@ def _opens_class_at(pattern: str, position: int) -> bool:
 class _PosePartText:
     """Source text that can hold a pose's rotation or translation: a `[:3, 3]`-style slice, a part
     attribute or key, or `R, t` unpacked together. `search` answers as `pattern` would, faster
-    (the unpacking alternative starts at every word and backtracks through it)."""
+    (the unpacking alternative starts at every word and backtracks through it, and a top-level
+    alternation of regexes with different first characters is searched about ten times slower than
+    each of them on its own)."""
 
     pattern = (
         r"\[[^\]\n]*:\s*3\s*,\s*(?:3|-1|3:)|\.(?:rotation|translation|R|t|rot|trans|tvec)\b"
         r"|['\"]\w*(?:_R_|_t_|rotation|translation)\w*['\"]|['\"](?:R|t)['\"]"
         r"|\b\w*(?:R|rot|rotation)\w*\s*,\s*\w*(?:t|trans|translation)\w*\s*="
     )
-    _SLICE_OR_ATTRIBUTE = re.compile(r"\[[^\]\n]*:\s*3\s*,\s*(?:3|-1|3:)|\.(?:rotation|translation|R|t|rot|trans|tvec)\b")
+    _SLICE = re.compile(r"\[[^\]\n]*:\s*3\s*,\s*(?:3|-1|3:)")
+    _ATTRIBUTE = re.compile(r"\.(?:rotation|translation|R|t|rot|trans|tvec)\b")
     _QUOTED_LETTER = tuple(f"{a}{letter}{b}" for letter in "Rt" for a in "'\"" for b in "'\"")
-    _KEY_WORD = re.compile(r"_R_|_t_|rotation|translation")
+    _KEY_WORDS = tuple(re.compile(word) for word in ("_R_", "_t_", "rotation", "translation"))
     _UNPACKED_SECOND = re.compile(r",\s*\w*t\w*\s*=")
 
     def search(self, source: str, /) -> bool:
+        # cheapest first; the quoted letters, eight scans of the text, rarely decide
         return (
-            self._SLICE_OR_ATTRIBUTE.search(source) is not None
-            or any(text in source for text in self._QUOTED_LETTER)
-            or any_match_at(self._KEY_WORD, source, _inside_quoted_word)
+            self._SLICE.search(source) is not None
+            or self._ATTRIBUTE.search(source) is not None
             or any_match_at(self._UNPACKED_SECOND, source, _after_rotation_word)
+            or any(any_match_at(word, source, _inside_quoted_word) for word in self._KEY_WORDS)
+            or any(text in source for text in self._QUOTED_LETTER)
         )
 
 
