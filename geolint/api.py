@@ -123,7 +123,7 @@ def lint_paths(
                 pending.append((source, data, ""))
                 continue
             # every file of the run registered before any digest: an imported one is then never read twice
-            read.append((source, data, *imports.register_file(str(source.path), data)))
+            read.append((source, data, *imports.register_file(str(source.path), data, read=True)))
         for source, data, own, key in read:
             # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
             digest = imports.file_digest(key, own)

@@ -113,14 +113,14 @@ def _walk(top: Path, excluder: _Excluder) -> Iterable[Path]:
         kept = []
         for name in sorted(dirnames):
             candidate = os.path.join(resolved_dir, name)
-            if not excluder.excluded(Path(candidate), is_dir=True) and not _gitignored(active, candidate, True):
+            if not excluder.excluded(candidate, is_dir=True) and not _gitignored(active, candidate, True):
                 kept.append(name)
         dirnames[:] = kept
         for name in sorted(filenames):
             if not name.endswith(PYTHON_SUFFIXES):
                 continue
             candidate = os.path.join(resolved_dir, name)
-            if excluder.excluded(Path(candidate), is_dir=False) or _gitignored(active, candidate, False):
+            if excluder.excluded(candidate, is_dir=False) or _gitignored(active, candidate, False):
                 continue
             yield Path(dirpath, name)
 
@@ -168,7 +168,7 @@ class _Excluder:
         self.patterns = patterns
         self.spec = _spec(patterns)
 
-    def excluded(self, path: Path, *, is_dir: bool) -> bool:
+    def excluded(self, path: Path | str, *, is_dir: bool) -> bool:
         text = str(path)
         if text.startswith(self.root + os.sep):
             relative = os.path.relpath(text, self.root)

@@ -500,10 +500,14 @@ def _module_in(base: str, parts: tuple[str, ...]) -> str | None:
     (the modules of sibling folders share the folders above them)."""
     if not _may_hold(base, parts[0]) and not (len(parts) == 1 and _may_hold(base, parts[0] + ".py")):
         return None
-    target = os.path.join(base, *parts)
-    for file in (target + ".py", os.path.join(target, "__init__.py")):
-        if os.path.isfile(file):
-            return file
+    folder = os.path.join(base, *parts[:-1])
+    target = os.path.join(folder, parts[-1])
+    # the listing of the module's own folder first: most names tried are not there (`from utils
+    # import helper_function` tries `utils/helper_function.py`), and a listing is read once per folder
+    if _may_hold(folder, parts[-1] + ".py") and os.path.isfile(target + ".py"):
+        return target + ".py"
+    if _may_hold(folder, parts[-1]) and os.path.isfile(os.path.join(target, "__init__.py")):
+        return os.path.join(target, "__init__.py")
     return None
 
 
@@ -541,14 +545,23 @@ def _may_hold(folder: str, name: str) -> bool:
     return name.casefold() in names  # casefolded: a case-insensitive file system finds `Geometry.py` too
 
 
-def imported_files(path: str, source: str) -> list[str]:
+def imported_files(path: str, source: str, read: bool = False) -> list[str]:
     """The project files `source` imports directly (by a cheap scan of its import lines): the modules
-    named, and for `from pkg import geom` the submodule `pkg.geom` too."""
-    if not os.path.isfile(path):
+    named, and for `from pkg import geom` the submodule `pkg.geom` too. `read`: the caller read
+    `source` from the file at `path` (no need to check that it is one)."""
+    if not read and not os.path.isfile(path):
         return []
     found = []
+    tops: dict[str, bool] = {}  # `from numpy import a, b, c` asks about `numpy` once
     for name in imported_names(source, members=True):
         level = len(name) - len(name.lstrip("."))
+        if not level:
+            top = name.partition(".")[0]
+            held = tops.get(top)
+            if held is None:
+                held = tops[top] = may_be_project_module(top, path)
+            if not held:
+                continue  # `numpy`, `torch.nn`: no project folder holds the package
         file = module_path(name.lstrip("."), path, level)
         if file is not None and file not in found:
             found.append(file)
@@ -618,19 +631,20 @@ class ImportGraph:
         self._component: dict[str, int] = {}  # file -> its component's number
         self._component_digest: list[str | None] = []  # None: the component imports nothing else
 
-    def register(self, path: str, source: str, own_hash: str) -> str:
-        """A file of the run, read by the caller: its hash and direct imports (its absolute path is returned)."""
+    def register(self, path: str, source: str, own_hash: str, read: bool = False) -> str:
+        """A file of the run, given by the caller (`read`: read from `path` just now): its hash and
+        direct imports (its absolute path is returned)."""
         key = os.path.abspath(path)
         if key not in self._imports:
             self._hashes[key] = own_hash
-            self._imports[key] = imported_files(path, source) if "import" in source else []
+            self._imports[key] = imported_files(path, source, read) if "import" in source else []
         return key
 
-    def register_file(self, path: str, data: bytes) -> tuple[str, str]:
+    def register_file(self, path: str, data: bytes, read: bool = False) -> tuple[str, str]:
         """`register` from the file's bytes: (its hash, its key)."""
         own = self.content_hash(data)
         source = data.decode("utf-8", errors="replace")
-        return own, self.register(path, source, own)
+        return own, self.register(path, source, own, read)
 
     def file_digest(self, key: str, own_hash: str) -> str:
         """The digest a registered file is cached under: its own hash, combined with `digest(key)`."""
@@ -648,7 +662,7 @@ class ImportGraph:
             return
         self._hashes[file] = self.content_hash(data)
         source = data.decode("utf-8", errors="replace")
-        self._imports[file] = imported_files(file, source) if "import" in source else []
+        self._imports[file] = imported_files(file, source, read=True) if "import" in source else []
 
     def _successors(self, file: str) -> list[str]:
         if file not in self._imports:
