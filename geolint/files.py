@@ -12,6 +12,7 @@ excludes still apply to what is below it.
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -143,6 +144,20 @@ def _excluded_file(file: Path, excluder: _Excluder) -> bool:
     return excluder.excluded(file, is_dir=False) or _gitignored(gitignores, str(file), False)
 
 
+@lru_cache(maxsize=64)
+def _any_pattern(patterns: tuple[str, ...]) -> re.Pattern[str] | None:
+    """The patterns' spec as one regex, when no pattern negates (`build`, `*.egg-info`, the defaults): then a
+    path is excluded when any pattern matches it, and one search replaces one per pattern."""
+    regexes = []
+    for pattern in _spec(patterns).patterns:
+        if pattern.include is None:
+            continue  # a comment or a blank line
+        if pattern.include is not True or pattern.regex is None or pattern.regex.flags & ~re.UNICODE:
+            return None
+        regexes.append(pattern.regex.pattern.replace("(?P<ps_d>", "(?:"))
+    return re.compile("|".join(f"(?:{regex})" for regex in regexes)) if regexes else None
+
+
 def _read_gitignore(path: str):  # -> pathspec.GitIgnoreSpec | None
     try:
         with open(path, encoding="utf-8", errors="replace") as stream:
@@ -167,14 +182,17 @@ class _Excluder:
         self.root = str(root)
         self.patterns = patterns
         self.spec = _spec(patterns)
+        self._any_pattern = _any_pattern(patterns)
 
     def excluded(self, path: Path | str, *, is_dir: bool) -> bool:
-        text = str(path)
+        text = os.path.normpath(str(path))
         if text.startswith(self.root + os.sep):
-            relative = os.path.relpath(text, self.root)
+            relative = text[len(self.root) + 1 :]
         else:  # outside the project: match on the name only (e.g. "build", "*.egg-info")
             relative = os.path.basename(text)
         relative = relative.replace(os.sep, "/") + ("/" if is_dir else "")
+        if self._any_pattern is not None:
+            return self._any_pattern.match(relative) is not None
         return bool(self.spec.match_file(relative))
 
     def gitignores_above(self, top: Path) -> Iterable[tuple[str, object]]:

@@ -442,10 +442,21 @@ def may_be_project_module(top: str, importer: str) -> bool:
     `carla` and `time` are in none of them). Always True outside `folder_listings`."""
     if _listings is None:
         return True
-    key = (top, _folder_of(importer))
+    return _top_held_from(top, _folder_of(importer))
+
+
+def _top_held_from(top: str, here: str) -> bool:
+    """`top` (or `top.py`) in `here` or a folder searched after it: the folders searched from a folder
+    below the project root are that folder and those searched from its parent, so each answer is
+    one listing lookup plus its parent's answer."""
+    key = (top, here)
     found = _listed_tops.get(key)
     if found is None:
-        found = _listed_tops[key] = any(_may_hold(base, top) or _may_hold(base, top + ".py") for base in _search_folders(key[1], 0))
+        folders = _search_folders(here, 0)
+        found = bool(folders) and (
+            _may_hold(folders[0], top) or _may_hold(folders[0], top + ".py") or (len(folders) > 1 and _top_held_from(top, folders[1]))
+        )
+        _listed_tops[key] = found
     return found
 
 

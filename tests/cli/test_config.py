@@ -107,3 +107,26 @@ def test_explicit_config_file(cli, tmp_path):
     elsewhere.write_text('[tool.geolint]\nselect = ["GEO191"]\n')
     cli.write("mod.py", "a = bad_thing\nb = risky_thing\n")
     assert codes(cli("check", "--format", "json", "--config", str(elsewhere))) == ["GEO191"]
+
+
+def test_exclude_patterns_as_one_regex_answer_as_pathspec() -> None:
+    """Exclude patterns without a negation are matched as one regex; on paths built from the
+    patterns' own pieces it must answer exactly as pathspec's GitIgnoreSpec does."""
+    import itertools
+    import random
+
+    from geolint.files import DEFAULT_EXCLUDES, _any_pattern, _spec
+
+    specs = [DEFAULT_EXCLUDES, ("build", "docs/_build/", "*.pyc", "/top_only", "a/**/b", "data?")]
+    pieces = ["build", ".git", "x.egg-info", "venv", "docs", "_build", "top_only", "a", "b", "c", "data1", "data", "m.py", "n.pyc", "__pycache__"]
+    rng = random.Random(9)
+    paths = ["/".join(rng.choice(pieces) for _ in range(rng.randint(1, 4))) for _ in range(3000)]
+    paths += ["/".join(parts) for parts in itertools.product(pieces[:6], pieces[6:])]
+    for patterns in specs:
+        spec = _spec(patterns)
+        fast = _any_pattern(patterns)
+        assert fast is not None
+        for path in paths:
+            for text in (path, path + "/"):
+                assert (fast.match(text) is not None) == bool(spec.match_file(text)), (patterns, text)
+    assert _any_pattern(("build", "!build/keep.py")) is None  # a negation: pathspec decides
