@@ -967,8 +967,7 @@ class FactBase:
         if kind is not ast.Call:
             return True
         func = node.func  # type: ignore[attr-defined]
-        # the qualified name ends in the called name, except for a name imported under an alias
-        if last_name(func) in _HOMOGENEOUS_MAKERS or (type(func) is ast.Name and func.id in self.index.imports):  # type: ignore[attr-defined]
+        if self.called_name(func) in _HOMOGENEOUS_MAKERS:
             qualified = self.qualified_name(func)
             if qualified is not None:
                 module, _, name = qualified.rpartition(".")

@@ -152,7 +152,8 @@ def _starts_a_word(source: str, start: int) -> bool:
     return start == 0 or not is_word_character(source[start - 1])
 
 
-def _any_candidate(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
+def any_match_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
+    """Whether `accept(source, start)` holds at the start of a match anywhere (overlapping ones included)."""
     match = pattern.search(source)
     while match is not None:
         if accept(source, match.start()):
@@ -195,11 +196,11 @@ def gate_matches(source: str) -> bool:
     return (
         matrix_product_at(source)
         or any(part.search(source) is not None for part in _TRANSPOSE_OR_PRODUCT)
-        or any(word in source and _any_candidate(candidate, source, _after_boundary_or_underscore) for word, candidate in _WORD_CANDIDATES)
-        or _any_candidate(_NAMED_OPERATOR_CANDIDATE, source, _starts_a_word)
-        or any(_any_candidate(candidate, source, _frame_pair_ends_at) for candidate in _FRAME_PAIR_CANDIDATES)
-        or _any_candidate(_FRAME_VECTOR_CANDIDATE, source, _starts_a_word)
-        or any(_any_candidate(candidate, source, _starts_a_word) for candidate in _TRIG_CANDIDATES)
+        or any(word in source and any_match_at(candidate, source, _after_boundary_or_underscore) for word, candidate in _WORD_CANDIDATES)
+        or any_match_at(_NAMED_OPERATOR_CANDIDATE, source, _starts_a_word)
+        or any(any_match_at(candidate, source, _frame_pair_ends_at) for candidate in _FRAME_PAIR_CANDIDATES)
+        or any_match_at(_FRAME_VECTOR_CANDIDATE, source, _starts_a_word)
+        or any(any_match_at(candidate, source, _starts_a_word) for candidate in _TRIG_CANDIDATES)
         or "euler2" in source
         or "axangle2" in source
         or "_from_angle(" in source

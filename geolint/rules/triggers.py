@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from typing import Protocol
 
-from geolint.factbase.vocabulary import is_word_character, matrix_product_at
+from geolint.factbase.vocabulary import any_match_at, is_word_character, matrix_product_at
 
 
 class AllOf:
@@ -92,7 +92,7 @@ class _LeftContext:
         self.accept = accept
 
     def search(self, source: str) -> bool:
-        return any_match_at(self.rest, source, lambda text, match: self.accept(text, match.start()))
+        return any_match_at(self.rest, source, self.accept)
 
 
 def _at_word_boundary(source: str, at: int) -> bool:
@@ -177,19 +177,9 @@ class _PosePartText:
         )
 
 
-def any_match_at(pattern: re.Pattern[str], source: str, accept) -> bool:  # type: ignore[no-untyped-def]
-    """Whether `accept(source, match)` holds for a match starting anywhere (overlapping ones included)."""
-    match = pattern.search(source)
-    while match is not None:
-        if accept(source, match):
-            return True
-        match = pattern.search(source, match.start() + 1)
-    return False
-
-
-def _inside_quoted_word(source: str, match: re.Match[str]) -> bool:
-    r"""`['"]\w*<match>\w*['"]`: the word around the match is quoted on both sides."""
-    start, end = match.start(), match.end()
+def _inside_quoted_word(source: str, start: int) -> bool:
+    r"""`['"]\w*<word>\w*['"]` for a word of word characters at `start`: the word around it is quoted on both sides."""
+    end = start
     while start > 0 and is_word_character(source[start - 1]):
         start -= 1
     while end < len(source) and is_word_character(source[end]):
@@ -197,9 +187,8 @@ def _inside_quoted_word(source: str, match: re.Match[str]) -> bool:
     return start > 0 and source[start - 1] in "'\"" and end < len(source) and source[end] in "'\""
 
 
-def _after_rotation_word(source: str, match: re.Match[str]) -> bool:
-    r"""`\b\w*(?:R|rot)\w*\s*` right before the comma: the word before it names a rotation."""
-    end = match.start()
+def _after_rotation_word(source: str, end: int) -> bool:
+    r"""`\b\w*(?:R|rot)\w*\s*` right before the comma at `end`: the word before it names a rotation."""
     while end > 0 and source[end - 1].isspace():
         end -= 1
     start = end

@@ -9,9 +9,10 @@ import string
 from geolint.factbase.model import replace_span, subscript_parts
 from geolint.factbase.rotations import quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
+from geolint.factbase.vocabulary import any_match_at
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base, unwrapped_scalar
-from geolint.rules.triggers import AllOf, any_match_at
+from geolint.rules.triggers import AllOf
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness
 # (in robotics `q` is just as often a joint configuration).
@@ -35,8 +36,7 @@ class _NamesQuaternion:
         return any(text in source for text in self._STRONG_TEXT) or any_match_at(self._WEAK_WORD, source, _starts_a_q_word)
 
 
-def _starts_a_q_word(source: str, match: re.Match[str]) -> bool:
-    at = match.start()
+def _starts_a_q_word(source: str, at: int) -> bool:
     before = source[at - 1] if at else " "
     return source[at] == "Q" or before not in _ASCII_LETTERS
 
