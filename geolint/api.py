@@ -21,9 +21,9 @@ from typing import Callable, Collection, Iterator, Sequence
 
 from geolint import config as config_module
 from geolint import engine
-from geolint.cache import FindingsCache, content_hash, default_cache_dir
+from geolint.cache import FindingsCache, ImportsCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
-from geolint.factbase.summaries import ImportGraph, folder_listings, project_root
+from geolint.factbase.summaries import ImportGraph, consulted_folders, folder_listings, project_root
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 
@@ -105,11 +105,14 @@ def lint_paths(
     """
     config = config or Config()
     sources = discover([Path(p) for p in paths], config, force_exclude=force_exclude)
-    cache = FindingsCache(cache_dir or default_cache_dir(config_root(config)), config) if use_cache else None
+    directory = cache_dir or default_cache_dir(config_root(config))
+    cache = FindingsCache(directory, config) if use_cache else None
+    resolved = ImportsCache(directory) if use_cache else None
     results: dict[str, FileResult] = {}
     pending: list[tuple[SourceFile, bytes, str]] = []
     total = len(sources)
-    imports = ImportGraph(content_hash)  # each imported module is read, hashed and scanned once
+    # each imported module is read, hashed and scanned once (not scanned at all when unchanged since the last run)
+    imports = ImportGraph(content_hash, resolved.load() if resolved is not None else None)
 
     read: list[tuple[SourceFile, bytes, str, str]] = []
     with folder_listings():  # the imports of every file resolved against one listing per folder
@@ -132,6 +135,9 @@ def lint_paths(
                 results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
             else:
                 pending.append((source, data, digest))
+        if resolved is not None and not imports.all_reused:  # else what is stored still holds
+            files_read = imports.resolved()
+            resolved.save(files_read, consulted_folders(files_read))
     if progress:
         progress(len(results), total)
 

@@ -7,6 +7,9 @@ development), and the whole config (select/ignore included). The file lives in
 `<project root>/.geolint_cache/` (override with `GEOLINT_CACHE_DIR`), which carries its own
 `.gitignore` so it never gets committed. Writes are atomic (temp file + rename), so parallel
 runs never see a torn file; concurrent runs at worst lose each other's new entries.
+
+A second file, `imports-*.json`, keeps where each file's project imports resolved (`ImportsCache`),
+so a re-run reads and hashes each file but neither scans nor resolves its imports again.
 """
 
 from __future__ import annotations
@@ -15,9 +18,10 @@ import hashlib
 import json
 import os
 import tempfile
+import time
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterable
 
 from geolint._version import __version__
 from geolint.lint_types import Config, Edit, Finding, Fix, Severity
@@ -102,18 +106,82 @@ class FindingsCache:
         if not self._dirty:
             return
         try:
-            self.directory.mkdir(parents=True, exist_ok=True)
-            gitignore = self.directory / ".gitignore"
-            if not gitignore.exists():
-                gitignore.write_text("# Created by geolint: the cache never belongs in git.\n*\n", encoding="utf-8")
-            merged = {**self._load(), **self._entries}
-            handle, temporary = tempfile.mkstemp(dir=self.directory, prefix=".tmp-", suffix=".json")
-            with os.fdopen(handle, "w", encoding="utf-8") as stream:
-                json.dump(merged, stream, separators=(",", ":"))
-            os.replace(temporary, self.file)
+            _write_atomically(self.directory, self.file, {**self._load(), **self._entries})
         except OSError:
             pass  # a read-only tree still lints; it just does not get faster next time
         self._dirty = False
+
+
+class ImportsCache:
+    """Where each file's project imports resolved in an earlier run, reused while the file's bytes and
+    the folders consulted are unchanged: a folder's mtime changes whenever an entry is added to it,
+    removed or renamed (the stamp CPython's own import system trusts). A folder that changed shortly
+    before or during the run that listed it may change again within its clock's resolution unseen,
+    so such a run stores nothing. Keyed by the package's fingerprint alone: the config does not
+    change where an import resolves.
+    """
+
+    # the coarsest file-system clock in common use (FAT: 2 s)
+    _MTIME_SLACK_NS = 2_000_000_000
+
+    def __init__(self, directory: Path) -> None:
+        self.directory = directory
+        key = hashlib.blake2b(f"{FORMAT_VERSION}|{__version__}|{package_fingerprint()}".encode(), digest_size=12)
+        self.file = directory / f"imports-{key.hexdigest()}.json"
+        self.started_ns = time.time_ns()
+
+    def load(self) -> dict[str, list[Any]]:
+        """file -> [hash, imports] of the last run, or {} when a folder it consulted has changed since."""
+        try:
+            with open(self.file, encoding="utf-8") as stream:
+                stored = json.load(stream)
+            folders, files = stored["folders"], stored["files"]
+            if not isinstance(folders, dict) or not isinstance(files, dict):
+                return {}
+        except (OSError, ValueError, KeyError, TypeError):
+            return {}  # no cache yet, or a damaged one: resolve everything
+        if not all(_is_resolution(entry) for entry in files.values()):
+            return {}
+        if any(_mtime_ns(folder) != stamp for folder, stamp in folders.items()):
+            return {}
+        return files
+
+    def save(self, files: dict[str, list[Any]], folders: Iterable[str]) -> None:
+        stamps = {folder: _mtime_ns(folder) for folder in folders}
+        if any(stamp is not None and stamp >= self.started_ns - self._MTIME_SLACK_NS for stamp in stamps.values()):
+            return  # a folder too fresh to trust its stamp
+        try:
+            _write_atomically(self.directory, self.file, {"folders": stamps, "files": files})
+        except OSError:
+            pass
+
+
+def _is_resolution(entry: Any) -> bool:
+    """[hash, [imported file, ...]], as `ImportGraph.resolved` gives it."""
+    return (
+        isinstance(entry, list) and len(entry) == 2 and isinstance(entry[0], str) and isinstance(entry[1], list)
+        and all(isinstance(file, str) for file in entry[1])
+    )  # fmt: skip
+
+
+def _mtime_ns(folder: str) -> int | None:
+    try:
+        return os.stat(folder).st_mtime_ns
+    except OSError:
+        return None  # a folder looked in that does not exist: its creation changes the answer
+
+
+def _write_atomically(directory: Path, file: Path, content: Any) -> None:
+    """Write JSON to `file` by renaming a complete temporary file over it (the cache folder keeps a
+    `.gitignore` so it is never committed)."""
+    directory.mkdir(parents=True, exist_ok=True)
+    gitignore = directory / ".gitignore"
+    if not gitignore.exists():
+        gitignore.write_text("# Created by geolint: the cache never belongs in git.\n*\n", encoding="utf-8")
+    handle, temporary = tempfile.mkstemp(dir=directory, prefix=".tmp-", suffix=".json")
+    with os.fdopen(handle, "w", encoding="utf-8") as stream:
+        json.dump(content, stream, separators=(",", ":"))
+    os.replace(temporary, file)
 
 
 def finding_to_dict(finding: Finding) -> dict[str, Any]:

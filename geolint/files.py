@@ -71,59 +71,63 @@ def discover(paths: Sequence[Path], config: Config, *, force_exclude: bool = Fal
             walk_excluder = excluder
             if not force_exclude and _excluded_file(given.resolve() / "__init__.py", excluder):
                 walk_excluder = _Excluder(given.resolve(), excluder.patterns)
-            real_folders: dict[str, str] = {}
-            for file in _walk(given, walk_excluder):
-                real = _real_path(file, real_folders)
-                found.setdefault(real, SourceFile(file, _display(file), real))
+            for file, display, real in _walk(given, walk_excluder):
+                found.setdefault(real, SourceFile(file, display, real))
         elif not (force_exclude and _excluded_file(given.resolve(), excluder)):
             found.setdefault(given.resolve(), SourceFile(given, _display(given), given.resolve()))
     return sorted(found.values(), key=lambda source: source.display)
 
 
-def _real_path(file: Path, real_folders: dict[str, str]) -> Path:
-    """`file.resolve()`, resolving each folder once (a walk yields many files per folder)."""
-    if os.path.islink(file):
-        return file.resolve()
-    folder, name = os.path.split(os.path.abspath(file))
-    real_folder = real_folders.get(folder)
-    if real_folder is None:
-        real_folder = real_folders[folder] = os.path.realpath(folder)
-    return Path(real_folder, name)
-
-
-def _display(path: Path) -> str:
+def _display(path: Path | str) -> str:
     """The path as given (normalised); absolute paths under the cwd are shown relative to it."""
     text = os.path.normpath(str(path))
     if os.path.isabs(text):
         cwd = os.getcwd()
         if text.startswith(cwd + os.sep):
             return os.path.relpath(text, cwd)
+        if text == cwd:
+            return os.curdir
     return text
 
 
-def _walk(top: Path, excluder: _Excluder) -> Iterable[Path]:
-    top_resolved = top.resolve()
-    gitignores: list[tuple[str, object]] = list(excluder.gitignores_above(top_resolved))
-    for dirpath, dirnames, filenames in os.walk(top):
-        resolved_dir = os.path.normpath(os.path.join(str(top_resolved), os.path.relpath(dirpath, top)))
-        if ".gitignore" in filenames:
-            spec = _read_gitignore(os.path.join(dirpath, ".gitignore"))
+def _walk(top: Path, excluder: _Excluder) -> Iterable[tuple[Path, str, Path]]:
+    """(path, display, real path) of every Python file under `top` that no exclude or `.gitignore`
+    drops, folder by folder as `os.walk` goes (files first, then sub-folders; symlinked folders are not
+    entered, so a folder's real path is the resolved top joined with its relative path)."""
+    top_resolved = str(top.resolve())
+    gitignores: list[tuple[str, object]] = list(excluder.gitignores_above(Path(top_resolved)))
+    pending = [(str(top), top_resolved, _display(top))]
+    while pending:
+        folder, resolved_folder, display_folder = pending.pop()
+        try:
+            with os.scandir(folder) as scan:
+                entries = sorted(scan, key=lambda entry: entry.name)
+        except OSError:
+            continue  # unreadable folder: os.walk skips it too
+        if any(entry.name == ".gitignore" for entry in entries):
+            spec = _read_gitignore(os.path.join(folder, ".gitignore"))
             if spec is not None:
-                gitignores.append((resolved_dir, spec))
-        active = [(base, spec) for base, spec in gitignores if resolved_dir == base or resolved_dir.startswith(base + os.sep)]
-        kept = []
-        for name in sorted(dirnames):
-            candidate = os.path.join(resolved_dir, name)
-            if not excluder.excluded(candidate, is_dir=True) and not _gitignored(active, candidate, True):
-                kept.append(name)
-        dirnames[:] = kept
-        for name in sorted(filenames):
-            if not name.endswith(PYTHON_SUFFIXES):
-                continue
-            candidate = os.path.join(resolved_dir, name)
-            if excluder.excluded(candidate, is_dir=False) or _gitignored(active, candidate, False):
-                continue
-            yield Path(dirpath, name)
+                gitignores.append((resolved_folder, spec))
+        active = [(base, spec) for base, spec in gitignores if resolved_folder == base or resolved_folder.startswith(base + os.sep)]
+        display_prefix = "" if display_folder == os.curdir else display_folder + os.sep
+        folders = []
+        for entry in entries:
+            name = entry.name
+            candidate = os.path.join(resolved_folder, name)
+            if _is_folder(entry):
+                if not entry.is_symlink() and not excluder.excluded(candidate, is_dir=True) and not _gitignored(active, candidate, True):
+                    folders.append((entry.path, candidate, display_prefix + name))
+            elif name.endswith(PYTHON_SUFFIXES) and not excluder.excluded(candidate, is_dir=False) and not _gitignored(active, candidate, False):
+                path = Path(entry.path)
+                yield path, display_prefix + name, path.resolve() if entry.is_symlink() else Path(candidate)
+        pending.extend(reversed(folders))
+
+
+def _is_folder(entry: os.DirEntry[str]) -> bool:
+    try:
+        return entry.is_dir()
+    except OSError:
+        return False
 
 
 def _excluded_file(file: Path, excluder: _Excluder) -> bool:

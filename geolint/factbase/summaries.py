@@ -25,7 +25,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import TYPE_CHECKING, Iterator
+from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Sequence
 
 from geolint.algebra import FREE, Kind
 
@@ -542,6 +542,23 @@ def folder_listings() -> Iterator[None]:
         _listed_tops.clear()
 
 
+def consulted_folders(files: Iterable[str]) -> set[str]:
+    """The folders whose entries decided where the imports of `files` (absolute paths) resolved within
+    this `folder_listings` block: every folder listed, and each file's folders up to its project root
+    (where project markers were looked for; up to the file system's root when there is none)."""
+    folders = set(_listings or ())
+    climbed: set[str] = set()
+    for folder in {_folder_of(file) for file in files}:
+        root = _root_of_folder(folder)
+        while folder not in climbed:
+            climbed.add(folder)
+            parent = os.path.dirname(folder)
+            if folder == root or parent == folder:
+                break
+            folder = parent
+    return folders | climbed
+
+
 def _may_hold(folder: str, name: str) -> bool:
     listings = _listings
     if listings is None:
@@ -625,6 +642,9 @@ def _joined(module: str, member: str) -> str:
     return f"{module}{member}" if module.endswith(".") else f"{module}.{member}"
 
 
+_UNREADABLE = "-"  # the hash of a module that could not be read
+
+
 class ImportGraph:
     """The project modules each file imports, transitively, and one digest of them per file.
 
@@ -635,8 +655,12 @@ class ImportGraph:
     and hashed once and each edge followed once, however many files reach it.
     """
 
-    def __init__(self, content_hash) -> None:  # type: ignore[no-untyped-def]
+    def __init__(self, content_hash, resolved_before: Mapping[str, Sequence[Any]] | None = None) -> None:  # type: ignore[no-untyped-def]
         self.content_hash = content_hash
+        # file -> [its hash, its imports] from an earlier run whose folders are unchanged (`resolved`):
+        # a file with the same hash imports the same files, without being decoded or scanned
+        self._resolved_before = resolved_before or {}
+        self.reused = 0  # files whose imports came from `resolved_before`
         self._imports: dict[str, list[str]] = {}
         self._hashes: dict[str, str] = {}
         self._component: dict[str, int] = {}  # file -> its component's number
@@ -654,8 +678,29 @@ class ImportGraph:
     def register_file(self, path: str, data: bytes, read: bool = False) -> tuple[str, str]:
         """`register` from the file's bytes: (its hash, its key)."""
         own = self.content_hash(data)
-        source = data.decode("utf-8", errors="replace")
-        return own, self.register(path, source, own, read)
+        key = os.path.abspath(path)
+        if key not in self._imports and not self._reuse(key, own):
+            self.register(path, data.decode("utf-8", errors="replace"), own, read)
+        return own, key
+
+    def _reuse(self, key: str, own_hash: str) -> bool:
+        """Take the file's imports from the earlier run when its bytes are the same."""
+        before = self._resolved_before.get(key)
+        if before is None or before[0] != own_hash:
+            return False
+        self._hashes[key], self._imports[key] = own_hash, list(before[1])
+        self.reused += 1
+        return True
+
+    @property
+    def all_reused(self) -> bool:
+        """Whether every file read so far took its imports from `resolved_before`."""
+        return self.reused == len(self._hashes)
+
+    def resolved(self) -> dict[str, list[Any]]:
+        """file -> [its hash, the project files it imports] for every file read so far (what
+        `resolved_before` takes in a later run)."""
+        return {file: [own, self._imports[file]] for file, own in self._hashes.items() if own != _UNREADABLE}
 
     def file_digest(self, key: str, own_hash: str) -> str:
         """The digest a registered file is cached under: its own hash, combined with `digest(key)`."""
@@ -669,11 +714,12 @@ class ImportGraph:
             with open(file, "rb") as stream:
                 data = stream.read()
         except OSError:
-            self._hashes[file], self._imports[file] = "-", []
+            self._hashes[file], self._imports[file] = _UNREADABLE, []
             return
-        self._hashes[file] = self.content_hash(data)
-        source = data.decode("utf-8", errors="replace")
-        self._imports[file] = imported_files(file, source, read=True) if "import" in source else []
+        own = self._hashes[file] = self.content_hash(data)
+        if not self._reuse(file, own):
+            source = data.decode("utf-8", errors="replace")
+            self._imports[file] = imported_files(file, source, read=True) if "import" in source else []
 
     def _successors(self, file: str) -> list[str]:
         if file not in self._imports:

@@ -5,6 +5,8 @@ from __future__ import annotations
 import json
 import re
 
+from geolint.cache import content_hash
+
 
 def counts(stderr: str) -> tuple[int, int]:
     match = re.search(r"files: (\d+), from cache: (\d+), linted: (\d+)", stderr)
@@ -88,3 +90,82 @@ def test_an_imported_module_created_after_a_run_relints_its_importer(cli_real):
     second = cli_real("check", "--verbose", "--format", "json")
     assert counts(second.stderr) == (2, 2)  # setup.py and __init__.py unchanged; mapping.py and the new module linted
     assert [(f["path"], f["code"]) for f in json.loads(second.stdout)] == [("slam/mapping.py", "GEO101")]
+
+
+def _age_folders(root, seconds: int = 3600) -> None:
+    """Date every folder under `root` (itself included) back, as a tree left alone for a while is."""
+    import os
+    import time
+
+    stamp = time.time() - seconds
+    for folder, _, _ in os.walk(root):
+        os.utime(folder, (stamp, stamp))
+
+
+def _slam_project(cli_real) -> None:
+    cli_real.write("setup.py", "")
+    cli_real.write("slam/__init__.py", "")
+    cli_real.write(
+        "slam/mapping.py",
+        "from slam.geometry import apply_pose\n\n\ndef move(pose, mesh):\n"
+        "    normals = mesh.vertex_normals\n    return apply_pose(pose, normals)\n",
+    )
+
+
+_GEOMETRY = (
+    "def apply_pose(pose, points):\n    rotation, translation = pose[:3, :3], pose[:3, 3]\n"
+    "    return points @ rotation.T + translation\n"
+)
+
+
+def test_resolved_imports_are_reused_while_the_folders_they_were_resolved_in_keep_their_mtime(cli_real):
+    """The second run takes mapping.py's imports from the first: proven by hiding a new module behind the
+    folder's old mtime (nothing a real edit does), which the reused resolution then does not see."""
+    import os
+
+    _slam_project(cli_real)
+    _age_folders(cli_real.project)
+    first = cli_real("check", "--verbose", "--format", "json")
+    assert counts(first.stderr) == (0, 3) and json.loads(first.stdout) == []
+    assert len(list(cli_real.cache_dir.glob("imports-*.json"))) == 1
+
+    slam = cli_real.project / "slam"
+    before = os.stat(slam)
+    cli_real.write("slam/geometry.py", _GEOMETRY)
+    os.utime(slam, ns=(before.st_atime_ns, before.st_mtime_ns))
+    hidden = cli_real("check", "--verbose", "--format", "json")
+    assert counts(hidden.stderr) == (3, 1) and json.loads(hidden.stdout) == []  # only the new module linted
+
+
+def test_a_module_created_in_a_folder_the_imports_were_resolved_in_is_seen(cli_real):
+    _slam_project(cli_real)
+    _age_folders(cli_real.project)
+    cli_real("check", "--format", "json")
+    assert len(list(cli_real.cache_dir.glob("imports-*.json"))) == 1
+    cli_real.write("slam/geometry.py", _GEOMETRY)  # slam/'s mtime moves on
+    second = cli_real("check", "--verbose", "--format", "json")
+    assert counts(second.stderr) == (2, 2)
+    assert [(f["path"], f["code"]) for f in json.loads(second.stdout)] == [("slam/mapping.py", "GEO101")]
+
+
+def test_imports_resolved_in_folders_changed_just_now_are_not_stored(cli_real):
+    """A file system clock may be too coarse to see a second change within the same tick."""
+    _slam_project(cli_real)
+    cli_real("check", "--format", "json")
+    assert list(cli_real.cache_dir.glob("findings-*.json")) and not list(cli_real.cache_dir.glob("imports-*.json"))
+
+
+def test_a_damaged_imports_cache_is_resolved_again(cli_real):
+    _slam_project(cli_real)
+    cli_real.write("slam/geometry.py", _GEOMETRY)
+    _age_folders(cli_real.project)
+    expected = cli_real("check", "--no-cache", "--format", "json").stdout
+    cli_real("check", "--format", "json")
+    (stored,) = cli_real.cache_dir.glob("imports-*.json")
+    mapping = cli_real.project / "slam" / "mapping.py"
+    damaged_entry = json.dumps({"folders": {}, "files": {str(mapping): [content_hash(mapping.read_bytes()), 5]}})
+    for damage in ("{not json", '{"folders": [], "files": 3}', '{"files": {}}', "[]", damaged_entry):
+        stored.write_text(damage)
+        for finding in cli_real.cache_dir.glob("findings-*.json"):
+            finding.unlink()
+        assert cli_real("check", "--format", "json").stdout == expected
