@@ -129,6 +129,7 @@ class ImportsCache:
         key = hashlib.blake2b(f"{FORMAT_VERSION}|{__version__}|{package_fingerprint()}".encode(), digest_size=12)
         self.file = directory / f"imports-{key.hexdigest()}.json"
         self.started_ns = time.time_ns()
+        self._trusted_folders: set[str] = set()  # the stamps `load` found unchanged
 
     def load(self) -> dict[str, list[Any]]:
         """file -> [hash, imports] of the last run, or {} when a folder it consulted has changed since."""
@@ -144,10 +145,13 @@ class ImportsCache:
             return {}
         if any(_mtime_ns(folder) != stamp for folder, stamp in folders.items()):
             return {}
+        self._trusted_folders = set(folders)
         return files
 
     def save(self, files: dict[str, list[Any]], folders: Iterable[str]) -> None:
-        stamps = {folder: _mtime_ns(folder) for folder in folders}
+        """Store `files` with the stamps of `folders` (those this run consulted) and of the folders the
+        loaded entries were resolved in: a file whose imports were reused did not consult its own."""
+        stamps = {folder: _mtime_ns(folder) for folder in {*folders, *self._trusted_folders}}
         if any(stamp is not None and stamp >= self.started_ns - self._MTIME_SLACK_NS for stamp in stamps.values()):
             return  # a folder too fresh to trust its stamp
         try:

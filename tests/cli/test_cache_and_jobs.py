@@ -169,3 +169,23 @@ def test_a_damaged_imports_cache_is_resolved_again(cli_real):
         for finding in cli_real.cache_dir.glob("findings-*.json"):
             finding.unlink()
         assert cli_real("check", "--format", "json").stdout == expected
+
+
+def test_a_run_that_reuses_some_imports_keeps_the_stamps_of_the_folders_they_were_resolved_in(cli_real):
+    """`lib/` holds no Python file; only resolving app/main.py's import looks in it. A second run that
+    reuses main.py's imports (and re-resolves only the edited other.py) must still watch `lib/`."""
+    cli_real.write("setup.py", "")
+    cli_real.write("lib/notes.txt", "")
+    cli_real.write(
+        "app/main.py",
+        "from lib.geo import apply_pose\n\n\ndef move(pose, mesh):\n"
+        "    normals = mesh.vertex_normals\n    return apply_pose(pose, normals)\n",
+    )
+    cli_real.write("app/other.py", "x = 1\n")
+    _age_folders(cli_real.project)
+    assert json.loads(cli_real("check", "--format", "json").stdout) == []
+    cli_real.write("app/other.py", "x = 2\n")  # edited in place: no folder changes
+    assert counts(cli_real("check", "--verbose", "--format", "json").stderr) == (2, 1)
+    cli_real.write("lib/geo.py", _GEOMETRY)  # lib/'s mtime moves on
+    third = cli_real("check", "--verbose", "--format", "json")
+    assert [(f["path"], f["code"]) for f in json.loads(third.stdout)] == [("app/main.py", "GEO101")]
