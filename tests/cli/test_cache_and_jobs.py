@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import json
+import os
 import re
+import time
 
 from geolint.cache import content_hash
 
@@ -70,46 +72,26 @@ def test_jobs_2_gives_the_same_output_as_jobs_1(cli):
     assert paths == sorted(paths) and len(set(paths)) == 25
 
 
-def test_an_imported_module_created_after_a_run_relints_its_importer(cli_real):
-    """The first run finds no `slam/geometry.py` (its folder listing says so); once the module exists,
-    the importer's digest changes and the next run reads the helper's summary."""
-    cli_real.write("setup.py", "")
-    cli_real.write("slam/__init__.py", "")
-    cli_real.write(
-        "slam/mapping.py",
-        "from slam.geometry import apply_pose\n\n\ndef move(pose, mesh):\n"
-        "    normals = mesh.vertex_normals\n    return apply_pose(pose, normals)\n",
-    )
-    first = cli_real("check", "--verbose", "--format", "json")
-    assert counts(first.stderr) == (0, 3) and json.loads(first.stdout) == []
-    cli_real.write(
-        "slam/geometry.py",
-        "def apply_pose(pose, points):\n    rotation, translation = pose[:3, :3], pose[:3, 3]\n"
-        "    return points @ rotation.T + translation\n",
-    )
-    second = cli_real("check", "--verbose", "--format", "json")
-    assert counts(second.stderr) == (2, 2)  # setup.py and __init__.py unchanged; mapping.py and the new module linted
-    assert [(f["path"], f["code"]) for f in json.loads(second.stdout)] == [("slam/mapping.py", "GEO101")]
-
-
 def _age_folders(root, seconds: int = 3600) -> None:
     """Date every folder under `root` (itself included) back, as a tree left alone for a while is."""
-    import os
-    import time
-
     stamp = time.time() - seconds
     for folder, _, _ in os.walk(root):
         os.utime(folder, (stamp, stamp))
 
 
+def _write_importer(cli_real, path: str, module: str) -> None:
+    """A module that hands normals to `module.apply_pose` (GEO101 once that helper translates)."""
+    cli_real.write(
+        path,
+        f"from {module} import apply_pose\n\n\ndef move(pose, mesh):\n"
+        "    normals = mesh.vertex_normals\n    return apply_pose(pose, normals)\n",
+    )
+
+
 def _slam_project(cli_real) -> None:
     cli_real.write("setup.py", "")
     cli_real.write("slam/__init__.py", "")
-    cli_real.write(
-        "slam/mapping.py",
-        "from slam.geometry import apply_pose\n\n\ndef move(pose, mesh):\n"
-        "    normals = mesh.vertex_normals\n    return apply_pose(pose, normals)\n",
-    )
+    _write_importer(cli_real, "slam/mapping.py", "slam.geometry")
 
 
 _GEOMETRY = (
@@ -118,11 +100,21 @@ _GEOMETRY = (
 )
 
 
+def test_an_imported_module_created_after_a_run_relints_its_importer(cli_real):
+    """The first run finds no `slam/geometry.py` (its folder listing says so); once the module exists,
+    the importer's digest changes and the next run reads the helper's summary."""
+    _slam_project(cli_real)
+    first = cli_real("check", "--verbose", "--format", "json")
+    assert counts(first.stderr) == (0, 3) and json.loads(first.stdout) == []
+    cli_real.write("slam/geometry.py", _GEOMETRY)
+    second = cli_real("check", "--verbose", "--format", "json")
+    assert counts(second.stderr) == (2, 2)  # setup.py and __init__.py unchanged; mapping.py and the new module linted
+    assert [(f["path"], f["code"]) for f in json.loads(second.stdout)] == [("slam/mapping.py", "GEO101")]
+
+
 def test_resolved_imports_are_reused_while_the_folders_they_were_resolved_in_keep_their_mtime(cli_real):
     """The second run takes mapping.py's imports from the first: proven by hiding a new module behind the
     folder's old mtime (nothing a real edit does), which the reused resolution then does not see."""
-    import os
-
     _slam_project(cli_real)
     _age_folders(cli_real.project)
     first = cli_real("check", "--verbose", "--format", "json")
@@ -176,11 +168,7 @@ def test_a_run_that_reuses_some_imports_keeps_the_stamps_of_the_folders_they_wer
     reuses main.py's imports (and re-resolves only the edited other.py) must still watch `lib/`."""
     cli_real.write("setup.py", "")
     cli_real.write("lib/notes.txt", "")
-    cli_real.write(
-        "app/main.py",
-        "from lib.geo import apply_pose\n\n\ndef move(pose, mesh):\n"
-        "    normals = mesh.vertex_normals\n    return apply_pose(pose, normals)\n",
-    )
+    _write_importer(cli_real, "app/main.py", "lib.geo")
     cli_real.write("app/other.py", "x = 1\n")
     _age_folders(cli_real.project)
     assert json.loads(cli_real("check", "--format", "json").stdout) == []
