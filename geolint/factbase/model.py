@@ -54,6 +54,10 @@ _A = TypeVar("_A")  # an analysis built on one fact base
 DST_FIRST = "dst-first"
 SRC_FIRST = "src-first"
 GEOMETRIC = frozenset({Kind.POINT, Kind.VECTOR, Kind.DIRECTION})
+# Words that make an extrinsics-named pose a relative one: `init_rel_w2c = inv(c2w_new @ w2c_last)`
+# is a world-to-world correction that `w2c_ref @ rel_w2c` applies, named after the pose it corrects.
+EXTRINSICS_EVIDENCE = "states camera extrinsics"  # the evidence of a name read by its extrinsics word alone
+RELATIVE_WORDS = frozenset({"rel", "relative", "delta", "diff", "residual", "incr", "increment", "update", "correction", "corr"})
 OPERATORS = frozenset({Kind.TRANSFORM, Kind.ROTATION})
 _NAME_KIND = {
     NameKind.POINT: Kind.POINT,
@@ -790,9 +794,11 @@ class FactBase:
         if declared is not None:
             return FrameFact(declared, (f"`{name}` ({vocab.DECLARING_ATTRIBUTE_SOURCES[name]})",), True)
         parts = name.lower().split("_")
+        if RELATIVE_WORDS.intersection(parts):
+            return None  # `rel_w2c`, `delta_c2w`: a correction named after the pose it corrects (world to world)
         found = {vocab.EXTRINSICS_TOKENS[part] for part in parts if part in vocab.EXTRINSICS_TOKENS}
         if len(found) == 1 and len(parts) <= 3:
-            return FrameFact(found.pop(), (f"`{name}` states camera extrinsics",))
+            return FrameFact(found.pop(), (f"`{name}` {EXTRINSICS_EVIDENCE}",))
         return None
 
     def _frames(self, node: ast.AST, order: str) -> FrameFact | None:

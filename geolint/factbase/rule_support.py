@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 from typing import NamedTuple, Sequence
 
-from geolint.factbase.model import FactBase, MatMul
+from geolint.factbase.model import FactBase, FrameFact, MatMul
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.lint_types import Applicability
 from geolint.rules.base import AstRule
@@ -98,6 +98,8 @@ class ProductRule(FactRule):
                     if self._inconsistent(product.left, order) or self._inconsistent(product.right, order):
                         continue
                     break
+                if self.too_weak(left, right):
+                    break
                 mismatch = self.problem(product, left.frames, right.frames)
                 if mismatch is None:
                     break
@@ -109,6 +111,10 @@ class ProductRule(FactRule):
 
     def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
         raise NotImplementedError
+
+    def too_weak(self, left: FrameFact, right: FrameFact) -> bool:
+        """Whether what the operands' frames rest on is too weak for this rule to judge them."""
+        return False
 
     def _inconsistent(self, node: ast.AST, order: str, depth: int = 0) -> bool:
         """Whether a product inside `node` composes operators whose inner frames disagree in `order`."""

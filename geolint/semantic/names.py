@@ -348,7 +348,8 @@ def same_frame(first: str | None, second: str | None) -> bool | None:
     A one-letter monogram frame (`W`) and a word (`world`) are never compared: they
     come from different conventions and `W` may well mean `world`. Nor is a word and its
     abbreviation (`cam` and `camera`, `base` and `base_link`): they usually name one frame,
-    and `frame-aliases` can say so when a check is wanted.
+    and `frame-aliases` can say so when a check is wanted. Nor is a word and its misspelling by
+    one letter (`word` for `world`).
     """
     if first is None or second is None:
         return None
@@ -357,7 +358,17 @@ def same_frame(first: str | None, second: str | None) -> bool | None:
     first, second = first.lower(), second.lower()
     if first != second and (first.startswith(second) or second.startswith(first)):
         return None
+    if _one_letter_apart(first, second):
+        return None  # `T_word_body` next to `T_world_tcp`: a misspelling, not another frame
     return first == second
+
+
+def _one_letter_apart(first: str, second: str) -> bool:
+    """Whether two words of four letters or more differ by one inserted letter (`word`, `world`)."""
+    shorter, longer = sorted((first, second), key=len)
+    if len(longer) != len(shorter) + 1 or len(shorter) < 4 or not longer.isalpha():
+        return False
+    return any(longer[:i] + longer[i + 1 :] == shorter for i in range(len(longer)))
 
 
 def _is_letter_frame(frame: str) -> bool:

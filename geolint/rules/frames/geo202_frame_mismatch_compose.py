@@ -3,9 +3,19 @@
 from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
-from geolint.factbase.model import MatMul
+from geolint.factbase.model import EXTRINSICS_EVIDENCE, FrameFact, MatMul
 from geolint.factbase.rule_support import Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
+
+
+# Words that name a pose a body should take (a waypoint), not a body: `T_base_grasp` is the tcp's pose
+# at the grasp in grasping code, so `T_base_grasp @ T_tcp_tool0` is the flange pose there.
+WAYPOINT_WORDS = frozenset(
+    {
+        "grasp", "pregrasp", "postgrasp", "retreat", "lift", "approach", "pick", "prepick", "place",
+        "preplace", "goal", "target", "waypoint", "setpoint", "desired", "des", "standoff", "hover",
+    }
+)  # fmt: skip
 
 
 class FrameMismatchCompose(ProductRule):
@@ -56,6 +66,9 @@ class FrameMismatchCompose(ProductRule):
         Valid("T = cam2world @ tool2cam\n"),
         Valid("R_world_tool = R_world_base @ R_base_tool\n"),
         Valid("T = T_world_base @ X_BC\n"),  # a word frame and a monogram letter are not compared
+        Valid("T_base_tool0 = T_base_pregrasp @ T_tcp_tool0\n"),  # the pregrasp waypoint is a pose of the tcp
+        Valid("w2c = reference_w2c @ best_w2c\n"),  # one of two same-direction extrinsics is a relative correction
+        Valid("T_world_body = T_word_tcp @ T_tcp_body\n"),  # `word`: `world` misspelt
     ]
     INVALID = [
         Invalid("T_world_tool = T_world_base @ T_cam_tool\n"),
@@ -67,9 +80,19 @@ class FrameMismatchCompose(ProductRule):
         Invalid("T = cam2world @ world2base\n"),
     ]
 
+    def too_weak(self, left: FrameFact, right: FrameFact) -> bool:
+        """`w2c_ref @ best_w2c`: two extrinsics of one direction, known only by their names. Such code is
+        right only when one is a relative correction named after the pose it corrects (which one,
+        the names cannot tell), and that is how it is written in pose refinement."""
+        return left.frames == right.frames and all(
+            any(item.endswith(EXTRINSICS_EVIDENCE) for item in fact.evidence) for fact in (left, right)
+        )
+
     def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
         if not (left.is_operator and right.is_operator):
             return None
+        if left.src in WAYPOINT_WORDS or right.dst in WAYPOINT_WORDS:
+            return None  # `T_base_pregrasp * T_tcp_tool0`: a waypoint is where a body (the tcp) should be
         if same_frame(left.src, right.dst) is False:
             assert left.src is not None and right.dst is not None
             return Mismatch(

@@ -58,6 +58,11 @@ class FrameMismatchAssign(FactRule):
         Valid("import numpy as np\nworld2cam = np.linalg.inv(world2cam)\n"),  # a name rebound to its own inverse
         Valid("T_approach_obj = T_grasp_obj.copy()\nT_approach_obj.translation -= d\n"),  # copy, then edited
         Valid('T_table_world = RigidTransform(R, t, from_frame="patch", to_frame="world")\n'),  # label words differ
+        Valid("T_word_body = T_world_tcp @ T_tcp_body\n"),  # `word`: `world` misspelt by one letter
+        Valid(
+            "import numpy as np\ndef init(init_c2w, last_c2w):\n"
+            "    init_rel_w2c = np.linalg.inv(init_c2w @ np.linalg.inv(last_c2w))\n    return init_rel_w2c\n"
+        ),  # a relative (world to world) correction named after the w2c it corrects
         Valid(
             "import numpy as np\ndef to_base(p_cam, rot, trans):\n    p_base = p_cam.T\n"
             "    p_base = np.dot(p_base, rot.T)\n    p_base = p_base + trans\n    return p_base\n"

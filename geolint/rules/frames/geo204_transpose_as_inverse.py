@@ -14,6 +14,9 @@ from geolint.factbase.rule_support import FactRule
 # Methods and functions that turn a matrix into a flat buffer: the transpose only picks the
 # column-major memory layout, it is never applied as an operator.
 _FLATTENING = frozenset({"flatten", "ravel", "tolist", "tobytes", "tofile", "flat"})
+# A contiguous copy of the transpose (`T.T.copy()`, `np.ascontiguousarray(T.T)`) is the column-major
+# buffer an OpenGL uniform takes: nobody copies a transpose to use it as an inverse.
+_LAYOUT_COPIES = frozenset({"copy", "ascontiguousarray"})
 _OPENGL_CALL = re.compile(r"gl[A-Z]\w*$")
 
 
@@ -26,7 +29,8 @@ class TransposeAsInverse(FactRule):
     p_world`, `T_cam_world = T_world_cam.T`. The row-vector form `points_h @ T_world_cam.T`
     is correct and never flagged, nor is `T.T[:3, :3]` (a rotation's transpose is its inverse),
     nor a transpose that only changes memory layout: flattened for column-major consumers
-    (`T.T.flatten()`, `.ravel()`, `.tolist()`, `.tobytes()`, `np.ravel(T.T)`) or passed to an
+    (`T.T.flatten()`, `.ravel()`, `.tolist()`, `.tobytes()`, `np.ravel(T.T)`), copied into a contiguous
+    buffer (`T.T.copy()`, `np.ascontiguousarray(T.T)`) or passed to an
     OpenGL call (`glUniformMatrix4fv(loc, 1, GL_FALSE, T.T)`, `glLoadMatrixf(T.T)`).
 
     ## Why is this bad?
@@ -63,6 +67,8 @@ class TransposeAsInverse(FactRule):
         Valid("import numpy as np\nbuf = np.ravel(T_world_cam.T)\n"),
         Valid("glUniformMatrix4fv(loc, 1, GL_FALSE, T_world_obj.T)\n"),
         Valid("import numpy as np\nubo = np.hstack((T_view_world.T.reshape(-1), T_proj_view.T.reshape(16)))\n"),
+        Valid("def gl_matrix(self):\n    return self.T_CW.T.copy()\n"),  # a contiguous column-major copy for a shader
+        Valid("import numpy as np\nmodel = np.ascontiguousarray(np.linalg.inv(T_CW).T)\n"),
     ]
     INVALID = [
         Invalid(
@@ -116,12 +122,12 @@ class TransposeAsInverse(FactRule):
             if parent.attr == "reshape":
                 call = self.facts.parent(parent)
                 return isinstance(call, ast.Call) and _is_flat_shape(call.args)
-            return parent.attr in _FLATTENING
+            return parent.attr in _FLATTENING or parent.attr in _LAYOUT_COPIES
         if isinstance(parent, ast.Call) and any(arg is node for arg in parent.args):
             name = last_name(parent.func) or ""
             if name == "reshape":
                 return _is_flat_shape(parent.args[1:])
-            return name in _FLATTENING or _OPENGL_CALL.match(name) is not None
+            return name in _FLATTENING or name in _LAYOUT_COPIES or _OPENGL_CALL.match(name) is not None
         return False
 
 

@@ -18,6 +18,7 @@ from geolint.factbase.rotations import (
     quaternion_order,
     spread_argument,
 )
+from geolint.factbase.reaching import Unpacked, value_of
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.rotation.quaternion_flow import (
@@ -312,6 +313,11 @@ class QuaternionOrder(FactRule):
             "import numpy as np\nfrom scipy.spatial.transform import Rotation\n"
             "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
         ),
+        Valid(  # the unpacking names lie (w holds x ...), so [w, x, y, z] is scipy's x, y, z, w again
+            "from scipy.spatial.transform import Rotation\ndef target(euler):\n"
+            "    q = Rotation.from_euler('XYZ', euler).as_quat()\n    w, x, y, z = q\n"
+            "    return Rotation.from_quat([w, x, y, z]).as_matrix()\n"
+        ),
         Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
             expected_fix="from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.x, o.y, o.z, o.w)\n",
@@ -411,6 +417,8 @@ class QuaternionOrder(FactRule):
         positional = positional_args(node)
         if len(positional) == 4 and len(node.args) == 4 and not node.keywords:
             order = _order(facts, positional)
+            if order is not None and _names_mislabel_unpacked(facts, flow, positional):
+                return  # `w, x, y, z = as_quat()`: the names lie about the components, the positions decide
             if order is not None and order != expected and _is_other_convention(order, expected):
                 self._report(node, node, positional, order, expected)
             elif order is None:
@@ -423,6 +431,8 @@ class QuaternionOrder(FactRule):
             if len(elements) == 4 and not any(isinstance(element, ast.Starred) for element in elements):
                 order = _order(facts, elements)
                 if order is not None:
+                    if _names_mislabel_unpacked(facts, flow, elements):
+                        return  # `w, x, y, z = as_quat()`: the names lie about the components, the positions decide
                     if order != expected and _is_other_convention(order, expected):
                         self._report(positional[0], node, elements, order, expected)
                     return
@@ -646,6 +656,25 @@ def _order(facts: FactBase, values: list[ast.expr]) -> str | None:
     if sorted(letters) != sorted(_COMPONENTS) or len(owners) != 1:
         return None
     return letters
+
+
+def _names_mislabel_unpacked(facts: FactBase, flow: QuaternionFlow, values: list[ast.expr]) -> bool:
+    """Whether a component name was bound by unpacking a quaternion of known order into a position
+    that holds another component: after `w, x, y, z = Rotation.as_quat()` (x, y, z, w), `w` holds x,
+    and `[w, x, y, z]` is scipy's order again. The names then say nothing about the components."""
+    for value in values:
+        if not isinstance(value, ast.Name):
+            continue
+        bound = value_of(facts.index, value)
+        if not isinstance(bound, Unpacked) or len(bound.names) != 4:
+            continue
+        source = flow.order_of(bound.value)
+        component = _component(facts, value)
+        if source is None or source.batch or component is None or len(source.order) != 4:
+            continue
+        if source.order[bound.index] != component[0]:
+            return True
+    return False
 
 
 def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:

@@ -89,6 +89,11 @@ class MisplacedTranslation(AstRule):
             "    M[3, :3] = t\n    return pts_h @ M\n"
         ),  # the row-vector convention, applied as such
         Valid("def f(M, t):\n    M[3, :3] = t\n"),  # nothing says M is a pose
+        Valid(
+            "import numpy as np\nfrom vispy.visuals import transforms\ndef place(mesh, R, offset, p):\n"
+            "    M = np.eye(4)\n    M[:3, :3] = np.dot(offset, R)\n    M[3, :3] = p\n"
+            "    mesh.transform = transforms.MatrixTransform(M)\n"
+        ),  # VisPy applies matrices to row vectors: the translation lives in the bottom row
         Valid("def to_camera(box, cam2ego):\n    box.translate(-cam2ego[:3, 3])\n    box.rotate(cam2ego[:3, :3].T)\n"),
         Valid(
             "import numpy as np\ndef f(R, t):\n    M = np.eye(4)\n    M[:3, :3] = R.T\n    M[3, :3] = -t\n"
@@ -217,6 +222,8 @@ class MisplacedTranslation(AstRule):
             operands = matmul_operands(node)
             if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], index):
                 row_layout = True  # points_h @ T: the row-vector convention
+            if _row_vector_consumer(node, base, index):
+                row_layout = True  # vispy's MatrixTransform(T) applies T to row vectors
         return states_pose and (reads_translation_column or not row_layout)
 
     def _report_bottom_row(self, target: ast.Subscript, column: ast.expr) -> None:
@@ -291,6 +298,25 @@ def _writes_transposed_rotation(node: ast.AST, base: ast.expr, index: ModuleInde
     if not isinstance(value, ast.expr) or transposed_operand(value) is None:
         return False
     return not (isinstance(value, ast.Call) and call_name(value) in ("inverse", "inv", "pinv"))
+
+
+# Library classes that apply a 4x4 to row vectors (`coords @ M`): VisPy's transforms.
+_ROW_VECTOR_CONSUMERS = frozenset({"vispy.visuals.transforms.MatrixTransform", "vispy.visuals.transforms.linear.MatrixTransform"})
+
+
+def _row_vector_consumer(node: ast.AST, base: ast.expr, index: ModuleIndex) -> bool:
+    """`transforms.MatrixTransform(T)` with `transforms` imported from vispy: the matrix is laid out
+    for row vectors, so its translation belongs in the bottom row."""
+    if not isinstance(node, ast.Call) or not node.args or not same_code(node.args[0], base):
+        return False
+    func = node.func
+    if isinstance(func, ast.Name):
+        qualified = index.imports.get(func.id, "")
+    elif isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id in index.imports:
+        qualified = f"{index.imports[func.value.id]}.{func.attr}"
+    else:
+        return False
+    return qualified in _ROW_VECTOR_CONSUMERS
 
 
 def _is_pose_like(node: ast.expr, index: ModuleIndex) -> bool:
