@@ -78,6 +78,7 @@ class FrameMismatchCompose(ProductRule):
         Invalid("T = T_world_base.dot(T_cam_tool)\n"),
         Invalid("T = T_world_base * T_cam_tool\n"),
         Invalid("T = cam2world @ world2base\n"),
+        Invalid("T_world_grasp = T_world_base @ T_object_grasp\n"),  # a waypoint word elsewhere changes nothing
     ]
 
     def too_weak(self, left: FrameFact, right: FrameFact) -> bool:
@@ -91,8 +92,8 @@ class FrameMismatchCompose(ProductRule):
     def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
         if not (left.is_operator and right.is_operator):
             return None
-        if left.src in WAYPOINT_WORDS or right.dst in WAYPOINT_WORDS:
-            return None  # `T_base_pregrasp * T_tcp_tool0`: a waypoint is where a body (the tcp) should be
+        if left.src in WAYPOINT_WORDS:
+            return None  # `T_base_pregrasp * T_tcp_tool0`: the waypoint is where a body (the tcp) should be
         if same_frame(left.src, right.dst) is False:
             assert left.src is not None and right.dst is not None
             return Mismatch(
