@@ -114,6 +114,7 @@ NOT_A_FRAME = frozenset(
         "target", "goal", "offset", "delta", "diff", "rel", "abs", "3d", "2d", "xyz", "uv",
         "px", "mm", "m", "cm", "rad", "deg", "left", "right", "up", "down", "value", "values", "val",
         "vals", "iter", "adj", "corrected", "pred", "obs", "sq", "squared", "dot", "cross", "inv",
+        "opt", "optim", "optimized", "optimised", "refined", "final", "best", "noisy", "perturbed",
     }
 )  # fmt: skip
 

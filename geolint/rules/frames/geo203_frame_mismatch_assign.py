@@ -59,6 +59,7 @@ class FrameMismatchAssign(FactRule):
         Valid("T_approach_obj = T_grasp_obj.copy()\nT_approach_obj.translation -= d\n"),  # copy, then edited
         Valid('T_table_world = RigidTransform(R, t, from_frame="patch", to_frame="world")\n'),  # label words differ
         Valid("T_word_body = T_world_tcp @ T_tcp_body\n"),  # `word`: `world` misspelt by one letter
+        Valid("import numpy as np\nT_co_opt = np.linalg.inv(T_oc_opt)\n"),  # `_opt`: optimised, a qualifier, not a frame
         Valid(
             "import numpy as np\ndef init(init_c2w, last_c2w):\n"
             "    init_rel_w2c = np.linalg.inv(init_c2w @ np.linalg.inv(last_c2w))\n    return init_rel_w2c\n"
