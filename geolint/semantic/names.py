@@ -68,7 +68,7 @@ DIRECTION_WORDS = frozenset(
     {
         "normal", "normals", "binormal", "binormals", "nrm", "nrms", "dir", "dirs", "direction",
         "directions", "axis", "approach", "heading", "velocity", "velocities", "vel", "vels",
-        "accel", "acceleration", "gravity", "force", "forces", "torque", "torques", "omega",
+        "acc", "accel", "acceleration", "gravity", "force", "forces", "torque", "torques", "omega",
         "tangent", "tangents",
     }
 )  # fmt: skip

@@ -21,7 +21,8 @@ class DirectionTranslated(FactRule):
     `np.ones(4)` buffer filled with it), a rotation followed by `+ t` (`R @ n + t`,
     `n @ R.T + t`, `T[:3, :3] @ n + T[:3, 3]`), or a library call that translates
     (`trimesh.transform_points(normals, T)` without `translate=False`, pytransform3d
-    `vector_to_point(direction)`, Blender `obj.matrix_world @ normal`).
+    `vector_to_point(direction)`, Blender `obj.matrix_world @ normal`, pybullet
+    `multiplyTransforms(pos, orn, velocity, [0, 0, 0, 1])` with a position that is not zero).
 
     ## Why is this bad?
     A direction is a difference of two points, so it has no position: changing frames rotates it
@@ -60,6 +61,11 @@ class DirectionTranslated(FactRule):
         Valid("import numpy as np\nn = 3\nout = np.append(n, 1)\n"),
         Valid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\np_moved = T * points\n"),
         Valid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\nn_moved = T.R @ normals\n"),
+        Valid(
+            "import pybullet as p\ndef to_body(orn, lin_vel):\n    inv_orn = p.invertTransform([0, 0, 0], orn)[1]\n"
+            "    return p.multiplyTransforms([0, 0, 0], inv_orn, lin_vel, [0, 0, 0, 1])[0]\n"
+        ),  # a zero position: a pure rotation, the idiom for vectors
+        Valid("import pybullet as p\nwp, wo = p.multiplyTransforms(base_pos, base_orn, tip_offset, [0, 0, 0, 1])\n"),  # a point
     ]
     INVALID = [
         Invalid(
@@ -92,6 +98,10 @@ class DirectionTranslated(FactRule):
             "approach_base = tool_frame(q) * approach\n"
         ),
         Invalid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\nn_moved = T * normals\n"),
+        Invalid(
+            "import pybullet as p\ndef to_body(pos, orn, lin_vel):\n    inv_pos, inv_orn = p.invertTransform(pos, orn)\n"
+            "    return p.multiplyTransforms(inv_pos, inv_orn, lin_vel, [0, 0, 0, 1])[0]\n"
+        ),
     ]
 
     # homogeneous w = 1 -----------------------------------------------------------------
@@ -203,6 +213,9 @@ class DirectionTranslated(FactRule):
     def _check_library_call(self, node: ast.Call) -> None:
         facts = self.facts
         name = last_name(node.func)
+        if name == "multiplyTransforms":
+            self._check_pybullet_multiply(node)
+            return
         if name not in ("transform_points", "vector_to_point"):
             return
         positional = positional_args(node)
@@ -230,6 +243,30 @@ class DirectionTranslated(FactRule):
                     applicability="unsafe",
                     fix_description="use vector_to_direction",
                 )
+
+    def _check_pybullet_multiply(self, node: ast.Call) -> None:
+        """pybullet's `multiplyTransforms(posA, ornA, posB, ornB)` moves posB as a point: posA is added.
+        A direction goes through it only with a zero position (`multiplyTransforms([0, 0, 0], orn, v, ...)`)."""
+        positional = positional_args(node)
+        if len(positional) != 4 or len(node.args) != 4 or _is_zero_vector(positional[0]):
+            return
+        if not self.facts.is_free(positional[2]):
+            return
+        self.report(
+            node,
+            f"`multiplyTransforms` adds the position `{self.code_of(positional[0])}` to its third argument, but "
+            f"`{self.code_of(positional[2])}` is a direction; rotate it with a zero position "
+            "(`multiplyTransforms([0, 0, 0], orn, v, [0, 0, 0, 1])`) or `rotateVector`",
+        )
+
+
+def _is_zero_vector(node: ast.expr) -> bool:
+    """`[0, 0, 0]`, `(0.0, 0.0, 0.0)`, `[0.] * 3`, `np.zeros(3)`: no translation."""
+    if isinstance(node, (ast.List, ast.Tuple)):
+        return bool(node.elts) and all(isinstance(e, ast.Constant) and e.value == 0 for e in node.elts)
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+        return _is_zero_vector(node.left) or _is_zero_vector(node.right)
+    return isinstance(node, ast.Call) and last_name(node.func) in ("zeros", "zeros_like")
 
 
 def _through(summary: FunctionSummary, index: int) -> str:
