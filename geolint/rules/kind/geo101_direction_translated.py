@@ -99,8 +99,8 @@ class DirectionTranslated(FactRule):
         ),
         Invalid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\nn_moved = T * normals\n"),
         Invalid(
-            "import pybullet as p\ndef to_body(pos, orn, lin_vel):\n    inv_pos, inv_orn = p.invertTransform(pos, orn)\n"
-            "    return p.multiplyTransforms(inv_pos, inv_orn, lin_vel, [0, 0, 0, 1])[0]\n"
+            "import pybullet as p\ndef to_body(pos, orn, lin_acc):\n    inv_pos, inv_orn = p.invertTransform(pos, orn)\n"
+            "    return p.multiplyTransforms(inv_pos, inv_orn, lin_acc, [0, 0, 0, 1])[0]\n"
         ),
     ]
 
