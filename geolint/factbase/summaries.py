@@ -139,7 +139,22 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
                     if facts.kind_of(operator) not in (Kind.POINT, Kind.VECTOR, Kind.DIRECTION):
                         summary.translates.add(params.index(operand.id))
     _add_named_units(summary)
+    _record_formula_reads(facts, function, plain, summary)
     return summary
+
+
+def _record_formula_reads(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef, plain: set[str], summary: FunctionSummary) -> None:
+    """A parameter whose components an unconditional textbook formula reads (`atan2(2 * (q[3] * q[2] + ...`)
+    is read in that formula's order, as if handed to an API."""
+    from geolint.rules.rotation.angle_units import _unconditional
+    from geolint.rules.rotation.quaternion_formulas import formula_reads
+
+    for read in formula_reads(facts):
+        base = read.base
+        if not (isinstance(base, ast.Name) and base.id in plain) or facts.index.scope_of(base).node is not function:
+            continue
+        if _unconditional(facts, read.node):
+            _add_quaternion_read(summary, summary.parameters.index(base.id), read.order, read.evidence(facts))
 
 
 def _record_homogeneous_product(facts: FactBase, node: ast.AST, plain: set[str], summary: FunctionSummary) -> None:

@@ -167,3 +167,38 @@ def test_a_quaternion_passed_to_a_helper_of_another_module(tmp_path: Path) -> No
     findings = check(["drone"], cwd=tmp_path)
     assert [(f["path"], f["line"], f["column"]) for f in findings] == [("drone/node.py", 7, 24)], findings
     assert "`heading` (which passes its parameter `q` to `Rotation.from_quat`)" in findings[0]["message"]
+
+
+def test_the_order_a_helper_reads_from_its_yaw_formula(tmp_path: Path) -> None:
+    """A helper in another module that computes the textbook yaw by index (w taken from `q[3]`) reads
+    its parameter as (x, y, z, w): PX4's (w, x, y, z) `msg.q` handed to it is flagged at the call. A
+    helper whose formula takes w from `q[0]`, one whose index pattern is also another formula (the
+    yaw of x, y, z, w is the roll of w, x, y, z) with no name choosing, and one that reads the formula
+    only under a branch are not."""
+    (tmp_path / "setup.py").write_text("")
+    (tmp_path / "drone").mkdir()
+    (tmp_path / "drone" / "__init__.py").write_text("")
+    (tmp_path / "drone" / "angles.py").write_text(
+        "import math\n"
+        "def yaw_last(q):\n"
+        "    qw, qx, qy, qz = q[3], q[0], q[1], q[2]\n"
+        "    return math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))\n"
+        "def yaw_first(q):\n"
+        "    return math.atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] ** 2 + q[3] ** 2))\n"
+        "def angle(q):\n"
+        "    return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
+        "def yaw_maybe(q, last):\n"
+        "    if last:\n"
+        "        return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
+        "    return 0.0\n"
+    )
+    (tmp_path / "drone" / "node.py").write_text(
+        "from px4_msgs.msg import VehicleOdometry\nfrom drone.angles import angle, yaw_first, yaw_last, yaw_maybe\n"
+        "class Node:\n"
+        "    def __init__(self):\n        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
+        "    def on_odometry(self, msg):\n"
+        "        return yaw_last(msg.q), yaw_first(msg.q), angle(msg.q), yaw_maybe(msg.q, True)\n"
+    )
+    findings = check(["drone"], cwd=tmp_path)
+    assert [(f["path"], f["line"], f["column"]) for f in findings] == [("drone/node.py", 7, 25)], findings
+    assert "`yaw_last` (which passes its parameter `q` to the yaw formula at line 4, whose w is `q[3]`)" in findings[0]["message"]

@@ -21,6 +21,7 @@ from geolint.factbase.rotations import (
 from geolint.factbase.reaching import Unpacked, value_of
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
+from geolint.rules.rotation.quaternion_formulas import formula_reads
 from geolint.rules.rotation.quaternion_flow import (
     COMPONENTS,
     STANDARD_ORDERS,
@@ -57,9 +58,11 @@ class _MessageField:
 
 
 class _GateOrOrderName:
-    """The fact rules' gate, or a name that states a component order (`q_wxyz`, `quats_xyzw`)."""
+    """The fact rules' gate, a name that states a component order (`q_wxyz`, `quats_xyzw`), an angle
+    formula's function (`atan2`, `asin`: quaternion formulas written by index), or PX4's messages
+    (whose `q` may go to a helper that reads it by index)."""
 
-    _ORDER = re.compile(r"(?i)wxyz|xyzw")
+    _ORDER = re.compile(r"(?i)wxyz|xyzw|atan2|asin|arcsin|px4_msgs")
 
     def search(self, source: str, /) -> bool:
         return bool(GATE_TRIGGER.search(source) or self._ORDER.search(source))
@@ -113,6 +116,14 @@ class QuaternionOrder(FactRule):
     - a value whose order is known passed to a project helper (here or in another module) that
       hands the parameter, unchanged and unconditionally, to one of those APIs
       (`yaw_from_quat(msg.q)` where `def yaw_from_quat(q): return Rotation.from_quat(q)...`);
+    - a textbook formula written by index that takes w from another component than the value's
+      known order puts it in: the yaw `atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))`,
+      the roll, the pitch `asin(2 * (wy - xz))` and the 3x3 rotation matrix (or its transpose), read
+      through local names (`q_w = q[3]`, `x, y, z, w = q`); directly (`q = msg.q` of a PX4 message)
+      or through a project helper that computes one on its parameter unconditionally
+      (`quat_get_yaw(odometry.q)`). An index pattern that is two formulas at once (the yaw of
+      x, y, z, w is the roll of w, x, y, z) counts only when the component names or the result's name
+      (`yaw = ...`, `def get_yaw`) choose one;
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -318,6 +329,24 @@ class QuaternionOrder(FactRule):
             "    q = Rotation.from_euler('XYZ', euler).as_quat()\n    w, x, y, z = q\n"
             "    return Rotation.from_quat([w, x, y, z]).as_matrix()\n"
         ),
+        Invalid(  # the textbook yaw by index takes w from q[3]: x, y, z, w, but PX4's q is w, x, y, z
+            "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef yaw(msg: VehicleOdometry):\n    q = msg.q\n"
+            "    return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
+        ),
+        Invalid(  # a helper's formula names its components: it reads x, y, z, w
+            "import math\nfrom transforms3d.euler import euler2quat\ndef heading(q):\n"
+            "    qw, qx, qy, qz = q[3], q[0], q[1], q[2]\n"
+            "    return math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))\n"
+            "def f(r, p, y):\n    return heading(euler2quat(r, p, y))\n"
+        ),
+        Valid(
+            "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef yaw(msg: VehicleOdometry):\n    q = msg.q\n"
+            "    return math.atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] ** 2 + q[3] ** 2))\n"
+        ),
+        Valid(  # yaw of (x, y, z, w) or roll of (w, x, y, z): the code does not say which
+            "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef angle(msg: VehicleOdometry):\n    q = msg.q\n"
+            "    return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
+        ),
         Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
             expected_fix="from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.x, o.y, o.z, o.w)\n",
@@ -330,12 +359,31 @@ class QuaternionOrder(FactRule):
         for node in facts.index.nodes(ast.Call):
             self._check(node, flow)  # type: ignore[arg-type]
         self._check_component_writes(flow)
+        self._check_formula_reads(flow)
         for node in facts.index.nodes(ast.Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
             self._check_message_field(node, flow)  # type: ignore[arg-type]
         if "roll" in facts.index.source:  # no `roll` in the text, no roll call (an alias is imported by name)
             for node in facts.index.nodes(ast.Call):
                 self._check_flat_roll(node, flow)  # type: ignore[arg-type]
+
+    def _check_formula_reads(self, flow: QuaternionFlow) -> None:
+        """`q = msg.q` (w, x, y, z) then `atan2(2 * (q[3] * q[2] + q[0] * q[1]), ...)`: a textbook formula
+        that takes w from another index than the value's known order puts it in."""
+        for read in formula_reads(self.facts):
+            order = flow.order_of(read.base)
+            if order is None or order.order not in STANDARD_ORDERS or order.order == read.order:
+                continue
+            if order.batch and not read.sliced:
+                continue  # `quats[3]` is a row of the stack, not a component
+            if isinstance(read.base, ast.Name) and self._name_contradicted(read.base, flow):
+                continue  # reported once, where the name is bound
+            self.report(
+                read.node,
+                f"`{self.code_of(read.base)}` is {convention(order.order)} ({order.evidence}), but {read.evidence(self.facts)}, "
+                f"reads it as {convention(read.order)}",
+                evidence=(order.evidence,),
+            )
 
     def _check_flat_roll(self, node: ast.Call, flow: QuaternionFlow) -> None:
         """`np.roll(quats, -1)` without an axis on a stack of quaternions rolls the flattened array."""
