@@ -16,7 +16,10 @@ class FrameMismatchAssign(FactRule):
     ## What it does
     Flags an assignment whose target name states frames (`p_world`, `T_cam_world`) that the
     assigned expression contradicts: `p_world = T_cam_base @ p_base` (the result is in cam),
-    `T_cam_world = T_world_cam` (an inverse is missing), `p_world = p_cam` (a relabel).
+    `T_cam_world = T_world_cam` (an inverse is missing). A plain relabel between two names
+    (`p_world = p_cam`, `cam2img = lidar2img`, `verts_scene = verts_cam[mask]`) is flagged only when
+    it swaps a transform's two frames: otherwise both sides are names alone, the weakest evidence,
+    and on real code such relabels were loosely used words (0 of 3 were bugs), not slips.
 
     ## Why is this bad?
     The name is the only frame annotation untyped code has. A name that lies is worse than no
@@ -59,6 +62,9 @@ class FrameMismatchAssign(FactRule):
         Valid("T_approach_obj = T_grasp_obj.copy()\nT_approach_obj.translation -= d\n"),  # copy, then edited
         Valid('T_table_world = RigidTransform(R, t, from_frame="patch", to_frame="world")\n'),  # label words differ
         Valid("T_word_body = T_world_tcp @ T_tcp_body\n"),  # `word`: `world` misspelt by one letter
+        Valid("p_world = p_cam\n"),  # a relabel between two names: weak on both sides
+        Valid("cam2img = lidar2img\n"),  # a loosely named matrix, no maths done on it
+        Valid("def f(verts_cam, mask):\n    verts_scene = verts_cam[mask]\n    return verts_scene\n"),
         Valid("import numpy as np\nT_co_opt = np.linalg.inv(T_oc_opt)\n"),  # `_opt`: optimised, a qualifier, not a frame
         Valid(
             "import numpy as np\ndef init(init_c2w, last_c2w):\n"
@@ -72,9 +78,9 @@ class FrameMismatchAssign(FactRule):
     INVALID = [
         Invalid("p_world = T_cam_base @ p_base\n"),
         Invalid("T_cam_world = T_world_cam\n"),
-        Invalid("p_world = p_cam\n"),
         Invalid("X_CW = X_WB @ X_BC\n"),
-        Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_base_cam = pose\n    return T_base_cam\n"),
+        Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_cam_world = pose\n    return T_cam_world\n"),
+        Invalid('T_obj_world = RigidTransform(R, t, from_frame="obj", to_frame="base")\np_world = T_obj_world * p_obj\n'),
     ]
 
     def run(self) -> None:
@@ -102,6 +108,8 @@ class FrameMismatchAssign(FactRule):
                 return
             if actual.declared and not _reversed(stated.frames, actual.frames):
                 return  # labels and names use different words (`T_table_world` from "patch"): only a reversal counts
+            if not actual.declared and _is_relabel(value) and not _swaps_frames(stated.frames, actual.frames):
+                return  # `p_world = p_cam`, `cam2img = lidar2img`: two names, nothing computed; only a swap counts
             mismatch = self._problem(target.id, value, stated.frames, actual.frames)
             if mismatch is None:
                 return
@@ -146,6 +154,18 @@ def _mentions_name(value: ast.expr, name: str) -> bool:
 
 def _reversed(stated: NameFrames, declared: NameFrames) -> bool:
     return bool(same_frame(stated.dst, declared.src)) and bool(same_frame(stated.src, declared.dst))
+
+
+def _swaps_frames(stated: NameFrames, actual: NameFrames) -> bool:
+    """`T_cam_world = T_world_cam`: a transform stored under its inverse's name."""
+    return stated.is_operator and actual.is_operator and _reversed(stated, actual)
+
+
+def _is_relabel(value: ast.expr) -> bool:
+    """A name, or a part of one (`verts_cam[mask]`, `meta["lidar2img"]`, `self.T_world_cam`): nothing computed."""
+    while isinstance(value, (ast.Subscript, ast.Attribute)):
+        value = value.value
+    return isinstance(value, ast.Name)
 
 
 def _is_copy(facts: FactBase, value: ast.expr) -> bool:
