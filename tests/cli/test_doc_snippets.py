@@ -31,7 +31,7 @@ COVERED: dict[tuple[str, str, int], str] = {
     ("README.md", "A tour of the runtime", 0): "test_runtime_tours_run_through_their_intentional_errors",
     ("README.md", "The linter: `geolint check`", 0): "test_command_lines_run",
     ("README.md", "The linter: `geolint check`", 1): "test_geolint_config_snippets_are_accepted",
-    ("README.md", "Precision on real code.", 0): f"{INSTALL}::test_precision_command_lints_the_named_trees",
+    ("README.md", "Precision and recall on real code.", 0): f"{INSTALL}::test_precision_command_lints_the_named_trees",
     ("README.md", "1. Frame classes, any checker (mypy, pyright, no plugin).", 0): "test_typing_snippets_under_mypy",
     ("README.md", "2. The mypy plugin: string frames and precise messages.", 0): "test_mypy_config_snippets",
     ("README.md", "2. The mypy plugin: string frames and precise messages.", 1): "test_mypy_config_snippets",

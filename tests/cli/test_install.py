@@ -240,7 +240,7 @@ def test_editable_install_is_visible_to_mypy_from_another_directory(released: Pa
     assert re.search(r"use\.py:8: error: ", output), output  # a Point[World] given to a Transform from Camera
 
 
-@pytest.mark.parametrize("key", [("README.md", "Precision on real code.", 0), ("docs/real-world.md", "Command", 0)], ids=["README", "real-world.md"])
+@pytest.mark.parametrize("key", [("README.md", "Precision and recall on real code.", 0), ("docs/real-world.md", "Command", 0)], ids=["README", "real-world.md"])
 def test_precision_command_lints_the_named_trees(key: tuple[str, str, int]) -> None:
     """Run from the repository root, where the dev venv (and so `$SP`) usually sits under the excluded `.venv`."""
     script = block(*key).body
