@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_label, field_order
-from geolint.factbase.model import FactBase, last_name, positional_args, replace_span, string, subscript_parts
+from geolint.factbase.model import FactBase, last_name, number, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import (
     SCALAR_FIRST,
     SCALAR_LAST,
@@ -124,6 +124,9 @@ class QuaternionOrder(FactRule):
       (`quat_get_yaw(odometry.q)`). An index pattern that is two formulas at once (the yaw of
       x, y, z, w is the roll of w, x, y, z) counts only when the component names or the result's name
       (`yaw = ...`, `def get_yaw`) choose one;
+    - in a function with an order flag (`w_last`, `scalar_first`), a component slice at fixed
+      positions (`mul[:, 1:]`, `q[..., 0]`) of a quaternion operation's result that was handed the
+      flag (`mul = quat_mul(a, b, w_last)`), outside any branch: right for one value of the flag only;
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -348,6 +351,20 @@ class QuaternionOrder(FactRule):
             "    return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
         ),
         Invalid(
+            "import torch\nfrom .rotations import quat_conjugate, quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
+            "    mul = quat_mul(a, quat_conjugate(b, w_last), w_last)\n"
+            "    return 2 * torch.asin(torch.norm(mul[:, 1:], dim=-1).clamp(max=1.0))\n"
+        ),
+        Valid(
+            "import torch\nfrom .rotations import quat_conjugate, quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
+            "    mul = quat_mul(a, quat_conjugate(b, w_last), w_last)\n    vec = mul[:, :3] if w_last else mul[:, 1:]\n"
+            "    return 2 * torch.asin(torch.norm(vec, dim=-1).clamp(max=1.0))\n"
+        ),
+        Valid(  # the flag is not passed: the order is fixed
+            "import torch\nfrom .rotations import quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
+            "    mul = quat_mul(a, b, True)\n    return torch.norm(mul[:, :3], dim=-1)\n"
+        ),
+        Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",
             expected_fix="from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.x, o.y, o.z, o.w)\n",
         ),
@@ -360,12 +377,43 @@ class QuaternionOrder(FactRule):
             self._check(node, flow)  # type: ignore[arg-type]
         self._check_component_writes(flow)
         self._check_formula_reads(flow)
+        if _ORDER_FLAG_TEXT.search(facts.index.source):
+            self._check_order_flag_slices()
         for node in facts.index.nodes(ast.Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
             self._check_message_field(node, flow)  # type: ignore[arg-type]
         if "roll" in facts.index.source:  # no `roll` in the text, no roll call (an alias is imported by name)
             for node in facts.index.nodes(ast.Call):
                 self._check_flat_roll(node, flow)  # type: ignore[arg-type]
+
+    def _check_order_flag_slices(self) -> None:
+        """`def quat_diff(a, b, w_last)`: `mul = quat_mul(a, b, w_last)` is in the order the flag picks,
+        so a fixed component slice of it (`mul[:, 1:]`) outside any branch on the flag is right for
+        one value of the flag only."""
+        facts = self.facts
+        for function in facts.index.nodes(ast.FunctionDef, ast.AsyncFunctionDef):
+            flags = {arg.arg for arg in (*function.args.posonlyargs, *function.args.args, *function.args.kwonlyargs)} & _ORDER_FLAGS  # type: ignore[attr-defined]
+            if len(flags) != 1:
+                continue
+            (flag,) = flags
+            for node in ast.walk(function):
+                if not isinstance(node, ast.Subscript) or not isinstance(node.ctx, ast.Load):
+                    continue
+                if facts.index.scope_of(node).node is not function:
+                    continue
+                where = _order_dependent_part(node)
+                if where is None:
+                    continue
+                producer = _flag_ordered_producer(facts, node.value, flag)
+                if producer is None or _under_branch_on(facts, node, function):  # type: ignore[arg-type]
+                    continue
+                other = {"vector": "the scalar", "scalar": "a vector component"}[where]
+                self.report(
+                    node,
+                    f"`{self.code_of(node)}` takes the {where} part at fixed positions, but `{self.code_of(node.value)}` "
+                    f"comes from `{self.code_of(producer)}`, whose component order the flag `{flag}` chooses: for the "
+                    f"other value of `{flag}` these positions hold {other}",
+                )
 
     def _check_formula_reads(self, flow: QuaternionFlow) -> None:
         """`q = msg.q` (w, x, y, z) then `atan2(2 * (q[3] * q[2] + q[0] * q[1]), ...)`: a textbook formula
@@ -688,6 +736,59 @@ class QuaternionOrder(FactRule):
             fix_description=f"read the components in {convention(order.order)} order",
             evidence=(order.evidence,),
         )
+
+
+_ORDER_FLAGS = frozenset({"w_last", "w_first", "scalar_first", "scalar_last", "wxyz", "xyzw", "is_wxyz", "is_xyzw"})
+_ORDER_FLAG_TEXT = re.compile(r"\b(?:w_last|w_first|scalar_first|scalar_last|is_wxyz|is_xyzw)\b")
+# project operations that return a quaternion in the order their flag names (isaacgym-style
+# `quat_mul(a, b, w_last)`), as opposed to ones returning vectors or angles (`quat_rotate`, `calc_heading`)
+_QUATERNION_RESULT = re.compile(
+    r"^(?:quat_(?:mul|mul_norm|multiply|product|conjugate|inv|inverse|unit|normalize|pos|identity(?:_like)?|from_\w+)|"
+    r"\w+_to_quat(?:ernion)?|quaternion_(?:multiply|product|invert|conjugate|raw_multiply))$"
+)
+
+
+def _order_dependent_part(node: ast.Subscript) -> str | None:
+    """`x[:, 1:]` / `x[..., :3]`: 'vector' (the vector part of one order); `x[..., 0]` / `x[:, 3]`: 'scalar'."""
+    parts = subscript_parts(node)
+    if len(parts) < 2 or not all(isinstance(part, ast.Slice) and part.lower is part.upper is part.step is None or (isinstance(part, ast.Constant) and part.value is Ellipsis) for part in parts[:-1]):
+        return None  # a lone `q[0]` may be a row of a stack: only indexing after leading `:` / `...` is judged
+    last = parts[-1]
+    if isinstance(last, ast.Slice) and last.step is None:
+        bounds = (number(last.lower) if last.lower is not None else 0, number(last.upper) if last.upper is not None else 4)
+        if bounds in ((1, 4), (0, 3), (0, -1)):
+            return "vector"
+        if bounds in ((0, 1), (3, 4), (-1, 4)):
+            return "scalar"
+        return None
+    value = number(last)
+    return "scalar" if value in (0, 3, -1) and not isinstance(value, bool) else None
+
+
+def _flag_ordered_producer(facts: FactBase, node: ast.expr, flag: str) -> ast.Call | None:
+    """The call `node` certainly holds when it is a quaternion operation handed the order flag."""
+    for _ in range(4):
+        if isinstance(node, ast.Name):
+            bound = value_of(facts.index, node)
+            if not isinstance(bound, ast.expr):
+                return None
+            node = bound
+            continue
+        break
+    if not isinstance(node, ast.Call) or not _QUATERNION_RESULT.match(last_name(node.func) or ""):
+        return None
+    passed = [*node.args, *(given.value for given in node.keywords)]
+    return node if any(isinstance(arg, ast.Name) and arg.id == flag for arg in passed) else None
+
+
+def _under_branch_on(facts: FactBase, node: ast.AST, function: ast.AST) -> bool:
+    """Whether a branch encloses `node` (one on the flag picks the positions; any other, to be safe)."""
+    current = facts.parent(node)
+    while current is not None and current is not function:
+        if isinstance(current, (ast.If, ast.IfExp, ast.While, ast.Match)):
+            return True
+        current = facts.parent(current)
+    return False
 
 
 def _is_other_convention(order: str, expected: str) -> bool:
