@@ -56,6 +56,8 @@ class FunctionSummary:
     angle_unit: tuple[str, str, bool] | None = None
     # the quaternion order every `return` agrees on: (order, evidence, a stack of quaternions)
     quaternion_order: tuple[str, str, bool] | None = None
+    # `return pos, quat`: tuple position -> the quaternion order every `return` agrees on there
+    quaternion_elements: dict[int, tuple[str, str, bool]] = field(default_factory=dict)
     # parameter index -> (unit, where, decided by its name alone): parameters passed as they are to an
     # API that reads that unit, or named in it (`angle_in_degrees`)
     reads_unit: dict[int, tuple[str, str, bool]] = field(default_factory=dict)
@@ -80,6 +82,7 @@ def bound(summary: FunctionSummary) -> FunctionSummary:
         translates_through=shifted(summary.translates_through),
         angle_unit=summary.angle_unit,
         quaternion_order=summary.quaternion_order,
+        quaternion_elements=summary.quaternion_elements,
         reads_unit=shifted(summary.reads_unit),
         reads_quaternion=shifted(summary.reads_quaternion),
         pending=summary.pending,
@@ -117,6 +120,7 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
     if returns:
         summary.angle_unit = _returned_unit(facts, returns)
         summary.quaternion_order = _returned_order(facts, returns)
+        summary.quaternion_elements = _returned_element_orders(facts, returns)
     for node in walk_within(function):
         if isinstance(node, ast.Call) and node.args:
             _record_call(facts, node, params, plain, summary)
@@ -299,6 +303,22 @@ def _returned_order(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str,
 
     found = _agreed([facts.shared(QuaternionFlow).order_of(value) for value in returns], "order")
     return None if found is None else (found[0].order, found[0].evidence, all(order.batch for order in found))
+
+
+def _returned_element_orders(facts: FactBase, returns: list[ast.expr]) -> dict[int, tuple[str, str, bool]]:
+    """`return pos, quat_wxyz`: the order of each position of the returned tuple, when every `return`
+    is a tuple of one length and all of them agree on that position."""
+    if not all(isinstance(value, ast.Tuple) for value in returns) or len({len(value.elts) for value in returns}) != 1:  # type: ignore[attr-defined]
+        return {}
+    from geolint.rules.rotation.quaternion_flow import QuaternionFlow
+
+    flow = facts.shared(QuaternionFlow)
+    found: dict[int, tuple[str, str, bool]] = {}
+    for position in range(len(returns[0].elts)):  # type: ignore[attr-defined]
+        orders = _agreed([flow.order_of(value.elts[position]) for value in returns], "order")  # type: ignore[attr-defined]
+        if orders is not None:
+            found[position] = (orders[0].order, orders[0].evidence, all(order.batch for order in orders))
+    return found
 
 
 def _agreed(found: list, field: str) -> list | None:  # type: ignore[type-arg]

@@ -202,3 +202,31 @@ def test_the_order_a_helper_reads_from_its_yaw_formula(tmp_path: Path) -> None:
     findings = check(["drone"], cwd=tmp_path)
     assert [(f["path"], f["line"], f["column"]) for f in findings] == [("drone/node.py", 7, 25)], findings
     assert "`yaw_last` (which passes its parameter `q` to the yaw formula at line 4, whose w is `q[3]`)" in findings[0]["message"]
+
+
+def test_a_quaternion_order_carried_through_a_tuple_return_of_another_module(tmp_path: Path) -> None:
+    """`return center, orientation` with trimesh's (w, x, y, z) `quaternion_from_matrix` in one module;
+    another unpacks or indexes the tuple and hands the quaternion to pybullet or scipy (x, y, z, w),
+    or names it `quat_xyzw`. A position the returns disagree on, and the position part, say nothing."""
+    (tmp_path / "setup.py").write_text("")
+    (tmp_path / "sim").mkdir()
+    (tmp_path / "sim" / "__init__.py").write_text("")
+    (tmp_path / "sim" / "boxes.py").write_text(
+        "import trimesh.transformations as tra\nfrom scipy.spatial.transform import Rotation\n"
+        "def box_pose(transform):\n    return transform[:3, 3], tra.quaternion_from_matrix(transform)\n"
+        "def either_pose(transform, scipy_order):\n"
+        "    if scipy_order:\n        return transform[:3, 3], Rotation.from_matrix(transform[:3, :3]).as_quat()\n"
+        "    return transform[:3, 3], tra.quaternion_from_matrix(transform)\n"
+    )
+    (tmp_path / "sim" / "place.py").write_text(
+        "import pybullet as p\nfrom scipy.spatial.transform import Rotation\nfrom sim.boxes import box_pose, either_pose\n"
+        "def place(body, transform):\n    center, orientation = box_pose(transform)\n"
+        "    p.resetBasePositionAndOrientation(body, center, orientation)\n"
+        "def rotation_of(transform):\n    return Rotation.from_quat(box_pose(transform)[1])\n"
+        "def named(transform):\n    pose = box_pose(transform)\n    quat_xyzw = pose[1]\n    return quat_xyzw\n"
+        "def unknown(body, transform):\n    center, orientation = either_pose(transform, True)\n"
+        "    p.resetBasePositionAndOrientation(body, center, orientation)\n"
+    )
+    findings = check(["sim"], cwd=tmp_path)
+    assert [(f["path"], f["line"]) for f in findings] == [("sim/place.py", 6), ("sim/place.py", 8), ("sim/place.py", 11)], findings
+    assert all("`box_pose`, which returns it at position 1" in f["message"] for f in findings)

@@ -100,7 +100,8 @@ class QuaternionOrder(FactRule):
       mujoco `xquat`, pytorch3d `matrix_to_quaternion`: scalar-first; scipy `as_quat()`, pybullet
       `getQuaternionFromEuler`, ROS `tf.transformations`: scalar-last), a spelled-out
       `np.array([o.w, o.x, o.y, o.z])`, or a name that states it (`quat_wxyz`), followed through
-      local variables, `self` attributes, and record fields filled by keyword in the same module
+      project helpers' returns (here or in another module; a tuple `return pos, quat` unpacked or
+      indexed by the caller, when every `return` agrees on that position), local variables, `self` attributes, and record fields filled by keyword in the same module
       (`Label(quaternion=q)` read back as `label.quaternion` from a parameter annotated `Label`);
     - `np.roll(quats, -1)` / `torch.roll(quats, 1)` without an axis on a stack of quaternions
       (a plural name: `quats`, `quaternions`, `orientations`; mujoco's per-body arrays), which rolls

@@ -322,11 +322,32 @@ class QuaternionFlow:
                 return Order(order, f"from `{facts.code_of(call.func)}`, which returns it {evidence}", local=False, batch=batch)
         return None
 
+    def _returned_element(self, call: ast.Call, position: int) -> Order | None:
+        """Position `position` of the tuple a project helper returns (`pos, quat = get_pose()`, `get_pose()[1]`)."""
+        facts = self.facts
+        if not facts.may_have_summary(call):
+            return None
+        summary = facts.function_summary(call)
+        if summary is None or position not in summary.quaternion_elements:
+            return None
+        order, evidence, batch = summary.quaternion_elements[position]
+        return Order(order, f"from `{facts.code_of(call.func)}`, which returns it at position {position} {evidence}", local=False, batch=batch)
+
     def _order_of_row(self, node: ast.Subscript) -> Order | None:
         """`data.xquat[body_id]` (one row of a stack) and pybullet's `getBasePositionAndOrientation(i)[1]`."""
         index = node.slice
         if isinstance(node.value, ast.Call) and last_name(node.value.func) in _PYBULLET_PAIRS and number(index) == 1:
             return Order(SCALAR_LAST, f"from pybullet's `{last_name(node.value.func)}`, line {node.lineno}")
+        position = number(index)
+        if isinstance(position, int) and not isinstance(position, bool) and position >= 0:
+            returned = node.value
+            if isinstance(returned, ast.Name):
+                bound = self.facts.bindings(returned) or []
+                returned = bound[0] if len(bound) == 1 and isinstance(bound[0], ast.Call) and not self._modified(returned) else returned  # type: ignore[assignment]
+            if isinstance(returned, ast.Call):
+                element = self._returned_element(returned, position)
+                if element is not None:
+                    return element
         if isinstance(index, (ast.Slice, ast.Tuple, ast.List, ast.Starred)):
             return None
         base = self.order_of(node.value)
@@ -359,6 +380,8 @@ class QuaternionFlow:
         if isinstance(binding, UnpackBinding) and binding.position == 1 and isinstance(binding.value, ast.Call):
             if last_name(binding.value.func) in _PYBULLET_PAIRS:
                 return Order(SCALAR_LAST, f"from pybullet's `{last_name(binding.value.func)}`, line {binding.value.lineno}")
+        if isinstance(binding, UnpackBinding) and isinstance(binding.value, ast.Call):
+            return self._returned_element(binding.value, binding.position)
         if isinstance(binding, LoopBinding) and binding.position is None:
             rows = self.order_of(binding.iterable)
             if rows is not None and rows.batch:
