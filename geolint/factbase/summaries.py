@@ -151,9 +151,9 @@ def _record_formula_reads(facts: FactBase, function: ast.FunctionDef | ast.Async
     """A parameter whose components an unconditional textbook formula reads (`atan2(2 * (q[3] * q[2] + ...`)
     is read in that formula's order, as if handed to an API."""
     from geolint.rules.rotation.angle_units import _unconditional
-    from geolint.rules.rotation.quaternion_formulas import formula_reads
+    from geolint.rules.rotation.quaternion_formulas import formula_reads_within
 
-    for read in formula_reads(facts):
+    for read in formula_reads_within(facts, function):
         base = read.base
         if not (isinstance(base, ast.Name) and base.id in plain) or facts.index.scope_of(base).node is not function:
             continue

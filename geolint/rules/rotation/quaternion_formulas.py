@@ -15,9 +15,10 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass
+from typing import Iterable
 from fractions import Fraction
 
-from geolint.factbase.model import FactBase, last_name, number
+from geolint.factbase.model import FactBase, last_name, number, walk_within
 from geolint.factbase.reaching import Unpacked, value_of
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST
 from geolint.rules.rotation.quaternion_flow import component_index
@@ -217,12 +218,17 @@ class _Expansion:
 # -- the formulas --------------------------------------------------------------------------------
 def formula_reads(facts: FactBase) -> list[FormulaRead]:
     """Every formula of the module whose component order is decided (memoised per module)."""
-    return facts.memoised("quaternion-formulas", facts.index.tree, lambda: _find(facts))
+    return facts.memoised("quaternion-formulas", facts.index.tree, lambda: _find(facts, facts.index.nodes(ast.Call, ast.List, ast.Tuple)))
 
 
-def _find(facts: FactBase) -> list[FormulaRead]:
+def formula_reads_within(facts: FactBase, function: ast.AST) -> list[FormulaRead]:
+    """The formulas in one function's own body (not in functions nested in it)."""
+    return _find(facts, (node for node in walk_within(function) if isinstance(node, (ast.Call, ast.List, ast.Tuple))))
+
+
+def _find(facts: FactBase, nodes: Iterable[ast.AST]) -> list[FormulaRead]:
     found: list[FormulaRead] = []
-    for node in facts.index.nodes(ast.Call, ast.List, ast.Tuple):
+    for node in nodes:
         read: FormulaRead | None = None
         if isinstance(node, ast.Call):
             name = last_name(node.func)
