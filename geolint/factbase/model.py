@@ -220,17 +220,27 @@ class FactBase:
         self.project = project
         self._memo: dict[tuple[str, int, str], object] = {}
         self._qualified: dict[int, object] = {}
+        # facts of the module's text alone (`module_fact`), shared with this fact base's scratch copies
+        self._module_facts: dict[str, object] = {}
         self._active: set[tuple[str, int, str]] = set()
 
     def scratch(self) -> FactBase:
-        """A fact base of the same module with no memoised facts (qualified names, which no summary
-        changes, are shared): a summary computed in it keeps nothing derived from a provisional one."""
+        """A fact base of the same module with no memoised facts (qualified names and the facts of the
+        module's text, which no summary changes, are shared): a summary computed in it keeps nothing
+        derived from a provisional one."""
         fresh = FactBase(self.index, self.config, self.path, self.orders, self.order_names_mixed, self.cross_module, self.project)
         fresh._qualified = self._qualified
-        local = self._memo.get(("local", 0, ""))
-        if local is not None:
-            fresh._memo[("local", 0, "")] = local
+        fresh._module_facts = self._module_facts
         return fresh
+
+    def module_fact(self, tag: str, compute: Callable[[], _T]) -> _T:
+        """`compute()` once per module, for a fact read from the module's text and flow alone (no kind, no
+        summary): every scratch copy a summary computes in reads the same answer instead of walking the
+        module again."""
+        facts = self._module_facts
+        if tag not in facts:
+            facts[tag] = compute()
+        return facts[tag]  # type: ignore[return-value]
 
     # -- plumbing -------------------------------------------------------------------------
     def shared(self, analysis: Callable[[FactBase], _A]) -> _A:
@@ -243,6 +253,7 @@ class FactBase:
         """Forget the memoised facts and shared analyses (which refer back to this fact base, a cycle
         only the cycle collector would otherwise free, with the syntax tree it keeps alive)."""
         self._memo.clear()
+        self._module_facts = {}  # a scratch copy's close leaves the module's own facts to it
 
     def _cached(self, tag: str, node: ast.AST, compute: Callable[[], _T], order: str = "") -> _T | None:
         key = (tag, id(node), order)
@@ -313,11 +324,7 @@ class FactBase:
         return f"{resolved}.{rest}" if rest else resolved
 
     def _local_names(self) -> set[str]:
-        names = self._memo.get(("local", 0, ""))
-        if names is None:
-            names = {name for scope in self.index.scopes.values() for name in scope.bindings}
-            self._memo[("local", 0, "")] = names
-        return names  # type: ignore[return-value]
+        return self.module_fact("local names", lambda: {name for scope in self.index.scopes.values() for name in scope.bindings})
 
     def is_array_call(self, func: ast.AST, *names: str) -> bool:
         """Whether `func` is `<array library>.<one of names>` (numpy, torch, jax.numpy, cupy)."""

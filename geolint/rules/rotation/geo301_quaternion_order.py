@@ -378,7 +378,7 @@ class QuaternionOrder(FactRule):
             self._check(node, flow)  # type: ignore[arg-type]
         self._check_component_writes(flow)
         self._check_formula_reads(flow)
-        if _ORDER_FLAG_TEXT.search(facts.index.source):
+        if _mentions_order_flag(facts.index.source):
             self._check_order_flag_slices()
         for node in facts.index.nodes(ast.Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
@@ -740,7 +740,14 @@ class QuaternionOrder(FactRule):
 
 
 _ORDER_FLAGS = frozenset({"w_last", "w_first", "scalar_first", "scalar_last", "wxyz", "xyzw", "is_wxyz", "is_xyzw"})
-_ORDER_FLAG_TEXT = re.compile(r"\b(?:w_last|w_first|scalar_first|scalar_last|is_wxyz|is_xyzw)\b")
+_ORDER_FLAG_WORDS = ("w_last", "w_first", "scalar_first", "scalar_last", "is_wxyz", "is_xyzw")
+_ORDER_FLAG_TEXT = re.compile(rf"\b(?:{'|'.join(_ORDER_FLAG_WORDS)})\b")
+
+
+def _mentions_order_flag(source: str) -> bool:
+    """`_ORDER_FLAG_TEXT` in `source`, its words looked for first (a regex led by an alternation has no
+    literal to scan for, and this runs on every module)."""
+    return any(word in source for word in _ORDER_FLAG_WORDS) and _ORDER_FLAG_TEXT.search(source) is not None
 # project operations that return a quaternion in the order their flag names (isaacgym-style
 # `quat_mul(a, b, w_last)`), as opposed to ones returning vectors or angles (`quat_rotate`, `calc_heading`)
 _QUATERNION_RESULT = re.compile(

@@ -15,10 +15,9 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass
-from typing import Iterable
 from fractions import Fraction
 
-from geolint.factbase.model import FactBase, last_name, number, walk_within
+from geolint.factbase.model import FactBase, last_name, number
 from geolint.factbase.reaching import Unpacked, value_of
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST
 from geolint.rules.rotation.quaternion_flow import component_index
@@ -218,29 +217,30 @@ class _Expansion:
 # -- the formulas --------------------------------------------------------------------------------
 def formula_reads(facts: FactBase) -> list[FormulaRead]:
     """Every formula of the module whose component order is decided (memoised per module)."""
-    return facts.memoised("quaternion-formulas", facts.index.tree, lambda: _find(facts, facts.index.nodes(ast.Call, ast.List, ast.Tuple)))
+    return facts.module_fact("quaternion formulas", lambda: _find(facts))
 
 
 def formula_reads_within(facts: FactBase, function: ast.AST) -> list[FormulaRead]:
     """The formulas in one function's own body (not in functions nested in it)."""
-    return _find(facts, (node for node in walk_within(function) if isinstance(node, (ast.Call, ast.List, ast.Tuple))))
+    scope_of = facts.index.scope_of
+    return [read for read in formula_reads(facts) if scope_of(read.node).node is function]
 
 
-def _find(facts: FactBase, nodes: Iterable[ast.AST]) -> list[FormulaRead]:
+def _find(facts: FactBase) -> list[FormulaRead]:
     found: list[FormulaRead] = []
-    for node in nodes:
-        read: FormulaRead | None = None
-        if isinstance(node, ast.Call):
-            name = last_name(node.func)
-            if name in _ATAN2 and len(node.args) == 2 and not node.keywords:
-                read = _angle(facts, node, node.args, (("yaw", _YAW), ("roll", _ROLL)))
-            elif name in _ASIN and len(node.args) == 1 and not node.keywords:
-                read = _angle(facts, node, [_unclamped(node.args[0])], (("pitch", (_PITCH,)),))
-        else:
-            read = _matrix(facts, node)  # type: ignore[arg-type]
-        if read is not None:
-            found.append(read)
-    return found
+    index = facts.index
+    # the angle formulas only where the text calls one of their functions (most modules call none)
+    if any(name in index.source for name in (*_ATAN2, *_ASIN)):
+        for node in index.nodes(ast.Call):
+            name = last_name(node.func)  # type: ignore[attr-defined]
+            if name in _ATAN2 and len(node.args) == 2 and not node.keywords:  # type: ignore[attr-defined]
+                found.append(_angle(facts, node, node.args, (("yaw", _YAW), ("roll", _ROLL))))  # type: ignore[arg-type, attr-defined]
+            elif name in _ASIN and len(node.args) == 1 and not node.keywords:  # type: ignore[attr-defined]
+                found.append(_angle(facts, node, [_unclamped(node.args[0])], (("pitch", (_PITCH,)),)))  # type: ignore[arg-type, attr-defined]
+    for kind in (ast.List, ast.Tuple):
+        found.extend(_matrix(facts, node) for node in index.nodes(kind) if len(node.elts) == 3)  # type: ignore[attr-defined]
+    # in source order, as one walk would give them
+    return sorted((read for read in found if read is not None), key=lambda read: (read.node.lineno, read.node.col_offset))
 
 
 def _unclamped(node: ast.expr) -> ast.expr:
