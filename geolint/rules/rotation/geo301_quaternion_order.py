@@ -62,13 +62,19 @@ class _GateOrOrderName:
     formula's function (`atan2`, `asin`: quaternion formulas written by index), or PX4's messages
     (whose `q` may go to a helper that reads it by index)."""
 
-    _ORDER = re.compile(r"(?i)wxyz|xyzw|atan2|asin|arcsin|px4_msgs")
+    _ORDER_WORDS = ("wxyz", "xyzw", "atan2", "asin", "arcsin", "px4_msgs")  # in any case
 
     def search(self, source: str, /) -> bool:
-        return bool(GATE_TRIGGER.search(source) or self._ORDER.search(source))
+        return bool(GATE_TRIGGER.search(source) or self._mentions_order(source))
 
     def search_with(self, source: str, config: object, /) -> bool:
-        return GATE_TRIGGER.search_with(source, config) or bool(self._ORDER.search(source))
+        return GATE_TRIGGER.search_with(source, config) or self._mentions_order(source)
+
+    def _mentions_order(self, source: str) -> bool:
+        # one lowercase copy and a substring test per word: a case-insensitive alternation has no
+        # literal for the regex engine to scan for, and this runs on every module the gate turns away
+        lowered = source.lower()
+        return any(word in lowered for word in self._ORDER_WORDS)
 
 
 _GATE_OR_ORDER_NAME = _GateOrOrderName()
