@@ -23,10 +23,11 @@ import subprocess
 import sys
 from collections import Counter
 from pathlib import Path
-from typing import Callable, Iterator, NamedTuple
+from collections.abc import Callable, Iterator
+from typing import NamedTuple
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from run import HERE, load_manifest  # noqa: E402  (the benchmark's manifest reader)
+from run import HERE, load_manifest  # the benchmark's manifest reader
 
 _TRANSPOSE = re.compile(r"\.T\b|\.mT\b|\.t\(\)|\.transpose\([^()]*\)|np\.transpose|torch\.transpose|\.swapaxes\([^()]*\)")
 _INVERSE = re.compile(r"np\.linalg\.inv|torch\.linalg\.inv|torch\.inverse|\.inverse\(\)|\binv\b|invertTransform|inverse_matrix|\.inv\(\)|pinv")
