@@ -22,8 +22,8 @@ import re
 import subprocess
 import sys
 from collections import Counter
-from pathlib import Path
 from collections.abc import Callable, Iterator
+from pathlib import Path
 from typing import NamedTuple
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
