@@ -5,6 +5,7 @@ evidence chain they report is the one in the code. All through the real CLI."""
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 import sysconfig
@@ -145,24 +146,35 @@ def test_px4_messages_are_known_only_from_their_class(tmp_path: Path) -> None:
     assert all("px4_msgs `Vehicle" in f["message"] for f in findings)
 
 
-def test_a_quaternion_passed_to_a_helper_of_another_module(tmp_path: Path) -> None:
-    """A known order handed to a project helper (in another module) that passes its parameter to
-    scipy's from_quat: flagged at the call; a helper that reorders first, or only under a flag, is not."""
+def _px4_drone(tmp_path: Path, module: str, helpers: str, message: str, returned: str) -> None:
+    """A package `drone` whose `module` holds `helpers`, and a node whose callback for the px4_msgs
+    `message` returns `returned` (calls of those helpers on `msg.q`) on line 7 of drone/node.py."""
     (tmp_path / "setup.py").write_text("")
     (tmp_path / "drone").mkdir()
     (tmp_path / "drone" / "__init__.py").write_text("")
-    (tmp_path / "drone" / "geometry.py").write_text(
+    (tmp_path / "drone" / f"{module}.py").write_text(helpers)
+    names = ", ".join(re.findall(r"(\w+)\(msg", returned))
+    (tmp_path / "drone" / "node.py").write_text(
+        f"from px4_msgs.msg import {message}\nfrom drone.{module} import {names}\n"
+        "class Node:\n"
+        f"    def __init__(self):\n        self.create_subscription({message}, 'topic', self.on_message, 10)\n"
+        "    def on_message(self, msg):\n"
+        f"        return {returned}\n"
+    )
+
+
+def test_a_quaternion_passed_to_a_helper_of_another_module(tmp_path: Path) -> None:
+    """A known order handed to a project helper (in another module) that passes its parameter to
+    scipy's from_quat: flagged at the call; a helper that reorders first, or only under a flag, is not."""
+    _px4_drone(
+        tmp_path,
+        "geometry",
         "from scipy.spatial.transform import Rotation\n"
         "def heading(q):\n    return Rotation.from_quat(q).as_euler('zyx')[0]\n"
         "def heading_wxyz(q):\n    return Rotation.from_quat([q[1], q[2], q[3], q[0]]).as_euler('zyx')[0]\n"
-        "def heading_maybe(q, wxyz):\n    if wxyz:\n        return Rotation.from_quat(q, scalar_first=True)\n    return Rotation.from_quat(q)\n"
-    )
-    (tmp_path / "drone" / "node.py").write_text(
-        "from px4_msgs.msg import VehicleAttitude\nfrom drone.geometry import heading, heading_wxyz, heading_maybe\n"
-        "class Node:\n"
-        "    def __init__(self):\n        self.create_subscription(VehicleAttitude, 'att', self.on_attitude, 10)\n"
-        "    def on_attitude(self, msg):\n"
-        "        return heading(msg.q), heading_wxyz(msg.q), heading_maybe(msg.q, True)\n"
+        "def heading_maybe(q, wxyz):\n    if wxyz:\n        return Rotation.from_quat(q, scalar_first=True)\n    return Rotation.from_quat(q)\n",
+        "VehicleAttitude",
+        "heading(msg.q), heading_wxyz(msg.q), heading_maybe(msg.q, True)",
     )
     findings = check(["drone"], cwd=tmp_path)
     assert [(f["path"], f["line"], f["column"]) for f in findings] == [("drone/node.py", 7, 24)], findings
@@ -175,10 +187,9 @@ def test_the_order_a_helper_reads_from_its_yaw_formula(tmp_path: Path) -> None:
     helper whose formula takes w from `q[0]`, one whose index pattern is also another formula (the
     yaw of x, y, z, w is the roll of w, x, y, z) with no name choosing, and one that reads the formula
     only under a branch are not."""
-    (tmp_path / "setup.py").write_text("")
-    (tmp_path / "drone").mkdir()
-    (tmp_path / "drone" / "__init__.py").write_text("")
-    (tmp_path / "drone" / "angles.py").write_text(
+    _px4_drone(
+        tmp_path,
+        "angles",
         "import math\n"
         "def yaw_last(q):\n"
         "    qw, qx, qy, qz = q[3], q[0], q[1], q[2]\n"
@@ -190,14 +201,9 @@ def test_the_order_a_helper_reads_from_its_yaw_formula(tmp_path: Path) -> None:
         "def yaw_maybe(q, last):\n"
         "    if last:\n"
         "        return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
-        "    return 0.0\n"
-    )
-    (tmp_path / "drone" / "node.py").write_text(
-        "from px4_msgs.msg import VehicleOdometry\nfrom drone.angles import angle, yaw_first, yaw_last, yaw_maybe\n"
-        "class Node:\n"
-        "    def __init__(self):\n        self.create_subscription(VehicleOdometry, 'odom', self.on_odometry, 10)\n"
-        "    def on_odometry(self, msg):\n"
-        "        return yaw_last(msg.q), yaw_first(msg.q), angle(msg.q), yaw_maybe(msg.q, True)\n"
+        "    return 0.0\n",
+        "VehicleOdometry",
+        "yaw_last(msg.q), yaw_first(msg.q), angle(msg.q), yaw_maybe(msg.q, True)",
     )
     findings = check(["drone"], cwd=tmp_path)
     assert [(f["path"], f["line"], f["column"]) for f in findings] == [("drone/node.py", 7, 25)], findings
