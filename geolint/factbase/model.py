@@ -139,6 +139,17 @@ def number(node: ast.AST | None) -> int | float | None:
     return None
 
 
+def is_zero(node: ast.AST) -> bool:
+    """A value that is all zeros: `0`, `[0, 0, 0]`, `(0.0, 0.0, 0.0)`, `[0.] * 3`, `np.zeros(3)`, `np.zeros_like(t)`."""
+    if isinstance(node, ast.Constant):
+        return node.value == 0
+    if isinstance(node, (ast.List, ast.Tuple)):
+        return bool(node.elts) and all(is_zero(element) for element in node.elts)
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+        return is_zero(node.left) or is_zero(node.right)
+    return isinstance(node, ast.Call) and last_name(node.func) in ("zeros", "zeros_like")
+
+
 def string(node: ast.AST | None) -> str | None:
     return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
 

@@ -6,7 +6,7 @@ import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE
-from geolint.factbase.model import GEOMETRIC, keyword, last_name, last_name_target, positional_args, replace_span, transposed_value
+from geolint.factbase.model import GEOMETRIC, is_zero, keyword, last_name, last_name_target, positional_args, replace_span, transposed_value
 from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.semantic.names import Kind as NameKind, kind_of_name
@@ -248,7 +248,7 @@ class DirectionTranslated(FactRule):
         """pybullet's `multiplyTransforms(posA, ornA, posB, ornB)` moves posB as a point: posA is added.
         A direction goes through it only with a zero position (`multiplyTransforms([0, 0, 0], orn, v, ...)`)."""
         positional = positional_args(node)
-        if len(positional) != 4 or len(node.args) != 4 or _is_zero_vector(positional[0]):
+        if len(positional) != 4 or len(node.args) != 4 or is_zero(positional[0]):
             return
         if not self.facts.is_free(positional[2]):
             return
@@ -258,15 +258,6 @@ class DirectionTranslated(FactRule):
             f"`{self.code_of(positional[2])}` is a direction; rotate it with a zero position "
             "(`multiplyTransforms([0, 0, 0], orn, v, [0, 0, 0, 1])`) or `rotateVector`",
         )
-
-
-def _is_zero_vector(node: ast.expr) -> bool:
-    """`[0, 0, 0]`, `(0.0, 0.0, 0.0)`, `[0.] * 3`, `np.zeros(3)`: no translation."""
-    if isinstance(node, (ast.List, ast.Tuple)):
-        return bool(node.elts) and all(isinstance(e, ast.Constant) and e.value == 0 for e in node.elts)
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
-        return _is_zero_vector(node.left) or _is_zero_vector(node.right)
-    return isinstance(node, ast.Call) and last_name(node.func) in ("zeros", "zeros_like")
 
 
 def _through(summary: FunctionSummary, index: int) -> str:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.factbase import ModuleIndex, index_of
-from geolint.factbase.model import is_slice_upto
+from geolint.factbase.model import is_slice_upto, is_zero
 from geolint.factbase.pose_parts import (
     call_name,
     int_value,
@@ -146,7 +146,7 @@ class MisplacedTranslation(AstRule):
                 if not isinstance(target, ast.Subscript) or not isinstance(target.value, ast.Name):
                     continue
                 indices = matrix_indices(target)
-                if indices is None or _is_zero(value):
+                if indices is None or is_zero(value):
                     continue
                 bottom_row = _is_bottom_row_translation(indices[1], indices[2])
                 rotation_block = is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)
@@ -255,16 +255,6 @@ def _is_bottom_row_translation(row: ast.expr, column: ast.expr) -> bool:
     if int_value(row) not in (3, -1):
         return False
     return is_slice_upto(column, 3) or int_value(column) in (0, 1, 2)
-
-
-def _is_zero(value: ast.expr) -> bool:
-    if isinstance(value, ast.Constant):
-        return value.value == 0
-    if isinstance(value, (ast.List, ast.Tuple)):
-        return all(_is_zero(element) for element in value.elts)
-    if isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute):
-        return value.func.attr in ("zeros", "zeros_like")
-    return False
 
 
 def _writes_projective_corner(node: ast.Subscript, index: ModuleIndex) -> bool:
