@@ -63,9 +63,9 @@ def package_fingerprint() -> str:
     return digest.hexdigest()
 
 
-def settings_key(config: Config) -> str:
-    """What, besides a file's bytes, its findings depend on."""
-    text = f"{FORMAT_VERSION}|{__version__}|{package_fingerprint()}|{config!r}"
+def settings_key(config: Config | None) -> str:
+    """What, besides a file's bytes, its findings depend on (without a config: what geolint's own code is)."""
+    text = f"{FORMAT_VERSION}|{__version__}|{package_fingerprint()}" + ("" if config is None else f"|{config!r}")
     return hashlib.blake2b(text.encode(), digest_size=12).hexdigest()
 
 
@@ -126,8 +126,7 @@ class ImportsCache:
 
     def __init__(self, directory: Path) -> None:
         self.directory = directory
-        key = hashlib.blake2b(f"{FORMAT_VERSION}|{__version__}|{package_fingerprint()}".encode(), digest_size=12)
-        self.file = directory / f"imports-{key.hexdigest()}.json"
+        self.file = directory / f"imports-{settings_key(None)}.json"
         self.started_ns = time.time_ns()
         self._trusted_folders: set[str] = set()  # the stamps `load` found unchanged
 
