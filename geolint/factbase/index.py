@@ -13,7 +13,7 @@ import os
 import threading
 from collections import OrderedDict
 from dataclasses import dataclass, field
-from typing import Union
+from typing import Any, Union
 
 from geolint.lint_types import Config
 
@@ -111,8 +111,9 @@ class ModuleIndex:
         parents = self.parents
         scope_of = self.scope_of_node
         recorders = _RECORDERS
-        child_fields = _CHILD_FIELDS
-        no_children, leaves, scope_makers = _NO_CHILDREN, _LEAVES, _SCOPE_MAKERS
+        reversed_fields = _REVERSED_CHILD_FIELDS
+        role_of = _ROLE
+        scope_makers = _SCOPE_MAKERS
         AST = ast.AST
         # (node, scope the node's code runs in, its level); an explicit stack, so depth costs no recursion
         stack: list[tuple[ast.AST, Scope, int]] = [(self.tree, root, 1)]
@@ -125,8 +126,6 @@ class ModuleIndex:
                 continue
             scope_of[node] = scope
             kind = type(node)
-            if kind in no_children:
-                continue  # names and constants are not listed by type: nearly half the nodes, never asked for
             bucket = by_type.get(kind)
             if bucket is None:
                 by_type[kind] = [node]
@@ -134,32 +133,49 @@ class ModuleIndex:
                 bucket.append(node)
             recorder = recorders.get(kind)
             inner = recorder(self, node, scope) if recorder is not None else scope
-            # `child_nodes` inlined: this loop runs once per node of every module, and a call per
-            # node costs more than the copy
-            fields = child_fields.get(kind)
-            if fields is None:
-                fields = child_fields[kind] = tuple(f for f in kind._fields if f not in _NOT_CHILD_FIELDS)
-            children = []
-            for name in fields:
-                value = getattr(node, name, None)
-                if value is None:
-                    continue
-                if type(value) is list:
-                    for child in value:
-                        if isinstance(child, AST) and type(child) not in leaves:
-                            children.append(child)
-                elif isinstance(value, AST) and type(value) not in leaves:
-                    children.append(value)
-            # pushed last-first, so nodes come off the stack in source (pre-)order
             depth += 1
+            childless_inline = depth <= depth_limit  # past the limit, a childless node is pushed for the depth check
             if kind in scope_makers:
-                for child in reversed(children):
+                for child in reversed(child_nodes(node)):
                     parents[child] = node
-                    push((child, inner if _runs_in_inner_scope(node, child) else scope, depth))
-            else:
-                for child in reversed(children):
-                    parents[child] = node
-                    push((child, scope, depth))
+                    child_scope = inner if _runs_in_inner_scope(node, child) else scope
+                    if childless_inline and type(child) in _NO_CHILDREN:
+                        scope_of[child] = child_scope
+                    else:
+                        push((child, child_scope, depth))
+                continue
+            # `child_nodes` inlined, fields and lists read backwards and pushed at once (so nodes come
+            # off the stack in source pre-order); a childless child (`Name`, `Constant`: nearly half
+            # the nodes, not listed by type) is recorded here rather than pushed and popped. This
+            # loop runs once per node of every module.
+            fields = reversed_fields.get(kind)
+            if fields is None:
+                fields = reversed_fields[kind] = _reversed_child_fields(kind)
+            for name in fields:
+                value: Any = getattr(node, name, None)
+                if type(value) is list:
+                    for child in reversed(value):
+                        role = role_of.get(type(child))
+                        if role is None:  # not a node (`Global.names`' strings), or a node type not seen yet
+                            role = _WALKED if isinstance(child, AST) else _SKIPPED
+                        if role == _SKIPPED:
+                            continue
+                        parents[child] = node
+                        if role == _CHILDLESS and childless_inline:
+                            scope_of[child] = scope
+                        else:
+                            push((child, scope, depth))
+                else:
+                    role = role_of.get(type(value))
+                    if role is None:  # a string or a number, or a node type not seen yet
+                        role = _WALKED if isinstance(value, AST) else _SKIPPED
+                    if role == _SKIPPED:
+                        continue
+                    parents[value] = node
+                    if role == _CHILDLESS and childless_inline:
+                        scope_of[value] = scope
+                    else:
+                        push((value, scope, depth))
 
     def _past_the_limit(self, node: ast.AST) -> bool:
         """`node` is one level past the limit: the tree is too deep. Whether to stop the walk now:
@@ -409,6 +425,24 @@ _NOT_CHILD_FIELDS = frozenset(
     {"ctx", "op", "id", "attr", "arg", "name", "kind", "type_comment", "level", "module", "asname", "is_async", "conversion", "simple"}
 )
 _CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
+_REVERSED_CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
+# What the walk does with a child of each node type: skip it (`_LEAVES`), record it without pushing
+# it (`_NO_CHILDREN`), or walk it; one dictionary look-up per child instead of three tests.
+_SKIPPED, _CHILDLESS, _WALKED = 0, 1, 2
+
+
+def _node_types(base: type[ast.AST] = ast.AST) -> list[type[ast.AST]]:
+    """Every `ast` node class."""
+    found: list[type[ast.AST]] = []
+    for sub in base.__subclasses__():
+        found += [sub, *_node_types(sub)]
+    return found
+
+
+_ROLE: dict[type, int] = {
+    type(None): _SKIPPED,
+    **{kind: _SKIPPED if kind in _LEAVES else _CHILDLESS if kind in _NO_CHILDREN else _WALKED for kind in _node_types()},
+}
 _SCOPE_MAKERS = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 # What the walk records for the nodes that bind names, make scopes, return or multiply matrices
 # (by exact type, as `ast` makes them: one dictionary look-up per node).
@@ -434,15 +468,27 @@ def child_nodes(node: ast.AST) -> list[ast.AST]:
     children = []
     for name in fields:
         value = getattr(node, name, None)
-        if value is None:
-            continue
         if type(value) is list:
             for child in value:
-                if isinstance(child, ast.AST) and type(child) not in _LEAVES:
+                role = _ROLE.get(type(child))
+                if role is None:  # not a node, or a node type not seen yet
+                    role = _WALKED if isinstance(child, ast.AST) else _SKIPPED
+                if role != _SKIPPED:
                     children.append(child)
-        elif isinstance(value, ast.AST) and type(value) not in _LEAVES:
-            children.append(value)
+        else:
+            role = _ROLE.get(type(value))
+            if role is None:
+                role = _WALKED if isinstance(value, ast.AST) else _SKIPPED
+            if role != _SKIPPED:
+                children.append(value)
     return children
+
+
+def _reversed_child_fields(kind: type[ast.AST]) -> tuple[str, ...]:
+    fields = _CHILD_FIELDS.get(kind)
+    if fields is None:
+        fields = _CHILD_FIELDS[kind] = tuple(f for f in kind._fields if f not in _NOT_CHILD_FIELDS)
+    return fields[::-1]
 
 
 def _runs_in_inner_scope(node: ast.AST, child: ast.AST) -> bool:
