@@ -370,8 +370,8 @@ def graph_of_source(
         module = ast.parse(source)
     except (SyntaxError, ValueError):
         return FrameGraph()
-    orders, mixed = orders_for(location or path, source, module, config.naming.order)
-    reader = _FileReader(source, path, config, orders=orders, order_names_mixed=mixed)
+    reading = orders_for(location or path, source, module, config.naming.order)
+    reader = _FileReader(source, path, config, orders=reading.orders, order_names_mixed=reading.mixed)
     reader.collect_frame_classes(module)
     reader.visit(module)
     reader.add_mismatches(module, findings)

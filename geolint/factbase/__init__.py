@@ -58,5 +58,5 @@ def index_of(tree: ast.Module) -> ModuleIndex:
 def facts_for_module(tree: ast.Module, source: str, path: str, config: Config) -> FactBase:
     """The fact base of one module under one config."""
     index = module_index(tree, source)
-    orders, mixed = orders_for(path, source, tree, config.naming.order)
-    return FactBase(index, config, path, orders, order_names_mixed=mixed)
+    reading = orders_for(path, source, tree, config.naming.order)
+    return FactBase(index, config, path, reading.orders, order_names_mixed=reading.mixed, names_stated=reading.stated)

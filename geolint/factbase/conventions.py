@@ -13,6 +13,12 @@ Declarations decide when there are any (both orders declared: mixed); otherwise 
 decide when one order outnumbers the other more than four to one. Mixed or absent evidence leaves both orders possible, and the
 frame rules then report only what is wrong in both readings. `[tool.geolint] naming` overrides.
 
+Which reading is right is one question; whether names are frame evidence at all is another. On real
+code, findings that compared two names and nothing else were never right (waypoints, relative
+corrections, typos and loose labels read as frames), so names alone count only where the convention
+is *stated*: by `naming = "dst-first" | "src-first"`, or by the project's own declarations, all in
+one order. Elsewhere a frame finding needs an explicit declaration on one side (`NameReading.stated`).
+
 The whole project is read (once per process and project root; files without a declaration or a
 composition of `T_` names are skipped by a substring test before any parsing).
 """
@@ -25,6 +31,7 @@ import re
 import threading
 from dataclasses import dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames
 from geolint.factbase.summaries import project_root
@@ -62,6 +69,11 @@ class Votes:
     def mixed(self) -> bool:
         """Declarations in both orders: a `T_a_b` name alone says nothing in this project."""
         return bool(self.declared_dst and self.declared_src)
+
+    @property
+    def stated(self) -> bool:
+        """Declarations in one order only: the project states its convention in code."""
+        return bool(self.declared_dst) != bool(self.declared_src)
 
     def orders(self) -> tuple[str, ...]:
         """The readings left open by the evidence."""
@@ -175,13 +187,20 @@ def project_votes(root: Path) -> Votes:
     return total
 
 
-def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> tuple[tuple[str, ...], bool]:
-    """The readings of `T_a_b` names open for this file (the config's, or what the project's code
-    says), and whether such names are mixed evidence (both orders declared: names alone say nothing)."""
+class NameReading(NamedTuple):
+    """How one file's frame names read."""
+
+    orders: tuple[str, ...]  # the readings of `T_a_b` names left open
+    mixed: bool  # both orders declared: a `T_a_b` name alone says nothing
+    stated: bool  # the convention is stated (config, or declarations in one order): names alone are evidence
+
+
+def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> NameReading:
+    """How this file's `T_a_b` names read: the config's order, or what the project's code says."""
     if setting == DST_FIRST:
-        return (DST_FIRST,), False
+        return NameReading((DST_FIRST,), False, True)
     if setting == SRC_FIRST:
-        return (SRC_FIRST,), False
+        return NameReading((SRC_FIRST,), False, True)
     root = project_root(path) if os.path.isfile(path) else None
     votes = project_votes(root) if root is not None else votes_of_source(source, tree)
-    return votes.orders(), votes.mixed
+    return NameReading(votes.orders(), votes.mixed, votes.stated)

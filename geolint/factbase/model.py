@@ -213,6 +213,7 @@ class FactBase:
         order_names_mixed: bool = False,
         cross_module: bool = True,
         project: summaries.ProjectSummaries | None = None,
+        names_stated: bool = False,
     ) -> None:
         self.index = index
         self.config = config
@@ -221,6 +222,9 @@ class FactBase:
         self.orders = orders
         # the project declares `T_a_b` names in both orders: such a name alone is no evidence
         self.order_names_mixed = order_names_mixed
+        # the naming convention is stated (config, or the project's declarations in one order): a
+        # frame finding may rest on names alone; otherwise one side must be declared
+        self.names_stated = names_stated
         # whether helpers imported from other project modules are summarised
         self.cross_module = cross_module
         # the summaries of the project's helpers this module's lint reads (shared with the fact
@@ -239,7 +243,9 @@ class FactBase:
         """A fact base of the same module with no memoised facts (qualified names and the facts of the
         module's text, which no summary changes, are shared): a summary computed in it keeps nothing
         derived from a provisional one."""
-        fresh = FactBase(self.index, self.config, self.path, self.orders, self.order_names_mixed, self.cross_module, self.project)
+        fresh = FactBase(
+            self.index, self.config, self.path, self.orders, self.order_names_mixed, self.cross_module, self.project, self.names_stated
+        )
         fresh._qualified = self._qualified
         fresh._module_facts = self._module_facts
         return fresh
@@ -946,18 +952,20 @@ class FactBase:
             return None
         left, right = left_fact.frames, right_fact.frames
         evidence = left_fact.evidence + right_fact.evidence
-        declared = left_fact.declared and right_fact.declared
         from geolint.semantic.names import same_frame
 
+        # a result is declared when the operands its frames come from are
         if left.is_operator and right.is_operator:
             if same_frame(left.src, right.dst) is True:
                 operator = "rotation" if left.operator == right.operator == "rotation" else "transform"
+                declared = left_fact.declared and right_fact.declared
                 return FrameFact(NameFrames(dst=left.dst, src=right.src, operator=operator), evidence, declared)
             return None
         if left.is_operator and right.frame is not None:
-            return FrameFact(NameFrames(frame=left.dst), evidence, declared)
+            return FrameFact(NameFrames(frame=left.dst), evidence, left_fact.declared)
         if right.is_operator and left.frame is not None:
-            return FrameFact(NameFrames(frame=right.src), evidence, declared)  # row vectors: `x @ M` applies M.T
+            # row vectors: `x @ M` applies M.T
+            return FrameFact(NameFrames(frame=right.src), evidence, right_fact.declared)
         return None
 
     # -- homogeneous coordinates ---------------------------------------------------------------

@@ -12,6 +12,11 @@ from geolint.rules.base import AstRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
+# The `[tool.geolint]` table of examples whose frames rest on names alone: names are frame evidence
+# only where the convention is stated (see geolint.factbase.conventions).
+STATED = {"naming": "dst-first"}
+
+
 class FactRule(AstRule):
     """An `AstRule` that reads the module's shared fact base (`self.facts`)."""
 
@@ -82,6 +87,8 @@ class ProductRule(FactRule):
 
     `problem` says what is wrong with one reading of the names (or None); the rule reports only
     when every reading the project's naming order leaves open has a problem, with the first.
+    Names on both sides are evidence only where the project states its convention
+    (`FactBase.names_stated`); elsewhere one operand's frames must be declared.
     """
 
     def run(self) -> None:
@@ -98,7 +105,7 @@ class ProductRule(FactRule):
                     if self._inconsistent(product.left, order) or self._inconsistent(product.right, order):
                         continue
                     break
-                if self.too_weak(left, right):
+                if not (facts.names_stated or left.declared or right.declared) or self.too_weak(left, right):
                     break
                 mismatch = self.problem(product, left.frames, right.frames)
                 if mismatch is None:

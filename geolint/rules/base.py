@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar, Protocol, Sequence, Union
+from typing import TYPE_CHECKING, Any, ClassVar, Mapping, Protocol, Sequence, Union
 
 from geolint.lint_types import Applicability, Config, Severity
 
@@ -32,17 +32,20 @@ class RuleTrigger(Protocol):
 
 @dataclass(frozen=True)
 class Valid:
-    """Code the rule must stay silent on."""
+    """Code the rule must stay silent on; `options` is the `[tool.geolint]` table it is linted with."""
 
     code: str
+    options: Mapping[str, object] | None = None
 
 
 @dataclass(frozen=True)
 class Invalid:
-    """Code the rule must flag; `expected_fix` is the whole module after the rule's fix."""
+    """Code the rule must flag; `expected_fix` is the whole module after the rule's fix; `options` is
+    the `[tool.geolint]` table it is linted with."""
 
     code: str
     expected_fix: str | None = None
+    options: Mapping[str, object] | None = None
 
 
 @dataclass(frozen=True)

@@ -26,6 +26,14 @@ import numpy as np
 def grasp_in_world(T_world_base, T_cam_tool, p_cam):
     T_world_tool = T_world_base @ T_cam_tool
     return T_world_tool
+
+
+def world_base(R, t):
+    from autolab_core import RigidTransform
+
+    # a declaration bound to a `T_a_b` name: the project states its order, so names are evidence
+    T_world_base = RigidTransform(R, t, from_frame="base", to_frame="world")
+    return T_world_base
 """
 
 FIXED = BUGGY.replace("T_world_base @ T_cam_tool", "T_world_base @ T_base_cam @ T_cam_tool").replace(

@@ -128,7 +128,8 @@ def test_runtime_tours_run_through_their_intentional_errors(where: tuple[str, st
 
 def demo_project(tmp_path: Path) -> Path:
     """A folder with the names the command snippets use: src/, tools/grasp.py, fixtures/frames."""
-    shutil.copytree(REPO_ROOT / "fixtures" / "demo", tmp_path / "src")
+    # the snippets' own pyproject.toml is the config here, not the demo's
+    shutil.copytree(REPO_ROOT / "fixtures" / "demo", tmp_path / "src", ignore=shutil.ignore_patterns("pyproject.toml"))
     (tmp_path / "tools").mkdir()
     shutil.copy(REPO_ROOT / "fixtures" / "demo" / "grasp_planner.py", tmp_path / "tools" / "grasp.py")
     shutil.copytree(REPO_ROOT / "fixtures" / "frames", tmp_path / "fixtures" / "frames")

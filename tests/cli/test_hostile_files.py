@@ -13,6 +13,8 @@ import time
 
 import pytest
 
+from tests.conftest import DECLARES_DST_FIRST
+
 TERMS = 20_000
 # Geometry names throughout, so the prefilter lets every file through to the analysis.
 HOSTILE = {
@@ -33,7 +35,7 @@ HOSTILE = {
     "huge_integer.py": "import numpy as np\nangle = np.sin(" + "9" * 5000 + ")\np_world = T_world_cam @ p_cam\n",
 }
 # A file the real rules flag (GEO201, frame mismatch), to show the rest of the run is unaffected.
-ORDINARY = "p_world = T_world_cam @ p_base\n"
+ORDINARY = "p_world = T_world_cam @ p_base\n" + DECLARES_DST_FIRST
 # Files that must be analysed normally: an infinite or huge literal is a value, not a crash; libcst
 # nested thousands of adjacent string literals one level each (a RecursionError).
 ANALYSED = {

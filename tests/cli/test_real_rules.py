@@ -5,6 +5,8 @@ from __future__ import annotations
 import ast
 import json
 
+from tests.conftest import DECLARES_DST_FIRST
+
 BUGGY = (
     "import numpy as np\n"
     "from scipy.spatial.transform import Rotation\n"
@@ -16,7 +18,7 @@ BUGGY = (
     "\n"
     "def to_world(T_world_base, p_cam):\n"
     "    return T_world_base @ np.append(p_cam, 1.0)\n"
-)
+) + DECLARES_DST_FIRST
 
 
 def test_real_findings_follow_the_json_contract_and_fix_to_a_fixed_point(cli_real):

@@ -16,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.conftest import DECLARES_DST_FIRST
+
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
 
 # Fault injection for the crash test: the CLI with engine.lint_bytes made to segfault on a marker,
@@ -36,7 +38,7 @@ sys.exit(main(sys.argv[1:]))
 
 def test_a_worker_that_dies_costs_its_file_only(cli_real):
     for index in range(12):
-        cli_real.write(f"f{index:02}.py", "p_world = T_world_cam @ p_base\n")
+        cli_real.write(f"f{index:02}.py", "p_world = T_world_cam @ p_base\n" + DECLARES_DST_FIRST)
     cli_real.write("crash.py", "CRASH_WORKER_HERE = 1\n")
     result = subprocess.run(
         [sys.executable, "-c", CRASHING_LAUNCHER, "check", "--no-cache", "--jobs", "2", "--format", "json"],

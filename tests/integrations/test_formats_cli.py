@@ -14,6 +14,7 @@ import jsonschema
 import pytest
 
 from geolint import api
+from tests.conftest import DECLARES_DST_FIRST
 
 SCHEMA = json.loads((Path(__file__).parent / "data" / "sarif-schema-2.1.0.json").read_text(encoding="utf-8"))
 
@@ -24,7 +25,8 @@ def approach(T_world_base, T_base_wrist, T_object_grasp, p_cam, R_world_cam, nor
     T_world_grasp = T_world_base @ T_object_grasp
     normal_world = R_world_cam @ normal_cam + t_world_cam
     return p_base, T_world_grasp, normal_world
-""",
+"""
+    + DECLARES_DST_FIRST,
     "pkg/rotations.py": """\
 from scipy.spatial.transform import Rotation
 

@@ -17,6 +17,7 @@ import pytest
 from geolint import api
 from geolint.frames_graph import graph_of_source
 from geolint.lint_types import Config
+from tests.conftest import DECLARES_DST_FIRST
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures" / "frames"
 
@@ -42,10 +43,11 @@ def test_golden_dot() -> None:
 def test_golden_has_red_edges_for_each_frame_finding() -> None:
     dot = (FIXTURES / "expected.dot").read_text(encoding="utf-8")
     red = [line for line in dot.splitlines() if "color=red" in line]
+    config = api.find_config(FIXTURES)  # the fixture's pyproject.toml states its naming convention
     findings = [
         (path.name, f.line, f.code)
         for path in sorted(FIXTURES.glob("*.py"))
-        for f in api.lint_text(path.read_text(encoding="utf-8"), path.name)
+        for f in api.lint_text(path.read_text(encoding="utf-8"), path.name, config)
         if f.code.startswith("GEO2")
     ]
     assert findings, "the fixture must contain frame mismatches"
@@ -119,7 +121,7 @@ def test_frame_findings_become_red_edges_between_the_disagreeing_frames() -> Non
 def f(T_world_cam, p_base, T_world_base, T_cam_tool):
     p = T_world_cam @ p_base
     T = T_world_base @ T_cam_tool
-"""
+""" + DECLARES_DST_FIRST
     red = {(parent, child) for parent, child, _, mismatch in edges(source, findings=True) if mismatch}
     assert red == {("cam", "base"), ("base", "cam")}
 
@@ -170,6 +172,7 @@ def test_code_that_does_not_parse_gives_an_empty_graph() -> None:
 
 
 def test_the_same_transform_in_many_files_is_drawn_once(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text('[tool.geolint]\nnaming = "dst-first"\n', encoding="utf-8")
     for name in ("a.py", "b.py"):
         (tmp_path / name).write_text("def f(T_world_cam, p_base):\n    return T_world_cam @ p_base\n", encoding="utf-8")
     completed = frames_cli(".", cwd=tmp_path)

@@ -20,6 +20,7 @@ from tests.integrations.conftest import RecordingClient
 from geolint.engine import apply_edits
 from geolint.lint_types import Edit
 from geolint.rules import rule_by_code
+from tests.conftest import DECLARES_DST_FIRST
 
 # Tests that need real rule findings run once the rules are registered (they are developed in parallel).
 needs_rules = pytest.mark.skipif(
@@ -36,7 +37,7 @@ def to_world(R_world_cam, t_world_cam, normal_cam, T_world_base, p_cam):
     normal_world = R_world_cam @ normal_cam + t_world_cam
     p_world = T_world_base @ p_cam
     return normal_world, p_world
-"""
+""" + DECLARES_DST_FIRST
 CLEAN = """\
 def to_world(R_world_cam, t_world_cam, normal_cam):
     return R_world_cam @ normal_cam

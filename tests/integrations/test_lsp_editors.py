@@ -20,6 +20,7 @@ from pytest_lsp import LanguageClient
 
 from geolint import api
 from tests.integrations.conftest import RecordingClient
+from tests.conftest import DECLARES_DST_FIRST
 
 FIX_ALL = "source.fixAll.geolint"
 FUNCTION = (
@@ -31,7 +32,7 @@ FUNCTION = (
 
 def source_with(functions: int) -> str:
     """A module of `functions` functions, each with a fixable GEO101 and a GEO201 (5 lines each)."""
-    return "import numpy as np\n" + "".join(FUNCTION.format(i=i) for i in range(functions))
+    return "import numpy as np\n" + "".join(FUNCTION.format(i=i) for i in range(functions)) + DECLARES_DST_FIRST
 
 
 

@@ -14,6 +14,7 @@ from geolint import api
 from geolint.lint_types import Edit
 from geolint.lsp.actions import changed_region_edit, ignore_edit
 from geolint.lsp.positions import from_lsp_position, split_lines, to_lsp_position
+from tests.conftest import DECLARES_DST_FIRST
 
 UTF16 = PositionCodec(types.PositionEncodingKind.Utf16)
 UTF8 = PositionCodec(types.PositionEncodingKind.Utf8)
@@ -95,10 +96,10 @@ def test_ignore_edit_extends_a_noqa_list_instead_of_adding_a_second_directive() 
         "def f(R_world_cam, normal_cam, t_world_cam, T_world_base, p_cam):\n"
         "    a = R_world_cam @ normal_cam + t_world_cam; b = T_world_base @ p_cam  # noqa: E501, GEO101\n"
     )
-    assert [f.code for f in api.lint_text(source, "m.py")] == ["GEO201"]
+    assert [f.code for f in api.lint_text(source + DECLARES_DST_FIRST, "m.py")] == ["GEO201"]
     extended = apply_lsp_style(source, ignore_edit(source, 2, "GEO201"))
     assert extended.endswith("# noqa: E501, GEO101, GEO201\n")
-    assert api.lint_text(extended, "m.py") == []
+    assert api.lint_text(extended + DECLARES_DST_FIRST, "m.py") == []
     assert ignore_edit("x = R @ n + t  # noqa\n", 1, "GEO101") is None
 
 

@@ -41,7 +41,10 @@ def cli_findings() -> dict[str, list[dict]]:
     """One real `geolint check --format json` run over every fixture, grouped by path."""
     paths = [str(path.relative_to(ROOT)) for path in [*ANNOTATED, *CLEAN]] + [str(DEMO.relative_to(ROOT))]
     result = subprocess.run(
-        [sys.executable, "-m", "geolint", "check", "--format", "json", "--no-cache", "--select", "GEO1,GEO2,GEO3", *paths],
+        [
+            sys.executable, "-m", "geolint", "check", "--format", "json", "--no-cache", "--select", "GEO1,GEO2,GEO3",
+            "--config", str(FIXTURES / "stated_naming.toml"), *paths,
+        ],  # fmt: skip
         cwd=ROOT,
         capture_output=True,
         text=True,

@@ -11,7 +11,9 @@ import ast
 
 import pytest
 
+from geolint.config import config_from_table
 from geolint.engine import ENGINE_RULE_CODES, apply_edits, lint_source
+from geolint.lint_types import Config
 from geolint.rules import Invalid, Rule, Valid, all_rules
 
 CASES = [
@@ -22,13 +24,14 @@ CASES = [
 ]
 
 
-def findings_of(rule: type[Rule], source: str):
-    return [finding for finding in lint_source(source, "example.py", rules=[rule]) if finding.code == rule.code]
+def findings_of(rule: type[Rule], source: str, config: Config = Config()):
+    return [finding for finding in lint_source(source, "example.py", config, rules=[rule]) if finding.code == rule.code]
 
 
 @pytest.mark.parametrize(("rule", "example"), CASES)
 def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
-    found = findings_of(rule, example.code)
+    config = config_from_table(example.options, None) if example.options else Config()
+    found = findings_of(rule, example.code, config)
     if isinstance(example, Valid):
         assert found == [], f"{rule.code} flagged VALID code:\n{example.code}\n{found}"
         return
@@ -45,7 +48,7 @@ def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
     if finding.fix is not None:
         fixed = apply_edits(example.code, finding.fix.edits)
         ast.parse(fixed)  # a fix always produces code that parses
-        again = [f for f in findings_of(rule, fixed) if f.fix is not None]
+        again = [f for f in findings_of(rule, fixed, config) if f.fix is not None]
         refixed = apply_edits(fixed, [edit for f in again for edit in f.fix.edits])
         assert refixed == fixed, f"{rule.code}'s fix is not idempotent:\n{fixed}\n->\n{refixed}"
 
@@ -62,6 +65,7 @@ SAFE_FIXES = {"GEO101", "GEO301", "GEO302"}  # the fixes issue 3 lists as safe
 @pytest.mark.parametrize("rule", [r for r in all_rules() if r.code[3] in "123"], ids=lambda rule: rule.code)
 def test_only_listed_fixes_are_safe(rule: type[Rule]) -> None:
     for example in rule.INVALID:
-        for finding in findings_of(rule, example.code):
+        options = config_from_table(example.options, None) if example.options else Config()
+        for finding in findings_of(rule, example.code, options):
             if finding.fix is not None and finding.fix.applicability == "safe":
                 assert rule.code in SAFE_FIXES, f"{rule.code} marks a fix safe that issue 3 does not list"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
-from geolint.factbase.rule_support import Mismatch, ProductRule
+from geolint.factbase.rule_support import STATED, Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -35,11 +35,25 @@ class FrameMismatchApply(ProductRule):
     No fix is offered: the right transform has to be chosen by a person.
 
     ## Options
-    `naming` switches conventions on and off; `frame-aliases` declares synonyms (cam = camera).
-    `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` reads (dst-first maps b into a,
-    src-first maps a into b); `"auto"`, the default, learns it from the project's `from_frame=`/
-    `to_frame=` declarations and compositions. Where nothing decides, only what is wrong in both
-    readings is reported; where the project declares both orders, such names alone are no evidence.
+    `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
+    into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
+    order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
+    then the consistency of its compositions; only what is wrong in every reading left open is
+    reported. A table of switches turns single conventions off; `frame-aliases` declares synonyms
+    (cam = camera).
+
+    Names are frame evidence on their own only where the convention is **stated**: by
+    `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
+    Elsewhere a finding needs an explicit declaration on one side: `from_frame=`/`to_frame=`,
+    `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
+    BOP's `cam_R_w2c`.
+
+    ## Known problems
+    Without a stated convention a mismatch between two names (`T_world_cam @ p_base`) is not reported. On
+    real code, none of the triaged findings that rested on names alone was a bug (GEO201 0 of 4,
+    GEO202 0 of 24; GEO203's three true findings all rested on declared frames): `T_base_grasp`
+    names a waypoint, `rel_w2c` a correction, `T_word_body` a typo, and projects mix orders. State
+    the convention to have names checked.
     """
 
     code = "GEO201"
@@ -54,16 +68,23 @@ class FrameMismatchApply(ProductRule):
         Valid("p_world = T_world_cam @ p\n"),
         Valid("p_cam = np.linalg.inv(T_world_cam) @ p_world\n"),
         Valid("p_world = T_world_camera @ p_cam\n"),  # an abbreviation may name the same frame
+        Valid("p_world = T_world_cam @ p_base\n"),  # names on both sides, no convention stated: too weak
+        Valid("import numpy as np\nT_world_base = T_world_cam @ T_cam_base\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
     ]
     INVALID = [
-        Invalid("p_world = T_world_cam @ p_base\n"),
-        Invalid("p_W = X_WB @ p_CQ\n"),
-        Invalid("p = cam_to_world @ p_world\n"),
-        Invalid("import numpy as np\np = np.dot(world_from_cam, point_in_base)\n"),
-        Invalid("pts = pts_base @ R_world_cam.T\n"),
-        Invalid("p = T_world_cam.dot(p_base)\n"),
-        # the composition states the module's order (dst-first), which the inverse's reading needs
-        Invalid("import numpy as np\nT_world_base = T_world_cam @ T_cam_base\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
+        Invalid("p_world = T_world_cam @ p_base\n", options=STATED),
+        Invalid("p_W = X_WB @ p_CQ\n", options=STATED),
+        Invalid("p = cam_to_world @ p_world\n", options=STATED),
+        Invalid("import numpy as np\np = np.dot(world_from_cam, point_in_base)\n", options=STATED),
+        Invalid("pts = pts_base @ R_world_cam.T\n", options=STATED),
+        Invalid("p = T_world_cam.dot(p_base)\n", options=STATED),
+        # no convention stated: the declared side is evidence enough
+        Invalid('cam_pose = RigidTransform(R, t, from_frame="cam", to_frame="world")\np_world = cam_pose * p_base\n'),
+        # a declaration bound to a `T_a_b` name states the project's order, so names count
+        Invalid(
+            'import numpy as np\nT_world_cam = RigidTransform(R, t, from_frame="cam", to_frame="world")\n'
+            "p = np.linalg.inv(T_world_base) @ p_cam\n"
+        ),
     ]
 
     def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:

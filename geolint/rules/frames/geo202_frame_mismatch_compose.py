@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import EXTRINSICS_EVIDENCE, FrameFact, MatMul
-from geolint.factbase.rule_support import Mismatch, ProductRule
+from geolint.factbase.rule_support import STATED, Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -42,17 +42,29 @@ class FrameMismatchCompose(ProductRule):
     T_world_tool = T_world_base @ T_base_cam @ T_cam_tool
     ```
 
-    ## Options
-    `[tool.geolint] naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read:
-    dst-first maps b into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"`
-    (the default) the order is learned from the project: `from_frame=`/`to_frame=` declarations
-    bound to such names, then the consistency of its compositions. Where nothing decides, the rule
-    reports only what is wrong in both readings; where the project declares both orders, such names
-    alone are not evidence. Names whose direction is in words (`a_from_b`, `a2b`, `c2w`, `X_AB`) and
-    explicit declarations (`from_frame=`, `lookup_transform(target, source, t)`) always count.
-
     ## Fix safety
     No fix is offered: the missing link has to be chosen by a person.
+
+    ## Options
+    `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
+    into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
+    order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
+    then the consistency of its compositions; only what is wrong in every reading left open is
+    reported. A table of switches turns single conventions off; `frame-aliases` declares synonyms
+    (cam = camera).
+
+    Names are frame evidence on their own only where the convention is **stated**: by
+    `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
+    Elsewhere a finding needs an explicit declaration on one side: `from_frame=`/`to_frame=`,
+    `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
+    BOP's `cam_R_w2c`.
+
+    ## Known problems
+    Without a stated convention a mismatch between two names (`T_world_base @ T_cam_tool`) is not reported. On
+    real code, none of the triaged findings that rested on names alone was a bug (GEO201 0 of 4,
+    GEO202 0 of 24; GEO203's three true findings all rested on declared frames): `T_base_grasp`
+    names a waypoint, `rel_w2c` a correction, `T_word_body` a typo, and projects mix orders. State
+    the convention to have names checked.
     """
 
     code = "GEO202"
@@ -69,16 +81,19 @@ class FrameMismatchCompose(ProductRule):
         Valid("T_base_tool0 = T_base_pregrasp @ T_tcp_tool0\n"),  # the pregrasp waypoint is a pose of the tcp
         Valid("w2c = reference_w2c @ best_w2c\n"),  # one of two same-direction extrinsics is a relative correction
         Valid("T_world_body = T_word_tcp @ T_tcp_body\n"),  # `word`: `world` misspelt
+        Valid("T_world_tool = T_world_base @ T_cam_tool\n"),  # names on both sides, no convention stated: too weak
     ]
     INVALID = [
-        Invalid("T_world_tool = T_world_base @ T_cam_tool\n"),
-        Invalid("X_WG = X_WB @ X_CG\n"),
-        Invalid("T = T_world_base @ T_base_cam @ T_tool_grip\n"),
-        Invalid("import numpy as np\nT = np.matmul(world_from_base, cam_from_tool)\n"),
-        Invalid("T = T_world_base.dot(T_cam_tool)\n"),
-        Invalid("T = T_world_base * T_cam_tool\n"),
-        Invalid("T = cam2world @ world2base\n"),
-        Invalid("T_world_grasp = T_world_base @ T_object_grasp\n"),  # a waypoint word elsewhere changes nothing
+        Invalid("T_world_tool = T_world_base @ T_cam_tool\n", options=STATED),
+        Invalid("X_WG = X_WB @ X_CG\n", options=STATED),
+        Invalid("T = T_world_base @ T_base_cam @ T_tool_grip\n", options=STATED),
+        Invalid("import numpy as np\nT = np.matmul(world_from_base, cam_from_tool)\n", options=STATED),
+        Invalid("T = T_world_base.dot(T_cam_tool)\n", options=STATED),
+        Invalid("T = T_world_base * T_cam_tool\n", options=STATED),
+        Invalid("T = cam2world @ world2base\n", options=STATED),
+        Invalid("T_world_grasp = T_world_base @ T_object_grasp\n", options=STATED),  # a waypoint word elsewhere changes nothing
+        # no convention stated: the declared side is evidence enough, in either reading of the name
+        Invalid('base_pose = RigidTransform(R, t, from_frame="base", to_frame="world")\nT = base_pose * T_cam_tool\n'),
     ]
 
     def too_weak(self, left: FrameFact, right: FrameFact) -> bool:

@@ -6,7 +6,7 @@ import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, last_name, walk_within
-from geolint.factbase.rule_support import FactRule, Mismatch
+from geolint.factbase.rule_support import STATED, FactRule, Mismatch
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -35,17 +35,32 @@ class FrameMismatchAssign(FactRule):
     T_cam_world = np.linalg.inv(T_world_cam)
     ```
 
-    ## Options
-    `[tool.geolint] naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read:
-    dst-first maps b into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"`
-    (the default) the order is learned from the project: `from_frame=`/`to_frame=` declarations
-    bound to such names, then the consistency of its compositions. Where nothing decides, the rule
-    reports only what is wrong in both readings; where the project declares both orders, such names
-    alone are not evidence. Names whose direction is in words (`a_from_b`, `a2b`, `c2w`, `X_AB`) and
-    explicit declarations (`from_frame=`, `lookup_transform(target, source, t)`) always count.
-
     ## Fix safety
     No fix is offered.
+
+    ## Options
+    `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
+    into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
+    order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
+    then the consistency of its compositions; only what is wrong in every reading left open is
+    reported. A table of switches turns single conventions off; `frame-aliases` declares synonyms
+    (cam = camera).
+
+    Names are frame evidence on their own only where the convention is **stated**: by
+    `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
+    Elsewhere the assigned value's frames must be declared (`from_frame=`/`to_frame=`,
+    `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
+    BOP's `cam_R_w2c`), and a declared value is reported only when it reverses the name
+    (`world_to_cam = buffer.lookup_transform("world", "cam", t)`): labels and names may use other
+    words for one frame.
+
+    ## Known problems
+    Without a stated convention a mismatch between two names (`T_cam_world = T_world_cam`) is not
+    reported. On
+    real code, none of the triaged findings that rested on names alone was a bug (GEO201 0 of 4,
+    GEO202 0 of 24; GEO203's three true findings all rested on declared frames): `T_base_grasp`
+    names a waypoint, `rel_w2c` a correction, `T_word_body` a typo, and projects mix orders. State
+    the convention to have names checked.
     """
 
     code = "GEO203"
@@ -74,13 +89,18 @@ class FrameMismatchAssign(FactRule):
             "import numpy as np\ndef to_base(p_cam, rot, trans):\n    p_base = p_cam.T\n"
             "    p_base = np.dot(p_base, rot.T)\n    p_base = p_base + trans\n    return p_base\n"
         ),  # the start value of a name carried into base by the next statements
+        Valid("T_cam_world = T_world_cam\n"),  # names on both sides, no convention stated: too weak
+        # the result's frame is declared "base", the name says world: labels and names may use other words for one
+        # frame, so only a reversal counts
+        Valid('T_obj_world = RigidTransform(R, t, from_frame="obj", to_frame="base")\np_world = T_obj_world * p_obj\n'),
     ]
     INVALID = [
-        Invalid("p_world = T_cam_base @ p_base\n"),
-        Invalid("T_cam_world = T_world_cam\n"),
-        Invalid("X_CW = X_WB @ X_BC\n"),
-        Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_cam_world = pose\n    return T_cam_world\n"),
-        Invalid('T_obj_world = RigidTransform(R, t, from_frame="obj", to_frame="base")\np_world = T_obj_world * p_obj\n'),
+        Invalid("p_world = T_cam_base @ p_base\n", options=STATED),
+        Invalid("T_cam_world = T_world_cam\n", options=STATED),
+        Invalid("X_CW = X_WB @ X_BC\n", options=STATED),
+        Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_cam_world = pose\n    return T_cam_world\n", options=STATED),
+        # no convention stated: tf2's lookup_transform(target, source, t) maps source into target
+        Invalid('world_to_cam = tf_buffer.lookup_transform("world", "cam", rospy.Time())\n'),
     ]
 
     def run(self) -> None:
@@ -106,6 +126,8 @@ class FrameMismatchAssign(FactRule):
             stated, actual = facts.name_frames(target.id, order), facts.frame_fact(value, order)
             if stated is None or actual is None:
                 return
+            if not (facts.names_stated or actual.declared):
+                return  # a name assigned from names, where the project does not state its convention: too weak
             if actual.declared and not _reversed(stated.frames, actual.frames):
                 return  # labels and names use different words (`T_table_world` from "patch"): only a reversal counts
             if not actual.declared and _is_relabel(value) and not _swaps_frames(stated.frames, actual.frames):
