@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from typing import Protocol
 
-from geolint.factbase.vocabulary import any_match_at, is_word_character, matrix_product_at
+from geolint.factbase.vocabulary import WordSet, any_match_at, is_word_character, matrix_product_at
 
 
 class AllOf:
@@ -66,11 +66,22 @@ class _AnyAlternative:
     def __init__(self, pattern: str) -> None:
         self.pattern = pattern
         alternatives = _top_level_alternatives(pattern)
-        self.words = tuple(part for part in alternatives if part and re.escape(part) == part)
-        self.regexes = tuple(_regex_test(part) for part in alternatives if not (part and re.escape(part) == part))
+        literals = [_literal(part) for part in alternatives]
+        self.words = WordSet(literal for literal in literals if literal)
+        self.regexes = tuple(_regex_test(part) for part, literal in zip(alternatives, literals) if not literal)
 
     def search(self, source: str, /) -> bool:
-        return any(word in source for word in self.words) or any(regex.search(source) for regex in self.regexes)
+        return self.words.any_in(source) or any(regex.search(source) for regex in self.regexes)
+
+
+def _literal(pattern: str) -> str | None:
+    r"""The text a regex matches when it is plain text (`matmul\(` -> `matmul(`), else None: searched
+    with `in`, as part of a `WordSet`, about twice as fast as the regex engine finds a literal."""
+    text = _ESCAPED_PUNCTUATION.sub(r"\1", pattern)
+    return text if text and re.escape(text) == pattern else None
+
+
+_ESCAPED_PUNCTUATION = re.compile(r"\\([^\w\s])")
 
 
 def _regex_test(pattern: str) -> re.Pattern[str] | _LeftContext:

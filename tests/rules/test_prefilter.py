@@ -95,6 +95,7 @@ _PIECES = [
     "rotation", "translation", "rot", "trans", "cam", "c", "w", "world", "base", "points", "pts", "quat", "Frame",
     "lookup_transform", "do_transform_", "tf2_ros", "Vector3Stamped", ".linear", "eye(", "2mat(",
     "inv(", "cw", "wc", "[1],", "\u2003", "translate(", "q", "Q", "qs", "uat", "rient", "otq", "@\n", "\n@",  # led by `\b` or `\w\s*`, searched without the lead
+    "pos", "ition", "rad", "ians", "deg2", "arc", "a", "vec", "vert", "ices", "rame", "ransform", "bmm(", "set_",  # words grouped in a `WordSet`
 ]  # fmt: skip
 
 
@@ -118,6 +119,25 @@ def test_fast_gates_answer_as_their_regexes() -> None:
         assert gate_matches(text) == (GATE.search(text) is not None), text
         for fast, regex in triggers:
             assert bool(fast(text)) == (regex.search(text) is not None), (text, regex.pattern)
+
+
+def test_a_word_set_finds_what_in_finds() -> None:
+    """A `WordSet` looks for a word only where a shorter word or a shared part it holds occurs; it
+    must answer as one `in` per word does, with and without a test on the word found."""
+    import random
+
+    from geolint.factbase.vocabulary import WordSet
+
+    words = ["pos", "position", "positions", "rotx", "roty", "rotvec", "arccos", "arcsin", "arctan", "acos", "w2c", "cam_R_w2c", "c2w"]
+    word_set = WordSet(words)
+    assert sum(1 for _, is_word, _ in word_set._roots if not is_word) == 2  # `rot` and `arc`: parts, not words
+    pieces = [*words, "po", "s", "ition", "rot", "x", "y", "arc", "cos", "sin", "2", "c", "w", "_", "R", " "]
+    rng = random.Random(20261128)
+    for _ in range(5_000):
+        text = "".join(rng.choice(pieces) for _ in range(rng.randint(1, 6)))
+        assert word_set.any_in(text) == any(word in text for word in words), text
+        starts_r = lambda word: word.startswith("r")  # noqa: E731
+        assert word_set.any_in(text, starts_r) == any(word in text and starts_r(word) for word in words), text
 
 
 def test_a_regex_is_split_only_at_top_level_bars() -> None:
