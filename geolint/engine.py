@@ -225,6 +225,7 @@ def _may_fire(rule: AnyRule, source: str, config: Config) -> bool:
     return bool(search_with(source, config) if search_with is not None else trigger.search(source))
 
 
+@lru_cache(maxsize=None)  # asked twice per rule per file
 def _is_ast_rule(rule: AnyRule) -> bool:
     from geolint.rules.base import AstRule
 
