@@ -205,24 +205,27 @@ def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain
     if facts.may_have_summary(call):
         callee = facts.function_summary(call)
         if callee is not None:
-            helper = facts.code_of(call.func)
+
+            def helper() -> str:  # the callee's text, read only when something is recorded
+                return facts.code_of(call.func)
+
             for index in callee.translates:
                 if index in passed and facts.kind_of(arguments[index]) not in FREE:
                     own = passed[index]
                     if own not in summary.translates:
                         summary.translates.add(own)
                         through = callee.translates_through.get(index)
-                        summary.translates_through[own] = _chain(f"`{helper}`", through)
+                        summary.translates_through[own] = _chain(f"`{helper()}`", through)
             for index, (unit, where, by_name) in callee.reads_unit.items():
                 if index in passed and unit:
                     if where:
-                        through = _chain(f"`{helper}`", where)
+                        through = _chain(f"`{helper()}`", where)
                     else:
-                        through = f"`{helper}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
+                        through = f"`{helper()}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
                     _add_unit_read(summary, passed[index], unit, through, by_name)
             for index, (order, where) in callee.reads_quaternion.items():
                 if index in passed and order:
-                    _add_quaternion_read(summary, passed[index], order, _chain(f"`{helper}`", where))
+                    _add_quaternion_read(summary, passed[index], order, _chain(f"`{helper()}`", where))
             return
     from geolint.rules.rotation.angle_units import unit_read_by
 
