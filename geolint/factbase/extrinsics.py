@@ -185,11 +185,13 @@ def name_extrinsic(facts: FactBase, name: str) -> Extrinsic | None:
 def _camera_pose_name(facts: FactBase, name: str, order: str) -> FrameFact | None:
     """`H_camZ_V`, `T_camL_world`: a `T_a_b` name whose camera word carries a suffix the general
     name reader does not take as a frame (a capital letter), read in `order`."""
+    tokens = name.split("_")
+    if len(tokens) != 3:  # most names: before the imports, a microsecond each
+        return None
     from geolint.factbase.model import DST_FIRST, FrameFact
     from geolint.semantic.names import NameFrames, ROTATION_LETTERS, TRANSFORM_LETTERS
 
-    tokens = name.split("_")
-    if len(tokens) != 3 or tokens[0] not in TRANSFORM_LETTERS | ROTATION_LETTERS or facts.order_names_mixed:
+    if tokens[0] not in TRANSFORM_LETTERS | ROTATION_LETTERS or facts.order_names_mixed:
         return None
     first, second = tokens[1], tokens[2]
     if is_camera_frame(first) == is_camera_frame(second):

@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Sequence
 
 from geolint.algebra import FREE, Kind
+from geolint.factbase.index import ParamBinding, index_of_file  # no cycle: the index imports no fact base module
 
 if TYPE_CHECKING:
     from geolint.factbase.index import ModuleIndex
@@ -123,7 +124,7 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
         summary.quaternion_elements = _returned_element_orders(facts, returns)
     for node in walk_within(function):
         if isinstance(node, ast.Call) and node.args:
-            _record_call(facts, node, params, plain, summary)
+            _record_call(facts, node, positional_args(node), params, plain, summary)
         if isinstance(node, (ast.BinOp, ast.Call)):
             _record_homogeneous_product(facts, node, plain, summary)
         if isinstance(node, ast.Call):
@@ -164,11 +165,11 @@ def _record_formula_reads(facts: FactBase, function: ast.FunctionDef | ast.Async
 def _record_homogeneous_product(facts: FactBase, node: ast.AST, plain: set[str], summary: FunctionSummary) -> None:
     """`T @ to_homogeneous(x).T`, `np.hstack([x, ones]) @ T.T`: a parameter given w = 1 and
     multiplied by an operator is translated along with the rotation."""
-    from geolint.factbase.model import GEOMETRIC, transposed_value
-
     product = facts.matmul(node)
     if product is None:
         return
+    from geolint.factbase.model import GEOMETRIC, transposed_value  # after the common case: an import costs a microsecond
+
     for operand, operator in ((product.left, product.right), (product.right, product.left)):
         homogeneous = facts.homogeneous(transposed_value(operand) or operand)
         if homogeneous is None or homogeneous.w != 1 or not isinstance(homogeneous.inner, ast.Name):
@@ -187,18 +188,15 @@ def _pending(facts: FactBase, value: ast.expr) -> bool:
 
 def _only_bound_as_parameter(facts: FactBase, scope, name: str) -> bool:  # type: ignore[no-untyped-def]
     """A parameter never rebound in its function (so what a callee does to it, it does to the argument)."""
-    from geolint.factbase.index import ParamBinding
-
     bound = scope.bindings.get(name, [])
     return len(bound) == 1 and isinstance(bound[0], ParamBinding) and name not in scope.augmented
 
 
-def _record_call(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain: set[str], summary: FunctionSummary) -> None:
-    """What a call inside the function does to the function's own parameters: a project helper that
-    translates one (`apply_pose(T, x)`), an API that reads an angle unit (`np.cos(theta)`)."""
-    from geolint.factbase.model import positional_args
-
-    arguments = positional_args(call)
+def _record_call(
+    facts: FactBase, call: ast.Call, arguments: list[ast.expr], params: tuple[str, ...], plain: set[str], summary: FunctionSummary
+) -> None:
+    """What a call inside the function does to the function's own parameters (its `positional_args`):
+    a project helper that translates one (`apply_pose(T, x)`), an API that reads an angle unit (`np.cos(theta)`)."""
     passed = {index: params.index(arg.id) for index, arg in enumerate(arguments) if isinstance(arg, ast.Name) and arg.id in plain}
     if not passed:
         return
@@ -375,10 +373,10 @@ class ProjectSummaries:
 
     def facts_of(self, file: Path) -> FactBase | None:
         """The fact base of another project module (its parse and index are shared by the process)."""
-        from geolint.factbase.model import FactBase
-
         key = os.path.abspath(file)
         if key not in self._modules:
+            from geolint.factbase.model import FactBase
+
             index = _module_index_of_file(file)
             self._modules[key] = None if index is None else FactBase(index, self.config, key, project=self)
         return self._modules[key]
@@ -850,6 +848,4 @@ def dependency_digest(path: str, data: bytes, content_hash, graph: ImportGraph |
 def _module_index_of_file(file: Path) -> ModuleIndex | None:
     """The parse and index of a project module, shared by every lint of the process (and with the
     engine, when the module is linted too): they depend on the file's text alone, unlike its summaries."""
-    from geolint.factbase.index import index_of_file
-
     return index_of_file(file)
