@@ -30,7 +30,7 @@ from typing import Iterable, Sequence
 
 from geolint.lint_types import Config, Finding
 from geolint.render import FrameEdge, FrameGraph
-from geolint.factbase.conventions import orders_for
+from geolint.factbase.conventions import naming_config, orders_for
 from geolint.factbase.model import DST_FIRST, SRC_FIRST
 from geolint.semantic.names import NameFrames, frames_of_name, order_dependent, same_frame
 
@@ -371,7 +371,7 @@ def graph_of_source(
     except (SyntaxError, ValueError):
         return FrameGraph()
     reading = orders_for(location or path, source, module, config.naming.order)
-    reader = _FileReader(source, path, config, orders=reading.orders, order_names_mixed=reading.mixed)
+    reader = _FileReader(source, path, naming_config(config, reading), orders=reading.orders, order_names_mixed=reading.mixed)
     reader.collect_frame_classes(module)
     reader.visit(module)
     reader.add_mismatches(module, findings)

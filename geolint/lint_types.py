@@ -73,7 +73,9 @@ class NamingConventions:
 
     dst_first: bool = True  # T_world_cam, R_world_cam: maps cam into world
     prefix_t: bool = True  # world_T_cam
-    monogram: bool = True  # Drake: X_WB, R_WB, p_BQ
+    # Drake: X_WB, R_WB, p_BQ. None (the default): only in projects that import pydrake, since
+    # elsewhere `X_EQ`, `X_GOAL` are state vectors (X is control theory's state)
+    monogram: bool | None = None
     from_style: bool = True  # world_from_cam, point_in_cam
     to_style: bool = True  # cam_to_world, cam2world (src first)
     suffix: bool = True  # p_world, v_cam

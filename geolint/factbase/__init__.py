@@ -10,7 +10,7 @@ from __future__ import annotations
 import ast
 import threading
 
-from geolint.factbase.conventions import orders_for
+from geolint.factbase.conventions import naming_config, orders_for
 from geolint.factbase.index import ModuleIndex
 from geolint.factbase.model import FactBase
 from geolint.lint_types import Config
@@ -59,4 +59,5 @@ def facts_for_module(tree: ast.Module, source: str, path: str, config: Config) -
     """The fact base of one module under one config."""
     index = module_index(tree, source)
     reading = orders_for(path, source, tree, config.naming.order)
+    config = naming_config(config, reading)
     return FactBase(index, config, path, reading.orders, order_names_mixed=reading.mixed, names_stated=reading.stated)

@@ -29,12 +29,13 @@ import ast
 import os
 import re
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import NamedTuple
 
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames
 from geolint.factbase.summaries import project_root
+from geolint.lint_types import Config
 from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS
 
 _ORDER_NAME = re.compile(r"^_*([TRXH])_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)$")
@@ -56,6 +57,7 @@ class Votes:
     declared_src: int = 0
     composed_dst: int = 0
     composed_src: int = 0
+    drake_modules: int = 0  # modules that import pydrake: Drake's monogram names (`X_WB`) read as frames
 
     def __add__(self, other: Votes) -> Votes:
         return Votes(
@@ -63,6 +65,7 @@ class Votes:
             self.declared_src + other.declared_src,
             self.composed_dst + other.composed_dst,
             self.composed_src + other.composed_src,
+            self.drake_modules + other.drake_modules,
         )
 
     @property
@@ -134,6 +137,8 @@ def votes_of_text(text: str) -> Votes:
 
 def votes_of_source(source: str, tree: ast.Module | None = None) -> Votes:
     votes = votes_of_text(source) if "_" in source else Votes()
+    if "pydrake" in source:
+        votes = votes + Votes(drake_modules=1)
     if any(word in source for word in _DECLARING):
         if tree is None:
             try:
@@ -180,7 +185,7 @@ def project_votes(root: Path) -> Votes:
                 text = data.decode("utf-8", errors="replace")
             except OSError:
                 continue
-            if "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
+            if "pydrake" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
                 total = total + votes_of_source(text)
     with _lock:
         _project_votes[root] = total
@@ -193,14 +198,23 @@ class NameReading(NamedTuple):
     orders: tuple[str, ...]  # the readings of `T_a_b` names left open
     mixed: bool  # both orders declared: a `T_a_b` name alone says nothing
     stated: bool  # the convention is stated (config, or declarations in one order): names alone are evidence
+    drake: bool = False  # the project imports pydrake: monogram names (`X_WB`, `p_BQ`) are frames
+
+
+def naming_config(config: Config, reading: NameReading) -> Config:
+    """`config` with the monogram convention decided for this file: as configured, else on in Drake projects."""
+    if config.naming.monogram is not None:
+        return config
+    return replace(config, naming=replace(config.naming, monogram=reading.drake))
 
 
 def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> NameReading:
     """How this file's `T_a_b` names read: the config's order, or what the project's code says."""
-    if setting == DST_FIRST:
-        return NameReading((DST_FIRST,), False, True)
-    if setting == SRC_FIRST:
-        return NameReading((SRC_FIRST,), False, True)
     root = project_root(path) if os.path.isfile(path) else None
     votes = project_votes(root) if root is not None else votes_of_source(source, tree)
-    return NameReading(votes.orders(), votes.mixed, votes.stated)
+    drake = bool(votes.drake_modules) or "pydrake" in source
+    if setting == DST_FIRST:
+        return NameReading((DST_FIRST,), False, True, drake)
+    if setting == SRC_FIRST:
+        return NameReading((SRC_FIRST,), False, True, drake)
+    return NameReading(votes.orders(), votes.mixed, votes.stated, drake)

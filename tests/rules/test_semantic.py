@@ -38,7 +38,16 @@ from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_nam
     ],
 )
 def test_kind_of_name(name: str, kind: Kind | None) -> None:
-    assert kind_of_name(name) == kind
+    assert kind_of_name(name, DRAKE) == kind
+
+
+# Drake's monogram names are read where the project imports pydrake (or the config says so)
+DRAKE = Config(naming=NamingConventions(monogram=True))
+
+
+def test_monogram_names_are_frames_only_in_drake_code() -> None:
+    assert frames_of_name("X_WB") is None and kind_of_name("p_BQ") is None  # `X_EQ` is a state vector elsewhere
+    assert frames_of_name("X_WB", DRAKE) == NameFrames(dst="w", src="b", operator="transform")
 
 
 def test_extra_names_from_config() -> None:
@@ -74,7 +83,7 @@ def test_extra_names_from_config() -> None:
     ],
 )
 def test_frames_of_name(name: str, frames: NameFrames | None) -> None:
-    assert frames_of_name(name) == frames
+    assert frames_of_name(name, DRAKE) == frames
 
 
 def test_naming_switches_and_aliases() -> None:

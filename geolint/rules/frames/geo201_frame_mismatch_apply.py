@@ -39,8 +39,9 @@ class FrameMismatchApply(ProductRule):
     into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
     order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
     then the consistency of its compositions; only what is wrong in every reading left open is
-    reported. A table of switches turns single conventions off; `frame-aliases` declares synonyms
-    (cam = camera).
+    reported. A table of switches turns single conventions off; Drake's monogram names (`X_WB`,
+    `p_BQ`) are read only in projects that import pydrake unless `monogram = true` (elsewhere
+    `X_EQ` is a state vector). `frame-aliases` declares synonyms (cam = camera).
 
     Names are frame evidence on their own only where the convention is **stated**: by
     `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
@@ -61,7 +62,7 @@ class FrameMismatchApply(ProductRule):
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),
-        Valid("p_W = X_WB @ p_BQ\n"),
+        Valid("from pydrake.math import RigidTransform\np_W = X_WB @ p_BQ\n"),
         Valid("p_world = world_T_cam @ p_cam\n"),
         Valid("pts_world = pts_cam @ R_world_cam.T\n"),
         Valid("p_world = cam2world @ point_in_cam\n"),
@@ -73,7 +74,7 @@ class FrameMismatchApply(ProductRule):
     ]
     INVALID = [
         Invalid("p_world = T_world_cam @ p_base\n", options=STATED),
-        Invalid("p_W = X_WB @ p_CQ\n", options=STATED),
+        Invalid("from pydrake.math import RigidTransform\np_W = X_WB @ p_CQ\n", options=STATED),
         Invalid("p = cam_to_world @ p_world\n", options=STATED),
         Invalid("import numpy as np\np = np.dot(world_from_cam, point_in_base)\n", options=STATED),
         Invalid("pts = pts_base @ R_world_cam.T\n", options=STATED),

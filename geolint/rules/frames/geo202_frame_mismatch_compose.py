@@ -50,8 +50,9 @@ class FrameMismatchCompose(ProductRule):
     into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
     order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
     then the consistency of its compositions; only what is wrong in every reading left open is
-    reported. A table of switches turns single conventions off; `frame-aliases` declares synonyms
-    (cam = camera).
+    reported. A table of switches turns single conventions off; Drake's monogram names (`X_WB`,
+    `p_BQ`) are read only in projects that import pydrake unless `monogram = true` (elsewhere
+    `X_EQ` is a state vector). `frame-aliases` declares synonyms (cam = camera).
 
     Names are frame evidence on their own only where the convention is **stated**: by
     `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
@@ -72,12 +73,12 @@ class FrameMismatchCompose(ProductRule):
 
     VALID = [
         Valid("T_world_tool = T_world_base @ T_base_tool\n"),
-        Valid("X_WG = X_WB @ X_BG\n"),
+        Valid("from pydrake.math import RigidTransform\nX_WG = X_WB @ X_BG\n"),
         Valid("T = world_T_base @ base_T_cam\n"),
         Valid("import numpy as np\nT = np.linalg.inv(T_cam_world) @ T_cam_tool\n"),
         Valid("T = cam2world @ tool2cam\n"),
         Valid("R_world_tool = R_world_base @ R_base_tool\n"),
-        Valid("T = T_world_base @ X_BC\n"),  # a word frame and a monogram letter are not compared
+        Valid("from pydrake.math import RigidTransform\nT = T_world_base @ X_BC\n"),  # a word frame and a monogram letter are not compared
         Valid("T_base_tool0 = T_base_pregrasp @ T_tcp_tool0\n"),  # the pregrasp waypoint is a pose of the tcp
         Valid("w2c = reference_w2c @ best_w2c\n"),  # one of two same-direction extrinsics is a relative correction
         Valid("T_world_body = T_word_tcp @ T_tcp_body\n"),  # `word`: `world` misspelt
@@ -85,7 +86,7 @@ class FrameMismatchCompose(ProductRule):
     ]
     INVALID = [
         Invalid("T_world_tool = T_world_base @ T_cam_tool\n", options=STATED),
-        Invalid("X_WG = X_WB @ X_CG\n", options=STATED),
+        Invalid("from pydrake.math import RigidTransform\nX_WG = X_WB @ X_CG\n", options=STATED),
         Invalid("T = T_world_base @ T_base_cam @ T_tool_grip\n", options=STATED),
         Invalid("import numpy as np\nT = np.matmul(world_from_base, cam_from_tool)\n", options=STATED),
         Invalid("T = T_world_base.dot(T_cam_tool)\n", options=STATED),

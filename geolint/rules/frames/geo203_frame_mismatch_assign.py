@@ -43,8 +43,9 @@ class FrameMismatchAssign(FactRule):
     into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
     order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
     then the consistency of its compositions; only what is wrong in every reading left open is
-    reported. A table of switches turns single conventions off; `frame-aliases` declares synonyms
-    (cam = camera).
+    reported. A table of switches turns single conventions off; Drake's monogram names (`X_WB`,
+    `p_BQ`) are read only in projects that import pydrake unless `monogram = true` (elsewhere
+    `X_EQ` is a state vector). `frame-aliases` declares synonyms (cam = camera).
 
     Names are frame evidence on their own only where the convention is **stated**: by
     `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
@@ -71,7 +72,7 @@ class FrameMismatchAssign(FactRule):
         Valid("import numpy as np\nT_cam_world = np.linalg.inv(T_world_cam)\n"),
         Valid("T_cam_world = T_world_cam.T\n"),  # GEO204's business, frames agree
         Valid("p_world = T_world_cam @ p_base\n"),  # GEO201 flags the product; the result IS in world
-        Valid("X_WC = X_WB @ X_BC\n"),
+        Valid("from pydrake.math import RigidTransform\nX_WC = X_WB @ X_BC\n"),
         Valid("p_world = compute(p_cam)\n"),
         Valid("import numpy as np\nworld2cam = np.linalg.inv(world2cam)\n"),  # a name rebound to its own inverse
         Valid("T_approach_obj = T_grasp_obj.copy()\nT_approach_obj.translation -= d\n"),  # copy, then edited
@@ -97,7 +98,7 @@ class FrameMismatchAssign(FactRule):
     INVALID = [
         Invalid("p_world = T_cam_base @ p_base\n", options=STATED),
         Invalid("T_cam_world = T_world_cam\n", options=STATED),
-        Invalid("X_CW = X_WB @ X_BC\n", options=STATED),
+        Invalid("from pydrake.math import RigidTransform\nX_CW = X_WB @ X_BC\n", options=STATED),
         Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_cam_world = pose\n    return T_cam_world\n", options=STATED),
         # no convention stated: tf2's lookup_transform(target, source, t) maps source into target
         Invalid('world_to_cam = tf_buffer.lookup_transform("world", "cam", rospy.Time())\n'),

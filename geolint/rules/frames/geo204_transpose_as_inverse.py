@@ -51,6 +51,12 @@ class TransposeAsInverse(FactRule):
     ## Fix safety
     The fix `np.linalg.inv(T)` is unsafe: it needs `numpy` imported as `np`, and the code may rely
     on the (wrong) transpose elsewhere.
+
+    ## Known problems
+    That the matrix is a 4x4 homogeneous transform is read from its name (`T_world_cam`, Drake's
+    `X_WB`). Drake's monogram names count only in projects that import pydrake: in control code
+    `X_EQ`, `X_GOAL` are state vectors and `.T` is a plain transpose. A `T_`-named 3x4 or a matrix
+    only named like a pose can still be misread.
     """
 
     code = "GEO204"
@@ -69,6 +75,7 @@ class TransposeAsInverse(FactRule):
         Valid("import numpy as np\nubo = np.hstack((T_view_world.T.reshape(-1), T_proj_view.T.reshape(16)))\n"),
         Valid("def gl_matrix(self):\n    return self.T_CW.T.copy()\n"),  # a contiguous column-major copy for a shader
         Valid("import numpy as np\nmodel = np.ascontiguousarray(np.linalg.inv(T_CW).T)\n"),
+        Valid("x_var = x_var - X_EQ.T\n"),  # outside Drake code `X_EQ` is a state vector (control's X), not a pose
     ]
     INVALID = [
         Invalid(
@@ -76,7 +83,7 @@ class TransposeAsInverse(FactRule):
             expected_fix="T_cam_world = np.linalg.inv(T_world_cam)\n",
         ),
         Invalid("p_cam = (T_world_cam.T @ p_world_h)[:3]\n"),
-        Invalid("X_BW = X_WB.T\n"),
+        Invalid("from pydrake.math import RigidTransform\nX_BW = X_WB.T\n"),
         Invalid("T = world_T_base.T @ world_T_cam\n"),
         Invalid("def f(T_world_cam, p_world_h):\n    pose = T_world_cam\n    return pose.T @ p_world_h\n"),
     ]
