@@ -218,3 +218,18 @@ def test_import_scan_finds_what_the_anchored_regex_finds() -> None:
         text = "".join(rng.choice(pieces) for _ in range(rng.randint(1, 10)))
         assert imported_names(text) == [m.group(1) or m.group(2) for m in _IMPORT.finditer(text)], text
     assert imported_names("import os\n  from .utils import f\nx = 'import y'\n") == ["os", ".utils"]
+
+
+def test_a_run_leaves_the_cycle_collector_as_it_found_it(tmp_path: Path) -> None:
+    """`lint_paths` raises the collector's threshold while linting; afterwards the threshold is the
+    caller's again, nothing stays frozen, and what the run allocated is not left as a young backlog."""
+    import gc
+
+    from geolint.api import lint_paths
+
+    (tmp_path / "pose.py").write_text("import numpy as np\n\ndef f(T, p):\n    return T[:3, :3] @ p + T[:3, 3]\n")
+    before = gc.get_threshold()
+    list(lint_paths([tmp_path], Config(select=("GEO1", "GEO2", "GEO3")), use_cache=False))
+    assert gc.get_threshold() == before
+    assert gc.get_freeze_count() == 0
+    assert gc.get_count()[0] < 1_000
