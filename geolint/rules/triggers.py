@@ -175,14 +175,17 @@ class _PosePartText:
     _ATTRIBUTE = re.compile(r"\.(?:rotation|translation|R|t|rot|trans|tvec)\b")
     _QUOTED_LETTER = tuple(f"{a}{letter}{b}" for letter in "Rt" for a in "'\"" for b in "'\"")
     _KEY_WORDS = tuple(re.compile(word) for word in ("_R_", "_t_", "rotation", "translation"))
-    _UNPACKED_SECOND = re.compile(r",\s*\w*t\w*\s*=")
+    # `\b\w*(?:R|rot|rotation)\w*\s*,...`: the `\b\w*` lead always holds (a word starts at a boundary),
+    # so the rest, led by `R` or `rot`, which the regex engine scans for quickly (`t` and `translation`
+    # hold a `t`)
+    _UNPACKED = tuple(re.compile(rf"{lead}\w*\s*,\s*\w*t\w*\s*=") for lead in ("R", "rot"))
 
     def search(self, source: str, /) -> bool:
         # cheapest first; the quoted letters, eight scans of the text, rarely decide
         return (
             self._SLICE.search(source) is not None
             or self._ATTRIBUTE.search(source) is not None
-            or any_match_at(self._UNPACKED_SECOND, source, _after_rotation_word)
+            or any(unpacked.search(source) is not None for unpacked in self._UNPACKED)
             or any(any_match_at(word, source, _inside_quoted_word) for word in self._KEY_WORDS)
             or any(text in source for text in self._QUOTED_LETTER)
         )
@@ -196,17 +199,6 @@ def _inside_quoted_word(source: str, start: int) -> bool:
     while end < len(source) and is_word_character(source[end]):
         end += 1
     return start > 0 and source[start - 1] in "'\"" and end < len(source) and source[end] in "'\""
-
-
-def _after_rotation_word(source: str, end: int) -> bool:
-    r"""`\b\w*(?:R|rot)\w*\s*` right before the comma at `end`: the word before it names a rotation."""
-    while end > 0 and source[end - 1].isspace():
-        end -= 1
-    start = end
-    while start > 0 and is_word_character(source[start - 1]):
-        start -= 1
-    word = source[start:end]
-    return "R" in word or "rot" in word
 
 
 POSE_PART_TEXT = _PosePartText()
