@@ -60,10 +60,14 @@ def rules_markdown(rules: Sequence[type[RuleAttributes]] | None = None) -> str:
         "| --- | --- | --- | --- |",
     ]
     for rule in rules:
-        out.append(f"| [{rule.code}](#{rule.code.lower()}) | {rule.name} | {'yes' if is_fixable(rule) else ''} | {rule_summary(rule)} |")
+        opt_in = " (opt-in)" if rule.opt_in else ""
+        out.append(f"| [{rule.code}](#{rule.code.lower()}) | {rule.name}{opt_in} | {'yes' if is_fixable(rule) else ''} | {rule_summary(rule)} |")
     for rule in rules:
         body = SECTION.sub(lambda m: f"### {m.group('title')}", rule_doc(rule))
-        out += ["", f'<a id="{rule.code.lower()}"></a>', "", f"## {rule.code} {rule.name}", "", body]
+        heading = f"## {rule.code} {rule.name}" + (" (opt-in)" if rule.opt_in else "")
+        out += ["", f'<a id="{rule.code.lower()}"></a>', "", heading, "", body]
+        if rule.opt_in:
+            out += ["", f"This rule is opt-in: it runs only when `{rule.code}` itself is selected."]
     return "\n".join(out) + "\n"
 
 

@@ -113,6 +113,7 @@ def lint_source(
     """
     candidates = registered_rules() if rules is None else tuple(rules)
     on = set(enabled_codes(config, path, tuple(rule.code for rule in candidates)))
+    on -= {rule.code for rule in candidates if rule.opt_in and rule.code not in config.select}
     visitors = [rule for rule in candidates if rule.code in on and rule.code not in ENGINE_RULE_CODES]
 
     module = None

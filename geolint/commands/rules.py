@@ -20,9 +20,13 @@ def run(args: argparse.Namespace) -> int:
     from geolint.docs import is_fixable, rule_summary
     from geolint.rules import all_rules
 
-    rows = [(r.code, r.name, is_fixable(r), rule_summary(r)) for r in all_rules()]
+    rules = all_rules()
+    rows = [(r.code, r.name, is_fixable(r), rule_summary(r) + (f" (opt-in: select {r.code})" if r.opt_in else "")) for r in rules]
     if args.format == "json":
-        table = [{"code": c, "name": n, "fixable": f, "summary": s} for c, n, f, s in rows]
+        table = [
+            {"code": c, "name": n, "fixable": f, "opt_in": rule.opt_in, "summary": rule_summary(rule)}
+            for (c, n, f, _), rule in zip(rows, rules)
+        ]
         sys.stdout.write(json.dumps(table, indent=2) + "\n")
         return EXIT_OK
     name_width = max((len(n) for _, n, _, _ in rows), default=4)

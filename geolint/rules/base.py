@@ -90,6 +90,9 @@ class RuleAttributes:
     code: ClassVar[str]  # e.g. "GEO101", a stable public contract
     name: ClassVar[str]  # e.g. "direction-translated", reads as the bug
     default_severity: ClassVar[Severity] = Severity.ERROR
+    # Off unless its exact code is selected (`--select GEO103`, `select = ["GEO", "GEO103"]`), like
+    # bugbear's opinionated B9 warnings: for rules whose evidence is too weak to be on by default.
+    opt_in: ClassVar[bool] = False
     # A file this prefilter does not match cannot give the rule a finding, so the engine may
     # skip parsing it. None means "always run". A compiled regex works; the real rules use
     # `geolint.factbase.vocabulary.Gate`, which also reads the config (`search_with`).

@@ -42,6 +42,17 @@ def test_rules_lists_every_rule_with_fixability(cli):
     assert any(line.startswith("GEO190") and " yes " in line for line in text)
 
 
+def test_an_opt_in_rule_runs_only_when_its_own_code_is_selected(cli_real):
+    cli_real.write("grasp.py", "grasp_position = object_centroid + gripper_position\n")
+    codes = lambda *args: [f["code"] for f in json.loads(cli_real("check", "--no-cache", "--format", "json", *args).stdout)]
+    assert codes() == [] and codes("--select", "GEO1") == [] and codes("--select", "GEO") == []
+    assert codes("--select", "GEO103") == ["GEO103"]
+    cli_real.write("pyproject.toml", '[tool.geolint]\nselect = ["GEO", "GEO103"]\n')
+    assert codes() == ["GEO103"]
+    listed = {rule["code"]: rule for rule in json.loads(cli_real("rules", "--format", "json").stdout)}
+    assert listed["GEO103"]["opt_in"] is True and listed["GEO101"]["opt_in"] is False
+
+
 def test_docs_rules_md_is_up_to_date():
     generated = subprocess.run(
         [sys.executable, "-m", "geolint.docs"], cwd=REPO, capture_output=True, text=True, check=True

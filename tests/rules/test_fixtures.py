@@ -42,7 +42,7 @@ def cli_findings() -> dict[str, list[dict]]:
     paths = [str(path.relative_to(ROOT)) for path in [*ANNOTATED, *CLEAN]] + [str(DEMO.relative_to(ROOT))]
     result = subprocess.run(
         [
-            sys.executable, "-m", "geolint", "check", "--format", "json", "--no-cache", "--select", "GEO1,GEO2,GEO3",
+            sys.executable, "-m", "geolint", "check", "--format", "json", "--no-cache", "--select", "GEO1,GEO2,GEO3,GEO103",
             "--config", str(FIXTURES / "stated_naming.toml"), *paths,
         ],  # fmt: skip
         cwd=ROOT,

@@ -28,9 +28,17 @@ def findings_of(rule: type[Rule], source: str, config: Config = Config()):
     return [finding for finding in lint_source(source, "example.py", config, rules=[rule]) if finding.code == rule.code]
 
 
+def example_config(rule: type[Rule], example: Valid | Invalid) -> Config:
+    """The example's `[tool.geolint]` table; an opt-in rule is selected by its code."""
+    table = dict(example.options or {})
+    if rule.opt_in:
+        table["select"] = [rule.code]
+    return config_from_table(table, None) if table else Config()
+
+
 @pytest.mark.parametrize(("rule", "example"), CASES)
 def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
-    config = config_from_table(example.options, None) if example.options else Config()
+    config = example_config(rule, example)
     found = findings_of(rule, example.code, config)
     if isinstance(example, Valid):
         assert found == [], f"{rule.code} flagged VALID code:\n{example.code}\n{found}"
@@ -65,7 +73,6 @@ SAFE_FIXES = {"GEO101", "GEO301", "GEO302"}  # the fixes issue 3 lists as safe
 @pytest.mark.parametrize("rule", [r for r in all_rules() if r.code[3] in "123"], ids=lambda rule: rule.code)
 def test_only_listed_fixes_are_safe(rule: type[Rule]) -> None:
     for example in rule.INVALID:
-        options = config_from_table(example.options, None) if example.options else Config()
-        for finding in findings_of(rule, example.code, options):
+        for finding in findings_of(rule, example.code, example_config(rule, example)):
             if finding.fix is not None and finding.fix.applicability == "safe":
                 assert rule.code in SAFE_FIXES, f"{rule.code} marks a fix safe that issue 3 does not list"
