@@ -114,7 +114,7 @@ class ModuleIndex:
         reversed_fields = _REVERSED_CHILD_FIELDS
         role_of = _ROLE
         scope_makers = _SCOPE_MAKERS
-        AST = ast.AST
+        AST, Call, Attribute = ast.AST, ast.Call, ast.Attribute
         # (node, scope the node's code runs in, its level); an explicit stack, so depth costs no recursion
         stack: list[tuple[ast.AST, Scope, int]] = [(self.tree, root, 1)]
         pop, push = stack.pop, stack.append
@@ -131,8 +131,14 @@ class ModuleIndex:
                 by_type[kind] = [node]
             else:
                 bucket.append(node)
-            recorder = recorders.get(kind)
-            inner = recorder(self, node, scope) if recorder is not None else scope
+            if kind is Call:  # the commonest recorded node, inlined: `_record_call`
+                func = node.func  # type: ignore[attr-defined]
+                if type(func) is Attribute and func.attr in _MATMUL_METHODS:
+                    _matmul_operands(scope, func.value, *node.args)  # type: ignore[attr-defined]
+                inner = scope
+            else:
+                recorder = recorders.get(kind)
+                inner = recorder(self, node, scope) if recorder is not None else scope
             depth += 1
             childless_inline = depth <= depth_limit  # past the limit, a childless node is pushed for the depth check
             if kind in scope_makers:
@@ -256,7 +262,7 @@ class ModuleIndex:
 
     def _record_call(self, node: ast.Call, scope: Scope) -> Scope:
         func = node.func
-        if type(func) is ast.Attribute and func.attr in ("dot", "matmul"):
+        if type(func) is ast.Attribute and func.attr in _MATMUL_METHODS:
             _matmul_operands(scope, func.value, *node.args)
         return scope
 
@@ -443,6 +449,7 @@ _ROLE: dict[type, int] = {
     type(None): _SKIPPED,
     **{kind: _SKIPPED if kind in _LEAVES else _CHILDLESS if kind in _NO_CHILDREN else _WALKED for kind in _node_types()},
 }
+_MATMUL_METHODS = ("dot", "matmul")
 _SCOPE_MAKERS = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 # What the walk records for the nodes that bind names, make scopes, return or multiply matrices
 # (by exact type, as `ast` makes them: one dictionary look-up per node).
