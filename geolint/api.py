@@ -11,6 +11,7 @@ hook are thin adapters over these functions, so they always agree.
 from __future__ import annotations
 
 import gc
+import hashlib
 import os
 import traceback
 from collections import Counter
@@ -21,8 +22,9 @@ from typing import Callable, Collection, Iterator, Sequence
 
 from geolint import config as config_module
 from geolint import engine
-from geolint.cache import FindingsCache, ImportsCache, content_hash, default_cache_dir
+from geolint.cache import FindingsCache, ImportsCache, VotesCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
+from geolint.factbase import conventions
 from geolint.factbase.summaries import ImportGraph, consulted_folders, folder_listings, project_root
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
@@ -108,6 +110,9 @@ def lint_paths(
     directory = cache_dir or default_cache_dir(config_root(config))
     cache = FindingsCache(directory, config) if use_cache else None
     resolved = ImportsCache(directory) if use_cache else None
+    votes = VotesCache(directory) if use_cache else None
+    if votes is not None:
+        conventions.remember_file_votes(votes.load())
     results: dict[str, FileResult] = {}
     pending: list[tuple[SourceFile, bytes, str]] = []
     total = len(sources)
@@ -130,6 +135,10 @@ def lint_paths(
         for source, data, own, key in read:
             # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
             digest = imports.file_digest(key, own)
+            # and what its project's declarations say about names: one added elsewhere changes its findings
+            naming = conventions.project_key(str(source.path))
+            if naming:
+                digest = hashlib.blake2b(f"{digest}:{naming}".encode(), digest_size=16).hexdigest()
             cached = cache.get(source.real_path(), digest, source.display)
             if cached is not None:
                 results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
@@ -138,6 +147,8 @@ def lint_paths(
         if resolved is not None and not imports.all_reused:  # else what is stored still holds
             files_read = imports.resolved()
             resolved.save(files_read, consulted_folders(files_read))
+        if votes is not None and conventions.file_votes_read():  # else what is stored still holds
+            votes.save(conventions.remembered_file_votes())
     if progress:
         progress(len(results), total)
 

@@ -159,6 +159,34 @@ class ImportsCache:
             pass
 
 
+class VotesCache:
+    """What each project file says about its naming convention (`conventions.remembered_file_votes`),
+    reused while the file's mtime and size are unchanged: a warm run learns its projects' conventions,
+    which key every file's findings, without reading a file. A file written within the clock's
+    resolution before the run may change again unseen, so it is not stored."""
+
+    def __init__(self, directory: Path) -> None:
+        self.directory = directory
+        self.file = directory / f"votes-{settings_key(None)}.json"
+        self.started_ns = time.time_ns()
+
+    def load(self) -> dict[str, list[int]]:
+        try:
+            with open(self.file, encoding="utf-8") as stream:
+                stored = json.load(stream)
+        except (OSError, ValueError):
+            return {}
+        return stored if isinstance(stored, dict) else {}
+
+    def save(self, files: dict[str, list[int]]) -> None:
+        settled = ImportsCache._MTIME_SLACK_NS
+        kept = {file: entry for file, entry in files.items() if entry[0] < self.started_ns - settled}
+        try:
+            _write_atomically(self.directory, self.file, kept)
+        except OSError:
+            pass
+
+
 def _is_resolution(entry: Any) -> bool:
     """[hash, [imported file, ...]], as `ImportGraph.resolved` gives it."""
     return (

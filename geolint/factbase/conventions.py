@@ -29,7 +29,7 @@ import ast
 import os
 import re
 import threading
-from dataclasses import dataclass, replace
+from dataclasses import astuple, dataclass, fields, replace
 from pathlib import Path
 from typing import NamedTuple
 
@@ -151,6 +151,10 @@ def votes_of_source(source: str, tree: ast.Module | None = None) -> Votes:
 
 _lock = threading.Lock()
 _project_votes: dict[Path, Votes] = {}
+# file -> (mtime_ns, size, votes): what a file says, reused while its stat is unchanged; a warm run
+# gets it from the cache (`remembered_file_votes` / `remember_file_votes`) and reads no file for it
+_file_votes: dict[str, tuple[int, int, Votes]] = {}
+_read_files: list[str] = []
 
 
 def _is_project(folder: str) -> bool:
@@ -179,17 +183,64 @@ def project_votes(root: Path) -> Votes:
             count += 1
             if count > _MAX_FILES:
                 break
-            try:
-                with open(os.path.join(folder, filename), "rb") as stream:
-                    data = stream.read(_MAX_BYTES)
-                text = data.decode("utf-8", errors="replace")
-            except OSError:
-                continue
-            if "pydrake" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
-                total = total + votes_of_source(text)
+            total = total + _votes_of_file(os.path.join(folder, filename))
     with _lock:
         _project_votes[root] = total
     return total
+
+
+def forget_project_totals() -> None:
+    """Let the next `project_votes` of each project look at its files again (a long-lived process)."""
+    with _lock:
+        _project_votes.clear()
+
+
+def _votes_of_file(path: str) -> Votes:
+    try:
+        stat = os.stat(path)
+    except OSError:
+        return Votes()
+    known = _file_votes.get(path)
+    if known is not None and known[0] == stat.st_mtime_ns and known[1] == stat.st_size:
+        return known[2]
+    try:
+        with open(path, "rb") as stream:
+            data = stream.read(_MAX_BYTES)
+    except OSError:
+        return Votes()
+    text = data.decode("utf-8", errors="replace")
+    votes = Votes()
+    if "pydrake" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
+        votes = votes_of_source(text)
+    _file_votes[path] = (stat.st_mtime_ns, stat.st_size, votes)
+    _read_files.append(path)
+    return votes
+
+
+def file_votes_read() -> bool:
+    """Whether any file had to be read for its votes in this process (else the stored votes all held)."""
+    return bool(_read_files)
+
+
+def project_key(path: str) -> str:
+    """What the project around `path` says about its names, for the findings cache: a file's findings
+    change with a declaration in another file of its project ('' outside a project)."""
+    root = project_root(path)
+    return "" if root is None else repr(astuple(project_votes(root)))
+
+
+def remembered_file_votes() -> dict[str, list[int]]:
+    """Each file's votes as the findings cache stores them: file -> [mtime_ns, size, *votes]."""
+    return {file: [mtime, size, *astuple(votes)] for file, (mtime, size, votes) in _file_votes.items()}
+
+
+def remember_file_votes(stored: dict[str, list[int]]) -> None:
+    """Take back what `remembered_file_votes` gave an earlier run (each entry used while the file's
+    stat is unchanged)."""
+    width = len(fields(Votes))
+    for file, entry in stored.items():
+        if isinstance(entry, list) and len(entry) == 2 + width and all(type(item) is int for item in entry):
+            _file_votes.setdefault(file, (entry[0], entry[1], Votes(*entry[2:])))
 
 
 class NameReading(NamedTuple):

@@ -14,6 +14,7 @@ import traceback
 from typing import Any, Callable
 
 from geolint import api
+from geolint.factbase import conventions
 
 JOBS: dict[str, Callable[..., Any]] = {"lint_text": api.lint_text, "fix_text": api.fix_text}
 
@@ -27,6 +28,9 @@ def main() -> None:
             function, args, kwargs = pickle.load(requests)
         except EOFError:
             return
+        # a long-lived worker: what the project's files say about names is asked again for every job
+        # (each file's votes are reused while its stat is unchanged, so only edited files are read)
+        conventions.forget_project_totals()
         try:
             answer: tuple[str, Any] = ("ok", JOBS[function](*args, **kwargs))
         except Exception:

@@ -177,3 +177,53 @@ def test_a_run_that_reuses_some_imports_keeps_the_stamps_of_the_folders_they_wer
     cli_real.write("lib/geo.py", _GEOMETRY)  # lib/'s mtime moves on
     third = cli_real("check", "--verbose", "--format", "json")
     assert [(f["path"], f["code"]) for f in json.loads(third.stdout)] == [("app/main.py", "GEO101")]
+
+
+_DECLARES = 'T_world_base = RigidTransform(R, t, from_frame="base", to_frame="world")\n'
+_NAMES_ONLY = "def f(T_world_cam, p_base):\n    return T_world_cam @ p_base\n"
+
+
+def _age_file(path, seconds: int = 3600) -> None:
+    stamp = time.time() - seconds
+    os.utime(path, (stamp, stamp))
+
+
+def test_a_declaration_changed_in_one_file_relints_the_files_of_its_project(cli_real):
+    """Names count as frames because poses.py states the convention; once it no longer does, planner.py
+    (unchanged) must not be served its old finding."""
+    cli_real.write("setup.py", "")
+    cli_real.write("poses.py", _DECLARES)
+    cli_real.write("planner.py", _NAMES_ONLY)
+    first = cli_real("check", "--verbose", "--format", "json")
+    assert [(f["path"], f["code"]) for f in json.loads(first.stdout)] == [("planner.py", "GEO201")]
+    cli_real.write("poses.py", "T_world_base = load()\n")
+    second = cli_real("check", "--verbose", "--format", "json")
+    assert counts(second.stderr) == (0, 3) and json.loads(second.stdout) == []  # every file of the project relinted
+
+
+def test_each_files_naming_votes_are_reused_while_its_stat_is_unchanged(cli_real):
+    """The second run reads no file for its project's conventions: proven by an edit that keeps the file's
+    size and mtime (nothing a real edit does), which the stored votes then do not see."""
+    cli_real.write("setup.py", "")
+    cli_real.write("poses.py", _DECLARES)
+    cli_real.write("planner.py", _NAMES_ONLY)
+    for name in ("setup.py", "poses.py", "planner.py"):
+        _age_file(cli_real.project / name)
+    first = cli_real("check", "--verbose", "--format", "json")
+    assert len(json.loads(first.stdout)) == 1 and len(list(cli_real.cache_dir.glob("votes-*.json"))) == 1
+
+    poses = cli_real.project / "poses.py"
+    before = os.stat(poses)
+    cli_real.write("poses.py", _DECLARES.replace("RigidTransform", "RigidTransfrom"))  # same size, no declaration
+    os.utime(poses, ns=(before.st_atime_ns, before.st_mtime_ns))
+    hidden = cli_real("check", "--verbose", "--format", "json")
+    assert counts(hidden.stderr) == (2, 1)  # poses.py's bytes changed; planner.py's key (stored votes) did not
+    assert [f["path"] for f in json.loads(hidden.stdout)] == ["planner.py"]
+
+
+def test_naming_votes_of_files_written_just_now_are_not_stored(cli_real):
+    cli_real.write("setup.py", "")
+    cli_real.write("poses.py", _DECLARES)
+    cli_real("check", "--verbose", "--format", "json")
+    stored = json.loads(next(cli_real.cache_dir.glob("votes-*.json")).read_text())
+    assert not any(path.endswith("poses.py") for path in stored)
