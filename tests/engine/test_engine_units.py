@@ -233,3 +233,17 @@ def test_a_run_leaves_the_cycle_collector_as_it_found_it(tmp_path: Path) -> None
     assert gc.get_threshold() == before
     assert gc.get_freeze_count() == 0
     assert gc.get_count()[0] < 1_000
+
+
+def test_the_directive_precheck_answers_as_its_regex() -> None:
+    """`may_have_directives` first looks for its keywords in the lowered text; on random text, with
+    the characters `re.IGNORECASE` matches to `i` (`ı`, `İ`), it must answer as `CANDIDATE_LINE`."""
+    import random
+
+    from geolint.suppression import CANDIDATE_LINE, may_have_directives
+
+    pieces = ["#", "# ", "noqa", "NOQA", "nOqA", "geolint", "GEOLINT", "geolİnt", "geolınt", "geol", "int", "no", "qa", "\n", "\r", "x", "İ", "ı", "K", ":"]
+    rng = random.Random(20261128)
+    for _ in range(20_000):
+        text = "".join(rng.choice(pieces) for _ in range(rng.randint(1, 8)))
+        assert may_have_directives(text) == (CANDIDATE_LINE.search(text) is not None), text
