@@ -30,6 +30,7 @@ from typing import Iterable, Sequence
 
 from geolint.lint_types import Config, Finding
 from geolint.render import FrameEdge, FrameGraph
+from geolint.factbase import typed
 from geolint.factbase.conventions import naming_config, orders_for
 from geolint.factbase.model import DST_FIRST, SRC_FIRST
 from geolint.semantic.names import NameFrames, frames_of_name, order_dependent, same_frame
@@ -75,27 +76,14 @@ class _FileReader(ast.NodeVisitor):
             return None
         return stated.inverted() if self.orders == (SRC_FIRST,) else stated
 
-    def _type_frame(self, node: ast.expr) -> str | None:
-        if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value:
-            return self._canon(node.value)
-        if isinstance(node, ast.Name):
-            return self._canon(self.frame_classes.get(node.id, node.id))
-        if isinstance(node, ast.Attribute):
-            return self._canon(self.frame_classes.get(node.attr, node.attr))
-        if isinstance(node, ast.Subscript) and _name_of(node.value) == "Literal":
-            return self._type_frame(node.slice)
-        return None
-
     def transform_type(self, node: ast.AST | None) -> NameFrames | None:
         """Frames of `Transform[Dst, Src]` (or `geolint.Transform[...]`); None for anything else."""
         if not isinstance(node, ast.Subscript) or _name_of(node.value) != "Transform":
             return None
-        if not isinstance(node.slice, ast.Tuple) or len(node.slice.elts) != 2:
+        frames = typed.typed_frames(node, self.frame_classes)
+        if frames is None or frames.dst is None or frames.src is None:
             return None
-        dst, src = (self._type_frame(element) for element in node.slice.elts)
-        if dst is None or src is None:
-            return None
-        return NameFrames(dst=dst, src=src, operator="transform")
+        return NameFrames(dst=self._canon(frames.dst), src=self._canon(frames.src), operator="transform")
 
     def frames_of(self, node: ast.AST | None) -> NameFrames | None:
         """What frames an expression is in, from its names, types and the algebra around them."""
@@ -161,19 +149,7 @@ class _FileReader(ast.NodeVisitor):
             self.frames.add(frames.frame)
 
     def collect_frame_classes(self, module: ast.Module) -> None:
-        for node in ast.walk(module):
-            if isinstance(node, ast.ClassDef) and any(_name_of(base) == "Frame" for base in node.bases):
-                declared = next(
-                    (
-                        keyword.value.value
-                        for keyword in node.keywords
-                        if keyword.arg == "name"
-                        and isinstance(keyword.value, ast.Constant)
-                        and isinstance(keyword.value.value, str)
-                    ),
-                    None,
-                )
-                self.frame_classes[node.name] = declared or node.name
+        self.frame_classes = typed.frame_classes(module)
 
     def claim_types(self, node: ast.AST) -> None:
         self.claimed.update(id(inner) for inner in ast.walk(node) if isinstance(inner, ast.Subscript))

@@ -883,6 +883,7 @@ class FactBase:
         if any(self._rebinds_own_inverse(node.id, binding) for binding in bindings):
             return None  # `world2cam = inv(world2cam)`: the name holds both directions
         declared = [fact for fact in (self._declared_frames(b) for b in bindings if isinstance(b, ast.expr)) if fact is not None]
+        declared += [fact for fact in (self._typed_frames(node.id, b) for b in bindings) if fact is not None]
         if declared:
             frames = {fact.frames for fact in declared}
             return declared[0] if len(frames) == 1 else None
@@ -910,6 +911,49 @@ class FactBase:
         elif isinstance(binding.func, ast.Attribute) and binding.func.attr in vocab.INVERSE_METHODS:
             inner = binding.func.value
         return isinstance(inner, ast.Name) and inner.id == name
+
+    def _typed_frames(self, name: str, binding: Binding) -> FrameFact | None:
+        """Frames a geolint type states for a parameter or an annotated assignment
+        (`T: TransformMatrix["world", "cam"]`, `p: Point[Camera] = ...`)."""
+        if isinstance(binding, ParamBinding):
+            annotation = binding.arg.annotation
+        else:
+            statement = self.parent(binding) if isinstance(binding, ast.expr) else None
+            annotated = isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name)
+            annotation = statement.annotation if annotated and statement.target.id == name else None  # type: ignore[union-attr]
+        if not isinstance(annotation, ast.Subscript) or not (self.qualified_name(annotation.value) or "").startswith("geolint"):
+            return None
+        from geolint.factbase import typed
+
+        frames = typed.typed_frames(annotation, self._frame_classes(annotation))
+        if frames is None:
+            return None
+        return FrameFact(frames, (f"annotation `{ast.unparse(annotation)}` at line {annotation.lineno}",), True)
+
+    def _frame_classes(self, annotation: ast.AST) -> dict[str, str]:
+        """The `Frame` subclasses an annotation may name: this module's, and those it imports from project
+        modules (`from arm.frames import Base`, where `class Base(Frame, name="base_link")`)."""
+        from geolint.factbase import typed
+
+        classes = self.module_fact("frame_classes", lambda: typed.frame_classes(self.index.tree))
+        imported = {
+            node.id: self.index.imports[node.id]
+            for node in ast.walk(annotation)
+            if isinstance(node, ast.Name) and node.id not in classes and node.id in self.index.imports
+        }
+        if not imported or not self.cross_module:
+            return classes
+        found = dict(classes)
+        for local, qualified in imported.items():
+            module, _, name = qualified.rpartition(".")
+            level = len(module) - len(module.lstrip("."))
+            file = summaries.module_file(module.lstrip("."), self.path, level) if module.strip(".") else None
+            other = None if file is None else self.project.facts_of(file)
+            if other is not None:
+                declared = other.module_fact("frame_classes", lambda: typed.frame_classes(other.index.tree)).get(name)  # noqa: B023
+                if declared is not None:
+                    found[local] = declared
+        return found
 
     def _declared_frames(self, value: ast.expr) -> FrameFact | None:
         """Frames a call states explicitly: `from_frame=`/`to_frame=`, `.as_frames(a, b)`, `lookup_transform(target, source, t)`."""

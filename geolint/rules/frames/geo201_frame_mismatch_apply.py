@@ -47,7 +47,7 @@ class FrameMismatchApply(ProductRule):
     `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
     Elsewhere a finding needs an explicit declaration on one side: `from_frame=`/`to_frame=`,
     `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
-    BOP's `cam_R_w2c`.
+    BOP's `cam_R_w2c`, geolint's types (`T: TransformMatrix["world", "cam"]`, `p: Point[Camera]`).
 
     ## Known problems
     Without a stated convention a mismatch between two names (`T_world_cam @ p_base`) is not reported. On
@@ -70,6 +70,8 @@ class FrameMismatchApply(ProductRule):
         Valid("p_cam = np.linalg.inv(T_world_cam) @ p_world\n"),
         Valid("p_world = T_world_camera @ p_cam\n"),  # an abbreviation may name the same frame
         Valid("p_world = T_world_cam @ p_base\n"),  # names on both sides, no convention stated: too weak
+        # a `Transform` that is not geolint's states nothing
+        Valid('class Transform:\n    pass\ndef to_world(T: Transform["world", "cam"], p_base):\n    return T @ p_base\n'),
         Valid("import numpy as np\nT_world_base = T_world_cam @ T_cam_base\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
     ]
     INVALID = [
@@ -81,6 +83,11 @@ class FrameMismatchApply(ProductRule):
         Invalid("p = T_world_cam.dot(p_base)\n", options=STATED),
         # no convention stated: the declared side is evidence enough
         Invalid('cam_pose = RigidTransform(R, t, from_frame="cam", to_frame="world")\np_world = cam_pose * p_base\n'),
+        # a geolint type is a declaration too (geolint.typing's arrays, the runtime's classes)
+        Invalid(
+            "from geolint.typing import TransformMatrix\n"
+            'def to_world(T: TransformMatrix["world", "cam"], p_base):\n    return T @ p_base\n'
+        ),
         # a declaration bound to a `T_a_b` name states the project's order, so names count
         Invalid(
             'import numpy as np\nT_world_cam = RigidTransform(R, t, from_frame="cam", to_frame="world")\n'

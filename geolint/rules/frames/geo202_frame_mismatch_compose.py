@@ -58,7 +58,7 @@ class FrameMismatchCompose(ProductRule):
     `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
     Elsewhere a finding needs an explicit declaration on one side: `from_frame=`/`to_frame=`,
     `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
-    BOP's `cam_R_w2c`.
+    BOP's `cam_R_w2c`, geolint's types (`T: TransformMatrix["world", "cam"]`, `p: Point[Camera]`).
 
     ## Known problems
     Without a stated convention a mismatch between two names (`T_world_base @ T_cam_tool`) is not reported. On

@@ -51,9 +51,10 @@ class FrameMismatchAssign(FactRule):
     `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
     Elsewhere the assigned value's frames must be declared (`from_frame=`/`to_frame=`,
     `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
-    BOP's `cam_R_w2c`), and a declared value is reported only when it reverses the name
-    (`world_to_cam = buffer.lookup_transform("world", "cam", t)`): labels and names may use other
-    words for one frame.
+    BOP's `cam_R_w2c`, geolint's types such as `T: TransformMatrix["world", "cam"]`), and a
+    declared value is reported only when it reverses the name (`world_to_cam =
+    buffer.lookup_transform("world", "cam", t)`): labels and names may use other words for one
+    frame.
 
     ## Known problems
     Without a stated convention a mismatch between two names (`T_cam_world = T_world_cam`) is not
