@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import ast
-from typing import NamedTuple, Sequence
+import inspect
+from typing import NamedTuple, Sequence, TypeVar
 
 from geolint.factbase.model import FactBase, FrameFact, MatMul
 from geolint.factbase.vocabulary import GATE_TRIGGER
@@ -15,6 +16,31 @@ from geolint.semantic.names import NameFrames, same_frame
 # The `[tool.geolint]` table of examples whose frames rest on names alone: names are frame evidence
 # only where the convention is stated (see geolint.factbase.conventions).
 STATED = {"naming": "dst-first"}
+
+# The `## Options` section of every rule that reads frames from names (one text, appended by `documents_naming`).
+NAMING_OPTIONS = """\
+## Options
+`naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
+into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
+order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
+then the consistency of its compositions; only what is wrong in every reading left open is
+reported. A table of switches turns single conventions off; Drake's monogram names (`X_WB`,
+`p_BQ`) are read only in projects that import pydrake unless `monogram = true` (elsewhere
+`X_EQ` is a state vector). `frame-aliases` declares synonyms (cam = camera).
+
+Names are frame evidence on their own only where the convention is **stated**: by
+`naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
+Elsewhere a finding needs an explicit declaration: `from_frame=`/`to_frame=`, `.as_frames(a, b)`,
+tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`, BOP's `cam_R_w2c`,
+geolint's types (`T: TransformMatrix["world", "cam"]`, `p: Point[Camera]`)."""
+
+_Rule = TypeVar("_Rule", bound=type)
+
+
+def documents_naming(rule: _Rule) -> _Rule:
+    """Append the shared `## Options` section on names as frames to a frame rule's documentation."""
+    rule.__doc__ = f"{inspect.cleandoc(rule.__doc__ or '')}\n\n{NAMING_OPTIONS}"
+    return rule
 
 
 class FactRule(AstRule):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import EXTRINSICS_EVIDENCE, FrameFact, MatMul
-from geolint.factbase.rule_support import STATED, Mismatch, ProductRule
+from geolint.factbase.rule_support import documents_naming, STATED, Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -18,6 +18,7 @@ WAYPOINT_WORDS = frozenset(
 )  # fmt: skip
 
 
+@documents_naming
 class FrameMismatchCompose(ProductRule):
     """Two transforms are composed although the inner frames do not match.
 
@@ -45,27 +46,10 @@ class FrameMismatchCompose(ProductRule):
     ## Fix safety
     No fix is offered: the missing link has to be chosen by a person.
 
-    ## Options
-    `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
-    into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
-    order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
-    then the consistency of its compositions; only what is wrong in every reading left open is
-    reported. A table of switches turns single conventions off; Drake's monogram names (`X_WB`,
-    `p_BQ`) are read only in projects that import pydrake unless `monogram = true` (elsewhere
-    `X_EQ` is a state vector). `frame-aliases` declares synonyms (cam = camera).
-
-    Names are frame evidence on their own only where the convention is **stated**: by
-    `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
-    Elsewhere a finding needs an explicit declaration on one side: `from_frame=`/`to_frame=`,
-    `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
-    BOP's `cam_R_w2c`, geolint's types (`T: TransformMatrix["world", "cam"]`, `p: Point[Camera]`).
-
     ## Known problems
-    Without a stated convention a mismatch between two names (`T_world_base @ T_cam_tool`) is not reported. On
-    real code, none of the triaged findings that rested on names alone was a bug (GEO201 0 of 4,
-    GEO202 0 of 24; GEO203's three true findings all rested on declared frames): `T_base_grasp`
-    names a waypoint, `rel_w2c` a correction, `T_word_body` a typo, and projects mix orders. State
-    the convention to have names checked.
+    Without a stated convention, a composition whose frames come from names alone
+    (`T_world_base @ T_cam_tool`) is not reported: none of the 24 such findings triaged on real code
+    was a bug (`T_base_grasp` names a waypoint, `rel_w2c` a correction, and projects mix orders).
     """
 
     code = "GEO202"

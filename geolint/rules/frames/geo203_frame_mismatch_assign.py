@@ -6,10 +6,11 @@ import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import FactBase, last_name, walk_within
-from geolint.factbase.rule_support import STATED, FactRule, Mismatch
+from geolint.factbase.rule_support import documents_naming, STATED, FactRule, Mismatch
 from geolint.semantic.names import NameFrames, same_frame
 
 
+@documents_naming
 class FrameMismatchAssign(FactRule):
     """A value is stored under a name that states another frame.
 
@@ -38,31 +39,12 @@ class FrameMismatchAssign(FactRule):
     ## Fix safety
     No fix is offered.
 
-    ## Options
-    `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
-    into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the
-    order is learned from the project: `from_frame=`/`to_frame=` declarations bound to such names,
-    then the consistency of its compositions; only what is wrong in every reading left open is
-    reported. A table of switches turns single conventions off; Drake's monogram names (`X_WB`,
-    `p_BQ`) are read only in projects that import pydrake unless `monogram = true` (elsewhere
-    `X_EQ` is a state vector). `frame-aliases` declares synonyms (cam = camera).
-
-    Names are frame evidence on their own only where the convention is **stated**: by
-    `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.
-    Elsewhere the assigned value's frames must be declared (`from_frame=`/`to_frame=`,
-    `.as_frames(a, b)`, tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`,
-    BOP's `cam_R_w2c`, geolint's types such as `T: TransformMatrix["world", "cam"]`), and a
-    declared value is reported only when it reverses the name (`world_to_cam =
-    buffer.lookup_transform("world", "cam", t)`): labels and names may use other words for one
-    frame.
-
     ## Known problems
-    Without a stated convention a mismatch between two names (`T_cam_world = T_world_cam`) is not
-    reported. On
-    real code, none of the triaged findings that rested on names alone was a bug (GEO201 0 of 4,
-    GEO202 0 of 24; GEO203's three true findings all rested on declared frames): `T_base_grasp`
-    names a waypoint, `rel_w2c` a correction, `T_word_body` a typo, and projects mix orders. State
-    the convention to have names checked.
+    Without a stated convention a value's frames must be declared, and a declared value is reported
+    only when it reverses the name (`world_to_cam = buffer.lookup_transform("world", "cam", t)`):
+    labels and names may use other words for one frame. So `T_cam_world = T_world_cam` is reported
+    only where the convention is stated; the rule's three true findings on real code all rested on
+    declared frames.
     """
 
     code = "GEO203"
