@@ -256,7 +256,14 @@ def naming_config(config: Config, reading: NameReading) -> Config:
     """`config` with the monogram convention decided for this file: as configured, else on in Drake projects."""
     if config.naming.monogram is not None:
         return config
-    return replace(config, naming=replace(config.naming, monogram=reading.drake))
+    key = (id(config), reading.drake)
+    decided = _decided_configs.get(key)
+    if decided is None or decided[0] is not config:  # one copy per run's config, not one per file
+        decided = _decided_configs[key] = (config, replace(config, naming=replace(config.naming, monogram=reading.drake)))
+    return decided[1]
+
+
+_decided_configs: dict[tuple[int, bool], tuple[Config, Config]] = {}
 
 
 def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> NameReading:
