@@ -154,7 +154,7 @@ _project_votes: dict[Path, Votes] = {}
 # file -> (mtime_ns, size, votes): what a file says, reused while its stat is unchanged; a warm run
 # gets it from the cache (`remembered_file_votes` / `remember_file_votes`) and reads no file for it
 _file_votes: dict[str, tuple[int, int, Votes]] = {}
-_read_files: list[str] = []
+_files_read = [0]  # how many files were read for their votes in this process
 
 
 def _is_project(folder: str) -> bool:
@@ -213,13 +213,13 @@ def _votes_of_file(path: str) -> Votes:
     if "pydrake" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
         votes = votes_of_source(text)
     _file_votes[path] = (stat.st_mtime_ns, stat.st_size, votes)
-    _read_files.append(path)
+    _files_read[0] += 1
     return votes
 
 
 def file_votes_read() -> bool:
     """Whether any file had to be read for its votes in this process (else the stored votes all held)."""
-    return bool(_read_files)
+    return _files_read[0] > 0
 
 
 def project_key(path: str) -> str:
