@@ -226,7 +226,10 @@ def project_key(path: str) -> str:
     """What the project around `path` says about its names, for the findings cache: a file's findings
     change with a declaration in another file of its project ('' outside a project)."""
     root = project_root(path)
-    return "" if root is None else repr(astuple(project_votes(root)))
+    if root is None:
+        return ""
+    votes = project_votes(root)  # what the findings read of it, not the counts (an edited composition elsewhere)
+    return repr((votes.orders(), votes.mixed, votes.stated, bool(votes.drake_modules)))
 
 
 def remembered_file_votes() -> dict[str, list[int]]:

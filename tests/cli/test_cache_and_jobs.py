@@ -227,3 +227,13 @@ def test_naming_votes_of_files_written_just_now_are_not_stored(cli_real):
     cli_real("check", "--verbose", "--format", "json")
     stored = json.loads(next(cli_real.cache_dir.glob("votes-*.json")).read_text())
     assert not any(path.endswith("poses.py") for path in stored)
+
+
+def test_an_edit_that_leaves_the_projects_naming_reading_alone_relints_only_its_file(cli_real):
+    cli_real.write("setup.py", "")
+    cli_real.write("poses.py", _DECLARES)
+    cli_real.write("planner.py", _NAMES_ONLY)
+    cli_real("check", "--verbose", "--format", "json")
+    cli_real.write("planner.py", _NAMES_ONLY + "T_world_tool = T_world_base @ T_base_tool\n")  # one more composition
+    again = cli_real("check", "--verbose", "--format", "json")
+    assert counts(again.stderr) == (2, 1)
