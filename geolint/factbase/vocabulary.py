@@ -154,11 +154,20 @@ class WordSet:
 
     def __init__(self, words: Iterable[str]) -> None:
         self.words = tuple(dict.fromkeys(words))
-        self._roots = _word_tree(self.words)
+        self._tree: tuple[_WordNode, ...] | None = None  # built on first use: a run served from the cache never asks
+
+    @property
+    def _roots(self) -> tuple[_WordNode, ...]:
+        if self._tree is None:
+            self._tree = _word_tree(self.words)
+        return self._tree
 
     def any_in(self, source: str, accept: Callable[[str], bool] | None = None) -> bool:
         """Whether a word of the set occurs in `source` (and `accept(word)` holds for it)."""
-        return _any_found(self._roots, source, accept)
+        roots = self._tree
+        if roots is None:
+            roots = self._roots
+        return _any_found(roots, source, accept)
 
 
 _WordNode = tuple[str, bool, tuple]  # type: ignore[type-arg]  # (text, a word of the set, nodes within it)
