@@ -16,8 +16,9 @@ class TfLookupSourceMismatch(AstRule):
 
     ## What it does
     Flags `do_transform_point/vector3/pose/pose_stamped/cloud(msg, transform)` where `transform`
-    comes from `buffer.lookup_transform(target, source, ...)` (tf2_ros `Buffer`) and the function
-    set `msg.header.frame_id` to a literal frame that is not `source`. Frames are compared as
+    comes from `buffer.lookup_transform(target, source, ...)` (tf2_ros `Buffer`), or is a
+    `TransformStamped` whose `child_frame_id` the function set to `source`, and the function set
+    `msg.header.frame_id` to a literal frame that is not `source`. Frames are compared as
     literals (or module constants holding literals), leading slashes ignored.
 
     ## Why is this bad?
@@ -51,7 +52,7 @@ class TfLookupSourceMismatch(AstRule):
 
     code = "GEO208"
     name = "tf-lookup-source-mismatch"
-    triggers = AllOf(r"lookup_transform", r"do_transform_")
+    triggers = AllOf(r"do_transform_", r"lookup_transform|child_frame_id")
 
     VALID = [
         Valid(
@@ -64,11 +65,19 @@ class TfLookupSourceMismatch(AstRule):
             "    t = buffer.lookup_transform('map', 'camera', 0)\n    return do_transform_point(p, t)\n"
         ),
         Valid(
+            "def f(p):\n    t = TransformStamped()\n    t.header.frame_id = 'map'\n    t.child_frame_id = 'base_link'\n"
+            "    p.header.frame_id = 'base_link'\n    return do_transform_point(p, t)\n"
+        ),
+        Valid(
             "def f(buffer, p):\n    p.header.frame_id = '/camera'\n"
             "    t = buffer.lookup_transform('map', 'camera', 0)\n    return do_transform_point(p, t)\n"
         ),
     ]
     INVALID = [
+        Invalid(
+            "def f(p, q):\n    t = TransformStamped()\n    t.header.frame_id = 'map'\n    t.child_frame_id = 'odom'\n"
+            "    p.header.frame_id = 'base_link'\n    return do_transform_point(p, t)\n"
+        ),
         Invalid(
             "def f(buffer, goal):\n    goal.header.frame_id = 'base_link'\n"
             "    t = buffer.lookup_transform('base_link', 'map', 0)\n    return do_transform_pose_stamped(goal, t)\n"
@@ -88,23 +97,28 @@ class TfLookupSourceMismatch(AstRule):
             if not isinstance(message, ast.Name) or not isinstance(transform, ast.Name):
                 continue
             lookup = resolve(index, transform)
-            if not (isinstance(lookup, ast.Call) and call_name(lookup) == "lookup_transform" and len(lookup.args) >= 2):
-                continue
-            source = _literal(lookup.args[1], index)
-            stamped = self._frame_set_before(message, node, index)
+            if isinstance(lookup, ast.Call) and call_name(lookup) == "lookup_transform" and len(lookup.args) >= 2:
+                source = _literal(lookup.args[1], index)
+                target = _literal(lookup.args[0], index)
+                stated = f"lookup_transform({target!r}, {source!r})"
+                hint = "swapped lookup arguments?"
+            else:  # a TransformStamped built here: `t.child_frame_id = "camera"` is the frame it maps from
+                source = self._frame_set_before(transform, node, index, ("child_frame_id",))
+                stated = f"stamped with child_frame_id {source!r}"
+                hint = "the message or the transform names the wrong frame"
+            stamped = self._frame_set_before(message, node, index, ("header", "frame_id"))
             if source is None or stamped is None or stamped.lstrip("/") == source.lstrip("/"):
                 continue
-            target = _literal(lookup.args[0], index)
             self.report(
                 node,
-                f"`{message.id}` is stamped in {stamped!r}, but `{transform.id}` is "
-                f"lookup_transform({target!r}, {source!r}): it maps data from {source!r}, so "
-                f"`{call_name(node)}` moves `{message.id}` from the wrong frame (swapped lookup arguments?)",
+                f"`{message.id}` is stamped in {stamped!r}, but `{transform.id}` is {stated}: it maps "
+                f"data from {source!r}, so `{call_name(node)}` moves `{message.id}` from the wrong frame ({hint})",
                 frames=(source.lstrip("/"), stamped.lstrip("/")),
             )
 
-    def _frame_set_before(self, message: ast.Name, call: ast.Call, index: ModuleIndex) -> str | None:
-        """The literal of the last `message.header.frame_id = ...` before the call, in its function."""
+    def _frame_set_before(self, owner: ast.Name, call: ast.Call, index: ModuleIndex, path: tuple[str, ...]) -> str | None:
+        """The literal of the last `owner.<path> = ...` (`msg.header.frame_id`, `t.child_frame_id`) before
+        the call, in its function."""
         scope = scope_of(index, call)
         position = (call.lineno, call.col_offset)
         found: tuple[tuple[int, int], ast.expr] | None = None
@@ -113,12 +127,7 @@ class TfLookupSourceMismatch(AstRule):
                 continue
             target = node.targets[0]
             if (
-                isinstance(target, ast.Attribute)
-                and target.attr == "frame_id"
-                and isinstance(target.value, ast.Attribute)
-                and target.value.attr == "header"
-                and isinstance(target.value.value, ast.Name)
-                and target.value.value.id == message.id
+                _attribute_path(target, owner.id) == path
                 and (node.lineno, node.col_offset) < position
                 and scope_of(index, node) is scope
             ):
@@ -131,6 +140,15 @@ class TfLookupSourceMismatch(AstRule):
         if assignment is None or not runs_before(index, assignment, call):
             return None
         return _literal(found[1], index)
+
+
+def _attribute_path(node: ast.expr, owner: str) -> tuple[str, ...] | None:
+    """`("header", "frame_id")` for `owner.header.frame_id`; None when the chain is not rooted at `owner`."""
+    parts: list[str] = []
+    while isinstance(node, ast.Attribute):
+        parts.append(node.attr)
+        node = node.value
+    return tuple(reversed(parts)) if isinstance(node, ast.Name) and node.id == owner else None
 
 
 def _literal(node: ast.expr, index: ModuleIndex) -> str | None:
