@@ -6,7 +6,7 @@ import ast
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.pose_parts import call_name
-from geolint.factbase.reaching import resolve, runs_before, scope_of, statement_of
+from geolint.factbase.reaching import resolve, runs_before, scope_of, single_definition, statement_of
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
 
@@ -63,6 +63,11 @@ class TfLookupSourceMismatch(AstRule):
         Valid(
             "def f(buffer, p, frame):\n    p.header.frame_id = frame\n"
             "    t = buffer.lookup_transform('map', 'camera', 0)\n    return do_transform_point(p, t)\n"
+        ),
+        Valid(  # a new message and a new transform: the first ones' stamps say nothing about them
+            "def f():\n    t = TransformStamped()\n    t.child_frame_id = 'b'\n    v = Vector3Stamped()\n"
+            "    v.header.frame_id = 'a'\n    t = TransformStamped()\n    v = Vector3Stamped()\n"
+            "    return do_transform_vector3(v, t)\n"
         ),
         Valid(
             "def f(p):\n    t = TransformStamped()\n    t.header.frame_id = 'map'\n    t.child_frame_id = 'base_link'\n"
@@ -121,6 +126,12 @@ class TfLookupSourceMismatch(AstRule):
         the call, in its function."""
         scope = scope_of(index, call)
         position = (call.lineno, call.col_offset)
+        # only what was set on the object the name holds at the call: `v = Vector3Stamped()` again
+        # starts a message with no frame, whatever the last one was stamped with
+        definition = single_definition(index, owner)
+        if definition is None:
+            return None
+        since = definition.point
         found: tuple[tuple[int, int], ast.expr] | None = None
         for node in ast.walk(scope.node):
             if not isinstance(node, ast.Assign) or len(node.targets) != 1:
@@ -128,7 +139,7 @@ class TfLookupSourceMismatch(AstRule):
             target = node.targets[0]
             if (
                 _attribute_path(target, owner.id) == path
-                and (node.lineno, node.col_offset) < position
+                and since <= (node.lineno, node.col_offset) < position
                 and scope_of(index, node) is scope
             ):
                 if found is None or (node.lineno, node.col_offset) > found[0]:
