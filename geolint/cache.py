@@ -112,6 +112,10 @@ class FindingsCache:
         self._dirty = False
 
 
+# the coarsest file-system clock in common use (FAT: 2 s): a stamp this close to a run's start may hide a change
+_MTIME_SLACK_NS = 2_000_000_000
+
+
 class ImportsCache:
     """Where each file's project imports resolved in an earlier run, reused while the file's bytes and
     the folders consulted are unchanged: a folder's mtime changes whenever an entry is added to it,
@@ -120,9 +124,6 @@ class ImportsCache:
     so such a run stores nothing. Keyed by the package's fingerprint alone: the config does not
     change where an import resolves.
     """
-
-    # the coarsest file-system clock in common use (FAT: 2 s)
-    _MTIME_SLACK_NS = 2_000_000_000
 
     def __init__(self, directory: Path) -> None:
         self.directory = directory
@@ -151,7 +152,7 @@ class ImportsCache:
         """Store `files` with the stamps of `folders` (those this run consulted) and of the folders the
         loaded entries were resolved in: a file whose imports were reused did not consult its own."""
         stamps = {folder: _mtime_ns(folder) for folder in {*folders, *self._trusted_folders}}
-        if any(stamp is not None and stamp >= self.started_ns - self._MTIME_SLACK_NS for stamp in stamps.values()):
+        if any(stamp is not None and stamp >= self.started_ns - _MTIME_SLACK_NS for stamp in stamps.values()):
             return  # a folder too fresh to trust its stamp
         try:
             _write_atomically(self.directory, self.file, {"folders": stamps, "files": files})
@@ -179,8 +180,7 @@ class VotesCache:
         return stored if isinstance(stored, dict) else {}
 
     def save(self, files: dict[str, list[int]]) -> None:
-        settled = ImportsCache._MTIME_SLACK_NS
-        kept = {file: entry for file, entry in files.items() if entry[0] < self.started_ns - settled}
+        kept = {file: entry for file, entry in files.items() if entry[0] < self.started_ns - _MTIME_SLACK_NS}
         try:
             _write_atomically(self.directory, self.file, kept)
         except OSError:

@@ -21,14 +21,14 @@ def run(args: argparse.Namespace) -> int:
     from geolint.rules import all_rules
 
     rules = all_rules()
-    rows = [(r.code, r.name, is_fixable(r), rule_summary(r) + (f" (opt-in: select {r.code})" if r.opt_in else "")) for r in rules]
     if args.format == "json":
         table = [
-            {"code": c, "name": n, "fixable": f, "opt_in": rule.opt_in, "summary": rule_summary(rule)}
-            for (c, n, f, _), rule in zip(rows, rules)
+            {"code": r.code, "name": r.name, "fixable": is_fixable(r), "opt_in": r.opt_in, "summary": rule_summary(r)}
+            for r in rules
         ]
         sys.stdout.write(json.dumps(table, indent=2) + "\n")
         return EXIT_OK
+    rows = [(r.code, r.name, is_fixable(r), rule_summary(r) + (f" (opt-in: select {r.code})" if r.opt_in else "")) for r in rules]
     name_width = max((len(n) for _, n, _, _ in rows), default=4)
     indent = 7 + 1 + name_width + 1 + 3 + 2
     width = _terminal_width()

@@ -595,19 +595,26 @@ class FactBase:
 
     def _imported_function(self, qualified: str, importer: str) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
         for _ in range(_MAX_REEXPORTS):
-            module, _, name = qualified.rpartition(".")
-            if not module.strip(".") or not name or module.lstrip(".").split(".")[0] in vocab.THIRD_PARTY_ROOTS:
+            found = self._defining_module(qualified, importer)
+            if found is None:
                 return None
-            level = len(module) - len(module.lstrip("."))
-            file = summaries.module_file(module.lstrip("."), importer, level)
-            other = None if file is None else self.project.facts_of(file)
-            if other is None:
-                return None
+            other, name = found
             if name in other.index.functions:
                 return other, other.index.functions[name]
             qualified = other.index.imports.get(name, "")  # `from .points import to_h` in a package's __init__
             importer = other.path
         return None
+
+    def _defining_module(self, qualified: str, importer: str) -> tuple[FactBase, str] | None:
+        """For `pkg.mod.name` (or `.mod.name`) imported by `importer`: the fact base of the project module
+        `pkg.mod` and `name`; None for a third-party or unresolved module."""
+        module, _, name = qualified.rpartition(".")
+        if not module.strip(".") or not name or module.lstrip(".").split(".")[0] in vocab.THIRD_PARTY_ROOTS:
+            return None
+        level = len(module) - len(module.lstrip("."))
+        file = summaries.module_file(module.lstrip("."), importer, level)
+        other = None if file is None else self.project.facts_of(file)
+        return None if other is None else (other, name)
 
     def _kind_of_variable(self, name: ast.Name) -> Kind | None:
         stated = self._name_kind(name.id)
@@ -945,11 +952,9 @@ class FactBase:
             return classes
         found = dict(classes)
         for local, qualified in imported.items():
-            module, _, name = qualified.rpartition(".")
-            level = len(module) - len(module.lstrip("."))
-            file = summaries.module_file(module.lstrip("."), self.path, level) if module.strip(".") else None
-            other = None if file is None else self.project.facts_of(file)
-            if other is not None:
+            defining = self._defining_module(qualified, self.path)
+            if defining is not None:
+                other, name = defining
                 declared = other.module_fact("frame_classes", lambda: typed.frame_classes(other.index.tree)).get(name)  # noqa: B023
                 if declared is not None:
                     found[local] = declared
