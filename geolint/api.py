@@ -24,7 +24,7 @@ from geolint import config as config_module
 from geolint import engine
 from geolint.cache import FindingsCache, ImportsCache, VotesCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
-from geolint.factbase import conventions
+from geolint.factbase import conventions, ros_packages
 from geolint.factbase.summaries import ImportGraph, consulted_folders, folder_listings, project_root
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
@@ -136,7 +136,7 @@ def lint_paths(
             # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
             digest = imports.file_digest(key, own)
             # and what its project's declarations say about names: one added elsewhere changes its findings
-            naming = conventions.project_key(str(source.path))
+            naming = conventions.project_key(str(source.path)) + ros_packages.package_key(str(source.path))
             if naming:
                 digest = hashlib.blake2b(f"{digest}:{naming}".encode(), digest_size=16).hexdigest()
             cached = cache.get(source.real_path(), digest, source.display)

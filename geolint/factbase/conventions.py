@@ -47,6 +47,7 @@ _COMPOSITION = re.compile(
 # leading letters, where `\b(?:self\.)?` makes it try every position (10x faster on files without one).
 _COMPOSED_OPERAND = re.compile(r"[TXH]_[A-Za-z][A-Za-z0-9]*_[A-Za-z][A-Za-z0-9]*\b(?:\.inverse\(\))?\s*[@*]")
 _DECLARING = ("from_frame", "as_frames", "lookup_transform", "lookupTransform")
+_TF2_IMPORT = re.compile(r"^[ \t]*(?:import|from)[ \t]+tf2_(?:ros|py|geometry_msgs|sensor_msgs|kdl)\b", re.MULTILINE)
 _MAX_FILES = 20000
 _MAX_BYTES = 2_000_000
 
@@ -58,6 +59,7 @@ class Votes:
     composed_dst: int = 0
     composed_src: int = 0
     drake_modules: int = 0  # modules that import pydrake: Drake's monogram names (`X_WB`) read as frames
+    tf2_modules: int = 0  # modules that import tf2 (`ros_packages`: a ROS 1 package's frame ids are tf2's)
 
     def __add__(self, other: Votes) -> Votes:
         return Votes(
@@ -66,6 +68,7 @@ class Votes:
             self.composed_dst + other.composed_dst,
             self.composed_src + other.composed_src,
             self.drake_modules + other.drake_modules,
+            self.tf2_modules + other.tf2_modules,
         )
 
     @property
@@ -139,6 +142,8 @@ def votes_of_source(source: str, tree: ast.Module | None = None) -> Votes:
     votes = votes_of_text(source) if "_" in source else Votes()
     if "pydrake" in source:
         votes = votes + Votes(drake_modules=1)
+    if "tf2_" in source and _TF2_IMPORT.search(source):
+        votes = votes + Votes(tf2_modules=1)
     if any(word in source for word in _DECLARING):
         if tree is None:
             try:
@@ -193,6 +198,14 @@ def forget_project_totals() -> None:
     """Let the next `project_votes` of each project look at its files again (a long-lived process)."""
     with _lock:
         _project_votes.clear()
+    from geolint.factbase import ros_packages  # imports this module
+
+    ros_packages.forget_packages()
+
+
+def file_votes(path: str) -> Votes:
+    """What one file says (read once while its stat is unchanged)."""
+    return _votes_of_file(path)
 
 
 def _votes_of_file(path: str) -> Votes:
@@ -210,7 +223,7 @@ def _votes_of_file(path: str) -> Votes:
         return Votes()
     text = data.decode("utf-8", errors="replace")
     votes = Votes()
-    if "pydrake" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
+    if "pydrake" in text or "tf2_" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
         votes = votes_of_source(text)
     _file_votes[path] = (stat.st_mtime_ns, stat.st_size, votes)
     _files_read[0] += 1

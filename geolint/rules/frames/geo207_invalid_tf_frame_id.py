@@ -1,9 +1,12 @@
-"""GEO207 invalid-tf-frame-id: a literal frame id that tf2 rejects or that breaks the tf tree."""
+"""GEO207 invalid-tf-frame-id: a frame id that tf2 rejects or that breaks the tf tree."""
 
 from __future__ import annotations
 
 import ast
+import re
 
+from geolint.factbase import index_of, ros_packages
+from geolint.factbase.frame_ids import frame_string
 from geolint.factbase.pose_parts import call_name
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
@@ -11,30 +14,45 @@ from geolint.rules.triggers import AllOf
 # tf2 calls whose leading positional arguments are frame ids, and how many of them.
 _FRAME_ARGUMENTS = {"lookup_transform": 2, "can_transform": 2, "lookup_transform_async": 2, "wait_for_transform_async": 2}
 _FRAME_KEYWORDS = frozenset({"frame_id", "child_frame_id", "target_frame", "source_frame", "target", "source"})
+# calls that hand TransformStamped messages to tf2's setTransform
+_SETS_TRANSFORMS = frozenset({"sendTransform", "send_transform", "set_transform", "set_transform_static", "setTransform"})
+_TF2_TEXT = re.compile(r"tf2_ros|rclpy")
+TF2 = "tf2"  # the module uses tf2_ros or ROS 2 itself
+ROS1_TF2 = "ros1-tf2"  # a ROS 1 module (rospy, message types) whose ROS package targets tf2
 
 
 class InvalidTfFrameId(AstRule):
-    """A literal frame id that tf2 rejects or that breaks the tf tree.
+    """A frame id that tf2 rejects or that breaks the tf tree.
 
     ## What it does
-    In a module that uses tf2 (`tf2_ros`, or ROS 2's `rclpy`), flags a string literal used as a
-    frame id that:
+    In tf2 code, flags a frame id that starts with a slash (`"/map"`) where tf2 looks it up:
 
-    - starts with a slash (`"/map"`) in `header.frame_id`, `child_frame_id`, a `frame_id=`
-      keyword, or the frame arguments of `lookup_transform` / `can_transform`;
-    - names the same frame as parent and child of one transform
-      (`t.header.frame_id = "base_link"`, `t.child_frame_id = "base_link"`);
-    - gives a child a second parent: in a module that publishes static transforms, one function
-      sets up two transforms with the same literal `child_frame_id` and different literal
-      `header.frame_id` (outside mutually exclusive `if`/`else` arms).
+    - the frame arguments of `lookup_transform` / `can_transform` (tf2_ros `Buffer`);
+    - the stamp of a message: `header.frame_id`, a `frame_id=` keyword, ROS 1's positional
+      `Header(seq, stamp, frame_id)`, and (ROS 2) `child_frame_id`.
+
+    The frame id may be a literal, a module constant, or built from them (`"/" + "map"`,
+    `"%s/%s" % ("", "gps")`, an f-string of constants). tf2 code is a module that imports `tf2_ros`
+    or `rclpy`, or a ROS 1 module (`rospy`, message imports) whose ROS package targets tf2: its
+    `package.xml` depends on a tf2 package, or one of its modules imports `tf2_ros`, `tf2_py`,
+    `tf2_geometry_msgs`, `tf2_sensor_msgs` or `tf2_kdl`.
+
+    It also flags a transform whose parent and child are the same frame
+    (`t.header.frame_id = "base_link"`, `t.child_frame_id = "base_link"`), and, in a module that
+    publishes static transforms, a child given two literal parents in one function (outside
+    mutually exclusive `if`/`else` arms).
 
     ## Why is this bad?
-    tf2 frame ids never start with a slash (REP 105; the `tf_prefix` convention of ROS 1 `tf`
-    is gone): `lookup_transform("/map", ...)` raises `InvalidArgumentException`, and a published
-    `"/base_link"` is a frame no one else names. A transform from a frame to itself is dropped
-    with a `TF_SELF_TRANSFORM` error. tf is a tree: a frame with two parents makes the tree flip
-    between them on every update, and every lookup through that frame alternates between two
-    answers.
+    tf2 frame ids never start with a slash (REP 105; ROS 1 `tf`'s `tf_prefix` spelling is gone).
+    tf2's lookups reject one: `lookupTransform` throws `InvalidArgumentException` and
+    `canTransform` logs a warning and returns false (ros/geometry2 noetic-devel,
+    `tf2/src/buffer_core.cpp` `validateFrameId` and `warnFrameId`, lines 121-158, called at 623-624
+    and 810-812; the same in ROS 2). A message stamped `"/camera_link"` therefore cannot be
+    transformed: tf2_ros `Buffer.transform` looks up `msg.header.frame_id`
+    (`tf2_ros/src/tf2_ros/buffer_interface.py:65`) and Noetic's rviz looks up each display's stamp
+    unchanged (`rviz/src/rviz/frame_manager.cpp:228`), so the data is not shown. A transform from a
+    frame to itself is dropped with a `TF_SELF_TRANSFORM` error. tf is a tree: a frame with two
+    parents makes the tree flip between them on every update.
 
     ## Example
     ```python
@@ -47,17 +65,27 @@ class InvalidTfFrameId(AstRule):
     ```
 
     ## Fix safety
-    Dropping the leading slash is offered as an unsafe fix (a frame published elsewhere with the
-    slash, by ROS 1 code, would need the same change). The other two cases have no fix.
+    Dropping the leading slash of a literal is offered as an unsafe fix (a frame published
+    elsewhere with the slash, by ROS 1 code, would need the same change). Built frame ids and the
+    other two cases have no fix.
 
     ## Known problems
-    Only literal frame ids are checked. A module that imports neither `tf2_ros` nor `rclpy`
-    (ROS 1 `tf` code) is left alone, since ROS 1 `tf` accepted leading slashes.
+    Where tf2 itself strips the slash the rule is silent: the frames of a `TransformStamped` (built
+    here, or handed to `sendTransform` / `set_transform`), since tf2's `setTransform` strips them
+    (`buffer_core.cpp:214-216`; ROS 2 rolling `:208-209`), as does the C++ `tf2_ros::MessageFilter`
+    for the messages it queues (`message_filter.h:306`, since 0.5.10) before the consumer's own
+    lookup. A ROS 1 module that uses `tf` itself (a listener, a broadcaster; `tf.transformations`
+    alone does not count), or whose package shows no tf2 evidence, is left alone: Noetic's `tf`
+    strips a leading slash before asking tf2 (`tf/src/tf.cpp:195-243`, `tf/src/tf/listener.py:44-69`),
+    and older `tf` accepted `tf_prefix` names. In ROS 1 code `child_frame_id` is not checked (read by
+    `setTransform`, which strips it, or by odometry consumers). Frame ids read at run time
+    (parameters, attributes such as `self.frame_id`) are not followed, nor frame ids built in a
+    helper function (`"%s/%s" % (prefix, frame)` with a `tf_prefix` parameter).
     """
 
     code = "GEO207"
     name = "invalid-tf-frame-id"
-    triggers = AllOf(r"tf2_ros|rclpy", r"frame|lookup_transform|can_transform")
+    triggers = AllOf(r"tf2_ros|rclpy|rospy|_msgs", r"frame|lookup_transform|can_transform|Header")
 
     VALID = [
         Valid("import tf2_ros\nt = buffer.lookup_transform('map', 'base_link', stamp)\n"),
@@ -69,6 +97,13 @@ class InvalidTfFrameId(AstRule):
             "        t.child_frame_id = 'camera'\n    static_broadcaster.sendTransform(t)\n"
         ),
         Valid("import tf2_ros\nlabel = '/map'\n"),  # not used as a frame id
+        # tf2's setTransform strips the slash of a TransformStamped's frames
+        Valid("import tf2_ros\nt = TransformStamped()\nt.header.frame_id = '/world'\nt.child_frame_id = '/robot'\nb.sendTransform(t)\n"),
+        Valid("import tf2_ros\nb.sendTransform(TransformStamped(header=Header(frame_id='/world'), child_frame_id='/robot'))\n"),
+        # ROS 1 `tf` code (Noetic's tf strips the slash), and rospy code with no tf2 evidence
+        Valid("import rospy\nimport tf\nlistener = tf.TransformListener()\npub.publish(PointStamped(Header(0, now, '/world'), p))\n"),
+        Valid("import rospy\nfrom std_msgs.msg import Header\nheader = Header()\nheader.frame_id = '/camera_link'\n"),
+        Valid("import tf2_ros\nmsg.header.frame_id = rospy.get_param('~frame_id', '/gps')\n"),  # read at run time
     ]
     INVALID = [
         Invalid(
@@ -77,6 +112,9 @@ class InvalidTfFrameId(AstRule):
         ),
         Invalid("import rclpy\nmsg.header.frame_id = '/camera_link'\n"),
         Invalid("import tf2_ros\nh = Header(frame_id='/odom')\n"),
+        Invalid("import tf2_ros\npub.publish(PointStamped(Header(0, rospy.Time.now(), '/world'), point))\n"),  # ROS 1 Header
+        Invalid("import tf2_ros\nPREFIX = ''\nfix.header.frame_id = '%s/%s' % (PREFIX, 'gps')\n"),
+        Invalid("import tf2_ros\nmarker.header.frame_id = '/' + 'map'\n"),
         Invalid("import tf2_ros\nt.header.frame_id = 'base_link'\nt.child_frame_id = 'base_link'\n"),
         Invalid(
             "from tf2_ros import StaticTransformBroadcaster\ndef publish(b):\n    a = TransformStamped()\n"
@@ -87,24 +125,50 @@ class InvalidTfFrameId(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
+        dialect = self._dialect(tree)
+        if dialect is None:
+            return
+        index = index_of(tree)
         parents: dict[ast.AST, ast.AST] = {}
         for node in ast.walk(tree):
             for child in ast.iter_child_nodes(node):
                 parents[child] = node
         static = "StaticTransformBroadcaster" in self.context.source or "static_transform" in self.context.source
+        transforms = _TransformMessages(tree, parents)
         for node in ast.walk(tree):
-            for literal in _frame_literals(node):
-                if literal.value.startswith("/"):  # type: ignore[union-attr]
-                    self.report(
-                        literal,
-                        f"tf2 frame ids never start with '/': {literal.value!r} is rejected by lookups "
-                        "(InvalidArgumentException) and matches no frame others publish (REP 105)",
-                        replacement=repr(literal.value.lstrip("/")),  # type: ignore[union-attr]
-                        applicability="unsafe",
-                        fix_description="drop the leading slash",
+            for site, value, role in _frame_sites(node, dialect, transforms, parents):
+                text = frame_string(value, index)
+                if text is None or not text.startswith("/"):
+                    continue
+                literal = isinstance(value, ast.Constant)
+                shown = repr(text) if literal else f"{ast.unparse(value)} (= {text!r})"
+                if role == "lookup":
+                    problem = f"`{site}` raises InvalidArgumentException for {shown} (can_transform returns False)"
+                else:
+                    problem = (
+                        f"{shown} in `{site}` is no tf2 frame: looking the stamp up (rviz, "
+                        "`Buffer.transform`) raises InvalidArgumentException"
                     )
+                self.report(
+                    value,
+                    f"tf2 frame ids never start with '/': {problem}",
+                    replacement=repr(text.lstrip("/")) if literal else None,
+                    applicability="unsafe",
+                    fix_description="drop the leading slash" if literal else "",
+                )
             if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef)):
                 self._check_transforms_of(node, parents, static)
+
+    def _dialect(self, tree: ast.Module) -> str | None:
+        """TF2 for a tf2 or ROS 2 module, ROS1_TF2 for a ROS 1 module whose package targets tf2, else None."""
+        if _TF2_TEXT.search(self.context.source):
+            return TF2
+        imported = _imported_modules(tree)
+        if not any(name == "rospy" or name.split(".")[0].endswith("_msgs") for name in imported):
+            return None
+        if _uses_old_tf(tree, imported):
+            return None  # `tf` code: Noetic's tf strips the slash itself (tf.cpp strip_leading_slash)
+        return ROS1_TF2 if ros_packages.package_targets_tf2(self.context.path) else None
 
     def _check_transforms_of(self, scope: ast.AST, parents: dict[ast.AST, ast.AST], static: bool) -> None:
         """Self-transforms, and a child given two parents, among the literal frames set in one scope."""
@@ -146,17 +210,123 @@ class InvalidTfFrameId(AstRule):
                     )
 
 
-def _frame_literals(node: ast.AST) -> list[ast.Constant]:
-    """String literals used as frame ids by this node (an assignment, a call)."""
-    found: list[ast.expr] = []
-    if isinstance(node, ast.Assign) and any(_frame_field(target) is not None for target in node.targets):
-        found.append(node.value)
+def _frame_sites(
+    node: ast.AST, dialect: str, transforms: _TransformMessages, parents: dict[ast.AST, ast.AST]
+) -> list[tuple[str, ast.expr, str]]:
+    """(where, value, "lookup" or "stamp") for each frame id this node (an assignment, a call) sets or asks for."""
+    found: list[tuple[str, ast.expr, str]] = []
+    if isinstance(node, ast.Assign):
+        for target in node.targets:
+            field = _frame_field(target)
+            if field is None or transforms.holds(field[1], node):
+                continue  # a TransformStamped: tf2's setTransform strips the slash (buffer_core.cpp)
+            if field[0] == "child" and dialect == ROS1_TF2:
+                continue  # ROS 1: read by tf2's setTransform (stripped) or by odometry consumers
+            found.append((ast.unparse(target), node.value, "stamp"))
     elif isinstance(node, ast.Call):
-        count = _FRAME_ARGUMENTS.get(call_name(node) or "")
+        name = call_name(node) or ""
+        count = _FRAME_ARGUMENTS.get(name)
         if count is not None and isinstance(node.func, ast.Attribute):
-            found.extend(node.args[:count])
-        found.extend(keyword.value for keyword in node.keywords if keyword.arg in _FRAME_KEYWORDS and _is_frame_call(node, keyword.arg))
-    return [value for value in found if isinstance(value, ast.Constant) and isinstance(value.value, str)]
+            found.extend((f"{name}", argument, "lookup") for argument in node.args[:count])
+        inside_transform = transforms.built_by(node, parents)
+        if name == "Header" and len(node.args) >= 3 and not inside_transform:
+            found.append(("Header(seq, stamp, frame_id)", node.args[2], "stamp"))  # ROS 1 Header(seq, stamp, frame_id)
+        for keyword in node.keywords:
+            if keyword.arg in _FRAME_KEYWORDS and _is_frame_call(node, keyword.arg):
+                role = "lookup" if name in _FRAME_ARGUMENTS else "stamp"
+                if role == "stamp" and (inside_transform or name == "TransformStamped"):
+                    continue
+                if keyword.arg == "child_frame_id" and dialect == ROS1_TF2:
+                    continue
+                found.append((f"{name}" if role == "lookup" else f"{keyword.arg}=", keyword.value, role))
+    return found
+
+
+class _TransformMessages:
+    """The messages that are transforms (`TransformStamped`): their frames go to tf2's setTransform,
+    which strips a leading slash (geometry2 noetic-devel tf2/src/buffer_core.cpp:214-216; ROS 2
+    rolling :208-209), so a slash there breaks nothing."""
+
+    def __init__(self, tree: ast.Module, parents: dict[ast.AST, ast.AST]) -> None:
+        self._parents = parents
+        self._by_scope: dict[ast.AST, set[str]] = {}
+        self._tree = tree
+
+    def holds(self, message: str, node: ast.AST) -> bool:
+        if ".transforms[" in message or message.endswith(".transform"):
+            return True
+        scope = _enclosing(node, self._parents, (ast.FunctionDef, ast.AsyncFunctionDef))
+        if message in self._of(scope or self._tree):
+            return True
+        if message.startswith("self."):  # stored on the object by another method
+            owner = _enclosing(node, self._parents, (ast.ClassDef,))
+            return owner is not None and message in self._of(owner)
+        return False
+
+    def built_by(self, call: ast.Call, parents: dict[ast.AST, ast.AST]) -> bool:
+        """`call` is an argument (`header=Header(...)`) of a `TransformStamped(...)`."""
+        parent = parents.get(call)
+        if isinstance(parent, ast.keyword):
+            parent = parents.get(parent)
+        return isinstance(parent, ast.Call) and call_name(parent) == "TransformStamped"
+
+    def _of(self, scope: ast.AST) -> set[str]:
+        known = self._by_scope.get(scope)
+        if known is None:
+            known = self._by_scope[scope] = _transform_names(scope)
+        return known
+
+
+def _transform_names(scope: ast.AST) -> set[str]:
+    """Texts of the messages a scope builds as `TransformStamped()` or hands to a broadcaster."""
+    names: set[str] = set()
+    for node in ast.walk(scope):
+        if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call) and call_name(node.value) == "TransformStamped":
+            names.update(ast.unparse(target) for target in node.targets)
+        elif isinstance(node, ast.Call) and call_name(node) in _SETS_TRANSFORMS:
+            for argument in node.args[:1]:
+                items = argument.elts if isinstance(argument, (ast.List, ast.Tuple)) else [argument]
+                names.update(ast.unparse(item) for item in items)
+    return names
+
+
+def _enclosing(node: ast.AST, parents: dict[ast.AST, ast.AST], kinds: tuple[type, ...]) -> ast.AST | None:
+    current = parents.get(node)
+    while current is not None and not isinstance(current, kinds):
+        current = parents.get(current)
+    return current
+
+
+def _imported_modules(tree: ast.Module) -> list[str]:
+    found: list[str] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found.extend(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            found.append(node.module)
+    return found
+
+
+def _uses_old_tf(tree: ast.Module, imported: list[str]) -> bool:
+    """The module uses ROS 1 `tf` itself (a listener, a broadcaster, tf messages), not only
+    `tf.transformations`, the quaternion and matrix helpers tf2 code imports as well."""
+    if not any(name == "tf" or name.startswith("tf.") for name in imported):
+        return False
+    aliases: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            if node.module == "tf" and any(alias.name != "transformations" for alias in node.names):
+                return True
+            if node.module.startswith("tf.") and node.module != "tf.transformations":
+                return True
+        elif isinstance(node, ast.Import):
+            aliases.update(alias.asname or alias.name for alias in node.names if alias.name == "tf")
+            if any(alias.name.startswith("tf.") and alias.name != "tf.transformations" for alias in node.names):
+                return True
+    return any(
+        isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in aliases and node.attr != "transformations"
+        for node in ast.walk(tree)
+    )
 
 
 def _is_frame_call(call: ast.Call, keyword: str | None) -> bool:
@@ -165,13 +335,16 @@ def _is_frame_call(call: ast.Call, keyword: str | None) -> bool:
 
 
 def _frame_field(target: ast.expr) -> tuple[str, str] | None:
-    """("parent" or "child", the message's text) for `m.header.frame_id` / `m.child_frame_id`."""
+    """("parent" or "child", the message's text) for `m.header.frame_id` / `m.child_frame_id`, and
+    ("parent", "header") for a `header.frame_id` of its own (`header = Header()`)."""
     if not isinstance(target, ast.Attribute):
         return None
     if target.attr == "child_frame_id":
         return "child", ast.unparse(target.value)
     if target.attr == "frame_id" and isinstance(target.value, ast.Attribute) and target.value.attr == "header":
         return "parent", ast.unparse(target.value.value)
+    if target.attr == "frame_id" and isinstance(target.value, ast.Name) and target.value.id.lower().endswith("header"):
+        return "parent", target.value.id
     return None
 
 

@@ -1,0 +1,82 @@
+"""The text of a ROS frame id when the code fixes it: a literal, a module constant, or a string built
+from them (`"/" + "map"`, `"%s/%s" % ("", "gps")`, `"{}/{}".format(...)`, an f-string of constants).
+
+Only exact values: a name counts when one definition certainly reaches it, and anything read at run
+time (a parameter, `rospy.get_param`, an attribute) leaves the value unknown (None).
+"""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.factbase.index import ModuleIndex
+from geolint.factbase.reaching import resolve, scope_of
+
+_MAX_DEPTH = 6
+_MAX_LENGTH = 256  # frame ids are short; nothing longer is built here
+
+
+def frame_string(node: ast.expr, index: ModuleIndex, depth: int = _MAX_DEPTH) -> str | None:
+    """The string `node` certainly evaluates to, or None."""
+    if depth <= 0:
+        return None
+    if isinstance(node, ast.Constant):
+        return node.value if isinstance(node.value, str) else None
+    if isinstance(node, ast.Name):
+        value = resolve(index, node)
+        if isinstance(value, ast.Name):  # unknown here: a global the reading scope does not rebind?
+            value = None if value.id in scope_of(index, value).bindings else module_constant(value, index)
+        return frame_string(value, index, depth - 1) if isinstance(value, ast.expr) and not isinstance(value, ast.Name) else None
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+        left, right = frame_string(node.left, index, depth - 1), frame_string(node.right, index, depth - 1)
+        return _short(left + right) if left is not None and right is not None else None
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mod):
+        template = frame_string(node.left, index, depth - 1)
+        parts = node.right.elts if isinstance(node.right, ast.Tuple) else [node.right]
+        values = [frame_string(part, index, depth - 1) for part in parts]
+        if template is None or None in values:
+            return None
+        return _formatted(lambda: template % tuple(values))
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "format" and not node.keywords:
+        template = frame_string(node.func.value, index, depth - 1)
+        values = [frame_string(arg, index, depth - 1) for arg in node.args]
+        if template is None or None in values:
+            return None
+        return _formatted(lambda: template.format(*values))
+    if isinstance(node, ast.JoinedStr):
+        pieces = []
+        for piece in node.values:
+            if isinstance(piece, ast.FormattedValue):
+                if piece.conversion not in (-1, ord("s")) or piece.format_spec is not None:
+                    return None
+                piece = piece.value  # type: ignore[assignment]
+            text = frame_string(piece, index, depth - 1)
+            if text is None:
+                return None
+            pieces.append(text)
+        return _short("".join(pieces))
+    return None
+
+
+def module_constant(name: ast.Name, index: ModuleIndex) -> ast.expr | None:
+    """The value of a module-level name assigned exactly once (never augmented, nor rebound by a
+    function through `global`)."""
+    module = index.scopes[index.tree]
+    found = module.bindings.get(name.id) or []
+    if len(found) != 1 or not isinstance(found[0], ast.expr) or name.id in module.augmented:
+        return None
+    if any(isinstance(node, ast.Global) and name.id in node.names for node in index.nodes(ast.Global)):
+        return None
+    return found[0]
+
+
+def _formatted(render: object) -> str | None:
+    try:
+        text = render()  # type: ignore[operator]
+    except (TypeError, ValueError, KeyError, IndexError):
+        return None
+    return _short(text) if isinstance(text, str) else None
+
+
+def _short(text: str) -> str | None:
+    return text if len(text) <= _MAX_LENGTH else None
