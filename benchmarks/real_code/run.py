@@ -25,6 +25,7 @@ import shutil
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 import tomllib
 from collections import Counter, defaultdict
@@ -491,7 +492,10 @@ def verify_history(args: argparse.Namespace, ledger: Ledger, select: tuple[str, 
             print(f"  {bug.repo}@{bug.fix_commit[:10]}:{bug.path}: pre-fix file not available", file=sys.stderr)
             status = 2
             continue
-        hits = [f for f in api.lint_text(before, bug.path, config) if f.code != "GEO000" and f.line <= bug.line <= f.end_line]
+        with tempfile.TemporaryDirectory() as scratch:
+            # inside its ROS package as it was (package.xml, sibling modules): GEO207 reads that evidence
+            path = _pre_fix_package(checkout, bug.fix_commit, bug.path, Path(scratch))
+            hits = [f for f in api.lint_text(before, path, config) if f.code != "GEO000" and f.line <= bug.line <= f.end_line]
         now = bool(hits)
         caught += now
         mark = "CAUGHT" if now else "missed"
@@ -507,6 +511,23 @@ def verify_history(args: argparse.Namespace, ledger: Ledger, select: tuple[str, 
         dump_ledger(ledger, args.ledger)
         print(f"updated 'caught' of {changed} historical bug(s) in {args.ledger}")
     return status
+
+
+def _pre_fix_package(checkout: Path, fix_commit: str, path: str, scratch: Path) -> str:
+    """Where to lint `path` as it was before `fix_commit`: inside a copy of its ROS package at that
+    commit (the nearest folder above it with a package.xml: its manifest and Python files), else `path`."""
+    files = git(checkout, "ls-tree", "-r", "--name-only", f"{fix_commit}^").splitlines()
+    folders = [folder for folder in Path(path).parents if str(folder / "package.xml") in files or folder == Path(".") and "package.xml" in files]
+    if not folders:
+        return path
+    package = folders[0].as_posix()
+    prefix = "" if package == "." else package + "/"
+    for name in files:
+        if name.startswith(prefix) and (name.endswith(".py") or name == prefix + "package.xml"):
+            target = scratch / name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_text(git(checkout, "show", f"{fix_commit}^:{name}"))
+    return str(scratch / path)
 
 
 # --------------------------------------------------------------------------- throughput
