@@ -7,7 +7,9 @@ depends on whom the package was written for: ROS 1 `tf` (before Hydro) accepted 
 counts as tf2 code only with evidence from its own package:
 
 - its `package.xml` declares a tf2 package (`tf2`, `tf2_ros`, `tf2_geometry_msgs`, ...; not
-  `tf2_msgs`, the message types old `tf` publishes too), or
+  `tf2_msgs`, the message types old `tf` publishes too) and not `tf` itself: a package that
+  declares both is half-way, and its consumers may be `tf` ones, which strip the slash (jsk_pcl_ros
+  stamps contact sensors `/gazebo_world` for its `tf::MessageFilter`), or
 - one of the package's Python modules imports `tf2_ros`, `tf2_py`, `tf2_geometry_msgs`,
   `tf2_sensor_msgs` or `tf2_kdl` (read through the per-file votes of `conventions`, which the
   findings cache remembers, so a warm run stats these files and reads none).
@@ -30,6 +32,7 @@ PACKAGE_MANIFEST = "package.xml"
 _TF2_DEPENDENCY = re.compile(
     r"<(?:\w+_)?depend>\s*tf2(?:_ros|_py|_geometry_msgs|_sensor_msgs|_kdl|_eigen|_bullet|_tools)?\s*</", re.IGNORECASE
 )
+_OLD_TF_DEPENDENCY = re.compile(r"<(?:\w+_)?depend>\s*tf\s*</", re.IGNORECASE)
 _XML_COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
 _SKIPPED_FOLDERS = frozenset({"node_modules", "__pycache__", "build", "devel", "install", "log"})
 _MAX_FILES = 5000
@@ -40,8 +43,10 @@ _package_evidence: dict[str, bool] = {}
 
 
 def declares_tf2(manifest: str) -> bool:
-    """Whether a `package.xml` text depends on a tf2 package (commented-out dependencies do not count)."""
-    return _TF2_DEPENDENCY.search(_XML_COMMENT.sub("", manifest)) is not None
+    """Whether a `package.xml` text depends on a tf2 package and not on ROS 1 `tf` (commented-out
+    dependencies do not count)."""
+    text = _XML_COMMENT.sub("", manifest)
+    return _TF2_DEPENDENCY.search(text) is not None and _OLD_TF_DEPENDENCY.search(text) is None
 
 
 def package_folder(path: str) -> str | None:

@@ -43,6 +43,8 @@ def test_manifest_dependencies_that_count() -> None:
     assert ros_packages.declares_tf2("<package><depend> tf2_geometry_msgs </depend></package>")
     assert not ros_packages.declares_tf2("<package><depend>tf</depend><depend>tf2_msgs</depend></package>")
     assert not ros_packages.declares_tf2("<package><!-- <depend>tf2_ros</depend> --></package>")
+    # half-way: tf consumers strip the slash themselves
+    assert not ros_packages.declares_tf2("<package><depend>tf</depend><exec_depend>tf2_ros</exec_depend></package>")
 
 
 def test_tf2_imports_are_counted_per_module() -> None:
@@ -77,7 +79,8 @@ def test_a_global_rebound_in_the_function_is_not_the_module_constant() -> None:
 
 def test_a_rospy_module_counts_as_tf2_code_only_with_package_evidence(tmp_path: Path) -> None:
     _package(tmp_path, "old_tf_pkg", "  <depend>tf</depend>\n")
-    _package(tmp_path, "tf2_manifest_pkg", "  <depend>tf</depend>\n  <exec_depend>tf2_ros</exec_depend>\n")
+    _package(tmp_path, "half_way_pkg", "  <depend>tf</depend>\n  <exec_depend>tf2_ros</exec_depend>\n")
+    _package(tmp_path, "tf2_manifest_pkg", "  <depend>rospy</depend>\n  <exec_depend>tf2_ros</exec_depend>\n")
     sibling = _package(tmp_path, "tf2_sibling_pkg")
     (sibling / "nodes" / "lookup.py").write_text("import tf2_ros\nbuffer = tf2_ros.Buffer()\n")
     found = _geo207(tmp_path, "--no-cache")

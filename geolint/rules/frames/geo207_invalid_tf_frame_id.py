@@ -34,8 +34,8 @@ class InvalidTfFrameId(AstRule):
     The frame id may be a literal, a module constant, or built from them (`"/" + "map"`,
     `"%s/%s" % ("", "gps")`, an f-string of constants). tf2 code is a module that imports `tf2_ros`
     or `rclpy`, or a ROS 1 module (`rospy`, message imports) whose ROS package targets tf2: its
-    `package.xml` depends on a tf2 package, or one of its modules imports `tf2_ros`, `tf2_py`,
-    `tf2_geometry_msgs`, `tf2_sensor_msgs` or `tf2_kdl`.
+    `package.xml` depends on a tf2 package and not on `tf`, or one of its modules imports `tf2_ros`,
+    `tf2_py`, `tf2_geometry_msgs`, `tf2_sensor_msgs` or `tf2_kdl`.
 
     It also flags a transform whose parent and child are the same frame
     (`t.header.frame_id = "base_link"`, `t.child_frame_id = "base_link"`), and, in a module that
@@ -75,7 +75,8 @@ class InvalidTfFrameId(AstRule):
     (`buffer_core.cpp:214-216`; ROS 2 rolling `:208-209`), as does the C++ `tf2_ros::MessageFilter`
     for the messages it queues (`message_filter.h:306`, since 0.5.10) before the consumer's own
     lookup. A ROS 1 module that uses `tf` itself (a listener, a broadcaster; `tf.transformations`
-    alone does not count), or whose package shows no tf2 evidence, is left alone: Noetic's `tf`
+    alone does not count), or whose package shows no tf2 evidence (a `package.xml` naming both `tf`
+    and tf2 packages is half-way, and says nothing), is left alone: Noetic's `tf`
     strips a leading slash before asking tf2 (`tf/src/tf.cpp:195-243`, `tf/src/tf/listener.py:44-69`),
     and older `tf` accepted `tf_prefix` names. In ROS 1 code `child_frame_id` is not checked (read by
     `setTransform`, which strips it, or by odometry consumers). Frame ids read at run time
