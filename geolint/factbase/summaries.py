@@ -239,11 +239,13 @@ def _record_call(
 def quaternion_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:
     """The component order `call` reads `argument` in, when it is the call's whole quaternion (scipy
     `from_quat(q)`, pybullet's orientation arguments...) and the call runs whenever its function does."""
-    from geolint.factbase.rotations import pybullet_orientation_arguments, quaternion_argument, quaternion_order, SCALAR_LAST
+    from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, isaac_orientation_arguments, pybullet_orientation_arguments, quaternion_argument, quaternion_order
     from geolint.rules.rotation.angle_units import _unconditional
 
     if any(found is argument for found in pybullet_orientation_arguments(call)):
         order: str | None = SCALAR_LAST
+    elif any(found is argument for found in isaac_orientation_arguments(facts, call)):
+        order = SCALAR_FIRST
     else:
         order = quaternion_order(facts, call)
         if order is None or quaternion_argument(facts, call) is not argument:

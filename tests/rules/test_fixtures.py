@@ -62,7 +62,8 @@ def test_every_rule_has_a_fixture() -> None:
     codes = {rule.code for rule in all_rules() if rule.code[3] in "123"}
     assert codes <= {path.stem for path in ANNOTATED}
     for path in ANNOTATED:
-        assert any(code == path.stem for _, _, code in expectations(path)), f"{path.name} expects none of its own rule"
+        # `GEO301_isaac.py`: a second fixture of GEO301, for code whose imports would change the first's meaning
+        assert any(code == path.stem.split("_")[0] for _, _, code in expectations(path)), f"{path.name} expects none of its own rule"
 
 
 @pytest.mark.parametrize("path", ANNOTATED, ids=lambda path: path.name)

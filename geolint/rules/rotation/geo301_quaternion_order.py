@@ -12,7 +12,9 @@ from geolint.factbase.model import FactBase, last_name, number, positional_args,
 from geolint.factbase.rotations import (
     SCALAR_FIRST,
     SCALAR_LAST,
+    accepts_stacks,
     api_label,
+    isaac_orientation_arguments,
     pybullet_orientation_arguments,
     quaternion_argument,
     quaternion_order,
@@ -514,6 +516,8 @@ class QuaternionOrder(FactRule):
         self._check_helper(node, flow)
         for orientation in pybullet_orientation_arguments(node):
             self._check_value(node, orientation, SCALAR_LAST, flow)
+        for orientation in isaac_orientation_arguments(facts, node):
+            self._check_value(node, orientation, SCALAR_FIRST, flow)
         expected = quaternion_order(facts, node)
         if expected is None:
             return
@@ -585,13 +589,37 @@ class QuaternionOrder(FactRule):
             self._check_reorder(call, argument, reorder, expected, flow)
             return
         order = flow.order_of(argument)
-        if order is None or order.batch and not _takes_stacks(call) or order.order not in STANDARD_ORDERS or order.order == expected:
+        if order is None:
+            self._check_named_identity(call, argument, expected)
+            return
+        if order.batch and not _takes_stacks(self.facts, call) or order.order not in STANDARD_ORDERS or order.order == expected:
             return
         self.report(
             argument,
             f"`{self.code_of(argument)}` is {convention(order.order)} ({order.evidence}), but "
             f"{self._consumer(call)} expects {api_label(expected)}",
             evidence=(order.evidence,),
+        )
+
+    def _check_named_identity(self, call: ast.Call | _MessageField | _Helper, argument: ast.expr, expected: str) -> None:
+        """`IDENTITY_QUAT = [0, 0, 0, 1]` handed to a (w, x, y, z) API: the name says the value is the
+        identity, which it is only in the other order (read as w, x, y, z it is a half turn about z).
+        A literal alone says nothing: a deliberate half turn about z is written the same way."""
+        if not isinstance(argument, ast.Name):
+            return
+        stated = _IDENTITY_NAME.search(argument.id)
+        bound = self.facts.bindings(argument) or []
+        if stated is None or len(bound) != 1 or not isinstance(bound[0], ast.expr):
+            return
+        values = _numbers(self.facts, bound[0])
+        if not (values == [0, 0, 0, 1] and expected == SCALAR_FIRST or values == [1, 0, 0, 0] and expected == SCALAR_LAST):
+            return
+        written = SCALAR_LAST if values[3] == 1 else SCALAR_FIRST
+        self.report(
+            argument,
+            f"`{argument.id}` is named an identity and is {list(values)}, the identity in {convention(written)} order, "
+            f"but {self._consumer(call)} expects {api_label(expected)}: it reads a half turn about "
+            f"{'z' if written == SCALAR_LAST else 'x'}",
         )
 
     def _check_reorder(self, call: ast.Call | _MessageField | _Helper, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
@@ -860,12 +888,25 @@ def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
     return None
 
 
-def _takes_stacks(call: ast.Call | _MessageField | _Helper) -> bool:
-    """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion)."""
+def _takes_stacks(facts: FactBase, call: ast.Call | _MessageField | _Helper) -> bool:
+    """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion,
+    Isaac Gym and Isaac Sim)."""
     if isinstance(call, (_MessageField, _Helper)):
         return False  # a message field holds one; a helper may index its parameter as one
     name = last_name(call.func) or ""
-    return name in ("from_quat", "from_float_array", "as_quat_array") or name.startswith("quaternion_")
+    return name in ("from_quat", "from_float_array", "as_quat_array") or name.startswith("quaternion_") or accepts_stacks(facts, call)
+
+
+_IDENTITY_NAME = re.compile(r"(?i)(?:^|_)(?:identity|ident|no_rot(?:ation)?|zero_rot(?:ation)?|unit_quat(?:ernion)?)(?:$|_)")
+
+
+def _numbers(facts: FactBase, node: ast.expr) -> list[float] | None:
+    """`[0, 0, 0, 1]`, `(0., 0., 0., 1.)`, `np.array([...])`, `torch.tensor([...])`: four literal numbers."""
+    elements = spelled_components(facts, node)
+    if elements is None:
+        return None
+    values = [number(element) for element in elements]
+    return None if any(value is None or isinstance(value, bool) for value in values) else values  # type: ignore[return-value]
 
 
 def _last_index(node: ast.AST) -> ast.expr:
