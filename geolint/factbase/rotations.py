@@ -67,6 +67,12 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
         return SCALAR_LAST  # ROS 1 messages take positional fields in declaration order: x, y, z, w
     if name in _PYBULLET_CONSUMERS:  # on the module or on a BulletClient
         return SCALAR_LAST
+    if qualified in _EIGEN_QUATERNIONS:
+        if any(isinstance(arg, ast.Starred) for arg in call.args):
+            return SCALAR_FIRST  # `pin.Quaternion(*q)`: four coefficients
+        return SCALAR_FIRST if len(call.args) == 4 else SCALAR_LAST if len(call.args) == 1 and not call.keywords else None
+    if qualified.startswith(("mujoco.", "mujoco_py.")) and name in _MUJOCO_QUATERNION_POSITIONS:
+        return SCALAR_FIRST
     return _DATA_CONSUMERS.get(_library_key(qualified, name))
 
 
@@ -93,6 +99,11 @@ def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         return None  # quaternion_from_euler & co take angles or matrices
     if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
         return positional[0] if len(positional) == 1 and not call.keywords else None
+    if qualified in _EIGEN_QUATERNIONS:
+        return positional[0] if len(positional) == 1 and not call.keywords else None  # four scalars are spelled out
+    if qualified.startswith(("mujoco.", "mujoco_py.")) and name in _MUJOCO_QUATERNION_POSITIONS:
+        position = _MUJOCO_QUATERNION_POSITIONS[name]
+        return positional[position] if position < len(positional) else None
     return positional[0] if positional else None
 
 
@@ -112,7 +123,7 @@ def spread_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         return None
     qualified = facts.qualified_name(call.func) or ""
     if (
-        qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion")
+        qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", *_EIGEN_QUATERNIONS)
         or (qualified.startswith("geometry_msgs.") and qualified.endswith(".Quaternion"))
         or is_numpy_quaternion_constructor(facts, qualified)
     ):
@@ -395,6 +406,15 @@ _SIMULATOR_ALIASES = {"omni.isaac.core.utils.torch": "omni.isaac.core.utils.torc
 _SIMULATOR_NAMES = frozenset(
     {name for consumers, producers in _SIMULATOR_TABLES.values() for name in (*consumers, *producers)} | {"convert_quat"}
 )
+# Eigen's quaternion as eigenpy binds it (pinocchio's `pin.Quaternion`): "Initialize from coefficients. The
+# order of coefficients is *w*, *x*, *y*, *z*" for four scalars, but "vec4: a 4D vector representing quaternion
+# coefficients in the order xyzw" for one vector (eigenpy's Quaternion.__init__ docstrings, as pinocchio's
+# stubs list them).
+_EIGEN_QUATERNIONS = ("pinocchio.Quaternion", "eigenpy.Quaternion")
+# MuJoCo's quaternions are (w, x, y, z) (its own tests expect the identity `{1, 0, 0, 0}` from mju_mat2Rot);
+# the utility functions write into their first argument: `mju_quat2Mat(res, quat)`, `mju_quat2Vel(res, quat,
+# dt)`, `mju_quatIntegrate(quat, vel, scale)`. Name -> position of the quaternion read.
+_MUJOCO_QUATERNION_POSITIONS = {"mju_quat2Mat": 1, "mju_quat2Vel": 1, "mju_quatIntegrate": 0}
 # Isaac Sim core (`omni.isaac.core` up to 4.2, `isaacsim.core.api` / `isaacsim.core.prims` from 4.5): prims,
 # objects and views take `orientation(s)` "quaternion is scalar-first (w, x, y, z)" (docstrings of
 # XFormPrim, XFormPrimView and DynamicCuboid in Isaac Sim 4.1; the isaacsim.core.api 4.8.0 API page).

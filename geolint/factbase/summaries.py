@@ -125,6 +125,8 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
     for node in walk_within(function):
         if isinstance(node, ast.Call) and node.args:
             _record_call(facts, node, positional_args(node), params, plain, summary)
+        if isinstance(node, ast.Call) and node.keywords:
+            _record_keyword_quaternions(facts, node, params, plain, summary)
         if isinstance(node, (ast.BinOp, ast.Call)):
             _record_homogeneous_product(facts, node, plain, summary)
         if isinstance(node, ast.Call):
@@ -234,6 +236,17 @@ def _record_call(
         order = quaternion_read_by(facts, call, arguments[index])
         if order is not None:
             _add_quaternion_read(summary, own, order, f"`{facts.code_of(call.func)}`")
+
+
+def _record_keyword_quaternions(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain: set[str], summary: FunctionSummary) -> None:
+    """`XFormPrim(path, orientation=q)`, `loadURDF(path, baseOrientation=q)`: a parameter passed by keyword
+    as an API's quaternion."""
+    for given in call.keywords:
+        value = given.value
+        if isinstance(value, ast.Name) and value.id in plain:
+            order = quaternion_read_by(facts, call, value)
+            if order is not None:
+                _add_quaternion_read(summary, params.index(value.id), order, f"`{facts.code_of(call.func)}`")
 
 
 def quaternion_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:

@@ -236,3 +236,32 @@ def test_a_quaternion_order_carried_through_a_tuple_return_of_another_module(tmp
     findings = check(["sim"], cwd=tmp_path)
     assert [(f["path"], f["line"]) for f in findings] == [("sim/place.py", 6), ("sim/place.py", 8), ("sim/place.py", 11)], findings
     assert all("`box_pose`, which returns it at position 1" in f["message"] for f in findings)
+
+
+def test_simulator_quaternions_across_modules(tmp_path: Path) -> None:
+    """A task ported from Isaac Gym to Isaac Sim: one module computes start rotations with Isaac Gym's
+    (x, y, z, w) `quat_from_euler_xyz` (star-imported, as Isaac Gym tasks do) and a helper that hands
+    its parameter to an Isaac Sim prim's (w, x, y, z) `orientation=`; another module passes the rotation
+    to the prim directly and through the helper. Flagged at both calls; the rotation reordered with
+    `[:, [3, 0, 1, 2]]`, and Isaac Sim's own (w, x, y, z) `euler_angles_to_quat`, stay silent."""
+    (tmp_path / "setup.py").write_text("")
+    (tmp_path / "tasks").mkdir()
+    (tmp_path / "tasks" / "__init__.py").write_text("")
+    (tmp_path / "tasks" / "rotations.py").write_text(
+        "import torch\nfrom isaacgym.torch_utils import *\nfrom omni.isaac.core.prims import XFormPrim\n"
+        "def start_rotation(yaw):\n    zeros = torch.zeros_like(yaw)\n    return quat_from_euler_xyz(zeros, zeros, yaw)\n"
+        "def place(path, orientation):\n    return XFormPrim(path, orientation=orientation)\n"
+    )
+    (tmp_path / "tasks" / "scene.py").write_text(
+        "from omni.isaac.core.objects import DynamicCuboid\nfrom omni.isaac.core.utils.rotations import euler_angles_to_quat\n"
+        "from tasks.rotations import place, start_rotation\n"
+        "def spawn(path, yaw):\n    rotation = start_rotation(yaw)\n"
+        "    cube = DynamicCuboid(prim_path=path, orientation=rotation)\n"
+        "    marker = place(path + '/marker', rotation)\n"
+        "    ok = DynamicCuboid(prim_path=path, orientation=rotation[:, [3, 0, 1, 2]])\n"
+        "    return cube, marker, ok, place(path, euler_angles_to_quat([0.0, 0.0, 1.0]))\n"
+    )
+    findings = check(["tasks"], cwd=tmp_path)
+    assert [(f["path"], f["line"]) for f in findings] == [("tasks/scene.py", 6), ("tasks/scene.py", 7)], findings
+    assert "`start_rotation`, which returns it" in findings[0]["message"] and "`DynamicCuboid` expects scalar-first" in findings[0]["message"]
+    assert "`place` (which passes its parameter `orientation` to `XFormPrim`)" in findings[1]["message"]

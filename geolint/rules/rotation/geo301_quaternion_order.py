@@ -95,18 +95,25 @@ class QuaternionOrder(FactRule):
     (x, y, z, w); also trimesh's
     `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array` and `np.quaternion` (a
     4-vector spread with `*` into a constructor that takes components counts too), Open3D
-    `get_rotation_matrix_from_quaternion` (w, x, y, z), roma `unitquat_*` (x, y, z, w) and pybullet
+    `get_rotation_matrix_from_quaternion` (w, x, y, z), roma `unitquat_*` (x, y, z, w), pybullet
     (`get*FromQuaternion`, and the orientation arguments of `resetBasePositionAndOrientation`,
-    `loadURDF`, `multiplyTransforms`, `invertTransform`, `calculateInverseKinematics`). Through
-    data it also flags:
+    `loadURDF`, `multiplyTransforms`, `invertTransform`, `calculateInverseKinematics`), Isaac Gym's
+    `isaacgym.torch_utils` (`quat_mul`, `quat_rotate`, `quat_apply`, `get_euler_xyz`, `tf_*`: x, y, z, w,
+    also through `from isaacgym.torch_utils import *`), Isaac Sim's core (the `orientation(s)=` of prims,
+    objects and views, `set_world_pose(s)` / `set_local_pose(s)` / `set_default_state`,
+    `omni.isaac.core.utils.rotations` and `utils.torch.rotations`: w, x, y, z), Isaac Lab 1.x
+    `omni.isaac.lab.utils.math` (w, x, y, z) and `convert_quat(q, to=...)`, pinocchio's `pin.Quaternion`
+    (four coefficients w, x, y, z, but one 4-vector x, y, z, w) and MuJoCo's `mju_quat2Mat`,
+    `mju_quat2Vel`, `mju_quatIntegrate` (w, x, y, z). Through data it also flags:
 
     - a reorder that goes the wrong way for the API, whatever the data: `from_quat(X[..., [3, 0, 1, 2]])`
       or `from_quat(np.roll(q, 1))` (scalar-last to scalar-first, then read as scalar-last), and
       `Quaternion(q[..., [1, 2, 3, 0]])` for a scalar-first API; directly or through a variable;
     - a value whose order is known, passed to an API of the other order: from a producer
       (`mat2quat`, `euler2quat`, numpy-quaternion `as_float_array`, pyquaternion `.elements`,
-      mujoco `xquat`, pytorch3d `matrix_to_quaternion`: scalar-first; scipy `as_quat()`, pybullet
-      `getQuaternionFromEuler`, ROS `tf.transformations`: scalar-last), a spelled-out
+      mujoco `xquat`, pytorch3d `matrix_to_quaternion`, Isaac Sim `euler_angles_to_quat`, Isaac Lab 1.x
+      `quat_from_euler_xyz`: scalar-first; scipy `as_quat()`, pybullet `getQuaternionFromEuler`, ROS
+      `tf.transformations`, Isaac Gym `quat_from_euler_xyz`: scalar-last), a spelled-out
       `np.array([o.w, o.x, o.y, o.z])`, or a name that states it (`quat_wxyz`), followed through
       project helpers' returns (here or in another module; a tuple `return pos, quat` unpacked or
       indexed by the caller, when every `return` agrees on that position), local variables, `self` attributes, and record fields filled by keyword in the same module
@@ -136,6 +143,8 @@ class QuaternionOrder(FactRule):
     - in a function with an order flag (`w_last`, `scalar_first`), a component slice at fixed
       positions (`mul[:, 1:]`, `q[..., 0]`) of a quaternion operation's result that was handed the
       flag (`mul = quat_mul(a, b, w_last)`), outside any branch: right for one value of the flag only;
+    - a name that calls its value an identity (`IDENTITY_QUAT`, `no_rotation`) bound to `[0, 0, 0, 1]` and
+      handed to a (w, x, y, z) API (or `[1, 0, 0, 0]` to an (x, y, z, w) one), which reads a half turn;
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -173,7 +182,13 @@ class QuaternionOrder(FactRule):
     (`self.on_odometry(recorded)`), or registered through a lambda or `functools.partial`, gives its
     parameter no known class. When a name (`quat_xyzw`) and its value
     (`mat2quat(R)`) disagree, the binding is flagged once and the later uses of the name are not
-    judged.
+    judged. A literal `[0, 0, 0, 1]` handed to a (w, x, y, z) API is not flagged unless its name says
+    identity: a deliberate half turn about z is written the same way, and Isaac Sim code does both.
+    Isaac Lab's newer `isaaclab.utils.math` is not read (its releases changed the order under the same
+    names), nor are Isaac Sim 4.5+'s `isaacsim.core.utils.rotations` functions; `quat_mul` & co. imported
+    by star from two of these modules, or redefined by the module, are not read either. A quaternion
+    that reaches a prim through a project class's constructor (`Cabinet(path, orientation=q)` whose
+    `__init__` stores it and passes it on) is not followed.
     """
 
     code = "GEO301"
