@@ -314,7 +314,7 @@ def _convert_quat_orders(call: ast.Call) -> tuple[str | None, str | None]:
 def isaac_orientation_arguments(facts: FactBase, call: ast.Call) -> list[ast.expr]:
     """The (w, x, y, z) orientation arguments of an Isaac Sim core call: `orientation=` / `orientations=`
     of a prim, object or view constructor (`XFormPrim(path, orientation=q)`, `DynamicCuboid(...)`,
-    `RigidPrimView(...)`), and the orientation of `set_world_pose(position, orientation)`,
+    `RigidPrimView(...)`) or of `create_prim`, and the orientation of `set_world_pose(position, orientation)`,
     `set_local_pose`, `set_default_state`, `set_world_poses`, `set_local_poses` in a module that imports
     Isaac Sim's core (OmniGibson's prims, which take x, y, z, w, are left alone)."""
     func = call.func
@@ -325,7 +325,7 @@ def isaac_orientation_arguments(facts: FactBase, call: ast.Call) -> list[ast.exp
         return found + [given.value for given in call.keywords if given.arg in ("orientation", "orientations")]
     qualified = facts.qualified_name(func) or ""
     name = qualified.rpartition(".")[2]
-    if not qualified.startswith(_ISAAC_CORE) or not name[:1].isupper():
+    if not qualified.startswith(_ISAAC_CORE) or not (name[:1].isupper() or qualified == _ISAAC_CREATE_PRIM):
         return []
     return [given.value for given in call.keywords if given.arg in ("orientation", "orientations")]
 
@@ -419,6 +419,8 @@ _MUJOCO_QUATERNION_POSITIONS = {"mju_quat2Mat": 1, "mju_quat2Vel": 1, "mju_quatI
 # objects and views take `orientation(s)` "quaternion is scalar-first (w, x, y, z)" (docstrings of
 # XFormPrim, XFormPrimView and DynamicCuboid in Isaac Sim 4.1; the isaacsim.core.api 4.8.0 API page).
 _ISAAC_CORE = ("omni.isaac.core.", "isaacsim.core.")
+# `create_prim(path, prim_type, position=..., orientation=...)` hands `orientation` to XFormPrim (its source, 4.1)
+_ISAAC_CREATE_PRIM = "omni.isaac.core.utils.prims.create_prim"
 _ISAAC_POSE_SETTERS = frozenset({"set_world_pose", "set_local_pose", "set_default_state", "set_world_poses", "set_local_poses"})
 
 

@@ -143,8 +143,9 @@ class QuaternionOrder(FactRule):
     - in a function with an order flag (`w_last`, `scalar_first`), a component slice at fixed
       positions (`mul[:, 1:]`, `q[..., 0]`) of a quaternion operation's result that was handed the
       flag (`mul = quat_mul(a, b, w_last)`), outside any branch: right for one value of the flag only;
-    - a name that calls its value an identity (`IDENTITY_QUAT`, `no_rotation`) bound to `[0, 0, 0, 1]` and
-      handed to a (w, x, y, z) API (or `[1, 0, 0, 0]` to an (x, y, z, w) one), which reads a half turn;
+    - a literal `[0, 0, 0, 1]` that its name (`IDENTITY_QUAT`, `no_rotation`) or a comment on its line
+      (`# identity`) calls the identity, handed to a (w, x, y, z) API (Isaac Sim's `create_prim` and
+      prims), or `[1, 0, 0, 0]` to an (x, y, z, w) one: the API reads a half turn;
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -182,8 +183,8 @@ class QuaternionOrder(FactRule):
     (`self.on_odometry(recorded)`), or registered through a lambda or `functools.partial`, gives its
     parameter no known class. When a name (`quat_xyzw`) and its value
     (`mat2quat(R)`) disagree, the binding is flagged once and the later uses of the name are not
-    judged. A literal `[0, 0, 0, 1]` handed to a (w, x, y, z) API is not flagged unless its name says
-    identity: a deliberate half turn about z is written the same way, and Isaac Sim code does both.
+    judged. A literal `[0, 0, 0, 1]` handed to a (w, x, y, z) API is not flagged unless its name or a
+    comment says identity: a deliberate half turn about z is written the same way.
     Isaac Lab's newer `isaaclab.utils.math` is not read (its releases changed the order under the same
     names), nor are Isaac Sim 4.5+'s `isaacsim.core.utils.rotations` functions; `quat_mul` & co. imported
     by star from two of these modules, or redefined by the module, are not read either. A quaternion
@@ -617,22 +618,26 @@ class QuaternionOrder(FactRule):
         )
 
     def _check_named_identity(self, call: ast.Call | _MessageField | _Helper, argument: ast.expr, expected: str) -> None:
-        """`IDENTITY_QUAT = [0, 0, 0, 1]` handed to a (w, x, y, z) API: the name says the value is the
-        identity, which it is only in the other order (read as w, x, y, z it is a half turn about z).
-        A literal alone says nothing: a deliberate half turn about z is written the same way."""
-        if not isinstance(argument, ast.Name):
+        """`IDENTITY_QUAT = [0, 0, 0, 1]` or `orientation=[0, 0, 0, 1],  # identity` handed to a (w, x, y, z)
+        API: the name or the comment says the value is the identity, which it is only in the other order
+        (read as w, x, y, z it is a half turn about z). A literal alone says nothing: a deliberate half
+        turn about z is written the same way."""
+        if isinstance(argument, ast.Name):
+            bound = self.facts.bindings(argument) or []
+            if _IDENTITY_NAME.search(argument.id) is None or len(bound) != 1 or not isinstance(bound[0], ast.expr):
+                return
+            literal, shown = bound[0], f"`{argument.id}` is named an identity and is"
+        elif _identity_comment(self.facts.index.source, argument):
+            literal, shown = argument, f"`{self.code_of(argument)}` is commented as the identity and is"
+        else:
             return
-        stated = _IDENTITY_NAME.search(argument.id)
-        bound = self.facts.bindings(argument) or []
-        if stated is None or len(bound) != 1 or not isinstance(bound[0], ast.expr):
-            return
-        values = _numbers(self.facts, bound[0])
+        values = _numbers(self.facts, literal)
         if not (values == [0, 0, 0, 1] and expected == SCALAR_FIRST or values == [1, 0, 0, 0] and expected == SCALAR_LAST):
             return
         written = SCALAR_LAST if values[3] == 1 else SCALAR_FIRST
         self.report(
             argument,
-            f"`{argument.id}` is named an identity and is {list(values)}, the identity in {convention(written)} order, "
+            f"{shown} {list(values)}, the identity in {convention(written)} order, "
             f"but {self._consumer(call)} expects {api_label(expected)}: it reads a half turn about "
             f"{'z' if written == SCALAR_LAST else 'x'}",
         )
@@ -913,6 +918,20 @@ def _takes_stacks(facts: FactBase, call: ast.Call | _MessageField | _Helper) -> 
 
 
 _IDENTITY_NAME = re.compile(r"(?i)(?:^|_)(?:identity|ident|no_rot(?:ation)?|zero_rot(?:ation)?|unit_quat(?:ernion)?)(?:$|_)")
+
+
+def _identity_comment(source: str, node: ast.expr) -> bool:
+    """Whether a comment on the line where `node` ends calls it the identity (`# identity quaternion`)."""
+    lines = source.splitlines()
+    end = getattr(node, "end_lineno", None)
+    if end is None or end > len(lines):
+        return False
+    line = lines[end - 1]
+    comment = line.find("#", getattr(node, "end_col_offset", 0) or 0)
+    return comment >= 0 and _IDENTITY_COMMENT.search(line[comment:]) is not None
+
+
+_IDENTITY_COMMENT = re.compile(r"(?i)\b(?:identity|no rotation|unrotated)\b")
 
 
 def _numbers(facts: FactBase, node: ast.expr) -> list[float] | None:
