@@ -73,6 +73,8 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
         return SCALAR_FIRST if len(call.args) == 4 else SCALAR_LAST if len(call.args) == 1 and not call.keywords else None
     if qualified.startswith(("mujoco.", "mujoco_py.")) and name in _MUJOCO_QUATERNION_POSITIONS:
         return SCALAR_FIRST
+    if qualified == _GTSAM_ROT3_QUATERNION:
+        return SCALAR_FIRST
     return _DATA_CONSUMERS.get(_library_key(qualified, name))
 
 
@@ -93,7 +95,7 @@ def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         if given is not None and not positional:
             return given.value
         return positional[0] if len(positional) == 1 and not call.keywords else None
-    if qualified.startswith("geometry_msgs.") or is_numpy_quaternion_constructor(facts, qualified):
+    if qualified.startswith("geometry_msgs.") or qualified == _GTSAM_ROT3_QUATERNION or is_numpy_quaternion_constructor(facts, qualified):
         return None  # takes its components one by one
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name not in _TF_QUATERNION_INPUTS:
         return None  # quaternion_from_euler & co take angles or matrices
@@ -123,7 +125,7 @@ def spread_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         return None
     qualified = facts.qualified_name(call.func) or ""
     if (
-        qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", *_EIGEN_QUATERNIONS)
+        qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", _GTSAM_ROT3_QUATERNION, *_EIGEN_QUATERNIONS)
         or (qualified.startswith("geometry_msgs.") and qualified.endswith(".Quaternion"))
         or is_numpy_quaternion_constructor(facts, qualified)
     ):
@@ -411,6 +413,9 @@ _SIMULATOR_NAMES = frozenset(
 # coefficients in the order xyzw" for one vector (eigenpy's Quaternion.__init__ docstrings, as pinocchio's
 # stubs list them).
 _EIGEN_QUATERNIONS = ("pinocchio.Quaternion", "eigenpy.Quaternion")
+# GTSAM: `Rot3.Quaternion(w, x, y, z)` "Create from Quaternion coefficients" (gtsam/geometry/Rot3.h; C++
+# `Rot3::quaternion(double w, double x, double y, double z)` in older releases, `Quaternion` in the wrapper)
+_GTSAM_ROT3_QUATERNION = "gtsam.Rot3.Quaternion"
 # MuJoCo's quaternions are (w, x, y, z) (its own tests expect the identity `{1, 0, 0, 0}` from mju_mat2Rot);
 # the utility functions write into their first argument: `mju_quat2Mat(res, quat)`, `mju_quat2Vel(res, quat,
 # dt)`, `mju_quatIntegrate(quat, vel, scale)`. Name -> position of the quaternion read.

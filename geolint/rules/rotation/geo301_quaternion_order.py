@@ -103,7 +103,8 @@ class QuaternionOrder(FactRule):
     objects and views, `set_world_pose(s)` / `set_local_pose(s)` / `set_default_state`,
     `omni.isaac.core.utils.rotations` and `utils.torch.rotations`: w, x, y, z), Isaac Lab 1.x
     `omni.isaac.lab.utils.math` (w, x, y, z) and `convert_quat(q, to=...)`, pinocchio's `pin.Quaternion`
-    (four coefficients w, x, y, z, but one 4-vector x, y, z, w) and MuJoCo's `mju_quat2Mat`,
+    (four coefficients w, x, y, z, but one 4-vector x, y, z, w), GTSAM's `Rot3.Quaternion(w, x, y, z)`
+    and MuJoCo's `mju_quat2Mat`,
     `mju_quat2Vel`, `mju_quatIntegrate` (w, x, y, z). Through data it also flags:
 
     - a reorder that goes the wrong way for the API, whatever the data: `from_quat(X[..., [3, 0, 1, 2]])`
