@@ -390,6 +390,10 @@ class FactBase:
                     return MatMul(node, func.value, positional[0])
             if len(positional) == 2 and len(node.args) == 2 and self.is_array_call(func, "dot", "matmul", "bmm"):
                 return MatMul(node, positional[0], positional[1])
+            if len(positional) == 3 and len(node.args) == 3 and self.is_array_call(func, "einsum"):
+                operands = einsum_operands(positional[0], positional[1], positional[2])
+                if operands is not None:
+                    return MatMul(node, *operands)
         return None
 
     # -- kind --------------------------------------------------------------------------------
@@ -1075,6 +1079,8 @@ class FactBase:
 
     def _homogeneous_call(self, node: ast.Call) -> Homogeneous | None:
         positional = positional_args(node)
+        if self.called_name(node.func) == "pad":
+            return self._padded_with_w(node, positional)
         if self.is_array_call(node.func, "append") and len(positional) == 2 and len(node.args) == 2:
             return self._with_w(node, positional[0], positional[1], explicit=False)
         if self.is_array_call(node.func, *vocab.STACKING_FUNCTIONS) and positional:
@@ -1141,6 +1147,33 @@ class FactBase:
             return None
         fixed = replace_span(self.index, construction, fixed_w)  # None when w is set outside the span
         return Homogeneous(inner=inner, w=w, construction=construction, fixed=fixed, explicit=explicit)
+
+    def _padded_with_w(self, node: ast.Call, positional: list[ast.expr]) -> Homogeneous | None:
+        """`F.pad(x, (0, 1), value=1.0)` (torch) or `np.pad(x, ((0, 0), (0, 1)), constant_values=1)`: x with
+        one constant appended along its last axis, 0 unless a value is given (both libraries' default)."""
+        if len(positional) < 2 or len(positional) != len(node.args):
+            return None
+        qualified = self.qualified_name(node.func)
+        widths = [number(width) for width in _flat_literal(positional[1])]
+        if qualified == "torch.nn.functional.pad":  # (left, right) of the last axis first
+            appends_one = len(widths) >= 2 and widths[:2] == [0, 1] and not any(widths[2:])
+            mode, value = (positional[2:3] or [None])[0], (positional[3:4] or [None])[0]
+            value_word = "value"
+        elif qualified is not None and qualified.rpartition(".")[0] in vocab.ARRAY_MODULES:
+            # numpy's per-axis pairs, the last axis last; a bare `(0, 1)` pads every axis
+            pairs = positional[1].elts if isinstance(positional[1], (ast.Tuple, ast.List)) else []
+            appends_one = len(pairs) >= 2 and all(isinstance(pair, (ast.Tuple, ast.List)) for pair in pairs) and widths == [0] * (2 * len(pairs) - 1) + [1]
+            mode, value, value_word = (positional[2:3] or [None])[0], None, "constant_values"
+        else:
+            return None
+        mode_keyword, value_keyword = keyword(node, "mode"), keyword(node, value_word)
+        mode = mode_keyword.value if mode_keyword is not None else mode
+        value = value_keyword.value if value_keyword is not None else value
+        if not appends_one or (mode is not None and string(mode) != "constant"):
+            return None
+        if value is None:
+            return Homogeneous(inner=positional[0], w=0, construction=node, fixed=None, explicit=False)
+        return self._with_w(node, positional[0], value, explicit=False)
 
     def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[ast.AST, str]] | None]:
         """The constant w a construction appends, and the edits (node, new text) that give the other w."""
@@ -1244,6 +1277,38 @@ def _is_scalar_annotation(annotation: ast.expr) -> bool:
     words = set(re.split(r"[\s|\[\],]+", text)) - {""}
     scalar = {"int", "float", "str", "bool", "SupportsIndex", "None", "Optional", "typing.Optional", "Literal"}
     return bool(words) and words <= scalar | {word for word in words if word.startswith(("'", '"'))}
+
+
+def _flat_literal(node: ast.expr) -> list[ast.expr]:
+    """The elements of a literal tuple/list, nested ones flattened in order (`((0, 0), (0, 1))`)."""
+    if not isinstance(node, (ast.Tuple, ast.List)):
+        return [node]
+    return [element for item in node.elts for element in _flat_literal(item)]
+
+
+def einsum_operands(subscripts: ast.expr, first: ast.expr, second: ast.expr) -> tuple[ast.expr, ast.expr] | None:
+    """(matrix, operand) for an `einsum` that is the matrix acting on the operand, as `matrix @ operand`
+    does: the matrix's last index is summed against one index of the operand, which the output
+    replaces by the matrix's row index (`"ij,jk->ik"`, `"bij,bj->bi"`, `"ik,...k->...i"`, and
+    `"bij,bkj->bki"` on rows). Any other contraction (a transpose acting, a trace) is None."""
+    text = string(subscripts)
+    if text is None or text.count("->") != 1:
+        return None
+    inputs, output = text.replace(" ", "").split("->")
+    parts = inputs.split(",")
+    if len(parts) != 2:
+        return None
+    for matrix, operand, (matrix_node, operand_node) in ((parts[0], parts[1], (first, second)), (parts[1], parts[0], (second, first))):
+        letters = matrix.replace("...", "")
+        if len(letters) < 2 or len(set(letters)) != len(letters):
+            continue
+        row, summed = letters[-2], letters[-1]
+        batch = matrix[: -2]
+        if operand.count(summed) != 1 or row in operand or operand.replace(summed, row) != output:
+            continue
+        if all(letter in output for letter in batch.replace("...", "")):
+            return matrix_node, operand_node
+    return None
 
 
 def declared_call_frames(call: ast.Call) -> tuple[NameFrames, str] | None:

@@ -23,7 +23,7 @@ import ast
 from dataclasses import dataclass
 
 from geolint.factbase.index import ModuleIndex
-from geolint.factbase.model import dotted_name, is_full_slice, is_slice_upto, last_name, subscript_parts
+from geolint.factbase.model import dotted_name, einsum_operands, is_full_slice, is_slice_upto, last_name, subscript_parts
 from geolint.factbase.reaching import Unpacked, assigned_values, binding_of, resolve
 
 # Methods and functions that return the same values (copies, dtype/device moves, broadcasting views).
@@ -405,18 +405,24 @@ class Application:
 
 
 _MATMUL_FUNCTIONS = frozenset({"dot", "matmul", "bmm", "mm"})
+_ARRAY_LIBRARIES = frozenset({"np", "numpy", "torch", "jnp", "tf", "cp"})
 
 
 def matmul_operands(node: ast.AST) -> tuple[ast.expr, ast.expr] | None:
     """(left, right) of `a @ b`, `np.dot(a, b)`, `a.dot(b)`, `torch.matmul(a, b)`, `torch.bmm(a, b)`."""
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
         return node.left, node.right
-    if not isinstance(node, ast.Call) or node.keywords or call_name(node) not in _MATMUL_FUNCTIONS:
+    if not isinstance(node, ast.Call) or node.keywords:
+        return None
+    name = call_name(node)
+    if name == "einsum" and len(node.args) == 3 and dotted_name(node.func.value if isinstance(node.func, ast.Attribute) else node.func) in _ARRAY_LIBRARIES:
+        return einsum_operands(*node.args)
+    if name not in _MATMUL_FUNCTIONS:
         return None
     func = node.func
     if not isinstance(func, ast.Attribute):
         return None
-    if dotted_name(func.value) in ("np", "numpy", "torch", "jnp", "tf", "cp"):
+    if dotted_name(func.value) in _ARRAY_LIBRARIES:
         return (node.args[0], node.args[1]) if len(node.args) == 2 and not _has_starred(node.args) else None
     if len(node.args) == 1 and not _has_starred(node.args):
         return func.value, node.args[0]

@@ -120,7 +120,7 @@ _FRAME_WORDS = "|".join(sorted(names.KNOWN_FRAMES | {"c", "w", "cam"}))
 # shape built from the known frame words (`T_a_b`, `a_T_b`, `X_WB`, `cam2world`, `world_from_cam`,
 # `p_world`), a homogeneous name (`p_h`), trig of something, or one of the words above in a name.
 GATE = re.compile(
-    r"[\w)\]]\s*@=?\s*[\w(\[-]|\.dot\(|matmul|\.m?T\b|\b[TRXH]_[A-Za-z0-9]|_[TRXH]_|"
+    r"[\w)\]]\s*@=?\s*[\w(\[-]|\.dot\(|matmul|einsum\(|\.m?T\b|\b[TRXH]_[A-Za-z0-9]|_[TRXH]_|"
     rf"\b(?:{_FRAME_WORDS})[0-9]*(?:2|_to_|_from_|_in_)(?:{_FRAME_WORDS})|\b[pv]_(?:{_FRAME_WORDS})\b|"
     r"_h\b|_hom|homog|\b(?:sin|cos|tan)\(|euler2|axangle2|_from_angle\(|QuaternionFromEuler\(|"
     r"(?:\b|_)(?:" + "|".join(re.escape(word) for word in _GATE_WORDS) + r")(?:\b|_|s\b)",
@@ -134,7 +134,7 @@ GATE = re.compile(
 # Alternatives that start with different literals are separate regexes: the engine scans for one
 # literal fast, and for the first characters of several far slower (3x on gate-failing files).
 _AFTER_AT = re.compile(r"@=?\s*[\w(\[-]")
-_PRODUCT_TEXTS = (".dot(", "matmul", "_hom", "homog")  # plain text: `in` finds it faster than a regex
+_PRODUCT_TEXTS = (".dot(", "matmul", "einsum(", "_hom", "homog")  # plain text: `in` finds it faster than a regex
 _TRANSPOSE_OR_PRODUCT = tuple(re.compile(part) for part in (r"\.m?T\b", "_[TRXH]_", r"_h\b"))
 _NAMED_OPERATOR_CANDIDATE = re.compile(r"[TRXH]_[A-Za-z0-9]")
 _FRAMES = frozenset(_FRAME_WORDS.split("|"))

@@ -202,4 +202,4 @@ def _inside_quoted_word(source: str, start: int) -> bool:
 
 
 POSE_PART_TEXT = _PosePartText()
-MATMUL_TEXT = AnyOf(_MatrixProductText(), r"\.dot\(|matmul\(|bmm\(")
+MATMUL_TEXT = AnyOf(_MatrixProductText(), r"\.dot\(|matmul\(|bmm\(|einsum\(")

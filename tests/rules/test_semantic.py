@@ -206,13 +206,55 @@ def test_a_name_rebound_to_its_own_inverse_has_no_frames() -> None:
         ("np.array([x[0], x[1], x[2], 1])", 1),
         ("torch.cat([x, torch.zeros(*shape).type_as(x)], dim=-1)", 0),
         ("torch.cat([x, torch.ones_like(x[..., :1])], dim=-1)", 1),
+        ("F.pad(x, (0, 1), value=1.0)", 1),
+        ("F.pad(x, [0, 1, 0, 0], 'constant', 1)", 1),
+        ("torch.nn.functional.pad(x, (0, 1))", 0),  # the default constant is 0
+        ("np.pad(x, ((0, 0), (0, 1)), constant_values=1)", 1),
+        ("np.pad(x, [(0, 0), (0, 0), (0, 1)])", 0),
     ],
 )
 def test_homogeneous_forms(construction: str, w: int) -> None:
-    model, module = model_of(f"import numpy as np\nimport torch\nh = {construction}\n")
+    model, module = model_of(f"import numpy as np\nimport torch\nimport torch.nn.functional as F\nh = {construction}\n")
     found = model.homogeneous(module.body[-1].value)  # type: ignore[attr-defined]
     assert found is not None and found.w == w
     assert ast.unparse(found.inner).startswith("x")
+
+
+@pytest.mark.parametrize(
+    "construction",
+    [
+        "np.pad(x, (0, 1), constant_values=1)",  # a bare pair pads every axis
+        "F.pad(x, (1, 0), value=1.0)",  # prepended
+        "F.pad(x, (0, 1, 0, 1), value=1.0)",  # another axis padded too
+        "F.pad(x, (0, 1), mode='replicate')",
+        "F.pad(x, [0, 0, 0, 1], value=1)",  # a row appended: the bottom of [R t; 0 1]
+        "other.pad(x, (0, 1), value=1)",
+    ],
+)
+def test_pads_that_append_no_w(construction: str) -> None:
+    model, module = model_of(f"import numpy as np\nimport torch.nn.functional as F\nh = {construction}\n")
+    assert model.homogeneous(module.body[-1].value) is None  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize(
+    ("product", "acting"),
+    [
+        ('np.einsum("ij,jk->ik", A, B)', ("A", "B")),
+        ('np.einsum("ij,nj->ni", R, points)', ("R", "points")),  # R acting on rows
+        ('np.einsum("nj,ij->ni", points, R)', ("R", "points")),
+        ('np.einsum("nj,ji->ni", points, R)', ("points", "R")),  # `points @ R`: R's transpose acts
+        ('torch.einsum("bij,bkj->bki", R, x)', ("R", "x")),
+        ('torch.einsum("...ij, ...j -> ...i", R, x)', ("R", "x")),
+        ('np.einsum("bi,bi->b", a, b)', None),  # a dot product
+        ('np.einsum("bij,bjk->bki", A, B)', None),  # the product's transpose
+        ('np.einsum("ii->", A)', None),
+        ("np.einsum(spec, R, x)", None),
+    ],
+)
+def test_einsum_as_a_matrix_product(product: str, acting: tuple[str, str] | None) -> None:
+    model, module = model_of(f"import numpy as np\nimport torch\n{product}\n")
+    found = model.matmul(last_value(module))
+    assert (None if found is None else (ast.unparse(found.left), ast.unparse(found.right))) == acting
 
 
 def test_concatenation_along_the_first_axis_is_not_homogeneous() -> None:

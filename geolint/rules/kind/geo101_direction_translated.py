@@ -17,9 +17,10 @@ class DirectionTranslated(FactRule):
 
     ## What it does
     Flags a direction-like value that is given a translation: a homogeneous 4-vector with
-    w = 1 built from it (`np.append(normal, 1)`, `np.hstack([normals, np.ones((n, 1))])`, a
-    `np.ones(4)` buffer filled with it), a rotation followed by `+ t` (`R @ n + t`,
-    `n @ R.T + t`, `T[:3, :3] @ n + T[:3, 3]`), or a library call that translates
+    w = 1 built from it (`np.append(normal, 1)`, `np.hstack([normals, np.ones((n, 1))])`,
+    `F.pad(normals, (0, 1), value=1.0)`, a `np.ones(4)` buffer filled with it), a rotation
+    followed by `+ t` (`R @ n + t`, `n @ R.T + t`, `T[:3, :3] @ n + T[:3, 3]`,
+    `np.einsum("ij,nj->ni", R, normals) + t`), or a library call that translates
     (`trimesh.transform_points(normals, T)` without `translate=False`, pytransform3d
     `vector_to_point(direction)`, Blender `obj.matrix_world @ normal`, pybullet
     `multiplyTransforms(pos, orn, velocity, [0, 0, 0, 1])` with a position that is not zero).
@@ -58,6 +59,7 @@ class DirectionTranslated(FactRule):
         Valid("tip_point = R @ approach + t\n"),  # a point built from a direction on purpose
         Valid("import trimesh\nn2 = trimesh.transform_points(normals, T, translate=False)\n"),
         Valid('direction = "left"\nx = np.append(direction, 1)\n'),
+        Valid("import torch.nn.functional as F\nnormals_h = F.pad(normals, (0, 1))\nworld = normals_h @ c2w.T\n"),
         Valid("import numpy as np\nn = 3\nout = np.append(n, 1)\n"),
         Valid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\np_moved = T * points\n"),
         Valid("from spatialmath import SE3\nT = SE3.Trans(1, 0, 0)\nn_moved = T.R @ normals\n"),
@@ -71,6 +73,14 @@ class DirectionTranslated(FactRule):
         Invalid(
             "import numpy as np\nnormal_h = np.append(normal, 1)\n",
             expected_fix="import numpy as np\nnormal_h = np.append(normal, 0)\n",
+        ),
+        Invalid(
+            "import torch.nn.functional as F\nnormals_h = F.pad(normals, (0, 1), value=1.0)\nworld = normals_h @ c2w.T\n",
+            expected_fix="import torch.nn.functional as F\nnormals_h = F.pad(normals, (0, 1), value=0.0)\nworld = normals_h @ c2w.T\n",
+        ),
+        Invalid(
+            'import numpy as np\nworld = np.einsum("ij,nj->ni", R, normals) + t\n',
+            expected_fix='import numpy as np\nworld = np.einsum("ij,nj->ni", R, normals)\n',
         ),
         Invalid(
             "normal_world = R @ normal + t\n",
