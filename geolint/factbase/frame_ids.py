@@ -23,10 +23,11 @@ def frame_string(node: ast.expr, index: ModuleIndex, depth: int = _MAX_DEPTH) ->
     if isinstance(node, ast.Constant):
         return node.value if isinstance(node.value, str) else None
     if isinstance(node, ast.Name):
-        value = resolve(index, node)
+        resolved = resolve(index, node)
+        value: ast.expr | None = resolved if isinstance(resolved, ast.expr) else None
         if isinstance(value, ast.Name):  # unknown here: a global the reading scope does not rebind?
             value = None if value.id in scope_of(index, value).bindings else module_constant(value, index)
-        return frame_string(value, index, depth - 1) if isinstance(value, ast.expr) and not isinstance(value, ast.Name) else None
+        return frame_string(value, index, depth - 1) if value is not None and not isinstance(value, ast.Name) else None
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
         left, right = frame_string(node.left, index, depth - 1), frame_string(node.right, index, depth - 1)
         return _short(left + right) if left is not None and right is not None else None

@@ -5,6 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.frame_ids import module_constant
 from geolint.factbase.pose_parts import call_name
 from geolint.factbase.reaching import resolve, runs_before, scope_of, single_definition, statement_of
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -166,18 +167,9 @@ def _literal(node: ast.expr, index: ModuleIndex) -> str | None:
     """A string literal, or a name that certainly holds one (a module constant)."""
     if isinstance(node, ast.Name):
         resolved = resolve(index, node)
-        if isinstance(resolved, ast.Name):
-            resolved = _module_constant(node, index)
-        node = resolved if isinstance(resolved, ast.expr) else node
+        constant = module_constant(node, index) if isinstance(resolved, ast.Name) else resolved
+        node = constant if isinstance(constant, ast.expr) else node
     if isinstance(node, ast.Constant) and isinstance(node.value, str):
         return node.value
     return None
 
-
-def _module_constant(name: ast.Name, index: ModuleIndex) -> ast.expr | None:
-    """A module-level name assigned exactly once."""
-    module = index.scopes[index.tree]
-    found = module.bindings.get(name.id) or []
-    if len(found) == 1 and isinstance(found[0], ast.expr) and name.id not in module.augmented:
-        return found[0]
-    return None
