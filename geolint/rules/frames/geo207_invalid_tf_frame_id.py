@@ -11,8 +11,16 @@ from geolint.factbase.pose_parts import call_name
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
 
-# tf2 calls whose leading positional arguments are frame ids, and how many of them.
-_FRAME_ARGUMENTS = {"lookup_transform": 2, "can_transform": 2, "lookup_transform_async": 2, "wait_for_transform_async": 2}
+# tf2 Buffer calls and the positions of their frame-id arguments (each one goes through
+# validateFrameId or warnFrameId; `transform(obj, target_frame)` looks up obj's stamp and the target).
+_FULL = (0, 2, 4)  # target, target_time, source, source_time, fixed
+_FRAME_ARGUMENTS = {
+    "lookup_transform": (0, 1), "can_transform": (0, 1), "lookup_transform_async": (0, 1), "wait_for_transform_async": (0, 1),
+    "lookup_transform_full": _FULL, "can_transform_full": _FULL, "wait_for_transform_full_async": _FULL,
+    "transform": (1,), "transform_full": (1, 3),
+}  # fmt: skip
+_BUFFER_ONLY = frozenset({"transform", "transform_full"})
+_BUFFER_NAME = re.compile(r"(?i)(?:buffer|tf)\w*$")
 _FRAME_KEYWORDS = frozenset({"frame_id", "child_frame_id", "target_frame", "source_frame", "target", "source"})
 # calls that hand TransformStamped messages to tf2's setTransform
 _SETS_TRANSFORMS = frozenset({"sendTransform", "send_transform", "set_transform", "set_transform_static", "setTransform"})
@@ -27,7 +35,8 @@ class InvalidTfFrameId(AstRule):
     ## What it does
     In tf2 code, flags a frame id that starts with a slash (`"/map"`) where tf2 looks it up:
 
-    - the frame arguments of `lookup_transform` / `can_transform` (tf2_ros `Buffer`);
+    - the frame arguments of tf2_ros `Buffer` calls: `lookup_transform`, `can_transform`, their
+      `_full` forms, and the target of `transform`;
     - the stamp of a message: `header.frame_id`, a `frame_id=` keyword, ROS 1's positional
       `Header(seq, stamp, frame_id)`, and (ROS 2) `child_frame_id`.
 
@@ -86,7 +95,7 @@ class InvalidTfFrameId(AstRule):
 
     code = "GEO207"
     name = "invalid-tf-frame-id"
-    triggers = AllOf(r"tf2_ros|rclpy|rospy|_msgs", r"frame|lookup_transform|can_transform|Header")
+    triggers = AllOf(r"tf2_ros|rclpy|rospy|_msgs", r"frame|lookup_transform|can_transform|Header|\.transform")
 
     VALID = [
         Valid("import tf2_ros\nt = buffer.lookup_transform('map', 'base_link', stamp)\n"),
@@ -105,6 +114,7 @@ class InvalidTfFrameId(AstRule):
         Valid("import rospy\nimport tf\nlistener = tf.TransformListener()\npub.publish(PointStamped(Header(0, now, '/world'), p))\n"),
         Valid("import rospy\nfrom std_msgs.msg import Header\nheader = Header()\nheader.frame_id = '/camera_link'\n"),
         Valid("import tf2_ros\nmsg.header.frame_id = rospy.get_param('~frame_id', '/gps')\n"),  # read at run time
+        Valid("import tf2_ros\ncloud = cloud.transform(T_world_cam)\nmesh.transform(T, '/tmp/mesh.ply')\n"),
     ]
     INVALID = [
         Invalid(
@@ -116,6 +126,8 @@ class InvalidTfFrameId(AstRule):
         Invalid("import tf2_ros\npub.publish(PointStamped(Header(0, rospy.Time.now(), '/world'), point))\n"),  # ROS 1 Header
         Invalid("import tf2_ros\nPREFIX = ''\nfix.header.frame_id = '%s/%s' % (PREFIX, 'gps')\n"),
         Invalid("import tf2_ros\nmarker.header.frame_id = '/' + 'map'\n"),
+        Invalid("import tf2_ros\np = buffer.transform(pose, '/map', rospy.Duration(0.1))\n"),
+        Invalid("import tf2_ros\nt = buffer.lookup_transform_full('map', then, 'odom', now, '/world')\n"),
         Invalid("import tf2_ros\nt.header.frame_id = 'base_link'\nt.child_frame_id = 'base_link'\n"),
         Invalid(
             "from tf2_ros import StaticTransformBroadcaster\ndef publish(b):\n    a = TransformStamped()\n"
@@ -226,9 +238,11 @@ def _frame_sites(
             found.append((ast.unparse(target), node.value, "stamp"))
     elif isinstance(node, ast.Call):
         name = call_name(node) or ""
-        count = _FRAME_ARGUMENTS.get(name)
-        if count is not None and isinstance(node.func, ast.Attribute):
-            found.extend((f"{name}", argument, "lookup") for argument in node.args[:count])
+        positions = _FRAME_ARGUMENTS.get(name, ())
+        if name in _BUFFER_ONLY and not _BUFFER_NAME.search(ast.unparse(node.func.value) if isinstance(node.func, ast.Attribute) else ""):
+            positions = ()  # `transform` is a common name: only on a receiver named like a tf buffer
+        if isinstance(node.func, ast.Attribute):
+            found.extend((name, node.args[position], "lookup") for position in positions if position < len(node.args))
         inside_transform = transforms.built_by(node, parents)
         if name == "Header" and len(node.args) >= 3 and not inside_transform:
             found.append(("Header(seq, stamp, frame_id)", node.args[2], "stamp"))  # ROS 1 Header(seq, stamp, frame_id)
@@ -239,7 +253,7 @@ def _frame_sites(
                     continue
                 if keyword.arg == "child_frame_id" and dialect == ROS1_TF2:
                     continue
-                found.append((f"{name}" if role == "lookup" else f"{keyword.arg}=", keyword.value, role))
+                found.append((name if role == "lookup" else f"{keyword.arg}=", keyword.value, role))
     return found
 
 
