@@ -55,8 +55,8 @@ class InvalidTfFrameId(AstRule):
     tf2 frame ids never start with a slash (REP 105; ROS 1 `tf`'s `tf_prefix` spelling is gone).
     tf2's lookups reject one: `lookupTransform` throws `InvalidArgumentException` and
     `canTransform` logs a warning and returns false (ros/geometry2 noetic-devel,
-    `tf2/src/buffer_core.cpp` `validateFrameId` and `warnFrameId`, lines 121-158, called at 623-624
-    and 810-812; the same in ROS 2). A message stamped `"/camera_link"` therefore cannot be
+    `tf2/src/buffer_core.cpp` `validateFrameId` and `warnFrameId`, lines 121-166, called at 623-624,
+    657-659 and 810-812; the same in ros2/geometry2). A message stamped `"/camera_link"` therefore cannot be
     transformed: tf2_ros `Buffer.transform` looks up `msg.header.frame_id`
     (`tf2_ros/src/tf2_ros/buffer_interface.py:65`) and Noetic's rviz looks up each display's stamp
     unchanged (`rviz/src/rviz/frame_manager.cpp:228`), so the data is not shown. A transform from a
@@ -81,13 +81,14 @@ class InvalidTfFrameId(AstRule):
     ## Known problems
     Where tf2 itself strips the slash the rule is silent: the frames of a `TransformStamped` (built
     here, or handed to `sendTransform` / `set_transform`), since tf2's `setTransform` strips them
-    (`buffer_core.cpp:214-216`; ROS 2 rolling `:208-209`), as does the C++ `tf2_ros::MessageFilter`
+    (`buffer_core.cpp:214-216`; ros2/geometry2 rolling `buffer_core.cpp:208-209`), as does the C++ `tf2_ros::MessageFilter`
     for the messages it queues (`message_filter.h:306`, since 0.5.10) before the consumer's own
     lookup. A ROS 1 module that uses `tf` itself (a listener, a broadcaster; `tf.transformations`
     alone does not count), or whose package shows no tf2 evidence (a `package.xml` naming both `tf`
     and tf2 packages is half-way, and says nothing), is left alone: Noetic's `tf`
     strips a leading slash before asking tf2 (`tf/src/tf.cpp:195-243`, `tf/src/tf/listener.py:44-69`),
-    and older `tf` accepted `tf_prefix` names. In ROS 1 code `child_frame_id` is not checked (read by
+    and older `tf` accepted `tf_prefix` names; so a half-way package's marker stamped `"/camera"`
+    goes unreported although Noetic's rviz rejects it. In ROS 1 code `child_frame_id` is not checked (read by
     `setTransform`, which strips it, or by odometry consumers). Frame ids read at run time
     (parameters, attributes such as `self.frame_id`) are not followed, nor frame ids built in a
     helper function (`"%s/%s" % (prefix, frame)` with a `tf_prefix` parameter).
