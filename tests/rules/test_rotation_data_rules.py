@@ -265,3 +265,52 @@ def test_simulator_quaternions_across_modules(tmp_path: Path) -> None:
     assert [(f["path"], f["line"]) for f in findings] == [("tasks/scene.py", 6), ("tasks/scene.py", 7)], findings
     assert "`start_rotation`, which returns it" in findings[0]["message"] and "`DynamicCuboid` expects scalar-first" in findings[0]["message"]
     assert "`place` (which passes its parameter `orientation` to `XFormPrim`)" in findings[1]["message"]
+
+
+def test_a_degree_constant_is_followed_only_while_it_is_the_one_store(tmp_path: Path) -> None:
+    """GEO302 reads `self.phi = 73.17` as degrees only when the module stores `.phi` nowhere else and
+    nothing may rebind the name (`global`, `+=`, a computed `setattr`, a base class)."""
+    flagged = (
+        "import math\n"
+        "TILT = 45\n"
+        "class Leg:\n"
+        "    def __init__(self):\n"
+        "        self.phi = 73.17\n"
+        "    def offset(self):\n"
+        "        return math.sin(self.phi) + math.cos(TILT)\n"
+    )
+    silent = {
+        "rebound.py": flagged.replace("    def offset", "    def tune(self, value):\n        self.phi = value\n    def offset"),
+        "augmented.py": flagged.replace("    def offset", "    def tune(self):\n        self.phi += 0.1\n    def offset"),
+        "setattr.py": flagged.replace("    def offset", "    def load(self, key, value):\n        setattr(self, key, value)\n    def offset"),
+        "based.py": flagged.replace("class Leg:", "class Leg(BaseLeg):").replace(" + math.cos(TILT)", ""),
+        "global.py": flagged.replace("class Leg:", "def retune():\n    global TILT\n    TILT = 0.3\nclass Leg:").replace("math.sin(self.phi) + ", ""),
+        "radians.py": flagged.replace("73.17", "1.2771").replace("45", "0.785"),
+    }
+    (tmp_path / "flagged.py").write_text(flagged)
+    for name, source in silent.items():
+        (tmp_path / name).write_text(source)
+    found = sorted((f["path"].rsplit("/", 1)[-1], f["line"], f["code"]) for f in check(["."], cwd=tmp_path))
+    assert ("flagged.py", 7, "GEO302") in found
+    assert [item for item in found if item[0] == "flagged.py"] == [("flagged.py", 7, "GEO302"), ("flagged.py", 7, "GEO302")]
+    # the module constant stays flagged where only `self.phi` is disturbed
+    assert {item[0] for item in found} == {"flagged.py", "rebound.py", "augmented.py", "setattr.py"}
+    assert all(f["message"].count("TILT") for f in check([str(tmp_path / name) for name in ("rebound.py", "augmented.py")]))
+
+
+def test_a_parse_table_needs_a_radian_converter_and_a_plain_parser(tmp_path: Path) -> None:
+    """The field table check: one row converts the field to radians (every `return` of its converter),
+    another parses it as a plain number; a converter of unknown unit on either side is silent."""
+    table = (
+        "import math\n"
+        "def parse_number(text):\n    return float(text)\n"
+        "def to_radians(text):\n    return math.radians(float(text))\n"
+        "def parse_course(text):\n    return lookup(text)\n"
+        "FIELDS = {'RMC': [('course', to_radians, 8)], 'VTG': [('course', {other}, 1)]}\n"
+    )
+    (tmp_path / "plain.py").write_text(table.replace("{other}", "parse_number"))
+    (tmp_path / "builtin.py").write_text(table.replace("{other}", "float"))
+    (tmp_path / "unknown.py").write_text(table.replace("{other}", "parse_course"))
+    (tmp_path / "both.py").write_text(table.replace("{other}", "to_radians"))
+    found = sorted((f["path"].rsplit("/", 1)[-1], f["line"]) for f in check(["."], cwd=tmp_path))
+    assert found == [("builtin.py", 8), ("plain.py", 8)]

@@ -9,6 +9,9 @@ GEO302 (degrees passed as radians) and GEO305 (radians passed as degrees) ask `u
 - `np.pi` (times or over a number);
 - a name or attribute whose words say it: `yaw_deg`, `fov_degrees`, `angleDeg`; `theta_rad`,
   `roll_radians`;
+- a constant bound once to a literal that is no plausible angle in radians but one in degrees
+  (`PHI = 73.17`, `self.tilt = 30` in `__init__`, a class attribute, a module constant of another
+  project module, an attribute of an instance of a project class): degrees;
 - arithmetic that keeps the unit: `-x`, `x / 2`, `x * 0.5`, `a + b` when both sides agree.
 
 Names are followed through their bindings in the same scope (every binding must agree with the
@@ -18,10 +21,12 @@ name itself); any conflict gives None.
 from __future__ import annotations
 
 import ast
+import math
 import re
+from collections import Counter
 from dataclasses import dataclass
 
-from geolint.factbase.index import ParamBinding
+from geolint.factbase.index import ParamBinding, Scope
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import FactBase, keyword, last_name, number, positional_args, string, walk_within
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
@@ -36,6 +41,7 @@ _TO_RADIANS = frozenset({"radians", "deg2rad"})
 _INVERSE_TRIG = frozenset({"arctan2", "arctan", "arcsin", "arccos", "atan2", "atan", "asin", "acos"})
 _ANGLE_MODULES = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"})
 _MAX_DEPTH = 10
+_TWO_PI = 2 * math.pi
 _SPATIALMATH_ANGLE_CALLS = frozenset(
     {"Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz", "rpy2r", "eul2r", "rpy2tr", "eul2tr"}
 )
@@ -44,6 +50,27 @@ _SPATIALMATH_ANGLE_CALLS = frozenset(
 _RADIAN_API_NAMES = frozenset(
     {"from_euler", "from_rotvec", *_SPATIALMATH_ANGLE_CALLS, "quaternion_from_euler", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
 )
+
+
+# Library calls that read an angle in DEGREES, by qualified name: the angle's position and keyword.
+DEGREE_CONSUMERS: dict[str, tuple[int, str]] = {
+    # glRotatef/glRotated(angle, x, y, z): "The angle of rotation, in degrees" (OpenGL reference,
+    # learn.microsoft.com/en-us/windows/win32/OpenGL/glrotatef); PyOpenGL and pyglet.gl bind the C call
+    **{f"{module}.{name}": (0, "angle") for module in ("OpenGL.GL", "pyglet.gl") for name in ("glRotatef", "glRotated")},
+    # getRotationMatrix2D(center, angle, scale): "Rotation angle in degrees. Positive values mean
+    # counter-clockwise rotation" (OpenCV imgproc reference, docs.opencv.org group__imgproc__transform)
+    "cv2.getRotationMatrix2D": (1, "angle"),
+    # rotate(input, angle, axes=(1, 0), ...): "angle : float The rotation angle in degrees"
+    # (docs.scipy.org/doc/scipy/reference/generated/scipy.ndimage.rotate.html)
+    "scipy.ndimage.rotate": (1, "angle"),
+    "scipy.ndimage.interpolation.rotate": (1, "angle"),
+    # rotate(img, angle, ...): "angle (number) - rotation angle value in degrees, counter-clockwise"
+    # (docs.pytorch.org/vision/stable/generated/torchvision.transforms.functional.rotate.html)
+    "torchvision.transforms.functional.rotate": (1, "angle"),
+}
+_GL_ROTATE = frozenset({"glRotatef", "glRotated"})
+# `from pyglet.gl import *`: the star import the index does not record, and the usual way GL is imported
+_GL_STAR_IMPORT = re.compile(r"^[ \t]*from[ \t]+(?:OpenGL|pyglet)(?:\.\w+)*[ \t]+import[ \t]+\*", re.MULTILINE)
 
 
 @dataclass(frozen=True)
@@ -101,6 +128,9 @@ class AngleUnits:
         if isinstance(node, ast.Attribute):
             stated = name_unit(node.attr)
             by_name = Unit(stated, f"the name `{node.attr}` says {_word(stated)}", True) if stated else None
+            literal = self.bound_literal(node)
+            if literal is not None:
+                return self._agree(by_name, [literal])
             if isinstance(node.value, ast.Name) and node.value.id == "self":
                 stores = facts.index.self_attribute_stores.get(node.attr, [])
                 return self._agree(by_name, [self.unit_of(store) for store in stores] if stores else [])
@@ -184,6 +214,9 @@ class AngleUnits:
         scope = facts.index.scope_of(node)
         if node.id in scope.augmented:
             return None  # `angle *= ...`: its unit may change along the way
+        literal = self.bound_literal(node)
+        if literal is not None:
+            return self._agree(by_name, [literal])
         found: list[Unit | None] = []
         for binding in bound:
             if isinstance(binding, ast.expr):
@@ -193,6 +226,48 @@ class AngleUnits:
             else:
                 found.append(None)
         return self._agree(by_name, found)
+
+    def bound_literal(self, node: ast.Name | ast.Attribute) -> Unit | None:
+        """DEGREES when `node` is a constant bound once, in the whole module it lives in, to a literal
+        angle that is no plausible radian value (above 2 pi) but a plausible degree value
+        (`PHI = 73.17`, `self.tilt = 30`); None otherwise (any other store, `+=`, `global`)."""
+        found = self._literal_binding(node)
+        if found is None:
+            return None
+        value, where = found
+        if not plausible_degrees(value):
+            return None
+        return Unit(DEGREES, f"`{self.facts.code_of(node)}` is only ever {_format(value)} ({where}): above 2 pi, an angle in degrees", False)
+
+    def _literal_binding(self, node: ast.expr) -> tuple[float, str] | None:
+        facts = self.facts
+        if isinstance(node, ast.Name):
+            bound = facts.bindings(node) or []
+            if node.id in facts.index.scope_of(node).augmented or node.id in _declared_global(facts):
+                return None
+            if len(bound) == 1 and isinstance(bound[0], ast.expr):
+                return _literal_at(bound[0], "")
+            imported = facts.index.imports.get(node.id)
+            if imported is not None and facts.cross_module and len(bound) == 1:
+                return _module_constant(facts, imported)  # `from config import TILT`
+            return None
+        if not isinstance(node, ast.Attribute):
+            return None
+        owner = node.value
+        if isinstance(owner, ast.Name) and owner.id == "self":
+            return _instance_or_class_literal(facts, _enclosing_class(facts, node), node.attr, "")
+        located = _class_of(facts, owner)
+        if located is None:
+            if isinstance(owner, ast.Name) and facts.cross_module and owner.id in facts.index.imports and not _attribute_stores(facts)[node.attr]:
+                return _module_constant(facts, f"{facts.index.imports[owner.id]}.{node.attr}")  # `config.TILT`
+            return None
+        other, cls, instance = located
+        if other is not facts and _attribute_stores(facts)[node.attr]:
+            return None  # stored here too (`cfg.tilt = ...`)
+        where = "" if other is facts else f"in {_short_path(other.path)}"
+        if instance:
+            return _instance_or_class_literal(other, cls, node.attr, where)
+        return _class_literal(other, cls, node.attr, where)
 
     @staticmethod
     def _agree(by_name: Unit | None, found: list[Unit | None]) -> Unit | None:
@@ -208,6 +283,129 @@ class AngleUnits:
     def _is_pi(self, node: ast.AST) -> bool:
         qualified = self.facts.qualified_name(node) or ""
         return qualified in ("numpy.pi", "math.pi", "torch.pi")
+
+
+def plausible_degrees(value: float) -> bool:
+    """No plausible angle in radians (above 2 pi) but one in degrees: at most 360, or a whole
+    multiple of 15 up to 720 (`90`, `73.17`, `-180`; not `0.5`, `1000`)."""
+    magnitude = abs(value)
+    return magnitude > _TWO_PI and (magnitude <= 360 or (magnitude <= 720 and value == int(value) and int(value) % 15 == 0))
+
+
+def _format(value: float) -> str:
+    return str(int(value)) if value == int(value) else str(value)
+
+
+def _literal_at(value: ast.expr, where: str) -> tuple[float, str] | None:
+    literal = number(value)
+    if literal is None:
+        return None
+    place = f"line {value.lineno}" + (f" {where}" if where else "")
+    return float(literal), place
+
+
+def _declared_global(facts: FactBase) -> frozenset[str]:
+    """Names some function of the module declares `global` (it may rebind them)."""
+    return facts.module_fact("global names", lambda: frozenset(name for node in facts.index.nodes(ast.Global) for name in node.names))  # type: ignore[attr-defined]
+
+
+def _attribute_stores(facts: FactBase) -> Counter[str]:
+    """How many times the module stores (or deletes) each attribute name, on any object."""
+
+    def count() -> Counter[str]:
+        found: Counter[str] = Counter()
+        for node in facts.index.nodes(ast.Attribute):
+            if not isinstance(node.ctx, ast.Load):  # type: ignore[attr-defined]
+                found[node.attr] += 1  # type: ignore[attr-defined]
+        for node in facts.index.nodes(ast.Call):  # `setattr(self, "tilt", ...)`
+            if isinstance(node.func, ast.Name) and node.func.id == "setattr" and len(node.args) > 1:  # type: ignore[attr-defined]
+                name = string(node.args[1])  # type: ignore[attr-defined]
+                found[name if name is not None else "*"] += 1 << 20 if name is None else 1
+        return found
+
+    counted = facts.module_fact("attribute stores", count)
+    return counted if not counted["*"] else Counter({name: 1 << 20 for name in counted})  # a computed `setattr`: anything
+
+
+def _enclosing_class(facts: FactBase, node: ast.AST) -> ast.ClassDef | None:
+    current = facts.parent(node)
+    while current is not None and not isinstance(current, ast.ClassDef):
+        current = facts.parent(current)
+    return current
+
+
+def _top_level_class(facts: FactBase, name: str) -> ast.ClassDef | None:
+    found = [node for node in facts.index.tree.body if isinstance(node, ast.ClassDef) and node.name == name]
+    return found[0] if len(found) == 1 else None
+
+
+def _instance_or_class_literal(facts: FactBase, cls: ast.ClassDef | None, attr: str, where: str) -> tuple[float, str] | None:
+    """`self.<attr> = <literal>`, the module's only store of `.attr`, inside `cls`; else `cls`'s class attribute."""
+    if cls is None or cls.bases and not all(isinstance(base, ast.Name) and base.id == "object" for base in cls.bases):
+        return None  # a base class (here or in a library) may set it too
+    stores = facts.index.self_attribute_stores.get(attr, [])
+    if stores:
+        if len(stores) != 1 or _attribute_stores(facts)[attr] != 1 or _enclosing_class(facts, stores[0]) is not cls:
+            return None
+        return _literal_at(stores[0], where)
+    return _class_literal(facts, cls, attr, where)
+
+
+def _class_literal(facts: FactBase, cls: ast.ClassDef, attr: str, where: str) -> tuple[float, str] | None:
+    """`class Config: TILT = 30`, bound once in the class body and stored nowhere in the module."""
+    if _attribute_stores(facts)[attr] or (cls.bases and not all(isinstance(base, ast.Name) and base.id == "object" for base in cls.bases)):
+        return None
+    scope: Scope | None = facts.index.scopes.get(cls)
+    bound = [] if scope is None else scope.bindings.get(attr, [])
+    if len(bound) != 1 or not isinstance(bound[0], ast.expr):
+        return None
+    return _literal_at(bound[0], where)
+
+
+def _module_constant(facts: FactBase, qualified: str) -> tuple[float, str] | None:
+    """A module-level name of a project module bound once to a literal (`config.TILT`)."""
+    found = facts._defining_module(qualified, facts.path)
+    if found is None:
+        return None
+    other, name = found
+    bound = other.index.scopes[other.index.tree].bindings.get(name, [])
+    if len(bound) != 1 or not isinstance(bound[0], ast.expr) or name in _declared_global(other):
+        return None
+    return _literal_at(bound[0], f"in {_short_path(other.path)}")
+
+
+def _class_of(facts: FactBase, owner: ast.expr) -> tuple[FactBase, ast.ClassDef, bool] | None:
+    """For `Config.TILT` the class (instance False); for `cfg.tilt` where `cfg` (a name or `self`
+    attribute) is only ever `Config(...)`, the class (instance True). The class is a top-level class
+    of this module or of the project module it is imported from."""
+    instance = False
+    if isinstance(owner, ast.Name):
+        bound = facts.bindings(owner) or []
+        if len(bound) == 1 and isinstance(bound[0], ast.Call):
+            owner, instance = bound[0].func, True
+    elif isinstance(owner, ast.Attribute) and isinstance(owner.value, ast.Name) and owner.value.id == "self":
+        stores = facts.index.self_attribute_stores.get(owner.attr, [])
+        if len(stores) != 1 or not isinstance(stores[0], ast.Call):
+            return None
+        owner, instance = stores[0].func, True
+    if not isinstance(owner, ast.Name):
+        return None
+    local = _top_level_class(facts, owner.id)
+    if local is not None:
+        return facts, local, instance
+    imported = facts.index.imports.get(owner.id)
+    if imported is None or not facts.cross_module:
+        return None
+    found = facts._defining_module(imported, facts.path)
+    if found is None:
+        return None
+    other, name = found
+    cls = _top_level_class(other, name)
+    return None if cls is None else (other, cls, instance)
+
+
+def _short_path(path: str) -> str:
+    return path.replace("\\", "/").rsplit("/", 1)[-1]
 
 
 def _factors(node: ast.expr, numerator: list[ast.expr], denominator: list[ast.expr], inverted: bool = False) -> None:
@@ -323,15 +521,38 @@ def is_trig_or_conversion(facts: FactBase, node: ast.Call) -> bool:
     return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
 
 
+def degree_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
+    """The angle argument of a library call that reads degrees (`DEGREE_CONSUMERS`), else None.
+    `glRotatef` also counts under a star import of OpenGL or pyglet (the name is OpenGL's own)."""
+    called = facts.called_name(call.func)
+    if called not in _GL_ROTATE and called not in ("getRotationMatrix2D", "rotate"):
+        return None  # the cheap test first: asked of every call
+    qualified = facts.qualified_name(call.func) or ""
+    found = DEGREE_CONSUMERS.get(qualified)
+    if found is None and qualified in _GL_ROTATE and qualified not in facts.index.functions:
+        if facts.module_fact("gl star import", lambda: _GL_STAR_IMPORT.search(facts.index.source) is not None):
+            found = (0, "angle")
+    if found is None:
+        return None
+    position, name = found
+    positional = positional_args(call)
+    if len(positional) > position:
+        return positional[position]
+    given = keyword(call, name)
+    return None if given is None else given.value
+
+
 def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:
     """The unit `call` reads its argument `argument` in, when the call always runs with it (not under
     a condition of its function): RADIANS for a radian API (`np.cos(theta)`, `from_euler` without
     `degrees=True`), DEGREES for a conversion from degrees (`np.radians(a)`) or `from_euler(...,
-    degrees=True)`; None otherwise."""
+    degrees=True)` or a library call in `DEGREE_CONSUMERS` (`glRotatef(a, 0, 1, 0)`); None otherwise."""
     if not _unconditional(facts, call):
         return None
     if any(element is argument for found in radian_arguments(facts, call) or () for element in _angle_elements(found)):
         return RADIANS
+    if degree_argument(facts, call) is argument:
+        return DEGREES
     positional = positional_args(call)
     if facts.shared(AngleUnits).converts(call) == RADIANS and positional and positional[0] is argument:
         return DEGREES

@@ -9,25 +9,39 @@ import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.index import ParamBinding
-from geolint.factbase.model import keyword, last_name, number, positional_args
+from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
+from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.vocabulary import GATE_TRIGGER
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, is_trig_or_conversion, radian_arguments, report_hand_conversion_of_converted, wrong_unit_passed
+from geolint.rules.rotation.angle_units import (
+    DEGREES,
+    RADIANS,
+    AngleUnits,
+    degree_argument,
+    is_trig_or_conversion,
+    radian_arguments,
+    report_hand_conversion_of_converted,
+    wrong_unit_passed,
+)
 
 _TWO_PI = 2 * math.pi
-# `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate reads.
-_DIVIDES_BY_PI = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b")
+# `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate
+# reads; `radians(` / `deg2rad(`: a parse table's converter to radians (a module of parsers, no geometry).
+_DIVIDES_BY_PI = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b|\b(?:radians|deg2rad)\s*\(")
 
 
 class _GateOrDivisionByPi:
-    """The fact rules' gate, or a division by pi (one more regex, only on files the gate turns away)."""
+    """The fact rules' gate, a division by pi or a conversion to radians (one more regex, only on files
+    the gate turns away)."""
 
     def search(self, source: str, /) -> bool:
         return GATE_TRIGGER.search(source) or _DIVIDES_BY_PI.search(source) is not None
 
     def search_with(self, source: str, config: object, /) -> bool:
         return GATE_TRIGGER.search_with(source, config) or _DIVIDES_BY_PI.search(source) is not None
+# `from ..collision import *` (at a line start, so not in a string): the module, with its dots
+_STAR_IMPORT = re.compile(r"^[ \t]*from[ \t]+([.\w]+)[ \t]+import[ \t]+\*", re.MULTILINE)
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
 _RADIAN_NAME = re.compile(r"(?i)rad")
 
@@ -51,6 +65,20 @@ class DegreesAsRadians(FactRule):
     that hands the parameter unchanged to one of those APIs, or names it in radians (`theta_rad`)
     when the value's degrees are computed rather than only named; and a name or `self` attribute
     bound only to literal angle lists (`UPRIGHT = [90, 0, 0]`) passed whole to those APIs.
+
+    Constants count too: a module constant, class attribute or `self.x = <literal>` that is the
+    module's only store of it (`self.phi = 73.17`), or such a constant of another project module
+    (`from config import TILT`, `config.TILT`, `Configuration().phi`), whose literal is no plausible
+    angle in radians (above 2 pi) but one in degrees (at most 360, or a multiple of 15 up to 720),
+    given to those APIs directly or scaled by a number (`np.cos(TILT / 2)`; not `np.sin(self.omega *
+    t)`). One value given both to a library that reads degrees (OpenGL `glRotatef` / `glRotated`,
+    OpenCV `getRotationMatrix2D`, `scipy.ndimage.rotate`, torchvision's `rotate`) and to a radian
+    API or a project helper that hands it to one (also one reached through `from .module import *`),
+    with no conversion between, is flagged at the radian use: one of the two is wrong. The same
+    value may reach the degrees reader through a dict of the same module (`{"y_rot": rotate}`
+    stored, `glRotatef(obj["y_rot"], 0, 1, 0)` read back). And a parse table (`{"RMC": [("course", to_radians, 8)],
+    "VTG": [("course", safe_float, 1)]}`) that converts a field to radians in one row and parses the
+    same field as a plain number in another is flagged at the plain row.
 
     ## Why is this bad?
     90 radians is about 5157 degrees, i.e. 117 degrees after wrapping: a valid, silently wrong
@@ -78,6 +106,16 @@ class DegreesAsRadians(FactRule):
     All-caps names (`DEG`, `DEG2RAD`) and a bare `deg` are read as conversion factors, not angles,
     so `np.sin(30 * DEG)` stays silent; a `*_deg` name that actually holds radians (a stale
     name) is flagged. A value mixed with radians evidence in the same argument is left alone.
+    A constant is followed only when nothing else in its module stores that attribute or name
+    (`global`, `+=`, `setattr` with a computed name, a class with base classes all make it silent),
+    and only one step (`cfg = Configuration()` then `cfg.phi`; not a `cfg` received as a
+    parameter). A constant tuned in radians that happens to exceed 2 pi (`self.k = 40` given to
+    `np.cos`) would be read as degrees. The library that reads degrees must be named in the call
+    (`cv2.getRotationMatrix2D`); PIL's `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are
+    methods of values geolint does not type and are not known. The parse table's two converters must
+    be functions of the same module: one whose every `return` is in radians, one that only returns
+    `float(...)`/`int(...)` of its text. A dict key is matched by its text within one module, so two
+    unrelated dicts sharing a key (`"angle"`) could be taken for one.
     Literal angles given to pybullet's `getQuaternionFromEuler`, and literal lists reaching a radian
     API through a name (`UPRIGHT = [90, 0, 0]`), are judged only when every large
     one is a whole multiple of 15 (`[90, 0, 0]`): scene constants such as `[0, 160, -80]` are
@@ -119,8 +157,28 @@ class DegreesAsRadians(FactRule):
         ),
         Valid("import numpy as np\ndef f(yaw_deg_per_s, dt):\n    return np.cos(yaw_deg_per_s * dt)\n"),
         Valid("import math\ndef f(dy, dx):\n    yaw = math.atan2(dy, dx)\n    return yaw * 180 / math.pi\n"),  # to degrees once
+        Valid("import numpy as np\nclass Gait:\n    def __init__(self):\n        self.omega = 12.0\n    def phase(self, t):\n        return np.sin(self.omega * t)\n"),
+        Valid(
+            "import numpy as np\nclass Leg:\n    def __init__(self):\n        self.phi = 73.17\n"
+            "    def set_phi(self, phi_deg):\n        self.phi = np.radians(phi_deg)\n    def offset(self):\n        return np.sin(self.phi)\n"
+        ),
+        Valid("import numpy as np\nTILT = 0.35\ndef f(h):\n    return h * np.cos(TILT)\n"),
+        Valid(
+            "import math\nfrom OpenGL.GL import glRotatef\ndef draw(obj):\n    y_rot = obj['rotate']\n"
+            "    glRotatef(y_rot, 0, 1, 0)\n    return math.cos(math.radians(y_rot))\n"
+        ),
     ]
     INVALID = [
+        Invalid("import math as m\nclass Config:\n    def __init__(self):\n        self.phi = 73.17\n        self.offset = 0.05 * m.sin(self.phi)\n"),
+        Invalid("import numpy as np\nHIP_TILT = 30.0\ndef height(h):\n    return h * np.cos(HIP_TILT / 2)\n"),
+        Invalid(
+            "import math\nfrom OpenGL.GL import glRotatef\ndef draw(obj):\n    y_rot = obj['rotate']\n"
+            "    glRotatef(y_rot, 0, 1, 0)\n    return math.cos(y_rot)\n"
+        ),
+        Invalid(
+            "import math\ndef to_rad(text):\n    return math.radians(float(text))\n"
+            "FIELDS = {'RMC': [('course', to_rad, 8)], 'VTG': [('course', float, 1)]}\n"
+        ),
         Invalid(
             "import numpy as np\n"
             "def rot_z(theta):\n"
@@ -175,6 +233,67 @@ class DegreesAsRadians(FactRule):
             self._check(node, units)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.BinOp):
             report_hand_conversion_of_converted(self, node, DEGREES, units)  # type: ignore[arg-type]
+        for node in self.facts.index.nodes(ast.Dict):
+            self._check_field_table(node)  # type: ignore[arg-type]
+
+    def _check_field_table(self, table: ast.Dict) -> None:
+        """A parse table (`{"RMC": [("true_course", convert_deg_to_rads, 8)], "VTG": [("true_course",
+        safe_float, 1)]}`: groups of `(field, converter, ...)` rows) that converts a field to radians in
+        one row and parses the same field as a plain number in another: readers of that field get
+        radians from one row and degrees from the other."""
+        rows: dict[str, list[tuple[ast.Tuple, ast.Name, str]]] = {}
+        for label, group in zip(table.keys, table.values):
+            if not isinstance(group, (ast.List, ast.Tuple)):
+                continue
+            for row in group.elts:
+                if isinstance(row, ast.Tuple) and len(row.elts) >= 2 and isinstance(row.elts[1], ast.Name):
+                    field = string(row.elts[0])
+                    if field is not None:
+                        rows.setdefault(field, []).append((row, row.elts[1], string(label) or self.code_of(label) if label else ""))
+        for field, found in rows.items():
+            if len(found) < 2:
+                continue
+            converted = [(row, converter, label) for row, converter, label in found if self._converts_to_radians(converter)]
+            if not converted:
+                continue
+            other, converter_used, other_label = converted[0]
+            for row, converter, label in found:
+                if self._passes_number_through(converter.id, depth=0):
+                    self.report(
+                        row,
+                        f"field `{field!r}` is parsed as a plain number by `{converter.id}` here ({label!r}), but converted "
+                        f"to radians by `{converter_used.id}` for {other_label!r} (line {other.lineno}): readers of "
+                        f"`{field!r}` get degrees from this row",
+                        evidence=(f"`{converter_used.id}` returns radians", f"`{converter.id}` returns its text as a number"),
+                    )
+
+    def _converts_to_radians(self, converter: ast.Name) -> bool:
+        """A project function of this module whose every `return` is in radians (not by a name alone)."""
+        function = self.facts.index.functions.get(converter.id)
+        if function is None:
+            return False
+        summary = self.facts.project.summary(self.facts, function)
+        return summary is not None and summary.angle_unit is not None and summary.angle_unit[0] == RADIANS and not summary.angle_unit[2]
+
+    def _passes_number_through(self, name: str, depth: int) -> bool:
+        """`float`, `int`, or a function of this module that only returns `float(...)` / `int(...)`,
+        a number, None, or another such function's result (`safe_float`): no unit conversion."""
+        if name in ("float", "int"):
+            return name not in self.facts.index.functions
+        function = self.facts.index.functions.get(name)
+        if function is None or depth > 2:
+            return False
+        scope = self.facts.index.scopes.get(function)
+        returns = [] if scope is None else scope.returns
+        if not returns:
+            return False
+        for value in returns:
+            if number(value) is not None or (isinstance(value, ast.Constant) and value.value is None):
+                continue
+            if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and self._passes_number_through(value.func.id, depth + 1):
+                continue
+            return False
+        return True
 
     def _radian_arguments(self, node: ast.Call) -> list[ast.expr] | None:
         """`radian_arguments`, worked out once per call (three of the checks below ask)."""
@@ -202,8 +321,11 @@ class DegreesAsRadians(FactRule):
                 return
         if self._check_bound_literals(node):
             return
-        self._check_units(node, units)
-        self._check_helper(node, units)
+        if self._check_units(node, units):
+            return
+        if self._check_helper(node, units):
+            return
+        self._check_shared_value(node)
 
     def _check_bound_literals(self, node: ast.Call) -> bool:
         """`ORN = [90, 0, 0]` then `p.getQuaternionFromEuler(ORN)`: a name (or `self` attribute) whose
@@ -256,23 +378,148 @@ class DegreesAsRadians(FactRule):
             return with_keyword(self.facts.index.segment(node), "degrees=True")
         return None
 
-    def _check_helper(self, node: ast.Call, units: AngleUnits) -> None:
+    def _check_helper(self, node: ast.Call, units: AngleUnits) -> bool:
         """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
         where `rot_z(theta)` computes `np.cos(theta)`)."""
         found = wrong_unit_passed(self.facts, node, RADIANS, units)
         if found is not None:
             argument, message, evidence = found
             self.report(argument, message, evidence=evidence)
+        return found is not None
 
-    def _check_units(self, node: ast.Call, units: AngleUnits) -> None:
+    def _check_shared_value(self, node: ast.Call) -> None:
+        """`glRotatef(y_rot, 0, 1, 0)` and `np.cos(y_rot)` (or a project helper that hands it to one)
+        of the same value, with no conversion between: one library reads it in degrees, the other in
+        radians, so one of the two uses is wrong."""
+        consumers = self._degree_consumers()
+        if not consumers:
+            return
+        for element, how in self._radian_reads(node):
+            key = self._value_key(element)
+            if key is None:
+                continue
+            fields = self._fields_holding(key)
+            for other, consumer in consumers:
+                if other is element:
+                    continue
+                field = self._field_read(other)
+                if self._value_key(other) == key or (field is not None and field in fields):
+                    where = f"`{self.code_of(consumer.func)}` (line {consumer.lineno})"
+                    through = f" (stored as `{field!r}` and read back as `{self.code_of(other)}`)" if self._value_key(other) != key else ""
+                    self.report(
+                        element,
+                        f"{how} reads `{self.code_of(element)}` in radians, but the same value is given to {where}{through}, "
+                        "which reads degrees: one of the two uses is wrong",
+                        evidence=(f"{where} reads its angle in degrees", f"{how} reads radians"),
+                    )
+                    return
+
+    def _field_read(self, node: ast.expr) -> str | None:
+        """For `obj["y_rot"]`, or a name bound only to it (`y_rot = obj["y_rot"]`): the key."""
+        if isinstance(node, ast.Name):
+            bound = self.facts.bindings(node) or []
+            if len(bound) != 1 or not isinstance(bound[0], ast.Subscript) or node.id in self.facts.index.scope_of(node).augmented:
+                return None
+            node = bound[0]
+        if isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load):
+            return string(node.slice)
+        return None
+
+    def _fields_holding(self, key: tuple[object, ...]) -> set[str]:
+        """The string keys of the module's dict literals whose value there is the value `key` names
+        (`{"y_rot": rotate}` for `rotate`): where that value is stored to be read back by key."""
+        found = set()
+        for table in self._dict_literals():
+            for label, value in zip(table.keys, table.values):
+                if isinstance(value, (ast.Name, ast.Attribute)) and string(label) is not None and self._value_key(value) == key:
+                    found.add(string(label))  # type: ignore[arg-type]
+        return found  # type: ignore[return-value]
+
+    def _dict_literals(self) -> list[ast.Dict]:
+        return self.facts.module_fact("dict literals", lambda: self.facts.index.nodes(ast.Dict))  # type: ignore[arg-type,return-value]
+
+    def _degree_consumers(self) -> list[tuple[ast.expr, ast.Call]]:
+        """The module's calls to a library reading degrees (`DEGREE_CONSUMERS`), with their angle argument."""
+
+        def collect() -> list[tuple[ast.expr, ast.Call]]:
+            found = []
+            for call in self.facts.index.nodes(ast.Call):
+                argument = degree_argument(self.facts, call)  # type: ignore[arg-type]
+                if argument is not None:
+                    found.append((argument, call))
+            return found
+
+        return self.facts.module_fact("degree consumers", collect)  # type: ignore[arg-type]
+
+    def _radian_reads(self, node: ast.Call) -> list[tuple[ast.expr, str]]:
+        """The arguments `node` reads in radians, each with how: a radian API's angles, or a project
+        helper's parameter it hands unchanged to one (not a parameter only named in radians)."""
+        facts = self.facts
+        found = [(element, f"`{self.code_of(node.func)}`") for argument in self._radian_arguments(node) or [] for element in _elements(argument)]
+        summary = None
+        if node.args and facts.may_have_summary(node):
+            summary = facts.function_summary(node)
+        elif node.args and isinstance(node.func, ast.Name):
+            summary = self._star_imported_summary(node.func.id)
+        if summary is not None:
+            for index, (unit, where, by_name) in sorted(summary.reads_unit.items()):
+                if unit == RADIANS and where and not by_name and index < len(node.args) and not isinstance(node.args[index], ast.Starred):
+                    found.append((node.args[index], f"`{self.code_of(node.func)}` (through {where})"))
+        return found
+
+    def _star_imported_summary(self, name: str) -> FunctionSummary | None:
+        """The summary of `name` when the module defines and imports it nowhere but one of its `from
+        .module import *` of a project module defines it (`from ..collision import *` then
+        `generate_corners(...)`): the star import the index does not record."""
+        facts = self.facts
+        if name in facts.index.imports or name in facts.index.functions or not facts.cross_module:
+            return None
+        if any(name in scope.bindings for scope in facts.index.scopes.values()):
+            return None
+        modules = facts.module_fact("star imports", lambda: _STAR_IMPORT.findall(facts.index.source))
+        found = [defined for module in modules if (defined := facts._imported_function(f"{module}.{name}", facts.path)) is not None]
+        if len(found) != 1:
+            return None
+        return facts.project.summary(*found[0])
+
+    def _value_key(self, node: ast.expr) -> tuple[object, ...] | None:
+        """What makes two reads the same value: a name with the same reaching bindings in the same
+        scope, or `self.<attr>` in the same class never stored from itself (`self.a = np.radians(self.a)`)."""
+        facts = self.facts
+        if isinstance(node, ast.Name):
+            scope = facts.index.scope_of(node)
+            if node.id in scope.augmented:
+                return None
+            bound = facts.bindings(node)
+            if not bound:
+                return None
+            return ("name", id(scope), node.id, tuple(id(binding) for binding in bound))
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+            stores = facts.index.self_attribute_stores.get(node.attr, [])
+            if any(isinstance(inner, ast.Attribute) and inner.attr == node.attr for store in stores for inner in ast.walk(store)):
+                return None  # converted in place
+            if any(isinstance(target, ast.Attribute) and target.attr == node.attr for target in self._augmented_targets()):
+                return None
+            cls = facts.parent(node)
+            while cls is not None and not isinstance(cls, ast.ClassDef):
+                cls = facts.parent(cls)
+            return ("self", id(cls), node.attr)
+        return None
+
+    def _augmented_targets(self) -> list[ast.expr]:
+        return self.facts.module_fact(
+            "augmented targets", lambda: [node.target for node in self.facts.index.nodes(ast.AugAssign)]  # type: ignore[attr-defined]
+        )
+
+    def _check_units(self, node: ast.Call, units: AngleUnits) -> bool:
         """A value the code itself puts in degrees (`yaw_deg`, `np.degrees(...)`) passed as radians."""
         arguments = self._radian_arguments(node)
         if not arguments:
-            return
+            return False
         elements = [element for argument in arguments for element in _elements(argument)]
         in_degrees = [(element, unit) for element in elements if (unit := units.unit_of(element)) is not None and unit.unit == DEGREES]
         if not in_degrees or any(unit.unit == RADIANS for element in elements if (unit := units.unit_of(element)) is not None):
-            return  # nothing in degrees, or radians beside it: mixed evidence, say nothing
+            return False  # nothing in degrees, or radians beside it: mixed evidence, say nothing
         element, unit = in_degrees[0]
         applicability = "unsafe" if any(found.by_name for _, found in in_degrees) else "safe"
         fix = self._degrees_keyword_fix(node)
@@ -287,6 +534,7 @@ class DegreesAsRadians(FactRule):
             fix_description="pass degrees=True",
             evidence=(unit.evidence,),
         )
+        return True
 
     def _radian_angles(self, node: ast.Call) -> list[float] | None:
         """The literal angles of a call to a radian API, or None when the call is not one (or opted into degrees)."""

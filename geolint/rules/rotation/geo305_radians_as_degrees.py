@@ -8,7 +8,15 @@ from geolint.factbase.model import keyword, positional_args
 from geolint.factbase.rotations import is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.rotation.angle_units import DEGREES, RADIANS, AngleUnits, report_conversion_of_converted, report_hand_conversion_of_converted, wrong_unit_passed
+from geolint.rules.rotation.angle_units import (
+    DEGREES,
+    RADIANS,
+    AngleUnits,
+    degree_argument,
+    report_conversion_of_converted,
+    report_hand_conversion_of_converted,
+    wrong_unit_passed,
+)
 from geolint.rules.triggers import AllOf
 
 
@@ -18,7 +26,10 @@ class RadiansAsDegrees(FactRule):
     ## What it does
     Flags `np.deg2rad` / `np.radians` / `math.radians` / `torch.deg2rad`, or the same conversion
     written by hand (`x * np.pi / 180`, `x * (math.pi / 180)`, `x * 0.0174533`), applied to a
-    value that is already in radians, and scipy `Rotation.from_euler(..., degrees=True)` given one. Radians
+    value that is already in radians, scipy `Rotation.from_euler(..., degrees=True)` given one, and a
+    library call that reads degrees given one (OpenGL `glRotatef` / `glRotated`, OpenCV
+    `getRotationMatrix2D`, `scipy.ndimage.rotate`, torchvision's `rotate`; not when only a name
+    says radians). Radians
     are known from the code itself: an inverse trigonometric function (`np.arctan2`,
     `math.acos`), a previous `np.radians`, scipy's `as_euler` without `degrees=True`, `np.pi`,
     or a name that says so (`theta_rad`, `yaw_radians`), followed through local variables and
@@ -57,6 +68,7 @@ class RadiansAsDegrees(FactRule):
     triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler")  # type: ignore[assignment]
 
     VALID = [
+        Valid("import numpy as np\nimport cv2\ndef f(img, dy, dx):\n    return cv2.getRotationMatrix2D((0, 0), np.degrees(np.arctan2(dy, dx)), 1.0)\n"),
         Valid("import numpy as np\ndef f(heading_deg):\n    return np.deg2rad(heading_deg)\n"),
         Valid("import numpy as np\ndef f(dy, dx):\n    return np.degrees(np.arctan2(dy, dx))\n"),
         Valid("import math\ndef f(angle):\n    return math.radians(angle)\n"),
@@ -69,6 +81,7 @@ class RadiansAsDegrees(FactRule):
         Valid("import numpy as np\ndef f(x):\n    theta_rad = np.degrees(x)\n    return np.radians(theta_rad)\n"),  # conflicting
     ]
     INVALID = [
+        Invalid("import numpy as np\nimport cv2\ndef f(img, dy, dx):\n    return cv2.getRotationMatrix2D((0, 0), np.arctan2(dy, dx), 1.0)\n"),
         Invalid(
             "import numpy as np\n"
             "def wrap_degrees(angle_deg):\n"
@@ -108,6 +121,16 @@ class RadiansAsDegrees(FactRule):
             return
         if units.converts(node) == RADIANS:
             report_conversion_of_converted(self, node, self.code_of(node.func), positional_args(node)[0], RADIANS, units)
+            return
+        angle = degree_argument(facts, node)
+        if angle is not None:
+            unit = units.unit_of(angle)
+            if unit is not None and unit.unit == RADIANS and not unit.by_name:
+                self.report(
+                    angle,
+                    f"`{self.code_of(node.func)}` reads its angle in degrees, but `{self.code_of(angle)}` is in radians ({unit.evidence})",
+                    evidence=(unit.evidence,),
+                )
             return
         if not is_scipy_rotation_method(facts, node.func, "from_euler"):
             return
