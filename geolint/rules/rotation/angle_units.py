@@ -376,13 +376,15 @@ def _module_constant(facts: FactBase, qualified: str) -> tuple[float, str] | Non
 
 def _class_of(facts: FactBase, owner: ast.expr) -> tuple[FactBase, ast.ClassDef, bool] | None:
     """For `Config.TILT` the class (instance False); for `cfg.tilt` where `cfg` (a name or `self`
-    attribute) is only ever `Config(...)`, the class (instance True). The class is a top-level class
+    attribute) is only ever `Config(...)`, or a parameter annotated `Config`, the class (instance True). The class is a top-level class
     of this module or of the project module it is imported from."""
     instance = False
     if isinstance(owner, ast.Name):
         bound = facts.bindings(owner) or []
         if len(bound) == 1 and isinstance(bound[0], ast.Call):
             owner, instance = bound[0].func, True
+        elif len(bound) == 1 and isinstance(bound[0], ParamBinding) and isinstance(bound[0].arg.annotation, ast.Name):
+            owner, instance = bound[0].arg.annotation, True  # `def lean(config: Configuration)`
     elif isinstance(owner, ast.Attribute) and isinstance(owner.value, ast.Name) and owner.value.id == "self":
         stores = facts.index.self_attribute_stores.get(owner.attr, [])
         if len(stores) != 1 or not isinstance(stores[0], ast.Call):

@@ -68,7 +68,8 @@ class DegreesAsRadians(FactRule):
 
     Constants count too: a module constant, class attribute or `self.x = <literal>` that is the
     module's only store of it (`self.phi = 73.17`), or such a constant of another project module
-    (`from config import TILT`, `config.TILT`, `Configuration().phi`), whose literal is no plausible
+    (`from config import TILT`, `config.TILT`, `cfg.phi` for `cfg = Configuration()` or a parameter
+    annotated `Configuration`), whose literal is no plausible
     angle in radians (above 2 pi) but one in degrees (at most 360, or a multiple of 15 up to 720),
     given to those APIs directly or scaled by a number (`np.cos(TILT / 2)`; not `np.sin(self.omega *
     t)`). One value given both to a library that reads degrees (OpenGL `glRotatef` / `glRotated`,
@@ -108,8 +109,8 @@ class DegreesAsRadians(FactRule):
     name) is flagged. A value mixed with radians evidence in the same argument is left alone.
     A constant is followed only when nothing else in its module stores that attribute or name
     (`global`, `+=`, `setattr` with a computed name, a class with base classes all make it silent),
-    and only one step (`cfg = Configuration()` then `cfg.phi`; not a `cfg` received as a
-    parameter). A constant tuned in radians that happens to exceed 2 pi (`self.k = 40` given to
+    and only one step (`cfg = Configuration()` or `cfg: Configuration` then `cfg.phi`; not a `cfg`
+    received as an unannotated parameter). A constant tuned in radians that happens to exceed 2 pi (`self.k = 40` given to
     `np.cos`) would be read as degrees. The library that reads degrees must be named in the call
     (`cv2.getRotationMatrix2D`); PIL's `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are
     methods of values geolint does not type and are not known. The parse table's two converters must
