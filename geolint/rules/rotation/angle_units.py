@@ -28,7 +28,15 @@ from dataclasses import dataclass
 
 from geolint.factbase.index import ParamBinding, Scope
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import FactBase, keyword, last_name, number, positional_args, string, walk_within
+from geolint.factbase.model import (
+    FactBase,
+    keyword,
+    last_name,
+    number,
+    positional_args,
+    string,
+    walk_within,
+)
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 
 DEGREES, RADIANS = "deg", "rad"
@@ -237,7 +245,7 @@ class AngleUnits:
         value, where = found
         if not plausible_degrees(value):
             return None
-        return Unit(DEGREES, f"`{self.facts.code_of(node)}` is only ever {_format(value)} ({where}): above 2 pi, an angle in degrees", False)
+        return Unit(DEGREES, f"`{self.facts.code_of(node)}` is only ever {format_angle(value)} ({where}): above 2 pi, an angle in degrees", False)
 
     def _literal_binding(self, node: ast.expr) -> tuple[float, str] | None:
         facts = self.facts
@@ -255,7 +263,7 @@ class AngleUnits:
             return None
         owner = node.value
         if isinstance(owner, ast.Name) and owner.id == "self":
-            return _instance_or_class_literal(facts, _enclosing_class(facts, node), node.attr, "")
+            return _instance_or_class_literal(facts, enclosing_class(facts, node), node.attr, "")
         located = _class_of(facts, owner)
         if located is None:
             if isinstance(owner, ast.Name) and facts.cross_module and owner.id in facts.index.imports and not _attribute_stores(facts)[node.attr]:
@@ -292,7 +300,8 @@ def plausible_degrees(value: float) -> bool:
     return magnitude > _TWO_PI and (magnitude <= 360 or (magnitude <= 720 and value == int(value) and int(value) % 15 == 0))
 
 
-def _format(value: float) -> str:
+def format_angle(value: float) -> str:
+    """`90` for 90.0, `73.17` as it is."""
     return str(int(value)) if value == int(value) else str(value)
 
 
@@ -327,7 +336,7 @@ def _attribute_stores(facts: FactBase) -> Counter[str]:
     return counted if not counted["*"] else Counter({name: 1 << 20 for name in counted})  # a computed `setattr`: anything
 
 
-def _enclosing_class(facts: FactBase, node: ast.AST) -> ast.ClassDef | None:
+def enclosing_class(facts: FactBase, node: ast.AST) -> ast.ClassDef | None:
     current = facts.parent(node)
     while current is not None and not isinstance(current, ast.ClassDef):
         current = facts.parent(current)
@@ -345,7 +354,7 @@ def _instance_or_class_literal(facts: FactBase, cls: ast.ClassDef | None, attr: 
         return None  # a base class (here or in a library) may set it too
     stores = facts.index.self_attribute_stores.get(attr, [])
     if stores:
-        if len(stores) != 1 or _attribute_stores(facts)[attr] != 1 or _enclosing_class(facts, stores[0]) is not cls:
+        if len(stores) != 1 or _attribute_stores(facts)[attr] != 1 or enclosing_class(facts, stores[0]) is not cls:
             return None
         return _literal_at(stores[0], where)
     return _class_literal(facts, cls, attr, where)
@@ -531,9 +540,13 @@ def degree_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         return None  # the cheap test first: asked of every call
     qualified = facts.qualified_name(call.func) or ""
     found = DEGREE_CONSUMERS.get(qualified)
-    if found is None and qualified in _GL_ROTATE and qualified not in facts.index.functions:
-        if facts.module_fact("gl star import", lambda: _GL_STAR_IMPORT.search(facts.index.source) is not None):
-            found = (0, "angle")
+    if (
+        found is None
+        and qualified in _GL_ROTATE
+        and qualified not in facts.index.functions
+        and facts.module_fact("gl star import", lambda: _GL_STAR_IMPORT.search(facts.index.source) is not None)
+    ):
+        found = (0, "angle")
     if found is None:
         return None
     position, name = found

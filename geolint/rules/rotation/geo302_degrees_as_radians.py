@@ -2,23 +2,24 @@
 
 from __future__ import annotations
 
+import ast
 import math
 import re
 
-import ast
-
-from geolint.rules.base import Invalid, Valid
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.vocabulary import GATE_TRIGGER
+from geolint.rules.base import Invalid, Valid
 from geolint.rules.rotation.angle_units import (
     DEGREES,
     RADIANS,
     AngleUnits,
     degree_argument,
+    enclosing_class,
+    format_angle,
     is_trig_or_conversion,
     radian_arguments,
     report_hand_conversion_of_converted,
@@ -243,14 +244,15 @@ class DegreesAsRadians(FactRule):
         one row and parses the same field as a plain number in another: readers of that field get
         radians from one row and degrees from the other."""
         rows: dict[str, list[tuple[ast.Tuple, ast.Name, str]]] = {}
-        for label, group in zip(table.keys, table.values):
+        for key, group in zip(table.keys, table.values):
             if not isinstance(group, (ast.List, ast.Tuple)):
                 continue
+            group_label = (string(key) or self.code_of(key)) if key is not None else ""
             for row in group.elts:
                 if isinstance(row, ast.Tuple) and len(row.elts) >= 2 and isinstance(row.elts[1], ast.Name):
                     field = string(row.elts[0])
                     if field is not None:
-                        rows.setdefault(field, []).append((row, row.elts[1], string(label) or self.code_of(label) if label else ""))
+                        rows.setdefault(field, []).append((row, row.elts[1], group_label))
         for field, found in rows.items():
             if len(found) < 2:
                 continue
@@ -310,7 +312,7 @@ class DegreesAsRadians(FactRule):
             if too_big and last_name(node.func) == "getQuaternionFromEuler" and not all(_round_degrees(value) for value in too_big):
                 too_big = []  # pybullet scene constants tuned by eye (FP20): only round angles are a degree slip
             if too_big:
-                shown = _format(too_big[0])
+                shown = format_angle(too_big[0])
                 fix = self._degrees_keyword_fix(node)
                 self.report(
                     node,
@@ -347,7 +349,7 @@ class DegreesAsRadians(FactRule):
             self.report(
                 node if fix is not None else argument,  # the fix rewrites the whole call
                 f"`{self.code_of(node.func)}` takes radians, but `{self.code_of(argument)}` is `{self.code_of(first)}` "
-                f"(line {first.lineno}), whose angle {_format(too_big[0])} is above 2 pi: it looks like degrees",
+                f"(line {first.lineno}), whose angle {format_angle(too_big[0])} is above 2 pi: it looks like degrees",
                 replacement=fix,
                 applicability="unsafe",
                 fix_description="pass degrees=True",
@@ -445,12 +447,13 @@ class DegreesAsRadians(FactRule):
         def collect() -> list[tuple[ast.expr, ast.Call]]:
             found = []
             for call in self.facts.index.nodes(ast.Call):
-                argument = degree_argument(self.facts, call)  # type: ignore[arg-type]
+                assert isinstance(call, ast.Call)
+                argument = degree_argument(self.facts, call)
                 if argument is not None:
                     found.append((argument, call))
             return found
 
-        return self.facts.module_fact("degree consumers", collect)  # type: ignore[arg-type]
+        return self.facts.module_fact("degree consumers", collect)
 
     def _radian_reads(self, node: ast.Call) -> list[tuple[ast.expr, str]]:
         """The arguments `node` reads in radians, each with how: a radian API's angles, or a project
@@ -501,10 +504,7 @@ class DegreesAsRadians(FactRule):
                 return None  # converted in place
             if any(isinstance(target, ast.Attribute) and target.attr == node.attr for target in self._augmented_targets()):
                 return None
-            cls = facts.parent(node)
-            while cls is not None and not isinstance(cls, ast.ClassDef):
-                cls = facts.parent(cls)
-            return ("self", id(cls), node.attr)
+            return ("self", id(enclosing_class(facts, node)), node.attr)
         return None
 
     def _augmented_targets(self) -> list[ast.expr]:
@@ -627,7 +627,3 @@ def _elements(node: ast.expr) -> list[ast.expr]:
     if isinstance(node, (ast.List, ast.Tuple)):
         return [found for element in node.elts for found in _elements(element)]
     return [node]
-
-
-def _format(value: float) -> str:
-    return str(int(value)) if value == int(value) else str(value)

@@ -142,9 +142,9 @@ class RadiansAsDegrees(FactRule):
         if angles is None:
             return
         elements = list(angles.elts) if isinstance(angles, (ast.List, ast.Tuple)) else [angles]
-        found = [(element, units.unit_of(element)) for element in elements]
-        in_radians = [(element, unit) for element, unit in found if unit is not None and unit.unit == RADIANS]
-        if not in_radians or any(unit is not None and unit.unit == DEGREES for _, unit in found):
+        judged = [(element, units.unit_of(element)) for element in elements]
+        in_radians = [(element, unit) for element, unit in judged if unit is not None and unit.unit == RADIANS]
+        if not in_radians or any(unit is not None and unit.unit == DEGREES for _, unit in judged):
             return
         element, unit = in_radians[0]
         self.report(
