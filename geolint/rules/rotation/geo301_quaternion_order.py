@@ -52,6 +52,14 @@ class _Helper:
 
 
 @dataclass(frozen=True)
+class _Keyword:
+    """`PoseTrajectory3D(orientations_quat_wxyz=q)`: a keyword whose name states the order its callee reads."""
+
+    call: ast.Call
+    name: str
+
+
+@dataclass(frozen=True)
 class _MessageField:
     """`msg.q_d = value`: a quaternion field of a message whose class fixes the order."""
 
@@ -147,6 +155,8 @@ class QuaternionOrder(FactRule):
     - a literal `[0, 0, 0, 1]` that its name (`IDENTITY_QUAT`, `no_rotation`) or a comment on its line
       (`# identity`) calls the identity, handed to a (w, x, y, z) API (Isaac Sim's `create_prim` and
       prims), or `[1, 0, 0, 0]` to an (x, y, z, w) one: the API reads a half turn;
+    - a value whose order is known passed by a keyword whose name states the other order (evo's
+      `PoseTrajectory3D(orientations_quat_wxyz=...)`, "nx4 list of quaternions (w,x,y,z format)");
     - a dict, keyword call or message filled component by component with the scalar part in the
       wrong place: `{"x": q[0], ..., "w": q[3]}` for a scalar-first `q`, `msg.w = q[0]` for a
       scalar-last one, `{"x": q.w, ..., "w": q.z}` whatever the convention. x, y and z permuted
@@ -535,6 +545,10 @@ class QuaternionOrder(FactRule):
             self._check_value(node, orientation, SCALAR_LAST, flow)
         for orientation in isaac_orientation_arguments(facts, node):
             self._check_value(node, orientation, SCALAR_FIRST, flow)
+        for given in node.keywords:  # `PoseTrajectory3D(orientations_quat_wxyz=q)`: the parameter states its order
+            stated = name_order(given.arg) if given.arg is not None else None
+            if given.arg is not None and stated in STANDARD_ORDERS:
+                self._check_value(_Keyword(node, given.arg), given.value, stated, flow)  # type: ignore[arg-type]
         expected = quaternion_order(facts, node)
         if expected is None:
             return
@@ -576,7 +590,9 @@ class QuaternionOrder(FactRule):
         )
 
     # -- through data: reorders and producers ----------------------------------------------
-    def _consumer(self, consumer: ast.Call | _MessageField | _Helper) -> str:
+    def _consumer(self, consumer: ast.Call | _MessageField | _Helper | _Keyword) -> str:
+        if isinstance(consumer, _Keyword):
+            return f"`{consumer.name}=` of `{self.code_of(consumer.call.func)}`"
         if isinstance(consumer, _MessageField):
             return f"`{self.code_of(consumer.target)}` ({field_label(consumer.cls, consumer.target.attr)})"
         if isinstance(consumer, _Helper):
@@ -598,7 +614,7 @@ class QuaternionOrder(FactRule):
             if order and index < len(node.args):
                 self._check_value(_Helper(node, summary.parameters[index], where), node.args[index], order, flow)
 
-    def _check_value(self, call: ast.Call | _MessageField | _Helper, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
+    def _check_value(self, call: ast.Call | _MessageField | _Helper | _Keyword, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
         if isinstance(argument, ast.Name) and self._name_contradicted(argument, flow):
             return  # reported once, where the name is bound
         reorder = flow.reorder_of(argument)
@@ -618,7 +634,7 @@ class QuaternionOrder(FactRule):
             evidence=(order.evidence,),
         )
 
-    def _check_named_identity(self, call: ast.Call | _MessageField | _Helper, argument: ast.expr, expected: str) -> None:
+    def _check_named_identity(self, call: ast.Call | _MessageField | _Helper | _Keyword, argument: ast.expr, expected: str) -> None:
         """`IDENTITY_QUAT = [0, 0, 0, 1]` or `orientation=[0, 0, 0, 1],  # identity` handed to a (w, x, y, z)
         API: the name or the comment says the value is the identity, which it is only in the other order
         (read as w, x, y, z it is a half turn about z). A literal alone says nothing: a deliberate half
@@ -643,7 +659,7 @@ class QuaternionOrder(FactRule):
             f"{'z' if written == SCALAR_LAST else 'x'}",
         )
 
-    def _check_reorder(self, call: ast.Call | _MessageField | _Helper, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
+    def _check_reorder(self, call: ast.Call | _MessageField | _Helper | _Keyword, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
         facts = self.facts
         other = SCALAR_FIRST if expected == SCALAR_LAST else SCALAR_LAST
         base = flow.order_of(reorder.base)
@@ -909,9 +925,11 @@ def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
     return None
 
 
-def _takes_stacks(facts: FactBase, call: ast.Call | _MessageField | _Helper) -> bool:
+def _takes_stacks(facts: FactBase, call: ast.Call | _MessageField | _Helper | _Keyword) -> bool:
     """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion,
     Isaac Gym and Isaac Sim)."""
+    if isinstance(call, _Keyword):
+        return True  # the parameter's own name states the order, for one quaternion or a stack
     if isinstance(call, (_MessageField, _Helper)):
         return False  # a message field holds one; a helper may index its parameter as one
     name = last_name(call.func) or ""
