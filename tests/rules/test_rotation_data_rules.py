@@ -312,5 +312,6 @@ def test_a_parse_table_needs_a_radian_converter_and_a_plain_parser(tmp_path: Pat
     (tmp_path / "builtin.py").write_text(table.replace("{other}", "float"))
     (tmp_path / "unknown.py").write_text(table.replace("{other}", "parse_course"))
     (tmp_path / "both.py").write_text(table.replace("{other}", "to_radians"))
+    (tmp_path / "library.py").write_text("from math import radians\nFIELDS = {'RMC': [('course', radians, 8)], 'VTG': [('course', float, 1)]}\n")
     found = sorted((f["path"].rsplit("/", 1)[-1], f["line"]) for f in check(["."], cwd=tmp_path))
-    assert found == [("builtin.py", 8), ("plain.py", 8)]
+    assert found == [("builtin.py", 8), ("library.py", 2), ("plain.py", 8)]

@@ -28,8 +28,8 @@ from geolint.rules.rotation.angle_units import (
 
 _TWO_PI = 2 * math.pi
 # `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate
-# reads; `radians(` / `deg2rad(`: a parse table's converter to radians (a module of parsers, no geometry).
-_DIVIDES_BY_PI = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b|\b(?:radians|deg2rad)\s*\(")
+# reads; `radians` / `deg2rad`: a parse table's converter to radians (a module of parsers, no geometry).
+_DIVIDES_BY_PI = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b|\b(?:radians|deg2rad)\b")
 
 
 class _GateOrDivisionByPi:
@@ -43,6 +43,7 @@ class _GateOrDivisionByPi:
         return GATE_TRIGGER.search_with(source, config) or _DIVIDES_BY_PI.search(source) is not None
 # `from ..collision import *` (at a line start, so not in a string): the module, with its dots
 _STAR_IMPORT = re.compile(r"^[ \t]*from[ \t]+([.\w]+)[ \t]+import[ \t]+\*", re.MULTILINE)
+_RADIAN_CONVERTERS = frozenset({"math.radians", "numpy.radians", "numpy.deg2rad"})
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
 _RADIAN_NAME = re.compile(r"(?i)rad")
 
@@ -114,9 +115,9 @@ class DegreesAsRadians(FactRule):
     received as an unannotated parameter). A constant tuned in radians that happens to exceed 2 pi (`self.k = 40` given to
     `np.cos`) would be read as degrees. The library that reads degrees must be named in the call
     (`cv2.getRotationMatrix2D`); PIL's `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are
-    methods of values geolint does not type and are not known. The parse table's two converters must
-    be functions of the same module: one whose every `return` is in radians, one that only returns
-    `float(...)`/`int(...)` of its text. A dict key is matched by its text within one module, so two
+    methods of values geolint does not type and are not known. The parse table's converters must be
+    `math.radians` / `np.deg2rad` or functions of the same module: one whose every `return` is in
+    radians, one that is `float` / `int` or only returns `float(...)`/`int(...)` of its text. A dict key is matched by its text within one module, so two
     unrelated dicts sharing a key (`"angle"`) could be taken for one.
     Literal angles given to pybullet's `getQuaternionFromEuler`, and literal lists reaching a radian
     API through a name (`UPRIGHT = [90, 0, 0]`), are judged only when every large
@@ -271,7 +272,10 @@ class DegreesAsRadians(FactRule):
                     )
 
     def _converts_to_radians(self, converter: ast.Name) -> bool:
-        """A project function of this module whose every `return` is in radians (not by a name alone)."""
+        """`math.radians` / `np.deg2rad` themselves, or a project function of this module whose every
+        `return` is in radians (not by a name alone)."""
+        if (self.facts.qualified_name(converter) or "") in _RADIAN_CONVERTERS:
+            return True
         function = self.facts.index.functions.get(converter.id)
         if function is None:
             return False
