@@ -59,7 +59,10 @@ class RadiansAsDegrees(FactRule):
     ## Known problems
     A variable named `*_rad` that actually holds degrees (a stale name) is flagged where it is
     converted; rename it. Names alone never decide when the same name is also bound to a value
-    in degrees in the same scope.
+    in degrees in the same scope. A library that reads degrees is known only when the call names
+    it (`cv2.getRotationMatrix2D`, `glRotatef` also under `from OpenGL.GL import *`): PIL's
+    `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are methods of values geolint does not
+    type.
     """
 
     code = "GEO305"
