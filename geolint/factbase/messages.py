@@ -1,4 +1,5 @@
-"""ROS message types of values, and the quaternion fields whose component order a message type fixes.
+"""ROS message types of values, the kinds of their geometric fields, and the quaternion fields whose
+component order a message type fixes.
 
 A value's message class is known when every binding says it: a constructor call (`VehicleOdometry()`),
 a parameter annotated with the class, the message parameter of a subscription callback registered
@@ -11,6 +12,7 @@ from __future__ import annotations
 
 import ast
 
+from geolint.algebra import Kind
 from geolint.factbase.index import FUNCTION_NODES, ParamBinding
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import FactBase, keyword, last_name, positional_args
@@ -27,6 +29,47 @@ MESSAGE_QUATERNION_FIELDS: dict[str, dict[str, str]] = {
 }
 # The attribute names above: the one cheap test before any type is looked for.
 QUATERNION_FIELD_NAMES = frozenset(field for fields in MESSAGE_QUATERNION_FIELDS.values() for field in fields)
+
+
+def _ros(package: str, fields: dict[str, dict[str, tuple[str | None, Kind | None]]]) -> dict[str, dict[str, tuple[str | None, Kind | None]]]:
+    def qualify(name: str | None) -> str | None:
+        return name if name is None or "." in name else f"geometry_msgs.msg.{name}"
+
+    return {f"{package}.msg.{cls}": {field: (qualify(held), kind) for field, (held, kind) in held_fields.items()} for cls, held_fields in fields.items()}
+
+
+# ROS geometry messages (the same Python names in ROS 1 and ROS 2): the message class each field holds,
+# and the kind of the 3-vectors among them. A Point is a position; the parts of a Twist, an Accel and a
+# Wrench are free vectors (velocities, accelerations, forces, torques), and so are a Vector3Stamped's
+# `vector` and an Imu's rates; a Transform's `translation` is a translation.
+MESSAGE_FIELDS: dict[str, dict[str, tuple[str | None, Kind | None]]] = {
+    **_ros("geometry_msgs", {
+        "PointStamped": {"point": ("Point", Kind.POINT)},
+        "Vector3Stamped": {"vector": ("Vector3", Kind.VECTOR)},
+        "Pose": {"position": ("Point", Kind.POINT)},
+        "PoseStamped": {"pose": ("Pose", None)},
+        "PoseWithCovariance": {"pose": ("Pose", None)},
+        "PoseWithCovarianceStamped": {"pose": ("PoseWithCovariance", None)},
+        "Twist": {"linear": ("Vector3", Kind.VECTOR), "angular": ("Vector3", Kind.VECTOR)},
+        "TwistStamped": {"twist": ("Twist", None)},
+        "TwistWithCovariance": {"twist": ("Twist", None)},
+        "TwistWithCovarianceStamped": {"twist": ("TwistWithCovariance", None)},
+        "Accel": {"linear": ("Vector3", Kind.VECTOR), "angular": ("Vector3", Kind.VECTOR)},
+        "AccelStamped": {"accel": ("Accel", None)},
+        "Wrench": {"force": ("Vector3", Kind.VECTOR), "torque": ("Vector3", Kind.VECTOR)},
+        "WrenchStamped": {"wrench": ("Wrench", None)},
+        "Transform": {"translation": ("Vector3", Kind.TRANSLATION)},
+        "TransformStamped": {"transform": ("Transform", None)},
+    }),
+    **_ros("nav_msgs", {"Odometry": {"pose": ("PoseWithCovariance", None), "twist": ("TwistWithCovariance", None)}}),
+    **_ros("sensor_msgs", {
+        "Imu": {"angular_velocity": ("Vector3", Kind.VECTOR), "linear_acceleration": ("Vector3", Kind.VECTOR)},
+        "MagneticField": {"magnetic_field": ("Vector3", Kind.VECTOR)},
+    }),
+}  # fmt: skip
+# The fields above that hold a 3-vector of known kind: the cheap test before a message class is looked for.
+VECTOR_FIELD_NAMES = frozenset(field for fields in MESSAGE_FIELDS.values() for field, (_, kind) in fields.items() if kind is not None)
+_KNOWN_CLASSES = frozenset(MESSAGE_QUATERNION_FIELDS) | frozenset(MESSAGE_FIELDS)
 _MAX_DEPTH = 8
 
 
@@ -56,11 +99,16 @@ class MessageTypes:
         """The qualified message class of `node`'s value, when every binding agrees on a known one."""
         return self._classes.get(id(node), lambda: self._class(node))
 
+    def field_kind(self, node: ast.Attribute) -> Kind | None:
+        """The kind of a message field's 3-vector (`msg.twist.twist.linear` of an Odometry: a free vector)."""
+        owner = self.class_of(node.value)
+        return None if owner is None else MESSAGE_FIELDS.get(owner, {}).get(node.attr, (None, None))[1]
+
     def _class(self, node: ast.expr) -> str | None:
         facts = self.facts
         if isinstance(node, ast.Call):
             qualified = facts.qualified_name(node.func)
-            return qualified if qualified in MESSAGE_QUATERNION_FIELDS and not node.args else None
+            return qualified if qualified in _KNOWN_CLASSES and not node.args else None
         if isinstance(node, ast.Name):
             bound = facts.bindings(node) or []
             return _agreed([self._class_of_binding(binding) for binding in bound])
@@ -69,6 +117,9 @@ class MessageTypes:
             # `self.odometry = None` before the first message, or the subscription handle stored under
             # the same name: reading `.q` from either would fail, so where `.q` is read it is the message
             return _agreed([self.class_of(store) for store in stores if not _has_no_fields(store)])
+        if isinstance(node, ast.Attribute):  # `msg.twist.twist`: the field's own message class
+            owner = self.class_of(node.value)
+            return None if owner is None else MESSAGE_FIELDS.get(owner, {}).get(node.attr, (None, None))[0]
         return None
 
     def _class_of_binding(self, binding: object) -> str | None:
@@ -79,7 +130,7 @@ class MessageTypes:
         annotation = binding.arg.annotation
         if annotation is not None:
             qualified = self.facts.qualified_name(annotation)
-            return qualified if qualified in MESSAGE_QUATERNION_FIELDS else None
+            return qualified if qualified in _KNOWN_CLASSES else None
         return self._callback_class(binding)
 
     def _callback_class(self, binding: ParamBinding) -> str | None:
@@ -109,7 +160,7 @@ class MessageTypes:
             name = _function_name(registered[1]) if registered is not None else None
             if registered is not None and name is not None:
                 qualified = facts.qualified_name(registered[0])
-                found.setdefault(name, set()).add(qualified if qualified in MESSAGE_QUATERNION_FIELDS else None)
+                found.setdefault(name, set()).add(qualified if qualified in _KNOWN_CLASSES else None)
         for name in found.keys() & called:
             found[name].add(None)  # also called directly: its parameter may hold anything
         self._callbacks = found

@@ -414,6 +414,10 @@ class FactBase:
             attr = node.attr
             if attr in ("T", "mT"):
                 return self.kind_of(node.value)
+            if attr in messages.VECTOR_FIELD_NAMES:  # `odometry.twist.twist.linear`: the message type says
+                declared = self.shared(messages.MessageTypes).field_kind(node)
+                if declared is not None:
+                    return declared
             if attr in vocab.DIRECTION_ATTRIBUTES:
                 return Kind.DIRECTION
             if attr in vocab.POINT_ATTRIBUTES:
@@ -433,6 +437,9 @@ class FactBase:
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
             kind = self.kind_of(node.operand)
             return kind if kind in FREE else None
+        if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 3:  # `[v.x, v.y, v.z]` is what v is
+            whole = self._components_of_one_array(node.elts)
+            return None if whole is None else self.kind_of(whole)
         if isinstance(node, ast.BinOp):
             return self._kind_of_binary(node)
         if isinstance(node, ast.Call):
@@ -1226,12 +1233,16 @@ class FactBase:
         return Homogeneous(inner=fills[0], w=w, construction=value, fixed=fixed)
 
     def _components_of_one_array(self, elements: list[ast.expr]) -> ast.expr | None:
-        """For `[x[0], x[1], x[2]]`, the expression x; else None."""
+        """For `[x[0], x[1], x[2]]` or `[x.x, x.y, x.z]` (a ROS Vector3 or Point, a PyKDL Vector), the
+        expression x; else None."""
         bases = []
         for position, element in enumerate(elements):
-            if not isinstance(element, ast.Subscript) or not is_index(element.slice, position):
+            if isinstance(element, ast.Subscript) and is_index(element.slice, position):
+                bases.append(element.value)
+            elif isinstance(element, ast.Attribute) and element.attr == "xyz"[position]:
+                bases.append(element.value)
+            else:
                 return None
-            bases.append(element.value)
         codes = {ast.dump(base) for base in bases}
         return bases[0] if len(codes) == 1 else None
 
@@ -1404,3 +1415,7 @@ __all__ = [
     "declared_call_frames", "dotted_name", "is_index", "is_slice_upto", "last_name", "number",
     "positional_args", "keyword", "string", "subscript_parts", "walk_within",
 ]  # fmt: skip
+
+
+# Imported last: the message tables read this module's helpers (no cycle at run time, only at import).
+from geolint.factbase import messages  # noqa: E402

@@ -143,6 +143,45 @@ def test_kind_flow(source: str, kind: Algebra | None) -> None:
     assert model.kind_of(last_value(module)) == kind
 
 
+ODOMETRY_CALLBACK = (
+    "from nav_msgs.msg import Odometry\n"
+    "from geometry_msgs.msg import Transform, Vector3Stamped\n"
+    "def on_odometry(msg):\n    pass\n"
+    "node.create_subscription(Odometry, 'odom', on_odometry, 10)\n"
+)
+
+
+@pytest.mark.parametrize(
+    ("expression", "kind"),
+    [
+        ("msg.twist.twist.linear", Algebra.VECTOR),  # the subscription says msg is an Odometry
+        ("msg.twist.twist.angular", Algebra.VECTOR),
+        ("msg.pose.pose.position", Algebra.POINT),
+        ("[msg.twist.twist.linear.x, msg.twist.twist.linear.y, msg.twist.twist.linear.z]", Algebra.VECTOR),
+        ("Vector3Stamped().vector", Algebra.VECTOR),
+        ("Transform().translation", Algebra.TRANSLATION),
+        ("msg.pose.pose.orientation", None),
+        ("msg.twist.linear", None),  # an Odometry has no such field: no guess
+        ("other.twist.twist.linear", None),  # an untyped value: the field's name is no evidence
+        ("[v.x, v.y, v.z]", None),
+        ("[a.x, b.y, c.z]", None),
+    ],
+)
+def test_message_field_kinds(expression: str, kind: Algebra | None) -> None:
+    model, module = model_of(ODOMETRY_CALLBACK.replace("    pass", f"    return {expression}"))
+    function = module.body[2]
+    returned = function.body[0].value  # type: ignore[attr-defined]
+    assert model.kind_of(returned) == kind
+
+
+def test_components_carry_the_kind_of_their_value() -> None:
+    model, module = model_of("import numpy as np\nv = np.array([normal.x, normal.y, normal.z])\nv\n")
+    assert model.kind_of(last_value(module)) == Algebra.DIRECTION
+    model, module = model_of("import numpy as np\nh = np.array([normal.x, normal.y, normal.z, 1.0])\n")
+    found = model.homogeneous(module.body[-1].value)  # type: ignore[attr-defined]
+    assert found is not None and found.w == 1 and ast.unparse(found.inner) == "normal"
+
+
 def test_self_attribute_flow() -> None:
     source = "class Cloud:\n    def load(self, mesh):\n        self.vn = mesh.vertex_normals\n    def use(self):\n        return self.vn\n"
     model, module = model_of(source)
