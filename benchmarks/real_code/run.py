@@ -493,7 +493,7 @@ def verify_history(args: argparse.Namespace, ledger: Ledger, select: tuple[str, 
             status = 2
             continue
         with tempfile.TemporaryDirectory() as scratch:
-            # inside its ROS package as it was (package.xml, sibling modules): GEO207 reads that evidence
+            # inside its repository as it was (sibling modules, manifests): the evidence the real CLI reads
             path = _pre_fix_package(checkout, bug.fix_commit, bug.path, Path(scratch))
             hits = [f for f in api.lint_text(before, path, config) if f.code != "GEO000" and f.line <= bug.line <= f.end_line]
         now = bool(hits)
@@ -513,20 +513,36 @@ def verify_history(args: argparse.Namespace, ledger: Ledger, select: tuple[str, 
     return status
 
 
+_PROJECT_FILES = ("package.xml", "pyproject.toml", "setup.py", "setup.cfg")
+
+
 def _pre_fix_package(checkout: Path, fix_commit: str, path: str, scratch: Path) -> str:
-    """Where to lint `path` as it was before `fix_commit`: inside a copy of its ROS package at that
-    commit (the nearest folder above it with a package.xml: its manifest and Python files), else `path`."""
-    files = git(checkout, "ls-tree", "-r", "--name-only", f"{fix_commit}^").splitlines()
-    folders = [folder for folder in Path(path).parents if str(folder / "package.xml") in files or folder == Path(".") and "package.xml" in files]
-    if not folders:
-        return path
-    package = folders[0].as_posix()
-    prefix = "" if package == "." else package + "/"
-    for name in files:
-        if name.startswith(prefix) and (name.endswith(".py") or name == prefix + "package.xml"):
-            target = scratch / name
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_text(git(checkout, "show", f"{fix_commit}^:{name}"))
+    """Where to lint `path` as it was before `fix_commit`: inside a copy of its repository at that commit
+    (every Python file and the project and ROS package manifests, with a `.git` marker at the root), so
+    that helper summaries, constants of sibling modules, naming declarations and package evidence are
+    read as the real CLI reads them in an exported pre-fix tree."""
+    parent = f"{fix_commit}^"
+    names = [
+        name
+        for name in git(checkout, "ls-tree", "-r", "--name-only", parent).splitlines()
+        if name.endswith((".py", ".pyi")) or name.rpartition("/")[2] in _PROJECT_FILES
+    ]
+    # one `git cat-file --batch` for every blob: a `git show` per file takes minutes on large repositories
+    request = "".join(f"{parent}:{name}\n" for name in names).encode()
+    output = subprocess.run(["git", "-C", str(checkout), "cat-file", "--batch"], input=request, capture_output=True, check=True).stdout
+    offset = 0
+    for name in names:
+        header_end = output.index(b"\n", offset)
+        header = output[offset:header_end].split()
+        offset = header_end + 1
+        if len(header) != 3 or header[1] != b"blob":  # "<name> missing": a blob the snapshot does not hold
+            continue
+        size = int(header[2])
+        target = scratch / name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(output[offset : offset + size])
+        offset += size + 1
+    (scratch / ".git").mkdir(exist_ok=True)
     return str(scratch / path)
 
 

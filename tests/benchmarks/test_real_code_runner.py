@@ -145,6 +145,28 @@ def test_history_mode_finds_the_commit_that_fixed_a_bug(tmp_path: Path, mirror: 
     assert "caught = true" in (tmp_path / "ledger.toml").read_text()
 
 
+def test_history_rows_are_linted_with_the_sibling_modules_of_their_commit(tmp_path: Path, mirror: Path) -> None:
+    """A bug seen only through a helper of another module (its summary translates its argument) is caught,
+    as the real CLI catches it in an exported tree: the helper is read as it was before the fix."""
+    repo = mirror / "someone+grasp-demo"
+    (repo / "posekit.py").write_text("def apply_pose(T, x):\n    return T[:3, :3] @ x + T[:3, 3]\n")
+    git(repo, "add", "posekit.py")
+    caller = "from posekit import apply_pose\n\n\ndef mesh_in_world(T, mesh):\n    return apply_pose(T, mesh.vertices), apply_pose(T, mesh.face_normals)\n"
+    commit_file(repo, caller, "normals")
+    fix = commit_file(repo, caller.replace("apply_pose(T, mesh.face_normals)", "T[:3, :3] @ mesh.face_normals.T"), "rotate only")
+    git(repo, "rm", "-q", "posekit.py")  # the helper is gone after the fix: only the pre-fix tree has it
+    git(repo, "commit", "-q", "-m", "drop the helper")
+    (tmp_path / "ledger.toml").write_text(
+        f'[[history]]\nrepo = "someone/grasp-demo"\nfix_commit = "{fix}"\npath = "planner.py"\nline = 5\n'
+        'bug_class = "direction translated (GEO101)"\ncaught = false\nhow_found = "planted"\nreason = "planted"\n'
+        'issue = ""\nexpr_hash = ""\n'
+    )
+    checked = run(tmp_path, mirror, "--history", "--history-limit", "0")
+    assert checked.returncode == 0, checked.stderr
+    assert "GEO101 `apply_pose` rotates and translates" in checked.stdout
+    assert "caught at the pre-fix commit: 1 / 1 = 100 %" in checked.stdout
+
+
 def test_a_missing_checkout_is_an_error_not_a_crash(tmp_path: Path, mirror: Path) -> None:
     shutil.rmtree(mirror / "someone+grasp-demo")
     done = run(tmp_path, mirror)
