@@ -25,19 +25,28 @@ def is_scipy_rotation_method(facts: FactBase, func: ast.AST, *methods: str) -> b
     return isinstance(func.value, ast.Name) and func.value.id in _SCIPY_ROTATION_ALIASES and func.value.id not in facts.index.imports
 
 
+_CONSUMED, _PRODUCED = 0, 1  # the two tables of each simulator module
+
+
+def _simulator_order(facts: FactBase, call: ast.Call, side: int) -> str | None:
+    """The order a simulator API (Isaac Gym, Isaac Sim, Isaac Lab) reads (`_CONSUMED`) or returns
+    (`_PRODUCED`); `convert_quat` says both in its arguments."""
+    found = simulator_function(facts, call.func)
+    if found is None:
+        return None
+    module, name = found
+    if name == "convert_quat":
+        return _convert_quat_orders(call)[side]
+    return _SIMULATOR_TABLES[module][side].get(name)
+
+
 def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
     """The component order the called API expects for its quaternion argument, or None if unknown."""
     func = call.func
     called = facts.called_name(func) or ""
-    if called in _SIMULATOR_NAMES:
-        found = simulator_function(facts, func)
-        if found is not None:
-            module, name = found
-            if name == "convert_quat":
-                return _convert_quat_orders(call)[0]
-            consumed = _SIMULATOR_TABLES[module][0].get(name)
-            if consumed is not None:
-                return consumed
+    consumed = _simulator_order(facts, call, _CONSUMED) if called in _SIMULATOR_NAMES else None
+    if consumed is not None:
+        return consumed
     if "uat" not in called and called != "from_float_array":
         return None  # every API below says quat / Quat in its name, but numpy-quaternion's from_float_array
     if is_scipy_rotation_method(facts, func, "from_quat"):
@@ -158,15 +167,9 @@ def quaternion_producer(facts: FactBase, call: ast.Call) -> str | None:
                 return SCALAR_FIRST if value.value else SCALAR_LAST
             return None
         return SCALAR_LAST if is_scipy_rotation_value(facts, func.value) else None
-    if facts.called_name(func) in _SIMULATOR_NAMES:
-        found = simulator_function(facts, func)
-        if found is not None:
-            module, name = found
-            if name == "convert_quat":
-                return _convert_quat_orders(call)[1]
-            produced = _SIMULATOR_TABLES[module][1].get(name)
-            if produced is not None:
-                return produced
+    produced = _simulator_order(facts, call, _PRODUCED) if facts.called_name(func) in _SIMULATOR_NAMES else None
+    if produced is not None:
+        return produced
     qualified = facts.qualified_name(func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if name in _PYBULLET_QUATERNIONS:  # camelCase pybullet names, on the module or a client object
