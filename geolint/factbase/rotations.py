@@ -322,6 +322,8 @@ def isaac_orientation_arguments(facts: FactBase, call: ast.Call) -> list[ast.exp
     `RigidPrimView(...)`) or of `create_prim`, and the orientation of `set_world_pose(position, orientation)`,
     `set_local_pose`, `set_default_state`, `set_world_poses`, `set_local_poses` in a module that imports
     Isaac Sim's core (OmniGibson's prims, which take x, y, z, w, are left alone)."""
+    if not _mentions_isaac_core(facts):
+        return []  # every call below is Isaac Sim's, which only an import of its core can bring in
     func = call.func
     if isinstance(func, ast.Attribute) and func.attr in _ISAAC_POSE_SETTERS:
         if not _imports_isaac_core(facts) or any(isinstance(arg, ast.Starred) for arg in call.args):
@@ -335,12 +337,24 @@ def isaac_orientation_arguments(facts: FactBase, call: ast.Call) -> list[ast.exp
     return [given.value for given in call.keywords if given.arg in ("orientation", "orientations")]
 
 
+def _imported_modules(facts: FactBase) -> list[str]:
+    """Every module and name the module imports, dotted in full (`import omni.isaac.core.prims` too)."""
+    return [
+        *facts.index.imports.values(),
+        *(node.module for node in facts.index.nodes(ast.ImportFrom) if node.module),  # type: ignore[attr-defined]
+        *(alias.name for node in facts.index.nodes(ast.Import) for alias in node.names),  # type: ignore[attr-defined]
+    ]
+
+
+def _mentions_isaac_core(facts: FactBase) -> bool:
+    return facts.module_fact("mentions isaac core", lambda: any(name.startswith(_ISAAC_CORE) for name in _imported_modules(facts)))
+
+
 def _imports_isaac_core(facts: FactBase) -> bool:
+    """Isaac Sim's core, and not OmniGibson (whose prims take x, y, z, w)."""
+
     def compute() -> bool:
-        imported = list(facts.index.imports.values()) + [
-            node.module for node in facts.index.nodes(ast.ImportFrom) if node.module  # type: ignore[attr-defined]
-        ]
-        return any(name.startswith(_ISAAC_CORE) for name in imported) and not any(name.startswith("omnigibson") for name in imported)
+        return _mentions_isaac_core(facts) and not any(name.startswith("omnigibson") for name in _imported_modules(facts))
 
     return facts.module_fact("imports isaac core", compute)
 
