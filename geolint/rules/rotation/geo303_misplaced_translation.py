@@ -90,6 +90,10 @@ class MisplacedTranslation(AstRule):
         ),  # the row-vector convention, applied as such
         Valid("def f(M, t):\n    M[3, :3] = t\n"),  # nothing says M is a pose
         Valid(
+            "import torch\ndef screen_camera(K3, n):\n    K = torch.zeros((n, 4, 4))\n    K[:, :3, :3] = K3\n"
+            "    K[:, 2, 2] = 0\n    K[:, 2, -1] = 1\n    K[:, -1, 2] = 1\n    return K\n"
+        ),  # w = z: a camera projection (PyTorch3D's screen-space K), not a pose
+        Valid(
             "import numpy as np\nfrom vispy.visuals import transforms\ndef place(mesh, R, offset, p):\n"
             "    M = np.eye(4)\n    M[:3, :3] = np.dot(offset, R)\n    M[3, :3] = p\n"
             "    mesh.transform = transforms.MatrixTransform(M)\n"
@@ -207,7 +211,12 @@ class MisplacedTranslation(AstRule):
         states_pose = False
         reads_translation_column = False
         row_layout = False
+        divide_corners: set[tuple[int, int]] = set()
         for node in ast.walk(scope):
+            if isinstance(node, ast.Subscript) and same_code(node.value, base):
+                divide_corners |= _perspective_divide_corner(node, index)
+                if len(divide_corners) == 2:
+                    return False  # M[2, 3] = M[3, 2] = 1: a camera projection dividing by z, not a pose
             if isinstance(node, ast.Subscript) and node is not target and same_code(node.value, base):
                 part = pose_part(node, index)
                 states_pose = states_pose or part is not None
@@ -266,6 +275,19 @@ def _writes_projective_corner(node: ast.Subscript, index: ModuleIndex) -> bool:
     if isinstance(statement, ast.Assign) and node in statement.targets:
         return not (isinstance(statement.value, ast.Constant) and statement.value.value == 1)
     return isinstance(statement, ast.AugAssign) and statement.target is node
+
+
+def _perspective_divide_corner(node: ast.Subscript, index: ModuleIndex) -> set[tuple[int, int]]:
+    """{(2, 3)} or {(3, 2)} when `node` is `M[2, 3] = 1` or `M[3, 2] = 1` (`-1` for 3 too): together they
+    are the signature of a screen-space camera matrix (PyTorch3D's `K` with `in_ndc=False`: w = z)."""
+    indices = matrix_indices(node)
+    statement = index.parents.get(node)
+    if indices is None or not (isinstance(statement, ast.Assign) and node in statement.targets):
+        return set()
+    if not (isinstance(statement.value, ast.Constant) and statement.value.value == 1):
+        return set()
+    corner = tuple(3 if value == -1 else value for value in (int_value(indices[1]), int_value(indices[2])))
+    return {corner} if corner in ((2, 3), (3, 2)) else set()  # type: ignore[return-value]
 
 
 def _has_product(value: ast.expr) -> bool:
