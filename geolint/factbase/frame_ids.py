@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import ast
 
-from geolint.factbase.index import ModuleIndex
+from geolint.factbase.index import ModuleIndex, module_constant
 from geolint.factbase.reaching import resolve, scope_of
 
 _MAX_DEPTH = 6
@@ -26,7 +26,7 @@ def frame_string(node: ast.expr, index: ModuleIndex, depth: int = _MAX_DEPTH) ->
         resolved = resolve(index, node)
         value: ast.expr | None = resolved if isinstance(resolved, ast.expr) else None
         if isinstance(value, ast.Name):  # unknown here: a global the reading scope does not rebind?
-            value = None if value.id in scope_of(index, value).bindings else module_constant(value, index)
+            value = None if value.id in scope_of(index, value).bindings else module_constant(index, value.id)
         return frame_string(value, index, depth - 1) if value is not None and not isinstance(value, ast.Name) else None
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
         left, right = frame_string(node.left, index, depth - 1), frame_string(node.right, index, depth - 1)
@@ -57,18 +57,6 @@ def frame_string(node: ast.expr, index: ModuleIndex, depth: int = _MAX_DEPTH) ->
             pieces.append(text)
         return _short("".join(pieces))
     return None
-
-
-def module_constant(name: ast.Name, index: ModuleIndex) -> ast.expr | None:
-    """The value of a module-level name assigned exactly once (never augmented, nor rebound by a
-    function through `global`)."""
-    module = index.scopes[index.tree]
-    found = module.bindings.get(name.id) or []
-    if len(found) != 1 or not isinstance(found[0], ast.expr) or name.id in module.augmented:
-        return None
-    if any(isinstance(node, ast.Global) and name.id in node.names for node in index.nodes(ast.Global)):
-        return None
-    return found[0]
 
 
 def _formatted(render: object) -> str | None:

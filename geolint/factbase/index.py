@@ -437,6 +437,18 @@ _REVERSED_CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
 _SKIPPED, _CHILDLESS, _WALKED = 0, 1, 2
 
 
+def module_constant(index: ModuleIndex, name: str) -> ast.expr | None:
+    """The value of a module-level name assigned exactly once (never augmented, nor rebound by a
+    function through `global`): what every reader of the name sees."""
+    module = index.scopes[index.tree]
+    found = module.bindings.get(name) or []
+    if len(found) != 1 or not isinstance(found[0], ast.expr) or name in module.augmented:
+        return None
+    if any(name in node.names for node in index.nodes(ast.Global)):  # type: ignore[attr-defined]
+        return None
+    return found[0]
+
+
 def _node_types(base: type[ast.AST] = ast.AST) -> list[type[ast.AST]]:
     """Every `ast` node class."""
     found: list[type[ast.AST]] = []

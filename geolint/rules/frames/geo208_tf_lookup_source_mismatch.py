@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.factbase import ModuleIndex, index_of
-from geolint.factbase.frame_ids import module_constant
+from geolint.factbase.index import module_constant
 from geolint.factbase.pose_parts import call_name
 from geolint.factbase.reaching import resolve, runs_before, scope_of, single_definition, statement_of
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -167,7 +167,7 @@ def _literal(node: ast.expr, index: ModuleIndex) -> str | None:
     """A string literal, or a name that certainly holds one (a module constant)."""
     if isinstance(node, ast.Name):
         resolved = resolve(index, node)
-        constant = module_constant(node, index) if isinstance(resolved, ast.Name) else resolved
+        constant = module_constant(index, node.id) if isinstance(resolved, ast.Name) else resolved
         node = constant if isinstance(constant, ast.expr) else node
     if isinstance(node, ast.Constant) and isinstance(node.value, str):
         return node.value

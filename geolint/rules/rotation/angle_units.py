@@ -26,7 +26,7 @@ import re
 from collections import Counter
 from dataclasses import dataclass
 
-from geolint.factbase.index import ParamBinding, Scope
+from geolint.factbase.index import ParamBinding, Scope, module_constant
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import (
     FactBase,
@@ -377,10 +377,8 @@ def _module_constant(facts: FactBase, qualified: str) -> tuple[float, str] | Non
     if found is None:
         return None
     other, name = found
-    bound = other.index.scopes[other.index.tree].bindings.get(name, [])
-    if len(bound) != 1 or not isinstance(bound[0], ast.expr) or name in _declared_global(other):
-        return None
-    return _literal_at(bound[0], f"in {_short_path(other.path)}")
+    value = module_constant(other.index, name)
+    return None if value is None else _literal_at(value, f"in {_short_path(other.path)}")
 
 
 def _class_of(facts: FactBase, owner: ast.expr) -> tuple[FactBase, ast.ClassDef, bool] | None:
