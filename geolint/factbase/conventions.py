@@ -19,6 +19,10 @@ corrections, typos and loose labels read as frames), so names alone count only w
 is *stated*: by `naming = "dst-first" | "src-first"`, or by the project's own declarations, all in
 one order. Elsewhere a frame finding needs an explicit declaration on one side (`NameReading.stated`).
 
+Boston Dynamics' `a_tform_b` (`odom_tform_body`) is not a guess of this kind: the SDK's convention
+says its direction in the name, so such names are read as declarations in every project
+(geolint.factbase.bosdyn) and take no part in the votes.
+
 The whole project is read (once per process and project root; files without a declaration or a
 composition of `T_` names are skipped by a substring test before any parsing).
 """

@@ -824,6 +824,8 @@ class FactBase:
         stated = frames_of_name(name, self.config)
         if stated is None:
             return self._extrinsics_frames(name)
+        if "_tform_" in name:
+            return bosdyn.name_fact(name, stated)  # Boston Dynamics' `odom_tform_body` states its direction
         if self.order_names_mixed and order_dependent(name):
             return None
         if order == SRC_FIRST and stated.is_operator and order_dependent(name):
@@ -982,7 +984,7 @@ class FactBase:
         return FrameFact(frames, (f"{how} at line {value.lineno}",), True)
 
     def _frames_of_call(self, node: ast.Call, order: str) -> FrameFact | None:
-        declared = self._declared_frames(node)
+        declared = self._declared_frames(node) or bosdyn.helper_frames(self, node)
         if declared is not None:
             return declared
         homogeneous = self.homogeneous(node)
@@ -1418,4 +1420,4 @@ __all__ = [
 
 
 # Imported last: the message tables read this module's helpers (no cycle at run time, only at import).
-from geolint.factbase import messages  # noqa: E402
+from geolint.factbase import bosdyn, messages  # noqa: E402

@@ -114,6 +114,7 @@ _GATE_WORDS = sorted(
     | {"quat", "quaternion", "euler", "rotvec", "axangle", "rpy", "Quaternion", "Rx", "Ry", "Rz", "RPY", "Eul"}
     | {"rotx", "roty", "rotz", "transform_points", "vector_to_point", "vector_to_direction", "do_transform_cloud"}
     | {"matrix_world", "from_frame", "to_frame", "as_frames", "lookup_transform", "lookupTransform", "Frame", "SE3"}
+    | {"tform"}  # Boston Dynamics' `odom_tform_body`
 )
 _FRAME_WORDS = "|".join(sorted(names.KNOWN_FRAMES | {"c", "w", "cam"}))
 # Structure every rule needs one of: a matrix product (not a decorator), a transpose, a frame-naming

@@ -8,7 +8,7 @@ name could be read two ways, the answer is None: a wrong guess costs more than s
 Conventions understood (each one switchable in `[tool.geolint.naming]`):
 
 - dst_first:  `T_world_cam`, `R_world_cam`   (maps cam into world)
-- prefix_t:   `world_T_cam`, `world_R_cam`
+- prefix_t:   `world_T_cam`, `world_R_cam`, Boston Dynamics' `world_tform_cam` (a statement: see factbase.bosdyn)
 - monogram:   Drake `X_WB`, `R_WB` (pose of B in W), `p_BQ` (position of Q measured in B)
 - from_style: `world_from_cam`; values `point_in_cam`, `normals_in_world`
 - to_style:   `cam_to_world`, pytransform3d `cam2world` (src first)
@@ -261,6 +261,10 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
     raw = name.split("_")
     if any(not part for part in raw):
         return
+    if "_tform_" in name:
+        if naming.prefix_t:
+            yield tform_frames(name)
+        return  # Boston Dynamics' `a_tform_b` is read that way or not at all
     if naming.monogram:
         match = _MONOGRAM_OPERATOR.match(name)
         if match:
@@ -300,6 +304,30 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
 
 
 _VALUE_HEADS = DIRECTION_WORDS | POINT_WORDS | POINT_PREFIXES | DIRECTION_PREFIXES
+
+# The frames of Boston Dynamics' SDK whose names have several words (bosdyn.client.frame_helpers).
+TFORM_COMPOUND_FRAMES = frozenset(
+    {
+        "flat_body", "desired_tool", "gaze_target", "fl_foot", "fr_foot", "hl_foot", "hr_foot",
+        "desired_tool_at_end", "measured_tool_at_start",
+    }
+)  # fmt: skip
+
+
+def tform_frames(name: str) -> NameFrames | None:
+    """Boston Dynamics' `a_tform_b` (`odom_tform_body`): the pose of b in a, mapping b into a.
+
+    Each side is one frame word or one of the SDK's compound frames (`flat_body_tform_body`);
+    anything else (`last_odom_tform_body`, `se3_a_tform_b`, `vision_tform_goal`) is not read:
+    a qualifier or a waypoint word would be taken for a frame."""
+    dst, separator, src = name.strip("_").partition("_tform_")
+    if not separator or not all(_is_tform_frame(side) for side in (dst, src)):
+        return None
+    return NameFrames(dst=dst, src=src, operator="transform")
+
+
+def _is_tform_frame(side: str) -> bool:
+    return side in TFORM_COMPOUND_FRAMES or "_" not in side and side.islower() and _is_frame(side)
 
 
 def _operator(letter: str) -> Operator:

@@ -305,3 +305,21 @@ def test_ones_buffer_filled_with_xyz() -> None:
     model, module = model_of("import numpy as np\nh = np.ones(4)\nh[:3] = x\nh\n")
     found = model.homogeneous(last_value(module))
     assert found is not None and found.w == 1 and found.fixed == "np.zeros(4)"
+
+
+@pytest.mark.parametrize(
+    ("name", "frames"),
+    [
+        ("odom_tform_body", NameFrames(dst="odom", src="body", operator="transform")),
+        ("_vision_tform_hand", NameFrames(dst="vision", src="hand", operator="transform")),
+        ("flat_body_tform_body", NameFrames(dst="flat_body", src="body", operator="transform")),
+        ("last_odom_tform_body", None),  # a qualifier, not part of the frame
+        ("body_tform_goal", None),  # a waypoint word
+        ("se3_a_tform_b", None),
+        ("tform_body", None),
+    ],
+)
+def test_boston_dynamics_tform_names(name: str, frames: NameFrames | None) -> None:
+    """Boston Dynamics' `a_tform_b` maps b into a, whatever the project's `T_a_b` order."""
+    assert frames_of_name(name) == frames
+    assert frames_of_name(name, Config(naming=NamingConventions(prefix_t=False))) is None

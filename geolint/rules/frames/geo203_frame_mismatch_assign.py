@@ -5,6 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.rules.base import Invalid, Valid
+from geolint.factbase.bosdyn import in_tform_words
 from geolint.factbase.model import FactBase, last_name, walk_within
 from geolint.factbase.rule_support import documents_naming, STATED, FactRule, Mismatch
 from geolint.semantic.names import NameFrames, same_frame
@@ -42,7 +43,10 @@ class FrameMismatchAssign(FactRule):
     ## Known problems
     Without a stated convention a value's frames must be declared, and a declared value is reported
     only when it reverses the name (`world_to_cam = buffer.lookup_transform("world", "cam", t)`):
-    labels and names may use other words for one frame. So `T_cam_world = T_world_cam` is reported
+    labels and names may use other words for one frame. Boston Dynamics' Spot SDK is the exception:
+    its `a_tform_b` names and `bosdyn.client.frame_helpers` calls use the SDK's frame names, so
+    `odom_tform_body = get_vision_tform_body(snapshot)` is reported; a name with a qualifier
+    (`last_odom_tform_body`) or a waypoint (`body_tform_goal`) is not read. So `T_cam_world = T_world_cam` is reported
     only where the convention is stated; the rule's three true findings on real code all rested on
     declared frames.
     """
@@ -77,6 +81,11 @@ class FrameMismatchAssign(FactRule):
         # the result's frame is declared "base", the name says world: labels and names may use other words for one
         # frame, so only a reversal counts
         Valid('T_obj_world = RigidTransform(R, t, from_frame="obj", to_frame="base")\np_world = T_obj_world * p_obj\n'),
+        # Boston Dynamics' `a_tform_b` maps b into a; `.inverse()` swaps the frames
+        Valid("from bosdyn.client import frame_helpers\nodom_tform_body = frame_helpers.get_odom_tform_body(snapshot)\n"),
+        Valid("from bosdyn.client.frame_helpers import get_vision_tform_body\nbody_tform_vision = get_vision_tform_body(snapshot).inverse()\n"),
+        # a qualifier before the frame (`last_`) is not read as part of it
+        Valid("from bosdyn.client import frame_helpers\nlast_odom_tform_body = frame_helpers.get_vision_tform_body(snapshot)\n"),
     ]
     INVALID = [
         Invalid("p_world = T_cam_base @ p_base\n", options=STATED),
@@ -85,6 +94,12 @@ class FrameMismatchAssign(FactRule):
         Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_cam_world = pose\n    return T_cam_world\n", options=STATED),
         # no convention stated: tf2's lookup_transform(target, source, t) maps source into target
         Invalid('world_to_cam = tf_buffer.lookup_transform("world", "cam", rospy.Time())\n'),
+        # Boston Dynamics' names and frame_helpers state their frames in one vocabulary: any other word is another frame
+        Invalid("from bosdyn.client import frame_helpers\nodom_tform_body = frame_helpers.get_vision_tform_body(snapshot)\n"),
+        Invalid(
+            "from bosdyn.client.frame_helpers import ODOM_FRAME_NAME, BODY_FRAME_NAME, get_a_tform_b\n"
+            "body_tform_odom = get_a_tform_b(snapshot, ODOM_FRAME_NAME, BODY_FRAME_NAME)\n"
+        ),
     ]
 
     def run(self) -> None:
@@ -112,7 +127,8 @@ class FrameMismatchAssign(FactRule):
                 return
             if not (facts.names_stated or actual.declared):
                 return  # a name assigned from names, where the project does not state its convention: too weak
-            if actual.declared and not _reversed(stated.frames, actual.frames):
+            one_vocabulary = in_tform_words(stated) and in_tform_words(actual)  # Spot SDK names and frame_helpers
+            if actual.declared and not one_vocabulary and not _reversed(stated.frames, actual.frames):
                 return  # labels and names use different words (`T_table_world` from "patch"): only a reversal counts
             if not actual.declared and _is_relabel(value) and not _swaps_frames(stated.frames, actual.frames):
                 return  # `p_world = p_cam`, `cam2img = lidar2img`: two names, nothing computed; only a swap counts
