@@ -1,6 +1,6 @@
 """Linter throughput on a real source tree, side by side in one run (medians of repeats).
 
-Prints lines/s for: the `ast.parse` floor (read + decode + parse every file, one process),
+Prints lines/s for (each repeat a round that measures every row once, so drift hits all alike): the `ast.parse` floor (read + decode + parse every file, one process),
 geolint cold with 1 job and with 2 jobs (`--no-cache`), geolint warm (an unchanged tree, served
 from the cache), `ruff check --select ALL --no-cache`, and optionally `fixit lint` with its
 built-in rules. Every geolint, ruff and fixit figure is a real CLI run in a subprocess, start-up
@@ -25,6 +25,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import Callable
 
 
 def default_tree() -> Path:
@@ -70,9 +71,8 @@ def time_command(command: list[str], cwd: Path, env: dict[str, str]) -> tuple[fl
     return elapsed, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
-def median_of(repeats: int, measure) -> tuple[float, float]:
+def medians(runs: list[tuple[float, float]]) -> tuple[float, float]:
     """Medians of wall and CPU seconds (on a shared machine, CPU time is the steadier of the two)."""
-    runs = [measure() for _ in range(repeats)]
     return statistics.median(run[0] for run in runs), statistics.median(run[1] for run in runs)
 
 
@@ -106,26 +106,35 @@ def main() -> int:
     print(f"files: {len(files)}, lines: {lines}, cores: {jobs}, repeats: {args.repeats} (fixit: {args.fixit_repeats})")
     print(f"date: {time.strftime('%Y-%m-%d %H:%M')} (figures are medians; a shared machine adds noise)")
     print(f"load average at start: {' '.join(f'{value:.2f}' for value in os.getloadavg())}")
-    rows: list[tuple[str, tuple[float, float]]] = []
-
-    rows.append(("ast.parse floor (1 process)", median_of(args.repeats, lambda: time_ast_floor(files))))
-    rows.append(("geolint cold, --jobs 1", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", "1"], workdir, env))))
-    rows.append(("geolint cold, --jobs 2", median_of(args.repeats, lambda: time_command([*geolint, "--no-cache", "--jobs", "2"], workdir, env))))
+    # Each repeat is a round that measures every row once, in the same order: on a machine whose speed
+    # drifts (a shared VM's did by 40% within an hour), drift then moves every row alike and the ratios
+    # between rows, the figures that count, stay put; medians are taken over the rounds.
+    measures: dict[str, Callable[[], tuple[float, float]]] = {
+        "ast.parse floor (1 process)": lambda: time_ast_floor(files),
+        "geolint cold, --jobs 1": lambda: time_command([*geolint, "--no-cache", "--jobs", "1"], workdir, env),
+        "geolint cold, --jobs 2": lambda: time_command([*geolint, "--no-cache", "--jobs", "2"], workdir, env),
+        "geolint warm (cache)": lambda: time_command(geolint, workdir, env),
+    }
     shutil.rmtree(workdir / "cache", ignore_errors=True)
-    time_command(geolint, workdir, env)  # fill the cache
-    rows.append(("geolint warm (cache)", median_of(args.repeats, lambda: time_command(geolint, workdir, env))))
+    time_command(geolint, workdir, env)  # fill the cache (the cold rows run with --no-cache: they leave it alone)
     ruff = shutil.which("ruff", path=str(Path(sys.executable).parent)) or shutil.which("ruff")
     if ruff is None:
         print("ruff: not installed (pip install ruff), skipped")
     else:
         ruff_command = [ruff, "check", "--select", "ALL", "--no-cache", "--exit-zero", "--quiet", "--isolated", str(tree)]
-        rows.append(("ruff check --select ALL", median_of(args.repeats, lambda: time_command(ruff_command, workdir, env))))
+        measures["ruff check --select ALL"] = lambda: time_command(ruff_command, workdir, env)
+    runs: dict[str, list[tuple[float, float]]] = {label: [] for label in measures}
+    for round_number in range(1, args.repeats + 1):
+        for label, measure in measures.items():
+            runs[label].append(measure())
+        print(f"round {round_number}: " + ", ".join(f"{label.split(' (')[0]} {runs[label][-1][0]:.1f} s" for label in measures))
+    rows: list[tuple[str, tuple[float, float]]] = [(label, medians(runs[label])) for label in measures]
     if not args.skip_fixit:
         fixit = shutil.which("fixit", path=str(Path(sys.executable).parent)) or shutil.which("fixit")
         if fixit is None:
             print("fixit: not installed, skipped")
         else:
-            rows.append(("fixit lint (built-in rules)", median_of(args.fixit_repeats, lambda: time_command([fixit, "lint", str(tree)], workdir, env))))
+            rows.append(("fixit lint (built-in rules)", medians([time_command([fixit, "lint", str(tree)], workdir, env) for _ in range(args.fixit_repeats)])))
 
     print(f"{'':32} {'wall s':>8} {'lines/s':>10} {'CPU s':>8} {'lines/CPU s':>12}")
     for label, (wall, cpu) in rows:
