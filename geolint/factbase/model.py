@@ -108,6 +108,9 @@ class FrameFact:
 # --- small ast helpers -----------------------------------------------------------------------
 
 
+_MATMUL_CALL_NAMES = frozenset(("dot", "matmul", "bmm", "einsum"))  # what `FactBase.matmul` reads as a product
+
+
 def dotted_name(node: ast.AST) -> str | None:
     """`np.linalg.norm` for that expression; None for anything but a plain dotted name."""
     parts = []
@@ -380,9 +383,12 @@ class FactBase:
     # -- matrix products -------------------------------------------------------------------
     def matmul(self, node: ast.AST) -> MatMul | None:
         """`a @ b`, `a.dot(b)`, `np.dot(a, b)`, `np.matmul(a, b)`, `torch.matmul/bmm(a, b)`."""
-        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
-            return MatMul(node, node.left, node.right)
-        if isinstance(node, ast.Call):
+        kind = type(node)
+        if kind is ast.BinOp:
+            return MatMul(node, node.left, node.right) if type(node.op) is ast.MatMult else None  # type: ignore[attr-defined]
+        # asked of every call by several rules: the callee's last name rules out nearly all at once
+        if kind is ast.Call and self.called_name(node.func) in _MATMUL_CALL_NAMES:  # type: ignore[attr-defined]
+            assert isinstance(node, ast.Call)
             positional = positional_args(node)
             func = node.func
             if isinstance(func, ast.Attribute) and func.attr in ("dot", "matmul") and len(positional) == 1 and not node.keywords:
