@@ -6,6 +6,7 @@ import ast
 import re
 
 from geolint.factbase import index_of, ros_packages
+from geolint.factbase.index import ModuleIndex
 from geolint.factbase.frame_ids import frame_string
 from geolint.factbase.pose_parts import call_name
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -27,6 +28,7 @@ _SETS_TRANSFORMS = frozenset({"sendTransform", "send_transform", "set_transform"
 _TF2_TEXT = re.compile(r"tf2_ros|rclpy")
 TF2 = "tf2"  # the module uses tf2_ros or ROS 2 itself
 ROS1_TF2 = "ros1-tf2"  # a ROS 1 module (rospy, message types) whose ROS package targets tf2
+_STRAY = re.compile(r"[\"'\s]")  # a quote or whitespace: never part of a frame id
 
 
 class InvalidTfFrameId(AstRule):
@@ -46,6 +48,9 @@ class InvalidTfFrameId(AstRule):
     `package.xml` depends on a tf2 package and not on `tf`, or one of its modules imports `tf2_ros`,
     `tf2_py`, `tf2_geometry_msgs`, `tf2_sensor_msgs` or `tf2_kdl`.
 
+    In the same modules, and for every frame above including a `TransformStamped`'s, it flags a quote or whitespace in a frame id's literal text (the whole
+    id, or a literal part of one built at run time: `prefix + '"vision'`, `f"{ns}/base link"`).
+
     It also flags a transform whose parent and child are the same frame
     (`t.header.frame_id = "base_link"`, `t.child_frame_id = "base_link"`), and, in a module that
     publishes static transforms, a child given two literal parents in one function (outside
@@ -59,8 +64,10 @@ class InvalidTfFrameId(AstRule):
     657-659 and 810-812; the same in ros2/geometry2). A message stamped `"/camera_link"` therefore cannot be
     transformed: tf2_ros `Buffer.transform` looks up `msg.header.frame_id`
     (`tf2_ros/src/tf2_ros/buffer_interface.py:65`) and Noetic's rviz looks up each display's stamp
-    unchanged (`rviz/src/rviz/frame_manager.cpp:228`), so the data is not shown. A transform from a
-    frame to itself is dropped with a `TF_SELF_TRANSFORM` error. tf is a tree: a frame with two
+    unchanged (`rviz/src/rviz/frame_manager.cpp:228`), so the data is not shown. A frame id is a name such as `base_link` (URDF link names, the
+    frames of drivers and broadcasters): a quote or a space in one is a typo that makes it another
+    frame, which nothing publishes, so every lookup of it fails and rviz shows nothing. A transform
+    from a frame to itself is dropped with a `TF_SELF_TRANSFORM` error. tf is a tree: a frame with two
     parents makes the tree flip between them on every update.
 
     ## Example
@@ -75,8 +82,8 @@ class InvalidTfFrameId(AstRule):
 
     ## Fix safety
     Dropping the leading slash of a literal is offered as an unsafe fix (a frame published
-    elsewhere with the slash, by ROS 1 code, would need the same change). Built frame ids and the
-    other two cases have no fix.
+    elsewhere with the slash, by ROS 1 code, would need the same change). Built frame ids, stray
+    quotes and whitespace (which character was meant is a guess) and the other two cases have no fix.
 
     ## Known problems
     Where tf2 itself strips the slash the rule is silent: the frames of a `TransformStamped` (built
@@ -91,7 +98,9 @@ class InvalidTfFrameId(AstRule):
     goes unreported although Noetic's rviz rejects it. In ROS 1 code `child_frame_id` is not checked (read by
     `setTransform`, which strips it, or by odometry consumers). Frame ids read at run time
     (parameters, attributes such as `self.frame_id`) are not followed, nor frame ids built in a
-    helper function (`"%s/%s" % (prefix, frame)` with a `tf_prefix` parameter).
+    helper function (`"%s/%s" % (prefix, frame)` with a `tf_prefix` parameter). A quote or space
+    is looked for only in literal text that reaches a frame-id position above, not in a template
+    (`"%s %s" % ...`, `"{} {}".format(...)`) whose arguments are unknown.
     """
 
     code = "GEO207"
@@ -116,6 +125,8 @@ class InvalidTfFrameId(AstRule):
         Valid("import rospy\nfrom std_msgs.msg import Header\nheader = Header()\nheader.frame_id = '/camera_link'\n"),
         Valid("import tf2_ros\nmsg.header.frame_id = rospy.get_param('~frame_id', '/gps')\n"),  # read at run time
         Valid("import tf2_ros\ncloud = cloud.transform(T_world_cam)\nmesh.transform(T, '/tmp/mesh.ply')\n"),
+        Valid("import rclpy\nmsg.header.frame_id = prefix + 'vision'\nlog.info('frame: ' + msg.header.frame_id)\n"),
+        Valid("import rclpy\nmsg.header.frame_id = '%s %s' % (a, b)\n"),  # a template: its arguments are unknown
     ]
     INVALID = [
         Invalid(
@@ -130,6 +141,10 @@ class InvalidTfFrameId(AstRule):
         Invalid("import tf2_ros\np = buffer.transform(pose, '/map', rospy.Duration(0.1))\n"),
         Invalid("import tf2_ros\nt = buffer.lookup_transform_full('map', then, 'odom', now, '/world')\n"),
         Invalid("import tf2_ros\nt.header.frame_id = 'base_link'\nt.child_frame_id = 'base_link'\n"),
+        # a stray quote or space in a frame id's literal text (a TransformStamped's too)
+        Invalid("import rclpy\nodom.header.frame_id = node.frame_prefix + '\"vision'\n"),
+        Invalid("import tf2_ros\nt = TransformStamped()\nt.child_frame_id = 'base_link '\nb.sendTransform(t)\n"),
+        Invalid("import tf2_ros\nt = buffer.lookup_transform(f'{ns}/base link', 'map', stamp)\n"),
         Invalid(
             "from tf2_ros import StaticTransformBroadcaster\ndef publish(b):\n    a = TransformStamped()\n"
             "    a.header.frame_id = 'base_link'\n    a.child_frame_id = 'camera_link'\n"
@@ -150,9 +165,10 @@ class InvalidTfFrameId(AstRule):
         static = "StaticTransformBroadcaster" in self.context.source or "static_transform" in self.context.source
         transforms = _TransformMessages(tree, parents)
         for node in ast.walk(tree):
-            for site, value, role in _frame_sites(node, dialect, transforms, parents):
+            for site, value, role, slash_checked in _frame_sites(node, dialect, transforms, parents):
                 text = frame_string(value, index)
-                if text is None or not text.startswith("/"):
+                if not (slash_checked and text is not None and text.startswith("/")):
+                    self._check_characters(site, value, text, index)
                     continue
                 literal = isinstance(value, ast.Constant)
                 shown = repr(text) if literal else f"{ast.unparse(value)} (= {text!r})"
@@ -172,6 +188,25 @@ class InvalidTfFrameId(AstRule):
                 )
             if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef)):
                 self._check_transforms_of(node, parents, static)
+
+    def _check_characters(self, site: str, value: ast.expr, text: str | None, index: ModuleIndex) -> None:
+        """A quote or whitespace in the literal text of a frame id (all of it, or a literal part)."""
+        parts = [text] if text is not None else _literal_parts(value, index)
+        for part in parts:
+            stray = _STRAY.search(part)
+            if stray is None:
+                continue
+            what = "whitespace" if stray.group().isspace() else "a quote"
+            if text is None:
+                shown = f"`{ast.unparse(value)}` (literal part {part!r})"
+            else:
+                shown = repr(text) if isinstance(value, ast.Constant) else f"`{ast.unparse(value)}` (= {text!r})"
+            self.report(
+                value,
+                f"frame id {shown} in `{site}` contains {what}: frame ids are names such as 'base_link', "
+                "so this one names a frame nothing publishes and looking it up fails",
+            )
+            return
 
     def _dialect(self, tree: ast.Module) -> str | None:
         """TF2 for a tf2 or ROS 2 module, ROS1_TF2 for a ROS 1 module whose package targets tf2, else None."""
@@ -226,36 +261,50 @@ class InvalidTfFrameId(AstRule):
 
 def _frame_sites(
     node: ast.AST, dialect: str, transforms: _TransformMessages, parents: dict[ast.AST, ast.AST]
-) -> list[tuple[str, ast.expr, str]]:
-    """(where, value, "lookup" or "stamp") for each frame id this node (an assignment, a call) sets or asks for."""
-    found: list[tuple[str, ast.expr, str]] = []
+) -> list[tuple[str, ast.expr, str, bool]]:
+    """(where, value, "lookup" or "stamp", whether a leading slash breaks it) for each frame id this node (an
+    assignment, a call) sets or asks for."""
+    found: list[tuple[str, ast.expr, str, bool]] = []
     if isinstance(node, ast.Assign):
         for target in node.targets:
             field = _frame_field(target)
-            if field is None or transforms.holds(field[1], node):
-                continue  # a TransformStamped: tf2's setTransform strips the slash (buffer_core.cpp)
-            if field[0] == "child" and dialect == ROS1_TF2:
-                continue  # ROS 1: read by tf2's setTransform (stripped) or by odometry consumers
-            found.append((ast.unparse(target), node.value, "stamp"))
+            if field is None:
+                continue
+            # a TransformStamped: tf2's setTransform strips the slash (buffer_core.cpp); ROS 1's child frame:
+            # read by tf2's setTransform (stripped) or by odometry consumers
+            stripped = transforms.holds(field[1], node) or field[0] == "child" and dialect == ROS1_TF2
+            found.append((ast.unparse(target), node.value, "stamp", not stripped))
     elif isinstance(node, ast.Call):
         name = call_name(node) or ""
         positions = _FRAME_ARGUMENTS.get(name, ())
         if name in _BUFFER_ONLY and not _BUFFER_NAME.search(ast.unparse(node.func.value) if isinstance(node.func, ast.Attribute) else ""):
             positions = ()  # `transform` is a common name: only on a receiver named like a tf buffer
         if isinstance(node.func, ast.Attribute):
-            found.extend((name, node.args[position], "lookup") for position in positions if position < len(node.args))
+            found.extend((name, node.args[position], "lookup", True) for position in positions if position < len(node.args))
         inside_transform = transforms.built_by(node, parents)
-        if name == "Header" and len(node.args) >= 3 and not inside_transform:
-            found.append(("Header(seq, stamp, frame_id)", node.args[2], "stamp"))  # ROS 1 Header(seq, stamp, frame_id)
+        if name == "Header" and len(node.args) >= 3:  # ROS 1 Header(seq, stamp, frame_id)
+            found.append(("Header(seq, stamp, frame_id)", node.args[2], "stamp", not inside_transform))
         for keyword in node.keywords:
             if keyword.arg in _FRAME_KEYWORDS and _is_frame_call(node, keyword.arg):
                 role = "lookup" if name in _FRAME_ARGUMENTS else "stamp"
-                if role == "stamp" and (inside_transform or name == "TransformStamped"):
-                    continue
-                if keyword.arg == "child_frame_id" and dialect == ROS1_TF2:
-                    continue
-                found.append((name if role == "lookup" else f"{keyword.arg}=", keyword.value, role))
+                stripped = role == "stamp" and (inside_transform or name == "TransformStamped")
+                stripped = stripped or keyword.arg == "child_frame_id" and dialect == ROS1_TF2
+                found.append((name if role == "lookup" else f"{keyword.arg}=", keyword.value, role, not stripped))
     return found
+
+
+def _literal_parts(value: ast.expr, index: ModuleIndex) -> list[str]:
+    """The literal text of a frame id built at run time: the known operands of a `+` chain and the
+    literal pieces of an f-string (`prefix + '"vision'`: '"vision')."""
+    if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Add):
+        parts = []
+        for operand in (value.left, value.right):
+            text = frame_string(operand, index)
+            parts.extend([text] if text is not None else _literal_parts(operand, index))
+        return parts
+    if isinstance(value, ast.JoinedStr):
+        return [piece.value for piece in value.values if isinstance(piece, ast.Constant) and isinstance(piece.value, str)]
+    return []
 
 
 class _TransformMessages:
