@@ -88,6 +88,7 @@ class ModuleIndex:
         self.scopes: dict[ast.AST, Scope] = {}
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.imported_modules: set[str] = set()
+        self.star_imports: list[str] = []  # `from .geometry import *`: the modules, with their leading dots
         self.functions: dict[str, ast.FunctionDef | ast.AsyncFunctionDef] = {}  # module level
         self.methods: dict[str, list[ast.FunctionDef | ast.AsyncFunctionDef]] = {}  # by name, in classes
         self.by_type: dict[type, list[ast.AST]] = {}  # in source (pre-)order
@@ -294,6 +295,7 @@ class ModuleIndex:
         if module:
             for alias in node.names:
                 if alias.name == "*":
+                    self.star_imports.append(module)
                     continue
                 local = alias.asname or alias.name
                 self.imports[local] = f"{module}.{alias.name}" if node.module else f"{module}{alias.name}"

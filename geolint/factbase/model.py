@@ -19,6 +19,7 @@ Every question answers None when the evidence is missing or contradictory.
 from __future__ import annotations
 
 import ast
+import builtins
 import sys
 import re
 from dataclasses import dataclass
@@ -108,6 +109,7 @@ class FrameFact:
 # --- small ast helpers -----------------------------------------------------------------------
 
 
+_BUILTIN_NAMES = frozenset(dir(builtins))  # `len(x)` under a star import: the builtin, in all but odd code
 _MATMUL_CALL_NAMES = frozenset(("dot", "matmul", "bmm", "einsum"))  # what `FactBase.matmul` reads as a product
 
 
@@ -555,7 +557,7 @@ class FactBase:
             return False
         imported = self.index.imports.get(root.id)  # type: ignore[attr-defined]
         if imported is None:
-            return False
+            return root is func and bool(self.index.star_imports) and self._star_imported_callee(func) is not None  # type: ignore[arg-type]
         # `from numpy import array` then `array(x)`: a third-party function has no summary either,
         # nor one of a package the project's folders do not hold (`gym.make`, `time.sleep`)
         top = imported.split(".")[0]
@@ -606,9 +608,28 @@ class FactBase:
         if not self.cross_module:
             return None
         head = func.id if isinstance(func, ast.Name) else dotted_name(func)
-        if head is None or head.split(".")[0] not in self.index.imports:
+        if head is None:
             return None
+        if head.split(".")[0] not in self.index.imports:
+            return self._star_imported_callee(func) if isinstance(func, ast.Name) else None
         return self._imported_function(self.qualified_name(func) or "", self.path)
+
+    def _star_imported_callee(self, func: ast.Name) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+        """`star_imported_function` for a called name that no scope around the call binds."""
+        return None if self.index.lookup(func.id, self.index.scope_of(func)) else self.star_imported_function(func.id)
+
+    def star_imported_function(self, name: str) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+        """The project function a module-level `name` is when the module neither binds nor imports it
+        there and exactly one of its star imports of project modules (`from ..collision import *`)
+        defines it."""
+        if not self.cross_module or name in _BUILTIN_NAMES or name in self.index.imports or name in self.index.scopes[self.index.tree].bindings:
+            return None
+
+        def find() -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+            found = [defined for module in self.index.star_imports if (defined := self._imported_function(f"{module}.{name}", self.path)) is not None]
+            return found[0] if len(found) == 1 else None
+
+        return self.module_fact(f"star-imported function {name}", find)
 
     def _imported_function(self, qualified: str, importer: str) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
         for _ in range(_MAX_REEXPORTS):

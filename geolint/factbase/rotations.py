@@ -279,7 +279,7 @@ def simulator_function(facts: FactBase, func: ast.AST) -> tuple[str, str] | None
     if not isinstance(func, ast.Name) or func.id in facts.index.imports:
         return None
     starred = _star_imported_tables(facts)
-    if len(starred) != 1 or func.id in _module_bindings(facts):
+    if len(starred) != 1 or facts.index.lookup(func.id, facts.index.scope_of(func)):
         return None  # none, or two tables that may disagree (`quat_mul` is x, y, z, w in one, w, x, y, z in the other)
     (module,) = starred
     tables = _SIMULATOR_TABLES[module]
@@ -287,21 +287,8 @@ def simulator_function(facts: FactBase, func: ast.AST) -> tuple[str, str] | None
 
 
 def _star_imported_tables(facts: FactBase) -> frozenset[str]:
-    def compute() -> frozenset[str]:
-        found = set()
-        for node in facts.index.nodes(ast.ImportFrom):
-            if node.level == 0 and node.module and any(alias.name == "*" for alias in node.names):  # type: ignore[attr-defined]
-                module = _SIMULATOR_ALIASES.get(node.module, node.module)  # type: ignore[attr-defined]
-                if module in _SIMULATOR_TABLES:
-                    found.add(module)
-        return frozenset(found)
-
-    return facts.module_fact("star-imported quaternion tables", compute)
-
-
-def _module_bindings(facts: FactBase) -> frozenset[str]:
-    return facts.module_fact(
-        "names bound anywhere", lambda: frozenset(name for scope in facts.index.scopes.values() for name in scope.bindings)
+    return frozenset(
+        module for module in (_SIMULATOR_ALIASES.get(module, module) for module in facts.index.star_imports) if module in _SIMULATOR_TABLES
     )
 
 
