@@ -279,17 +279,19 @@ class FactBase:
 
     def _cached(self, tag: str, node: ast.AST, compute: Callable[[], _T], order: str = "") -> _T | None:
         key = (tag, id(node), order)
-        if key in self._memo:
-            return self._memo[key]  # type: ignore[return-value]
-        if key in self._active or len(self._active) > _MAX_DEPTH:
+        value = self._memo.get(key, _MISSING)  # one lookup on a hit (asked hundreds of thousands of times a run)
+        if value is not _MISSING:
+            return value  # type: ignore[return-value]
+        active = self._active
+        if key in active or len(active) > _MAX_DEPTH:
             return None  # a cycle (`x = x + v`) or runaway depth: no evidence
-        self._active.add(key)
+        active.add(key)
         try:
             value = compute()
         finally:
-            self._active.discard(key)
+            active.discard(key)
         self._memo[key] = value
-        return value
+        return value  # type: ignore[return-value]
 
     def memoised(self, tag: str, node: ast.AST, compute: Callable[[], _T]) -> _T:
         """`compute()` once per `node` and `tag` for this module (no cycle guard: for facts that ask no others)."""
