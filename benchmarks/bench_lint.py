@@ -146,6 +146,11 @@ def main() -> int:
     print(f"warm / cold(jobs 1): {warm / cold:.1%} wall, {warm_cpu / cold_cpu:.1%} CPU")
     print(f"cold(jobs 1) / ast.parse: {cold / parse:.1f}x wall, {cold_cpu / parse_cpu:.1f}x CPU")
     print(f"jobs 2 speed-up over jobs 1 (wall): {cold / by_label['geolint cold, --jobs 2'][0]:.2f}x")
+    # the same ratios within each round (drift between rounds cancels), and their medians
+    parse_ratios = [c[0] / p[0] for c, p in zip(runs["geolint cold, --jobs 1"], runs["ast.parse floor (1 process)"])]
+    jobs_ratios = [one[0] / two[0] for one, two in zip(runs["geolint cold, --jobs 1"], runs["geolint cold, --jobs 2"])]
+    print(f"per round, cold(jobs 1) / ast.parse: {', '.join(f'{r:.2f}x' for r in parse_ratios)} (median {statistics.median(parse_ratios):.2f}x)")
+    print(f"per round, jobs 2 speed-up: {', '.join(f'{r:.2f}x' for r in jobs_ratios)} (median {statistics.median(jobs_ratios):.2f}x)")
     if "fixit lint (built-in rules)" in by_label:
         print(f"geolint cold (jobs 1) vs fixit: {by_label['fixit lint (built-in rules)'][0] / cold:.1f}x faster")
     print(f"load average at end: {' '.join(f'{value:.2f}' for value in os.getloadavg())}")
