@@ -77,8 +77,7 @@ DEGREE_CONSUMERS: dict[str, tuple[int, str]] = {
     "torchvision.transforms.functional.rotate": (1, "angle"),
 }
 _GL_ROTATE = frozenset({"glRotatef", "glRotated"})
-# `from pyglet.gl import *`: the star import the index does not record, and the usual way GL is imported
-_GL_STAR_IMPORT = re.compile(r"^[ \t]*from[ \t]+(?:OpenGL|pyglet)(?:\.\w+)*[ \t]+import[ \t]+\*", re.MULTILINE)
+_GL_PACKAGES = frozenset({"OpenGL", "pyglet"})  # `from pyglet.gl import *`: the usual way GL is imported
 
 
 @dataclass(frozen=True)
@@ -542,7 +541,7 @@ def degree_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         found is None
         and qualified in _GL_ROTATE
         and qualified not in facts.index.functions
-        and facts.module_fact("gl star import", lambda: _GL_STAR_IMPORT.search(facts.index.source) is not None)
+        and any(module.split(".")[0] in _GL_PACKAGES for module in facts.index.star_imports)
     ):
         found = (0, "angle")
     if found is None:

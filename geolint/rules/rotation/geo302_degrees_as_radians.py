@@ -10,7 +10,6 @@ from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule, with_keyword
-from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.rotation.angle_units import (
@@ -41,8 +40,6 @@ class _GateOrDivisionByPi:
 
     def search_with(self, source: str, config: object, /) -> bool:
         return GATE_TRIGGER.search_with(source, config) or _DIVIDES_BY_PI.search(source) is not None
-# `from ..collision import *` (at a line start, so not in a string): the module, with its dots
-_STAR_IMPORT = re.compile(r"^[ \t]*from[ \t]+([.\w]+)[ \t]+import[ \t]+\*", re.MULTILINE)
 _RADIAN_CONVERTERS = frozenset({"math.radians", "numpy.radians", "numpy.deg2rad"})
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
 _RADIAN_NAME = re.compile(r"(?i)rad")
@@ -464,31 +461,12 @@ class DegreesAsRadians(FactRule):
         helper's parameter it hands unchanged to one (not a parameter only named in radians)."""
         facts = self.facts
         found = [(element, f"`{self.code_of(node.func)}`") for argument in self._radian_arguments(node) or [] for element in _elements(argument)]
-        summary = None
-        if node.args and facts.may_have_summary(node):
-            summary = facts.function_summary(node)
-        elif node.args and isinstance(node.func, ast.Name):
-            summary = self._star_imported_summary(node.func.id)
+        summary = facts.function_summary(node) if node.args and facts.may_have_summary(node) else None
         if summary is not None:
             for index, (unit, where, by_name) in sorted(summary.reads_unit.items()):
                 if unit == RADIANS and where and not by_name and index < len(node.args) and not isinstance(node.args[index], ast.Starred):
                     found.append((node.args[index], f"`{self.code_of(node.func)}` (through {where})"))
         return found
-
-    def _star_imported_summary(self, name: str) -> FunctionSummary | None:
-        """The summary of `name` when the module defines and imports it nowhere but one of its `from
-        .module import *` of a project module defines it (`from ..collision import *` then
-        `generate_corners(...)`): the star import the index does not record."""
-        facts = self.facts
-        if name in facts.index.imports or name in facts.index.functions or not facts.cross_module:
-            return None
-        if any(name in scope.bindings for scope in facts.index.scopes.values()):
-            return None
-        modules = facts.module_fact("star imports", lambda: _STAR_IMPORT.findall(facts.index.source))
-        found = [defined for module in modules if (defined := facts._imported_function(f"{module}.{name}", facts.path)) is not None]
-        if len(found) != 1:
-            return None
-        return facts.project.summary(*found[0])
 
     def _value_key(self, node: ast.expr) -> tuple[object, ...] | None:
         """What makes two reads the same value: a name with the same reaching bindings in the same
