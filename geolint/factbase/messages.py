@@ -46,7 +46,7 @@ MESSAGE_FIELDS: dict[str, dict[str, tuple[str | None, Kind | None]]] = {
     **_ros("geometry_msgs", {
         "PointStamped": {"point": ("Point", Kind.POINT)},
         "Vector3Stamped": {"vector": ("Vector3", Kind.VECTOR)},
-        "Pose": {"position": ("Point", Kind.POINT)},
+        "Pose": {"position": ("Point", Kind.POINT), "orientation": ("Quaternion", None)},
         "PoseStamped": {"pose": ("Pose", None)},
         "PoseWithCovariance": {"pose": ("Pose", None)},
         "PoseWithCovarianceStamped": {"pose": ("PoseWithCovariance", None)},
@@ -58,12 +58,15 @@ MESSAGE_FIELDS: dict[str, dict[str, tuple[str | None, Kind | None]]] = {
         "AccelStamped": {"accel": ("Accel", None)},
         "Wrench": {"force": ("Vector3", Kind.VECTOR), "torque": ("Vector3", Kind.VECTOR)},
         "WrenchStamped": {"wrench": ("Wrench", None)},
-        "Transform": {"translation": ("Vector3", Kind.TRANSLATION)},
+        "Transform": {"translation": ("Vector3", Kind.TRANSLATION), "rotation": ("Quaternion", None)},
         "TransformStamped": {"transform": ("Transform", None)},
     }),
     **_ros("nav_msgs", {"Odometry": {"pose": ("PoseWithCovariance", None), "twist": ("TwistWithCovariance", None)}}),
     **_ros("sensor_msgs", {
-        "Imu": {"angular_velocity": ("Vector3", Kind.VECTOR), "linear_acceleration": ("Vector3", Kind.VECTOR)},
+        "Imu": {
+            "orientation": ("Quaternion", None), "angular_velocity": ("Vector3", Kind.VECTOR),
+            "linear_acceleration": ("Vector3", Kind.VECTOR),
+        },
         "MagneticField": {"magnetic_field": ("Vector3", Kind.VECTOR)},
     }),
 }  # fmt: skip

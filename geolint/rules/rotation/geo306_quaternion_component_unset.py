@@ -1,0 +1,236 @@
+"""GEO306 quaternion-component-unset: a quaternion message copied component by component with one left out."""
+
+from __future__ import annotations
+
+import ast
+
+from geolint.factbase.index import FUNCTION_NODES
+from geolint.factbase.messages import MESSAGE_FIELDS
+from geolint.factbase.model import dotted_name, walk_within
+from geolint.factbase.rule_support import FactRule
+from geolint.rules.base import Invalid, Valid
+from geolint.rules.triggers import AllOf
+
+_QUATERNION = "geometry_msgs.msg.Quaternion"
+_COMPONENTS = ("x", "y", "z", "w")
+# Words that make a source's `.x`, `.y`, `.z` a quaternion's (so it has a `.w` to copy too): a Quaternion
+# message misused to carry three angles (`q.x = rpy.x`) leaves w alone on purpose.
+_ROTATION_WORDS = frozenset({"rotation", "rot", "orientation", "quat", "quaternion", "attitude", "q"})
+_DEFAULTS = {"w": "0.0 in ROS 1, 1.0 in ROS 2", "x": "0.0", "y": "0.0", "z": "0.0"}
+
+
+class QuaternionComponentUnset(FactRule):
+    """A quaternion message is copied component by component and one component is never set.
+
+    ## What it does
+    Flags a function that builds a ROS message holding a quaternion (`Pose()`, `PoseWithCovariance()`,
+    `Odometry()`, `TransformStamped()`, `Imu()`, `Quaternion()`; no arguments, so its defaults are
+    known), copies three of the quaternion's components from one source
+    (`msg.pose.orientation.x = rotation.x`, `.y = rotation.y`, `.z = rotation.z`) and never sets
+    the fourth, neither by itself nor by replacing the whole quaternion or a message around it.
+
+    ## Why is this bad?
+    The missing component keeps the message's default: w is 0.0 in ROS 1 (genpy) and 1.0 in ROS 2
+    (`geometry_msgs/msg/Quaternion.msg`), x, y and z are 0.0. The message then carries a quaternion
+    that is not the source's (with w = 0, a rotation by 180 degrees about (x, y, z), not unit length),
+    and consumers normalise or reject it without a word.
+
+    ## Example
+    ```python
+    def to_pose(rotation):
+        pose = Pose()
+        pose.orientation.x = rotation.x
+        pose.orientation.y = rotation.y
+        pose.orientation.z = rotation.z
+        return pose
+    ```
+
+    ## Use instead
+    ```python
+    def to_pose(rotation):
+        pose = Pose()
+        pose.orientation.x = rotation.x
+        pose.orientation.y = rotation.y
+        pose.orientation.z = rotation.z
+        pose.orientation.w = rotation.w
+        return pose
+    ```
+
+    ## Fix safety
+    Copying the missing component from the same source, after the last copied one, is offered as an
+    unsafe fix: the source is assumed to have that component.
+
+    ## Known problems
+    Only messages built in the same function with no arguments are checked, and only while the
+    message is not handed anywhere (a call, another name) before the last component is copied: a
+    helper may set the missing one. When w is the one missing, the source's name must say it is a
+    rotation (`rotation`, `orientation`, `quat`, `q`...), since a Quaternion message is sometimes
+    used to carry three angles. Components copied through a helper, or from different sources, are
+    not looked at.
+    """
+
+    code = "GEO306"
+    name = "quaternion-component-unset"
+    triggers = AllOf(r"\.[xyzw]\s*=[^=]", r"_msgs|Quaternion")
+
+    VALID = [
+        Valid(
+            "from geometry_msgs.msg import Pose\ndef f(rotation):\n    pose = Pose()\n    pose.orientation.x = rotation.x\n"
+            "    pose.orientation.y = rotation.y\n    pose.orientation.z = rotation.z\n    pose.orientation.w = rotation.w\n    return pose\n"
+        ),
+        # a Quaternion message carrying three angles: the source says no rotation
+        Valid(
+            "from geometry_msgs.msg import Quaternion\ndef f(rpy):\n    q = Quaternion()\n    q.x = rpy.x\n    q.y = rpy.y\n    q.z = rpy.z\n    return q\n"
+        ),
+        # handed to a helper before the components are copied: it may set w
+        Valid(
+            "from geometry_msgs.msg import Pose\ndef f(rotation):\n    pose = Pose()\n    init_pose(pose)\n    pose.orientation.x = rotation.x\n"
+            "    pose.orientation.y = rotation.y\n    pose.orientation.z = rotation.z\n    return pose\n"
+        ),
+        # w set through another name
+        Valid(
+            "from geometry_msgs.msg import Pose\ndef f(rotation):\n    pose = Pose()\n    pose.orientation.x = rotation.x\n"
+            "    pose.orientation.y = rotation.y\n    pose.orientation.z = rotation.z\n    o = pose.orientation\n    o.w = rotation.w\n    return pose\n"
+        ),
+        # not built here: its w may be set already
+        Valid(
+            "from geometry_msgs.msg import Pose\ndef f(pose: Pose, rotation):\n    pose.orientation.x = rotation.x\n"
+            "    pose.orientation.y = rotation.y\n    pose.orientation.z = rotation.z\n    return pose\n"
+        ),
+    ]
+    INVALID = [
+        Invalid(
+            "from geometry_msgs.msg import PoseWithCovariance\ndef f(tform):\n    msg = PoseWithCovariance()\n"
+            "    msg.pose.orientation.x = tform.rotation.x\n    msg.pose.orientation.y = tform.rotation.y\n"
+            "    msg.pose.orientation.z = tform.rotation.z\n    return msg\n",
+            expected_fix="from geometry_msgs.msg import PoseWithCovariance\ndef f(tform):\n    msg = PoseWithCovariance()\n"
+            "    msg.pose.orientation.x = tform.rotation.x\n    msg.pose.orientation.y = tform.rotation.y\n"
+            "    msg.pose.orientation.z = tform.rotation.z\n    msg.pose.orientation.w = tform.rotation.w\n    return msg\n",
+        ),
+        Invalid(
+            "from geometry_msgs.msg import TransformStamped\ndef f(q):\n    t = TransformStamped()\n"
+            "    t.transform.rotation.w = q.w\n    t.transform.rotation.y = q.y\n    t.transform.rotation.z = q.z\n    return t\n"
+        ),
+    ]
+
+    def run(self) -> None:
+        index = self.facts.index
+        for scope_node, scope in index.scopes.items():
+            if not isinstance(scope_node, FUNCTION_NODES):
+                continue
+            copies: dict[str, list[ast.Attribute]] = {}  # the quaternion's path -> its component stores
+            for target, _ in scope.attribute_stores:
+                if target.attr in _COMPONENTS:
+                    path = dotted_name(target.value)
+                    if path is not None:
+                        copies.setdefault(path, []).append(target)
+            for path, targets in copies.items():
+                if len(targets) == 3 and len({target.attr for target in targets}) == 3:
+                    self._check(scope_node, path, targets)
+
+    def _check(self, function: ast.AST, path: str, targets: list[ast.Attribute]) -> None:
+        facts = self.facts
+        statements = [facts.parent(target) for target in targets]
+        if not all(isinstance(statement, ast.Assign) and len(statement.targets) == 1 for statement in statements):
+            return
+        assignments: list[ast.Assign] = statements  # type: ignore[assignment]
+        block = facts.parent(assignments[0])
+        if any(facts.parent(statement) is not block for statement in assignments) or not _one_block(block, assignments):
+            return  # in different arms of an `if`: the fourth may be set in a third
+        sources = {_source(target, statement.value) for target, statement in zip(targets, assignments)}
+        if len(sources) != 1 or None in sources:
+            return  # not `o.x = s.x`, `o.y = s.y`, `o.z = s.z` from one `s`
+        source = sources.pop()
+        assert source is not None
+        missing = next(component for component in _COMPONENTS if component not in {target.attr for target in targets})
+        if missing == "w" and not _ROTATION_WORDS & set(source.rsplit(".", 1)[-1].lower().split("_")):
+            return
+        root = targets[0].value
+        while isinstance(root, ast.Attribute):
+            root = root.value
+        assert isinstance(root, ast.Name)
+        built = self._built_here(function, root, path)
+        if built is None:
+            return
+        last = max(assignments, key=lambda statement: (statement.lineno, statement.col_offset))
+        if not self._untouched(function, root.id, path, missing, built, last):
+            return
+        indent = " " * last.col_offset
+        text = facts.code_of(last)
+        fix = f"{text}\n{indent}{path}.{missing} = {source}.{missing}" if "\n" not in text else None
+        self.report(
+            last,
+            f"`{path}.{missing}` is never set: {', '.join(sorted(t.attr for t in targets))} are copied from `{source}`, "
+            f"and {missing} keeps `{built}`'s default ({_DEFAULTS[missing]}), so the quaternion is not `{source}`'s",
+            replacement=fix,
+            applicability="unsafe",
+            fix_description=f"copy `{source}.{missing}` too",
+        )
+
+    def _built_here(self, function: ast.AST, root: ast.Name, path: str) -> str | None:
+        """`Cls()` when the message at the root of `path` is built in this function with no arguments and
+        `path` leads from it to a Quaternion (so the missing component's default is known)."""
+        facts = self.facts
+        bindings = facts.index.scope_of(root).bindings.get(root.id, [])
+        if len(bindings) != 1 or not isinstance(bindings[0], ast.Call):
+            return None
+        call = bindings[0]
+        if call.args or call.keywords or not isinstance(facts.parent(call), ast.Assign):
+            return None
+        cls = facts.qualified_name(call.func)
+        for attribute in path.split(".")[1:]:
+            cls = MESSAGE_FIELDS.get(cls or "", {}).get(attribute, (None, None))[0]
+        if cls != _QUATERNION:
+            return None
+        return f"{facts.code_of(call.func)}()"
+
+    def _untouched(self, function: ast.AST, root: str, path: str, missing: str, built: str, last: ast.Assign) -> bool:
+        """Nothing else can have set the missing component: no store to it or to anything around it, no
+        `setattr`, and the message not handed anywhere before the last copy (only written into)."""
+        facts = self.facts
+        prefixes = {".".join(path.split(".")[:depth]) for depth in range(2, path.count(".") + 2)}
+        for node in walk_within(function):
+            kind = type(node)
+            if kind is ast.Attribute:
+                context = type(node.ctx)  # type: ignore[attr-defined]
+                if context is ast.Store and (node.attr == missing or dotted_name(node) in prefixes):  # type: ignore[attr-defined]
+                    return False  # `x.w = ...` anywhere (an alias of the quaternion), or a part replaced
+                if context is ast.Load and dotted_name(node) == path and not isinstance(facts.parent(node), ast.Attribute):
+                    return False  # the quaternion itself handed on (a helper may normalise or complete it)
+            elif kind is ast.Name:
+                if node.id == root and _before(node, last) and not _writes_into(facts, node):  # type: ignore[attr-defined]
+                    return False  # the message handed on before the copy is complete
+            elif kind is ast.Call and isinstance(node.func, ast.Name) and node.func.id == "setattr":  # type: ignore[attr-defined]
+                return False
+        return True
+
+
+def _source(target: ast.Attribute, value: ast.expr) -> str | None:
+    """`s` for a store `o.x = s.x` (the same component of one source), else None."""
+    if isinstance(value, ast.Attribute) and value.attr == target.attr:
+        return dotted_name(value.value)
+    return None
+
+
+def _one_block(block: ast.AST | None, statements: list[ast.Assign]) -> bool:
+    """The statements all sit in one statement list of `block` (not in its `if` and `else` arms)."""
+    for field in ("body", "orelse", "finalbody"):
+        body = getattr(block, field, None)
+        if isinstance(body, list) and all(statement in body for statement in statements):
+            return True
+    return False
+
+
+def _before(node: ast.AST, statement: ast.stmt) -> bool:
+    return (node.lineno, node.col_offset) < (statement.lineno, statement.col_offset)  # type: ignore[attr-defined]
+
+
+def _writes_into(facts: object, name: ast.Name) -> bool:
+    """`name` is the root of a store target (`msg.pose.position.x = ...`) or the binding itself."""
+    if isinstance(name.ctx, ast.Store):
+        return True
+    node: ast.AST = name
+    parent = facts.parent(node)  # type: ignore[attr-defined]
+    while isinstance(parent, ast.Attribute):
+        node, parent = parent, facts.parent(parent)  # type: ignore[attr-defined]
+    return isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store)
