@@ -391,8 +391,7 @@ class FactBase:
         if kind is ast.BinOp:
             return MatMul(node, node.left, node.right) if type(node.op) is ast.MatMult else None  # type: ignore[attr-defined]
         # asked of every call by several rules: the callee's last name rules out nearly all at once
-        if kind is ast.Call and self.called_name(node.func) in _MATMUL_CALL_NAMES:  # type: ignore[attr-defined]
-            assert isinstance(node, ast.Call)
+        if isinstance(node, ast.Call) and self.called_name(node.func) in _MATMUL_CALL_NAMES:
             positional = positional_args(node)
             func = node.func
             if isinstance(func, ast.Attribute) and func.attr in ("dot", "matmul") and len(positional) == 1 and not node.keywords:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.factbase.index import FUNCTION_NODES
-from geolint.factbase.messages import MESSAGE_FIELDS
+from geolint.factbase.messages import MessageTypes
 from geolint.factbase.model import dotted_name, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
@@ -149,7 +149,7 @@ class QuaternionComponentUnset(FactRule):
         while isinstance(root, ast.Attribute):
             root = root.value
         assert isinstance(root, ast.Name)
-        built = self._built_here(function, root, path)
+        built = self._built_here(root, targets[0].value)
         if built is None:
             return
         last = max(assignments, key=lambda statement: (statement.lineno, statement.col_offset))
@@ -167,9 +167,9 @@ class QuaternionComponentUnset(FactRule):
             fix_description=f"copy `{source}.{missing}` too",
         )
 
-    def _built_here(self, function: ast.AST, root: ast.Name, path: str) -> str | None:
-        """`Cls()` when the message at the root of `path` is built in this function with no arguments and
-        `path` leads from it to a Quaternion (so the missing component's default is known)."""
+    def _built_here(self, root: ast.Name, quaternion: ast.expr) -> str | None:
+        """`Cls()` when the message at `root` is built in this function with no arguments and `quaternion`
+        (a path from it) is its Quaternion field (so the missing component's default is known)."""
         facts = self.facts
         bindings = facts.index.scope_of(root).bindings.get(root.id, [])
         if len(bindings) != 1 or not isinstance(bindings[0], ast.Call):
@@ -177,11 +177,8 @@ class QuaternionComponentUnset(FactRule):
         call = bindings[0]
         if call.args or call.keywords or not isinstance(facts.parent(call), ast.Assign):
             return None
-        cls = facts.qualified_name(call.func)
-        for attribute in path.split(".")[1:]:
-            cls = MESSAGE_FIELDS.get(cls or "", {}).get(attribute, (None, None))[0]
-        if cls != _QUATERNION:
-            return None
+        if facts.shared(MessageTypes).class_of(quaternion) != _QUATERNION:
+            return None  # the fact base's message classes, field by field from the constructor
         return f"{facts.code_of(call.func)}()"
 
     def _untouched(self, function: ast.AST, root: str, path: str, missing: str, built: str, last: ast.Assign) -> bool:
