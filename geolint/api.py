@@ -54,6 +54,18 @@ class FileResult:
     cached: bool = False
     # The file on disk (the `path` above is for display: as given or relative to the cwd).
     location: Path | None = None
+    # The file could not be read (`error` says why): not a crash of geolint's.
+    unreadable: bool = False
+    # It is a symbolic link to nothing (a build product not built here): skipped with a warning.
+    broken_link: bool = False
+
+
+def _unreadable(source: SourceFile, error: OSError) -> FileResult:
+    """What a file that cannot be read gives: why, and whether it is only a link to nothing."""
+    path = source.path
+    if path.is_symlink() and not path.exists():
+        return FileResult(source.display, (), f"broken symbolic link to {os.readlink(path)}", location=path, unreadable=True, broken_link=True)
+    return FileResult(source.display, (), error.strerror or str(error), location=path, unreadable=True)
 
 
 def find_config(start: Path) -> Config:
@@ -125,7 +137,7 @@ def lint_paths(
             try:
                 data = source.path.read_bytes()
             except OSError as error:
-                results[source.display] = FileResult(source.display, (), f"cannot read file: {error}", location=source.path)
+                results[source.display] = _unreadable(source, error)
                 continue
             if cache is None:  # nothing to look up or store: no digest to compute
                 pending.append((source, data, ""))

@@ -119,7 +119,8 @@ def _walk(top: Path, excluder: _Excluder) -> Iterable[tuple[Path, str, Path]]:
                     folders.append((entry.path, candidate, display_prefix + name))
             elif name.endswith(PYTHON_SUFFIXES) and not excluder.excluded(candidate, is_dir=False) and not _gitignored(active, candidate, False):
                 path = Path(entry.path)
-                yield path, display_prefix + name, path.resolve() if entry.is_symlink() else Path(candidate)
+                # realpath, not resolve(): a link in a loop must not end the whole run (RuntimeError)
+                yield path, display_prefix + name, Path(os.path.realpath(path)) if entry.is_symlink() else Path(candidate)
         pending.extend(reversed(folders))
 
 

@@ -94,10 +94,15 @@ def run(args: argparse.Namespace) -> int:
     if not results:
         _warn_nothing_found(paths)
 
-    internal_errors = 0
+    unchecked = 0
     for result in results:
-        if result.error is not None:
-            internal_errors += 1
+        if result.broken_link:  # as ruff users expect: a warning, and the run goes on without it
+            _warning(f"skipped {result.path}: {result.error}")
+        elif result.unreadable:
+            unchecked += 1
+            _error(f"cannot read {result.path}: {result.error}")
+        elif result.error is not None:
+            unchecked += 1
             detail = result.error.rstrip() if args.verbose else result.error.rstrip().splitlines()[-1]
             hint = "" if args.verbose else " (--verbose shows the traceback)"
             _error(f"internal error while checking {result.path}{hint}; please report it:\n  {detail}")
@@ -111,7 +116,7 @@ def run(args: argparse.Namespace) -> int:
             sys.stdout.buffer.flush()
             if not args.quiet:
                 _note(f"Would fix {fixed_total} finding{'s' * (fixed_total != 1)}." if fixed_total else "No fixes available.")
-            return EXIT_ERROR if internal_errors else (EXIT_FINDINGS if diffs else EXIT_OK)
+            return EXIT_ERROR if unchecked else (EXIT_FINDINGS if diffs else EXIT_OK)
 
     findings = [finding for result in results for finding in result.findings]
 
@@ -119,7 +124,7 @@ def run(args: argparse.Namespace) -> int:
         added, files = _add_noqa(results)
         if not args.quiet:
             _note(f"Added {added} suppression comment{'s' * (added != 1)} to {files} file{'s' * (files != 1)}.")
-        return EXIT_ERROR if internal_errors else EXIT_OK
+        return EXIT_ERROR if unchecked else EXIT_OK
 
     if args.write_baseline:
         from geolint.baseline import write_baseline
@@ -127,7 +132,7 @@ def run(args: argparse.Namespace) -> int:
         count = write_baseline(findings, args.write_baseline)
         if not args.quiet:
             _note(f"Recorded {count} finding{'s' * (count != 1)} in {args.write_baseline}.")
-        return EXIT_ERROR if internal_errors else EXIT_OK
+        return EXIT_ERROR if unchecked else EXIT_OK
 
     known = 0
     if args.baseline:
@@ -160,14 +165,14 @@ def run(args: argparse.Namespace) -> int:
             f"time: {time.perf_counter() - started:.2f}s"
         )
     if not args.quiet:
-        summary = _summary(findings, fixed_total, known, internal_errors)
+        summary = _summary(findings, fixed_total, known, unchecked)
         if args.format == "text" and not to_file and not args.statistics:
             sys.stdout.write(summary + "\n")
             sys.stdout.flush()
         else:
             _note(summary)
 
-    if internal_errors:
+    if unchecked:
         return EXIT_ERROR
     if findings and not args.exit_zero:
         return EXIT_FINDINGS
@@ -309,7 +314,7 @@ def _summary(findings: Sequence[Finding], fixed: int, known: int, unchecked: int
     elif not unchecked:  # only when every file was checked
         parts.append("All checks passed.")
     if unchecked:
-        parts.append(f"{unchecked} file{'s' * (unchecked != 1)} could not be checked (internal error above).")
+        parts.append(f"{unchecked} file{'s' * (unchecked != 1)} could not be checked (errors above).")
     if known:
         parts.append(f"({known} known finding{'s' * (known != 1)} hidden by the baseline.)")
     return " ".join(parts)
@@ -326,6 +331,10 @@ def _warn_nothing_found(paths: Sequence[Path]) -> None:
 
 def _error(message: str) -> None:
     sys.stderr.write(f"geolint: error: {message}\n")
+
+
+def _warning(message: str) -> None:
+    sys.stderr.write(f"geolint: warning: {message}\n")
 
 
 def _note(message: str) -> None:

@@ -116,3 +116,39 @@ def test_no_all_checks_passed_after_an_internal_error(cli):
     assert "internal error" in result.stderr
     assert "All checks passed." not in result.stderr + result.stdout
     assert "1 file could not be checked" in result.stderr + result.stdout
+
+
+@pytest.mark.parametrize("cache", [[], ["--no-cache"]])
+def test_a_link_to_nothing_is_skipped_with_a_warning_and_the_run_goes_on(cli_real, cache):
+    """A checked-in link to a build product (`pb2.py -> ../build/pb2.py`) not built here: ruff users
+    expect a warning and the other files' results, not an internal error (ruff issue 19421)."""
+    cli_real.write("ordinary.py", ORDINARY)
+    (cli_real.project / "generated").mkdir()
+    (cli_real.project / "generated" / "messages_pb2.py").symlink_to("../build/messages_pb2.py")
+    result = cli_real("check", "--format", "json", *cache)
+    assert result.returncode == 1, result.stderr  # the ordinary file's finding
+    assert [f["code"] for f in findings_by_path(result.stdout)["ordinary.py"]] == ["GEO201"]
+    assert "warning: skipped generated/messages_pb2.py: broken symbolic link to ../build/messages_pb2.py" in result.stderr
+    assert "internal error" not in result.stderr and "could not be checked" not in result.stderr
+
+
+def test_a_link_in_a_loop_is_skipped_and_does_not_end_the_run(cli_real):
+    """`Path.resolve()` raised RuntimeError on a loop while the folder was walked: no file was checked."""
+    cli_real.write("ordinary.py", ORDINARY)
+    (cli_real.project / "loop.py").symlink_to("loop.py")
+    result = cli_real("check", "--no-cache", "--format", "json")
+    assert result.returncode == 1, result.stderr
+    assert "warning: skipped loop.py: broken symbolic link to loop.py" in result.stderr
+    assert "Traceback" not in result.stderr and "internal error" not in result.stderr
+    assert [f["code"] for f in findings_by_path(result.stdout)["ordinary.py"]] == ["GEO201"]
+
+
+def test_a_file_that_cannot_be_read_says_why_and_is_no_internal_error(tmp_path):
+    """Permission denied cannot be staged for root (CI's user), so the result is built from the OSError a read raises."""
+    from geolint.api import _unreadable
+    from geolint.files import SourceFile
+
+    path = tmp_path / "locked.py"
+    path.write_text("x = 1\n")
+    result = _unreadable(SourceFile(path, "locked.py"), PermissionError(13, "Permission denied", str(path)))
+    assert (result.error, result.unreadable, result.broken_link) == ("Permission denied", True, False)
