@@ -39,7 +39,8 @@ def python_files(tree: Path) -> list[Path]:
     from geolint.files import discover
     from geolint.lint_types import Config
 
-    return [source.path for source in discover([tree], Config())]
+    # a link to nothing is skipped by geolint with a warning, and not read here either
+    return [source.path for source in discover([tree], Config()) if source.path.is_file()]
 
 
 def count_lines(files: list[Path]) -> int:

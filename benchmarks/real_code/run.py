@@ -557,7 +557,8 @@ def corpus_files(args: argparse.Namespace, repos: list[Repo]) -> list[Path]:
     from geolint.files import discover
 
     checkouts = [args.mirror / r.folder for r in repos if (args.mirror / r.folder).is_dir()]
-    return [source.path for source in discover(checkouts, geolint_config(DEFAULT_SELECT))]
+    # a link to nothing is skipped by geolint with a warning, and not read here either
+    return [source.path for source in discover(checkouts, geolint_config(DEFAULT_SELECT)) if source.path.is_file()]
 
 
 AST_PARSE = """
