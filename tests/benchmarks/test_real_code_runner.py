@@ -189,3 +189,26 @@ def test_reformatting_does_not_change_the_expression_key() -> None:
     assert old == new == 'RigidTransform(R,from_frame="obj",to_frame="world")'
     # A real change of the expression still changes the key.
     assert runner.normalised_expression(["T = RigidTransform(R, from_frame='world')"], 1, 5, 1, 42) != old
+
+
+def test_checkouts_are_made_from_mirrors_at_the_pinned_commit(tmp_path):
+    """checkouts.py: a clone per manifest row with its history, at the manifest's commit (not the
+    mirror's newest); a row without a mirror is reported and the others are still made."""
+    mirror = tmp_path / "mirrors" / "lab+planner" / "repo"
+    mirror.mkdir(parents=True)
+    git(mirror, "init", "-q")
+    pinned = commit_file(mirror, BUGGY, "buggy")
+    commit_file(mirror, FIXED, "fixed")
+    manifest = tmp_path / "manifest.toml"
+    row = 'name = "{}"\nurl = "https://example.invalid"\ncommit = "{}"\ncategory = "grasping"\ntorch = false\n'
+    manifest.write_text("[[repo]]\n" + row.format("lab/planner", pinned) + "\n[[repo]]\n" + row.format("lab/absent", pinned))
+    done = subprocess.run(
+        [sys.executable, str(RUNNER.with_name("checkouts.py")), str(tmp_path / "mirrors"), str(tmp_path / "out"), "--manifest", str(manifest)],
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 1 and "FAILED lab/absent: no mirror" in done.stderr
+    checkout = tmp_path / "out" / "lab+planner"
+    assert git(checkout, "rev-parse", "HEAD").strip() == pinned
+    assert (checkout / "planner.py").read_text() == BUGGY
+    assert len(git(checkout, "log", "--all", "--oneline").splitlines()) == 2  # the fix is still in reach of --history
