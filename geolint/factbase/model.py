@@ -1234,9 +1234,11 @@ class FactBase:
     def used_as_homogeneous(self, homogeneous: Homogeneous) -> bool:
         """Whether a construction is visibly used as homogeneous: built explicitly as a 4-vector,
         multiplied by a matrix (directly or through the variable holding it), or stored under a
-        homogeneous name (`p_h`, `points_hom`)."""
+        homogeneous name (`p_h`, `points_hom`). A literal 4-vector (`np.array([p.x, p.y, p.z, 0])`)
+        counts only when it reaches a product or a transform call: one only stored (appended to a
+        list), or whose last slot is written later, is a record with a 4th field, not w."""
         if homogeneous.explicit:
-            return True
+            return not _is_literal_four_vector(homogeneous.construction) or self._literal_reaches_a_transform(homogeneous.construction)
         node: ast.AST = homogeneous.construction
         parent = self.parent(node)
         while parent is not None and is_transpose(parent):
@@ -1246,6 +1248,39 @@ class FactBase:
         if isinstance(parent, ast.Call) and node in parent.args and self.matmul(parent) is not None:
             return True
         return self._stored_for_a_product(parent)
+
+    def _literal_reaches_a_transform(self, construction: ast.expr) -> bool:
+        """`T @ np.array([p.x, p.y, p.z, 1])`, `v = np.array([...]); T.dot(v)`, `transform(v)`; not
+        `history.append(np.array([...]))` nor `v = np.array([...]); v[3] = gain`."""
+        parent = self.parent(construction)
+        if self._transform_use(construction, parent):
+            return True
+        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+            return False
+        name, scope = parent.targets[0].id, self.index.scope_of(parent)
+        if any(_is_last_slot(target) for target, _ in scope.subscript_stores.get(name, [])):
+            return False  # the 4th slot is a field of its own
+        if self._stored_for_a_product(parent):
+            return True
+        return any(
+            self.index.scope_of(call) is scope and self._transform_use(argument, call)
+            for call in self.index.nodes(ast.Call)
+            for argument in call.args  # type: ignore[attr-defined]
+            if isinstance(argument, ast.Name) and argument.id == name
+        )
+
+    def _transform_use(self, node: ast.AST, parent: ast.AST | None) -> bool:
+        """Whether `node` is an operand of a matrix product or an argument of a transform call."""
+        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
+            return True
+        if isinstance(parent, ast.Attribute) and parent.attr == "dot":
+            return True
+        if not (isinstance(parent, ast.Call) and node in parent.args):
+            return False
+        if self.matmul(parent) is not None:
+            return True
+        name = last_name(parent.func) or ""
+        return _TRANSFORM_CALL.search(name) is not None and "quat" not in name.lower()
 
     def _filled_buffer(self, name: ast.Name, value: ast.expr) -> Homogeneous | None:
         """`h = np.ones(4); h[:3] = x` (or `np.ones((n, 4)); h[:, :3] = x`): homogeneous x with w = 1."""
@@ -1275,6 +1310,22 @@ class FactBase:
                 return None
         codes = {ast.dump(base) for base in bases}
         return bases[0] if len(codes) == 1 else None
+
+
+# Calls that apply a transform to a homogeneous argument (`transform(v)`, `apply_pose`, `np.matmul`).
+_TRANSFORM_CALL = re.compile(r"transform|xform|apply|rotat|project|matmul|mul|dot", re.IGNORECASE)
+
+
+def _is_literal_four_vector(node: ast.expr) -> bool:
+    """`np.array([a, b, c, w])`: four elements written out in one array call."""
+    if not (isinstance(node, ast.Call) and node.args and isinstance(node.args[0], ast.List)):
+        return False
+    return len(node.args[0].elts) == 4 and last_name(node.func) in ("array", "asarray", "tensor", "as_tensor")
+
+
+def _is_last_slot(target: ast.Subscript) -> bool:
+    """`v[3]`, `v[-1]`: the 4th slot of a 4-vector."""
+    return number(target.slice) in (3, -1)
 
 
 _ARRAY_BUILDERS = ("append", "hstack", "column_stack", "concatenate", "cat", "concat", "array", "asarray", "tensor", "as_tensor", "r_", "c_")

@@ -39,6 +39,14 @@ class PointNotTranslated(FactRule):
     ## Fix safety
     Changing w from 0 to 1 is offered as an unsafe fix: the value may be meant as a displacement
     that happens to have a point-like name.
+
+    ## Known problems
+    A 4-vector written out element by element (`np.array([p.x, p.y, p.z, 0])`) is taken as
+    homogeneous only when it reaches a matrix product or a transform call (a call named like
+    `transform`, `apply`, `rotate`, `project`, `dot` or `mul`), directly or through the variable
+    holding it: one only stored (`history.append(...)`) or whose 4th slot is written later is a
+    record with a 4th field. So such a vector handed to a project helper named otherwise is not
+    checked.
     """
 
     code = "GEO102"
@@ -59,11 +67,25 @@ class PointNotTranslated(FactRule):
             "    v = np.array([point[0], point[1], point[2], 0.0])\n"
             "    return tr.quaternion_multiply(tr.quaternion_multiply(quat, v), tr.quaternion_inverse(quat))[:3]\n"
         ),  # a pure quaternion for the product q v q*, not a homogeneous point
+        Valid(
+            "import numpy as np\ndef record(history, position, gain):\n"
+            "    history.append(np.array([position.x, position.y, position.z, 0]))\n"
+            "    history[-1][-1] = gain\n"
+        ),  # a record whose 4th slot is a score: stored, never transformed
+        Valid(
+            "import numpy as np\ndef record(history, position, gain):\n"
+            "    entry = np.array([position.x, position.y, position.z, 0])\n"
+            "    entry[3] = gain\n    return entry\n"
+        ),
     ]
     INVALID = [
         Invalid(
             "import numpy as np\np_h = np.append(point, 0)\n",
             expected_fix="import numpy as np\np_h = np.append(point, 1)\n",
+        ),
+        Invalid(
+            "import numpy as np\np_world = T_world_cam @ np.array([position.x, position.y, position.z, 0])\n",
+            expected_fix="import numpy as np\np_world = T_world_cam @ np.array([position.x, position.y, position.z, 1])\n",
         ),
         Invalid("p_world = T_world_cam[:3, :3] @ p_cam\n"),
         Invalid("pts_w = points @ pose[:3, :3].T\n"),
