@@ -229,3 +229,90 @@ def test_a_vector_the_class_recomputes_from_the_position_follows_it() -> None:
             self.position = R @ (self.position - self.target) + self.target
     """
     assert codes(source) == []
+
+
+ROTATING_BOX = """
+import numpy as np
+
+class Box:
+    def __init__(self, center, orientation, velocity, angular_velocity, futures):
+        self.center = np.array(center)
+        self.orientation = orientation
+        self.velocity = np.array(velocity)
+        self.angular_velocity = {angular}
+        self.future_orientations = futures
+
+    def rotate(self, q):
+        R = q.rotation_matrix
+        self.orientation = q * self.orientation
+        self.center = np.dot(R, self.center)
+        self.velocity = np.dot(R, self.velocity)
+{futures}
+"""
+FUTURES_ROTATED = """\
+        if self.future_orientations is not None:
+            for i in range(self.n):
+                for j in range(self.m):
+                    self.future_orientations[i][j] = q * self.future_orientations[i][j]
+"""
+
+
+def _box_messages(angular: str, futures: str) -> list[str]:
+    source = ROTATING_BOX.format(angular=angular, futures=futures)
+    return [f.message for f in lint_source(source, "box.py", rules=KIND_RULES) if f.code == "GEO107"]
+
+
+def test_a_sibling_written_element_by_element_in_a_guarded_loop_is_handled() -> None:
+    # blind round 7 (nuplan-devkit's Box3D.rotate shape): the loop assigns every element of the sibling
+    assert _box_messages("float(angular_velocity) if angular_velocity is not None else 0.0", FUTURES_ROTATED) == []
+    (message,) = _box_messages("float(angular_velocity)", "")
+    assert "`self.future_orientations` (orientation)" in message and "angular_velocity" not in message
+
+
+@pytest.mark.parametrize("angular", ["float(angular_velocity)", "int(angular_velocity)", "float(angular_velocity) if angular_velocity else 0.0"])
+def test_an_attribute_stored_as_a_number_is_no_free_vector(angular: str) -> None:
+    assert _box_messages(angular, FUTURES_ROTATED) == []
+
+
+def test_an_attribute_stored_as_a_vector_or_a_float_parameter() -> None:
+    (message,) = _box_messages("np.array(angular_velocity)", FUTURES_ROTATED)
+    assert "`self.angular_velocity` (free vector)" in message
+    annotated = ROTATING_BOX.format(angular="angular_velocity", futures=FUTURES_ROTATED).replace(
+        "angular_velocity, futures)", "angular_velocity: float, futures)"
+    )
+    assert [f for f in lint_source(annotated, "box.py", rules=KIND_RULES) if f.code == "GEO107"] == []
+
+
+def test_a_class_annotation_float_is_no_free_vector() -> None:
+    source = """
+    import numpy as np
+
+    class Agent:
+        angular_velocity: float
+
+        def __init__(self, center, velocity, spin):
+            self.center = np.asarray(center)
+            self.velocity = np.asarray(velocity)
+            self.angular_velocity = spin
+
+        def rotate(self, R):
+            self.center = R @ self.center
+            self.velocity = R @ self.velocity
+    """
+    assert codes(source) == []
+    assert codes(source.replace("angular_velocity: float", "angular_velocity: np.ndarray")) == [(13, "GEO107")]
+
+
+def test_a_scalar_heading_is_still_an_orientation() -> None:
+    source = """
+    import numpy as np
+
+    class Track:
+        def __init__(self, center, yaw):
+            self.center = np.asarray(center)
+            self.yaw = float(yaw)
+
+        def to_map(self, R):
+            self.center = R @ self.center
+    """
+    assert codes(source) == [(10, "GEO107")]

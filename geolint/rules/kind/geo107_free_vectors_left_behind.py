@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase.index import ParamBinding
-from geolint.factbase.model import OPERATORS, last_name, positional_args, string, transposed_value, walk_within
+from geolint.factbase.model import OPERATORS, _is_scalar_annotation, last_name, positional_args, string, transposed_value, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.kind.geo104_normals_left_behind import _returned_names, _TransformFinder, _uses_outside_returns
@@ -88,8 +88,11 @@ class FreeVectorsLeftBehind(FactRule):
       where `points_world` is a rotated position and `normals` a free vector the function never
       rotates.
 
-    The rule stays silent when the free vector is written, rotated, or handed to any other call in
-    the function, when the whole object is passed on or moved by a library (`pcd.transform(T)`,
+    The rule stays silent when the free vector is written (also element by element, as in
+    `self.future_orientations[m][h] = q * self.future_orientations[m][h]` inside loops and `if`s),
+    rotated, or handed to any other call in the function, when the class stores the free-vector
+    attribute as a number (`self.angular_velocity = float(w)`, an annotation `float` or `int`: a
+    yaw rate has no direction to rotate), when the whole object is passed on or moved by a library (`pcd.transform(T)`,
     `mesh.apply_transform(T)`), when the move is a translation or scaling only, and when the free
     vector's name states its frame (`v_body`).
 
@@ -132,6 +135,9 @@ class FreeVectorsLeftBehind(FactRule):
     the bug (an augmentation written for 7-column boxes, later fed 9-column boxes) stays silent.
     Operators are recognised by name (`R`, `rot_mat`, `pose`, `T`, `T_a_b`), by a `[:3, :3]`
     block, or by what made them; a rotation in a variable named otherwise (`M`) is not seen.
+    A scalar is recognised only by a `float(...)`/`int(...)` store or a `float`/`int` annotation in
+    the class: a number stored otherwise under a free-vector name (`self.angular_velocity =
+    msg.angular.z`) is still listed, and one cast with `float()` anywhere is never listed.
     """
 
     code = "GEO107"
@@ -156,6 +162,20 @@ class FreeVectorsLeftBehind(FactRule):
             "    gt_boxes[:, :3] = gt_boxes[:, :3] + t\n"
             "    return gt_boxes\n"
         ),
+        Valid(
+            "class Box:\n"
+            "    def __init__(self, center, velocity, angular_velocity, futures):\n"
+            "        self.center = center\n"
+            "        self.velocity = velocity\n"
+            "        self.future_orientations = futures\n"
+            "        self.angular_velocity = float(angular_velocity)\n"
+            "    def rotate(self, q):\n"
+            "        self.center = q.rotation_matrix @ self.center\n"
+            "        self.velocity = q.rotation_matrix @ self.velocity\n"
+            "        if self.future_orientations is not None:\n"
+            "            for i in range(self.n):\n"
+            "                self.future_orientations[i] = q * self.future_orientations[i]\n"
+        ),  # the futures are rotated element by element; a yaw rate is a number
         Valid(
             "def to_world(track, R):\n"
             "    track['pos'] = track['pos'] @ R.T\n"
@@ -276,6 +296,15 @@ class FreeVectorsLeftBehind(FactRule):
                 return _Member(self.code_of(node.value), None, columns, node)
         return None
 
+    def _written_member(self, target: ast.AST) -> _Member | None:
+        """The member an assignment writes, also through element indices: `self.future_orientations[m][h] = q * ...`
+        writes `self.future_orientations` (element by element, in a loop)."""
+        member = self._member(target)
+        while member is None and isinstance(target, ast.Subscript):
+            target = target.value
+            member = self._member(target)
+        return member
+
     def _check_members(self, function: ast.AST, body: list[ast.AST], layouts: _Layouts) -> None:
         stores = _stores(body)
         moves: list[tuple[_Member, ast.AST, str]] = []
@@ -308,7 +337,7 @@ class FreeVectorsLeftBehind(FactRule):
     def _left_behind(
         self, moved: _Member, how: str, function: ast.AST, body: list[ast.AST], stores: list[tuple[ast.expr, ast.expr]], layouts: _Layouts
     ) -> list[str]:
-        written = [m for m in (self._member(target) for target, _ in stores) if m is not None and m.owner == moved.owner]
+        written = [m for m in (self._written_member(target) for target, _ in stores) if m is not None and m.owner == moved.owner]
         touched = self._touched(body)
         found: list[str] = []
         if moved.name is not None:
@@ -375,7 +404,46 @@ class FreeVectorsLeftBehind(FactRule):
             if role in ("free", "orientation") and not frames_of_name(member.name, facts.config):
                 seen.setdefault(member.name, role)
         derived = self._derived_from(moved, nodes)
-        return sorted((name, role) for name, role in seen.items() if name not in derived)
+        return sorted((name, role) for name, role in seen.items() if name not in derived and not (role == "free" and self._stored_as_scalar(moved, name, nodes)))
+
+    def _stored_as_scalar(self, moved: _Member, name: str, nodes: list[ast.AST]) -> bool:
+        """Whether the code stores the attribute as a number (`self.angular_velocity = float(w)`, an
+        annotation `float`, a parameter annotated `float`): a yaw rate has no direction to rotate
+        (asked of free vectors only: a heading stored as a float does turn with the positions)."""
+        if isinstance(moved.node, ast.Subscript):
+            return False
+        if moved.owner != "self":
+            stores = [value for scope in self.facts.index.scopes.values() for target, value in scope.attribute_stores if target.attr == name]
+            return any(self._scalar_value(value) for value in stores)
+        for node in nodes:
+            if isinstance(node, ast.AnnAssign):
+                target, values = node.target, [node.value]
+                is_field = isinstance(target, ast.Name) and target.id == name  # a dataclass field
+                if (is_field or _is_self_attribute(target, name)) and _is_scalar_annotation(node.annotation):
+                    return True
+                if not _is_self_attribute(target, name):
+                    continue
+            elif isinstance(node, ast.Assign) and any(_is_self_attribute(target, name) for target in node.targets):
+                values = [node.value]
+            else:
+                continue
+            if any(value is not None and self._scalar_value(value) for value in values):
+                return True
+        return False
+
+    def _scalar_value(self, value: ast.expr) -> bool:
+        """`float(w)`, `int(n)`, `float(w) if ... else w`, or a parameter annotated `float`."""
+        if isinstance(value, ast.IfExp):
+            return self._scalar_value(value.body) or self._scalar_value(value.orelse)
+        if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id in ("float", "int"):
+            return True
+        if isinstance(value, ast.Name):
+            bindings = self.facts.bindings(value) or []
+            return bool(bindings) and all(
+                isinstance(binding, ParamBinding) and binding.arg.annotation is not None and _is_scalar_annotation(binding.arg.annotation)
+                for binding in bindings
+            )
+        return False
 
     def _derived_from(self, moved: _Member, nodes: list[ast.AST]) -> set[str]:
         """Members the code computes from the moved position (`self.direction = normalize(self.target -
@@ -589,6 +657,10 @@ def _role(word: str) -> str | None:
     if head in _POSITION_WORDS:
         return "position"
     return None
+
+
+def _is_self_attribute(target: ast.AST, name: str) -> bool:
+    return isinstance(target, ast.Attribute) and target.attr == name and isinstance(target.value, ast.Name) and target.value.id == "self"
 
 
 def _may_hold_positions(target: ast.AST) -> bool:
