@@ -446,6 +446,8 @@ class FactBase:
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
             kind = self.kind_of(node.operand)
             return kind if kind in FREE else None
+        if isinstance(node, (ast.List, ast.Tuple)) and _origin_and_axis_tips(node):
+            return Kind.POINT
         if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 3:  # `[v.x, v.y, v.z]` is what v is
             whole = self._components_of_one_array(node.elts)
             return None if whole is None else self.kind_of(whole)
@@ -525,6 +527,9 @@ class FactBase:
             return self._kind_of_product(node)
         if positional and self.is_array_call(func, *vocab.PASSTHROUGH_FUNCTIONS):
             return self.kind_of(positional[0])
+        if positional and isinstance(positional[0], ast.List) and self.is_array_call(func, "array", "asarray", "tensor", "as_tensor"):
+            if _origin_and_axis_tips(positional[0]):
+                return Kind.POINT
         if isinstance(func, ast.Attribute) and not self.is_module_like(func.value):
             if func.attr in vocab.PASSTHROUGH_METHODS:
                 return self.kind_of(func.value)
@@ -1310,6 +1315,19 @@ class FactBase:
                 return None
         codes = {ast.dump(base) for base in bases}
         return bases[0] if len(codes) == 1 else None
+
+
+def _origin_and_axis_tips(node: ast.List | ast.Tuple) -> bool:
+    """`[[0, 0, 0], [l, 0, 0], [0, l, 0], [0, 0, l]]`: the origin next to points along the axes (a
+    drawn frame's tips). A set of points whatever its name: the origin has no meaning as a direction."""
+    rows = node.elts
+    if len(rows) < 2 or not all(isinstance(row, (ast.List, ast.Tuple)) for row in rows):
+        return False
+    width = len(rows[0].elts)  # type: ignore[attr-defined]
+    if width not in (2, 3) or any(len(row.elts) != width for row in rows):  # type: ignore[attr-defined]
+        return False
+    zeros = [sum(number(value) == 0 for value in row.elts) for row in rows]  # type: ignore[attr-defined]
+    return width in zeros and all(count >= width - 1 for count in zeros) and zeros.count(width) == 1
 
 
 # Calls that apply a transform to a homogeneous argument (`transform(v)`, `apply_pose`, `np.matmul`).

@@ -45,6 +45,13 @@ class DirectionTranslated(FactRule):
     ## Fix safety
     Changing w from 1 to 0 on a direction and dropping `+ t` after rotating a direction are
     safe. Adding `translate=False` to a library call is marked unsafe (it changes the call).
+
+    ## Known problems
+    Directions are mostly recognised by name (`normal`, `axis`, `velocity`, `dir`). What the code
+    builds wins over the name when it says points: an array written out as the origin next to
+    points along the axes (`sensor_axis = np.array([[0, 0, 0], [l, 0, 0], [0, l, 0], [0, 0, l]])`,
+    a drawn frame's tips) is a set of points. The three axes without the origin row stay
+    directions, though a drawing may mean them as tips too.
     """
 
     code = "GEO101"
@@ -68,6 +75,11 @@ class DirectionTranslated(FactRule):
             "    return p.multiplyTransforms([0, 0, 0], inv_orn, lin_vel, [0, 0, 0, 1])[0]\n"
         ),  # a zero position: a pure rotation, the idiom for vectors
         Valid("import pybullet as p\nwp, wo = p.multiplyTransforms(base_pos, base_orn, tip_offset, [0, 0, 0, 1])\n"),  # a point
+        Valid(
+            "import numpy as np\ndef axis_tips(pose, length):\n"
+            "    sensor_axis = np.array([[0, 0, 0], [length, 0, 0], [0, length, 0], [0, 0, length]])\n"
+            "    return pose.transform_points(sensor_axis)\n"
+        ),  # the origin and the axis tips: points to draw
     ]
     INVALID = [
         Invalid(
@@ -99,6 +111,11 @@ class DirectionTranslated(FactRule):
             expected_fix="import numpy as np\nn = np.cross(a, b)\nn_h = np.hstack([n, [0.0]])\n",
         ),
         Invalid("import trimesh\nmoved = trimesh.transform_points(mesh.vertex_normals, T)\n"),
+        Invalid(
+            "import numpy as np\ndef axes(pose, length):\n"
+            "    sensor_axis = np.array([[length, 0, 0], [0, length, 0], [0, 0, length]])\n"
+            "    return pose.transform_points(sensor_axis)\n"
+        ),
         Invalid("from pytransform3d.transformations import vector_to_point\nn_h = vector_to_point(approach)\n"),
         Invalid("world_normal = obj.matrix_world @ face.normal\n"),
         Invalid(
