@@ -12,8 +12,11 @@ from geolint.factbase.rule_support import FactRule
 _COLLECTION_WORDS = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
 # `delta_pos`, `pos_offset`, `displacement`: a displacement (a vector), never a point
 _DISPLACEMENT_WORDS = frozenset(
-    {"delta", "d", "diff", "difference", "offset", "offsets", "displacement", "disp", "shift", "step", "increment", "inc"}
-)
+    {"delta", "d", "diff", "difference", "offset", "offsets", "displacement", "disp", "shift", "step", "increment", "inc",
+     "rel", "relative"}
+)  # fmt: skip
+# What a rotated displacement is made from: `rot.dot(action[:3])` turns an action's translation into the world
+_MOTION_WORDS = _DISPLACEMENT_WORDS | {"action", "actions", "act"}
 # joint-space "positions" (`arm_motor_pos`, `joint_pos`, `qpos`) are not Euclidean points
 _JOINT_SPACE_WORDS = frozenset({"joint", "joints", "motor", "motors", "qpos", "arm", "actuator", "servo", "gripper_pos"})
 
@@ -75,7 +78,9 @@ class PointPlusPoint(FactRule):
     The rule is opt-in (select `GEO103` by its code). Whether an operand is a position is read
     from its name (`*_pos`, `position`, `centroid`, `p_*`), and in application code such names
     hold offsets, joint angles, layout grids and random perturbations as often as points: of the
-    12 findings triaged on real code, none was a bug.
+    12 findings triaged on real code, none was a bug. Names that say relative (`rel_`, `relative`,
+    `delta`, `offset`) and values made by rotating an action or a delta (`rot.dot(action[:3])`)
+    are read as displacements whatever the rest of the name says.
     """
 
     code = "GEO103"
@@ -116,6 +121,14 @@ class PointPlusPoint(FactRule):
             "    rand_pos = radius * (2.0 * torch.rand([n, 2]) - 1.0)\n    return root_pos + rand_pos\n"
         ),  # a scaled random vector: an offset around the root
         Valid(
+            "def target(pos, rot, action):\n    position = rot.dot(action[:3])\n"
+            "    return (pos[0] + position[0], pos[1] + position[1], pos[2] + position[2])\n"
+        ),  # an action's translation rotated into the world: a displacement
+        Valid(
+            "import numpy as np\ndef place(drawer_pos, drawer_rot, sampled_pos):\n"
+            "    rel_pod_pos = drawer_rot @ sampled_pos\n    return np.array(drawer_pos) + rel_pod_pos\n"
+        ),  # a relative position is an offset
+        Valid(
             "import torch\ndef ring(root_pos, dist, theta):\n"
             "    pos_x = dist * torch.cos(theta)\n    return root_pos[..., 0] + pos_x\n"
         ),  # polar coordinates around the root: an offset
@@ -125,6 +138,10 @@ class PointPlusPoint(FactRule):
         Invalid("def f(p_world, tip_position):\n    return p_world + tip_position\n"),
         Invalid("both = mesh_a.centroid + mesh_b.centroid\n"),
         Invalid("x = tip_position_world + base_position_world + offset\n"),
+        Invalid(
+            "def target(pos, rot, goal_position):\n    position = rot.dot(goal_position)\n"
+            "    return pos + position\n"
+        ),  # a rotated position is still a position
     ]
 
     def run(self) -> None:
@@ -143,6 +160,8 @@ class PointPlusPoint(FactRule):
             return  # `delta_pos + pos`, `arm_motor_pos + ...`: a displacement, or joint space
         if any(self._is_scaled_quantity(side) for side in (node.left, node.right)):
             return  # `rand_pos = r * (2 * rand - 1)`, `pos_x = d * cos(theta)`: an offset, whatever its name
+        if any(self._is_rotated_displacement(side) for side in (node.left, node.right)):
+            return  # `position = rot.dot(action[:3])`: a displacement turned into the world, whatever its name
         if not (facts.has_geometric_evidence(node.left) or facts.has_geometric_evidence(node.right)):
             return  # `self._pos + pos`: file offsets, cursor positions and tuples are "positions" too
         if _is_collection(node.left) != _is_collection(node.right):
@@ -165,6 +184,20 @@ class PointPlusPoint(FactRule):
             isinstance(value, ast.BinOp) and isinstance(value.op, ast.Mult)
             and all(self.facts.kind_of(factor) != Kind.POINT for factor in (value.left, value.right))
             for value in bindings
+        )
+
+    def _is_rotated_displacement(self, side: ast.expr) -> bool:
+        """A name (or one of its components, `position[0]`) bound only to a product that rotates an
+        action or a delta (`rot.dot(action[:3])`, `R @ delta_pos`): a displacement, not a location."""
+        while isinstance(side, ast.Subscript):
+            side = side.value
+        if not isinstance(side, ast.Name):
+            return False
+        bindings = self.facts.bindings(side) or []
+        products = [self.facts.matmul(value) if isinstance(value, ast.expr) else None for value in bindings]
+        return bool(products) and all(
+            product is not None and any(_MOTION_WORDS & _name_tokens(operand) for operand in (product.left, product.right))
+            for product in products
         )
 
     def _is_affine(self, node: ast.AST) -> bool:
