@@ -1323,11 +1323,10 @@ def _origin_and_axis_tips(node: ast.List | ast.Tuple) -> bool:
     rows = node.elts
     if len(rows) < 2 or not all(isinstance(row, (ast.List, ast.Tuple)) for row in rows):
         return False
-    width = len(rows[0].elts)  # type: ignore[attr-defined]
-    if width not in (2, 3) or any(len(row.elts) != width for row in rows):  # type: ignore[attr-defined]
-        return False
+    if any(len(row.elts) != 3 for row in rows):  # type: ignore[attr-defined]
+        return False  # rows of x, y, z (`[[0, a], [0, b], [0, 0]]` holds its points in columns)
     zeros = [sum(number(value) == 0 for value in row.elts) for row in rows]  # type: ignore[attr-defined]
-    return width in zeros and all(count >= width - 1 for count in zeros) and zeros.count(width) == 1
+    return zeros.count(3) == 1 and all(count >= 2 for count in zeros)
 
 
 # Calls that apply a transform to a homogeneous argument (`transform(v)`, `apply_pose`, `np.matmul`).

@@ -136,6 +136,13 @@ def last_value(module: ast.Module) -> ast.expr:
         ('direction = "left"\ndirection\n', None),
         ("velocity = distance / dt\nvelocity\n", None),
         ("import numpy as np\nnormal = np.random.normal(size=3)\nnormal\n", None),
+        # the origin next to points along the axes: points (a drawn frame), whatever the name says
+        ("import numpy as np\ntips = np.array([[0, 0, 0], [l, 0, 0], [0, l, 0], [0, 0, l]])\ntips\n", Algebra.POINT),
+        ("import numpy as np\nsensor_axis = np.array([[0, 0, 0], [l, 0, 0], [0, 0, l]], dtype=float)\nsensor_axis\n", None),
+        ("sensor_axis = [[0.0, 0.0, 0.0], [0.0, 0.0, l]]\nsensor_axis\n", None),
+        ("import numpy as np\nsensor_axis = np.array([[l, 0, 0], [0, l, 0], [0, 0, l]])\nsensor_axis\n", Algebra.DIRECTION),
+        ("import numpy as np\nseg = np.array([[0, a], [0, b], [0, 0]])\nseg\n", None),  # points in columns: no reading
+        ("import numpy as np\nm = np.array([[0, 0, 0], [l, l, 0]])\nm\n", None),  # not along one axis
     ],
 )
 def test_kind_flow(source: str, kind: Algebra | None) -> None:
