@@ -527,9 +527,9 @@ class FactBase:
             return self._kind_of_product(node)
         if positional and self.is_array_call(func, *vocab.PASSTHROUGH_FUNCTIONS):
             return self.kind_of(positional[0])
-        if positional and isinstance(positional[0], ast.List) and self.is_array_call(func, "array", "asarray", "tensor", "as_tensor"):
-            if _origin_and_axis_tips(positional[0]):
-                return Kind.POINT
+        tips = positional and isinstance(positional[0], ast.List) and _origin_and_axis_tips(positional[0])
+        if tips and self.is_array_call(func, "array", "asarray", "tensor", "as_tensor"):
+            return Kind.POINT  # `np.array([[0, 0, 0], [l, 0, 0], ...])`: the origin and axis tips
         if isinstance(func, ast.Attribute) and not self.is_module_like(func.value):
             if func.attr in vocab.PASSTHROUGH_METHODS:
                 return self.kind_of(func.value)
