@@ -201,6 +201,8 @@ def _record_call(
     a project helper that translates one (`apply_pose(T, x)`), an API that reads an angle unit (`np.cos(theta)`)."""
     passed = {index: params.index(arg.id) for index, arg in enumerate(arguments) if isinstance(arg, ast.Name) and arg.id in plain}
     if not passed:
+        if arguments and isinstance(arguments[0], ast.BinOp):
+            _record_rotation_vector(facts, call, plain, summary)
         return
     if facts.may_have_summary(call):
         callee = facts.function_summary(call)
@@ -236,6 +238,18 @@ def _record_call(
         order = quaternion_read_by(facts, call, arguments[index])
         if order is not None:
             _add_quaternion_read(summary, own, order, f"`{facts.code_of(call.func)}`")
+
+
+def _record_rotation_vector(facts: FactBase, call: ast.Call, plain: set[str], summary: FunctionSummary) -> None:
+    """`from_rotation_vector(theta * axis)`: a parameter that scales a rotation vector is its angle, read in radians."""
+    from geolint.rules.rotation.angle_units import rotation_vector_factors, unit_read_by
+
+    for factor in rotation_vector_factors(facts, call):
+        if isinstance(factor, ast.Name) and factor.id in plain:
+            read = unit_read_by(facts, call, factor)
+            if read is not None:
+                where = f"`{facts.code_of(call.func)}` (as the angle of the rotation vector `{facts.code_of(facts.parent(factor) or factor)}`)"
+                _add_unit_read(summary, summary.parameters.index(factor.id), read, where)
 
 
 def _record_keyword_quaternions(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain: set[str], summary: FunctionSummary) -> None:

@@ -26,7 +26,8 @@ import re
 from collections import Counter
 from dataclasses import dataclass
 
-from geolint.factbase.index import ParamBinding, Scope, module_constant
+from geolint.factbase.angles import DEGREES, RADIANS, RETURNED_ANGLES, ROTATION_VECTOR_READERS
+from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import (
     FactBase,
@@ -39,7 +40,6 @@ from geolint.factbase.model import (
 )
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 
-DEGREES, RADIANS = "deg", "rad"
 _DEGREE_WORDS = frozenset({"deg", "degs", "degree", "degrees"})
 _RADIAN_WORDS = frozenset({"rad", "rads", "radian", "radians"})
 # words that turn a unit word into something else (`deg_per_s` is a rate, `rad2deg` a factor)
@@ -57,25 +57,31 @@ _SPATIALMATH_ANGLE_CALLS = frozenset(
 # pytransform3d's `*_from_euler` / `*_from_angle`).
 _RADIAN_API_NAMES = frozenset(
     {"from_euler", "from_rotvec", *_SPATIALMATH_ANGLE_CALLS, "quaternion_from_euler", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
+    | {qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS}
 )
+_ROTATION_VECTOR_NAMES = frozenset({"from_rotvec", *(qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS)})
 
 
-# Library calls that read an angle in DEGREES, by qualified name: the angle's position and keyword.
-DEGREE_CONSUMERS: dict[str, tuple[int, str]] = {
+# Library calls that read angles in DEGREES, by qualified name: each angle's position and keyword.
+DEGREE_CONSUMERS: dict[str, tuple[tuple[int, str], ...]] = {
     # glRotatef/glRotated(angle, x, y, z): "The angle of rotation, in degrees" (OpenGL reference,
     # learn.microsoft.com/en-us/windows/win32/OpenGL/glrotatef); PyOpenGL and pyglet.gl bind the C call
-    **{f"{module}.{name}": (0, "angle") for module in ("OpenGL.GL", "pyglet.gl") for name in ("glRotatef", "glRotated")},
+    **{f"{module}.{name}": ((0, "angle"),) for module in ("OpenGL.GL", "pyglet.gl") for name in ("glRotatef", "glRotated")},
     # getRotationMatrix2D(center, angle, scale): "Rotation angle in degrees. Positive values mean
     # counter-clockwise rotation" (OpenCV imgproc reference, docs.opencv.org group__imgproc__transform)
-    "cv2.getRotationMatrix2D": (1, "angle"),
+    "cv2.getRotationMatrix2D": ((1, "angle"),),
     # rotate(input, angle, axes=(1, 0), ...): "angle : float The rotation angle in degrees"
     # (docs.scipy.org/doc/scipy/reference/generated/scipy.ndimage.rotate.html)
-    "scipy.ndimage.rotate": (1, "angle"),
-    "scipy.ndimage.interpolation.rotate": (1, "angle"),
+    "scipy.ndimage.rotate": ((1, "angle"),),
+    "scipy.ndimage.interpolation.rotate": ((1, "angle"),),
     # rotate(img, angle, ...): "angle (number) - rotation angle value in degrees, counter-clockwise"
     # (docs.pytorch.org/vision/stable/generated/torchvision.transforms.functional.rotate.html)
-    "torchvision.transforms.functional.rotate": (1, "angle"),
+    "torchvision.transforms.functional.rotate": ((1, "angle"),),
+    # carla.Rotation(pitch=0.0, yaw=0.0, roll=0.0): "pitch (float - degrees) Y-axis rotation angle",
+    # yaw and roll likewise (CARLA Python API reference, Docs/python_api.md, carla.Rotation)
+    "carla.Rotation": ((0, "pitch"), (1, "yaw"), (2, "roll")),
 }
+_DEGREE_CONSUMER_NAMES = frozenset(qualified.rpartition(".")[2] for qualified in DEGREE_CONSUMERS)
 _GL_ROTATE = frozenset({"glRotatef", "glRotated"})
 _GL_PACKAGES = frozenset({"OpenGL", "pyglet"})  # `from pyglet.gl import *`: the usual way GL is imported
 
@@ -142,8 +148,9 @@ class AngleUnits:
                 stores = facts.index.self_attribute_stores.get(node.attr, [])
                 return self._agree(by_name, [self.unit_of(store) for store in stores] if stores else [])
             return by_name
-        if isinstance(node, ast.Subscript) and isinstance(node.value, (ast.Name, ast.Attribute)):
-            return self.unit_of(node.value)  # `angles_deg[0]`: an element of an array of angles has its unit
+        if isinstance(node, ast.Subscript) and isinstance(node.value, (ast.Name, ast.Attribute, ast.Call)):
+            # `angles_deg[0]`, `euler_from_quaternion(q)[2]`: an element of an array of angles has its unit
+            return self.unit_of(node.value)
         return None
 
     def converts_by_hand(self, node: ast.BinOp) -> tuple[str, ast.expr] | None:
@@ -202,6 +209,9 @@ class AngleUnits:
         module, _, name = qualified.rpartition(".")
         if module in _ANGLE_MODULES and name in _INVERSE_TRIG:
             return Unit(RADIANS, f"`{facts.code_of(call.func)}` returns radians", False)
+        returned = RETURNED_ANGLES.get(qualified)
+        if returned is not None:
+            return Unit(returned, f"`{qualified}` returns its angles in {_word(returned)}", False)
         if isinstance(call.func, ast.Attribute) and call.func.attr in ("as_euler", "magnitude") and not call.keywords:
             from geolint.factbase.rotations import is_scipy_rotation_value
 
@@ -228,11 +238,19 @@ class AngleUnits:
         for binding in bound:
             if isinstance(binding, ast.expr):
                 found.append(self.unit_of(binding))
-            elif isinstance(binding, ParamBinding):
-                found.append(None)
+            elif isinstance(binding, UnpackBinding):
+                found.append(self._unit_of_unpacked(binding))
             else:
                 found.append(None)
         return self._agree(by_name, found)
+
+    def _unit_of_unpacked(self, binding: UnpackBinding) -> Unit | None:
+        """`roll, pitch, yaw = euler_from_quaternion(q)`: each name has the unit of every returned angle;
+        `a, b = x_deg, y_deg`: the unit of its own element."""
+        value = binding.value
+        if isinstance(value, (ast.Tuple, ast.List)):
+            return self.unit_of(value.elts[binding.position]) if binding.position < len(value.elts) else None
+        return self.unit_of(value) if isinstance(value, ast.Call) else None
 
     def bound_literal(self, node: ast.Name | ast.Attribute) -> Unit | None:
         """DEGREES when `node` is a constant bound once, in the whole module it lives in, to a literal
@@ -506,6 +524,8 @@ def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
         return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
         return positional[:3]
+    if qualified in ROTATION_VECTOR_READERS:
+        return positional[:1]
     if name == "getQuaternionFromEuler" and (qualified.startswith("pybullet") or isinstance(func, ast.Attribute)):
         # pybullet, on the module or on a BulletClient: one (roll, pitch, yaw) sequence in radians
         return positional[:1] or [given.value for given in node.keywords if given.arg == "eulerAngles"]
@@ -529,12 +549,11 @@ def is_trig_or_conversion(facts: FactBase, node: ast.Call) -> bool:
     return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
 
 
-def degree_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
-    """The angle argument of a library call that reads degrees (`DEGREE_CONSUMERS`), else None.
+def degree_arguments(facts: FactBase, call: ast.Call) -> list[ast.expr]:
+    """The angle arguments of a library call that reads degrees (`DEGREE_CONSUMERS`), else [].
     `glRotatef` also counts under a star import of OpenGL or pyglet (the name is OpenGL's own)."""
-    called = facts.called_name(call.func)
-    if called not in _GL_ROTATE and called not in ("getRotationMatrix2D", "rotate"):
-        return None  # the cheap test first: asked of every call
+    if facts.called_name(call.func) not in _DEGREE_CONSUMER_NAMES:
+        return []  # the cheap test first: asked of every call
     qualified = facts.qualified_name(call.func) or ""
     found = DEGREE_CONSUMERS.get(qualified)
     if (
@@ -543,15 +562,18 @@ def degree_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         and qualified not in facts.index.functions
         and any(module.split(".")[0] in _GL_PACKAGES for module in facts.index.star_imports)
     ):
-        found = (0, "angle")
+        found = ((0, "angle"),)
     if found is None:
-        return None
-    position, name = found
+        return []
     positional = positional_args(call)
-    if len(positional) > position:
-        return positional[position]
-    given = keyword(call, name)
-    return None if given is None else given.value
+    arguments = []
+    for position, name in found:
+        given = keyword(call, name)
+        if len(positional) > position:
+            arguments.append(positional[position])
+        elif given is not None:
+            arguments.append(given.value)
+    return arguments
 
 
 def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:
@@ -563,7 +585,9 @@ def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | N
         return None
     if any(element is argument for found in radian_arguments(facts, call) or () for element in _angle_elements(found)):
         return RADIANS
-    if degree_argument(facts, call) is argument:
+    if any(factor is argument for factor in rotation_vector_factors(facts, call)):
+        return RADIANS
+    if any(found is argument for found in degree_arguments(facts, call)):
         return DEGREES
     positional = positional_args(call)
     if facts.shared(AngleUnits).converts(call) == RADIANS and positional and positional[0] is argument:
@@ -575,6 +599,19 @@ def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | N
             if angles is not None and any(element is argument for element in _angle_elements(angles)):
                 return DEGREES
     return None
+
+
+def rotation_vector_factors(facts: FactBase, call: ast.Call) -> list[ast.expr]:
+    """For a call reading a rotation vector in radians written as a product (`from_rotvec(theta * axis)`,
+    numpy-quaternion's `from_rotation_vector(angle * axis)`): the product's factors that are no number
+    literal (the angle among them); [] for any other call."""
+    if facts.called_name(call.func) not in _ROTATION_VECTOR_NAMES:
+        return []
+    arguments = radian_arguments(facts, call)
+    if not arguments or not isinstance(arguments[0], ast.BinOp) or not isinstance(arguments[0].op, ast.Mult):
+        return []
+    product = arguments[0]
+    return [factor for factor in (product.left, product.right) if number(factor) is None]
 
 
 def _angle_elements(node: ast.expr) -> list[ast.expr]:
@@ -635,15 +672,22 @@ def _early_exit_line(body: list[ast.stmt]) -> int:
 def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:
     """The arguments of a call to a project helper that passes them, unchanged and unconditionally,
     to an API reading `unit` (directly or through further helpers), or names its parameter in that
-    unit, each with how it gets there and whether only a name says so."""
-    if not call.args or any(isinstance(arg, ast.Starred) for arg in call.args) or not facts.may_have_summary(call):
+    unit, each with how it gets there and whether only a name says so; and the arguments of a
+    project class's constructor that stores them for a method to read in `unit` (`constructor_reads`)."""
+    if any(isinstance(arg, ast.Starred) for arg in call.args):
+        return []
+    function = bool(call.args) and facts.may_have_summary(call)
+    if not function and not _may_be_project_class(facts, call):
         return []
     units = facts.shared(AngleUnits) if units is None else units
     other = RADIANS if unit == DEGREES else DEGREES
-    if not any((given := units.unit_of(arg)) is not None and given.unit == other for arg in call.args):
+    given = [*call.args, *(keyword.value for keyword in call.keywords if keyword.arg)]
+    if not any((found := units.unit_of(arg)) is not None and found.unit == other for arg in given):
         return []  # no argument in the other unit: the helper's summary cannot matter
-    summary = facts.function_summary(call)
-    if summary is None or not summary.reads_unit:
+    summary = facts.function_summary(call) if function else None
+    if summary is None:
+        return _constructor_reads_of(facts, call, unit)
+    if not summary.reads_unit:
         return []
     helper = facts.code_of(call.func)
     found = []
@@ -656,6 +700,135 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
                 how = f"`{helper}` passes its parameter `{parameter}` to {where}, which reads {_word(unit)}"
             found.append((call.args[index], how, by_name))
     return found
+
+
+def _may_be_project_class(facts: FactBase, call: ast.Call) -> bool:
+    """A cheap test: a call of a name that is a class of this module or imported from a project module."""
+    func = call.func
+    if isinstance(func, ast.Name) and func.id in _top_level_classes(facts):
+        return True
+    return facts.may_have_summary(call)
+
+
+def _top_level_classes(facts: FactBase) -> frozenset[str]:
+    return facts.module_fact("top-level classes", lambda: frozenset(node.name for node in facts.index.tree.body if isinstance(node, ast.ClassDef)))
+
+
+def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str) -> list[tuple[ast.expr, str, bool]]:
+    located = project_class(facts, call.func)
+    if located is None:
+        return []
+    other, cls = located
+    parameters, reads = constructor_reads(other, cls)
+    found = []
+    for index, (read, where) in sorted(reads.items()):
+        if read != unit:
+            continue
+        parameter = parameters[index]
+        if index < len(call.args):
+            argument: ast.expr | None = call.args[index]
+        else:
+            argument = getattr(keyword(call, parameter), "value", None)
+        if argument is not None:
+            how = f"`{facts.code_of(call.func)}` stores its parameter `{parameter}` for {where}, which reads {_word(unit)}"
+            found.append((argument, how, False))
+    return found
+
+
+def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ast.ClassDef] | None:
+    """The top-level class a called name is: of this module, or of the project module it is imported from."""
+    if isinstance(func, ast.Name):
+        local = _top_level_class(facts, func.id)
+        if local is not None:
+            return facts, local
+        if func.id not in facts.index.imports:
+            return None
+    elif not isinstance(func, ast.Attribute):
+        return None
+    if not facts.cross_module:
+        return None
+    found = facts._defining_module(facts.qualified_name(func) or "", facts.path)
+    if found is None:
+        return None
+    other, name = found
+    cls = _top_level_class(other, name)
+    return None if cls is None else (other, cls)
+
+
+def constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
+    """What a class's constructor reads its parameters in: `__init__`'s parameters (without `self`) and,
+    by index, the unit and where, for a parameter stored as it is (`self.yaw = yaw`, the class's only
+    store of `self.yaw`, unconditionally in `__init__`) that a method of the class hands unconditionally
+    to an API reading a unit (`np.radians(self.yaw)`, `carla.Rotation(self.pitch, ...)`), or that
+    `__init__` itself hands to one. Read in both units: nothing."""
+    return facts.memoised("constructor reads", cls, lambda: _constructor_reads(facts, cls))
+
+
+def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
+    init = next((node for node in cls.body if isinstance(node, ast.FunctionDef) and node.name == "__init__"), None)
+    if init is None or init.decorator_list:
+        return (), {}
+    every = (*init.args.posonlyargs, *init.args.args)
+    if not every:
+        return (), {}
+    parameters = tuple(arg.arg for arg in every[1:])
+    scope = facts.index.scopes.get(init)
+    if scope is None:
+        return parameters, {}
+    plain = {name for name in parameters if _plain_parameter(scope, name)}
+    # `self.<attr>` stored in the class: attr -> the stored values
+    stores: dict[str, list[ast.expr]] = {}
+    for method in cls.body:
+        if not isinstance(method, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            continue
+        for node in walk_within(method):
+            if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load) and isinstance(node.value, ast.Name) and node.value.id == "self":
+                parent = facts.parent(node)
+                value = parent.value if isinstance(parent, ast.Assign) and len(parent.targets) == 1 else None
+                stores.setdefault(node.attr, []).append(value)  # type: ignore[arg-type]
+    held: dict[str, int] = {}  # attr -> the parameter index it holds
+    for attr, values in stores.items():
+        value = values[0]
+        if len(values) == 1 and isinstance(value, ast.Name) and value.id in plain and facts.index.scope_of(value).node is init and _unconditional(facts, value):
+            held[attr] = parameters.index(value.id)
+    found: dict[int, tuple[str, str]] = {}
+    conflicting: set[int] = set()
+
+    def add(index: int, unit: str, where: str) -> None:
+        known = found.get(index)
+        if known is None:
+            found[index] = (unit, where)
+        elif known[0] != unit:
+            conflicting.add(index)
+
+    for method in cls.body:
+        if not isinstance(method, ast.FunctionDef) or not held:
+            continue
+        for node in walk_within(method):
+            if not (isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and node.attr in held):
+                continue
+            if not (isinstance(node.value, ast.Name) and node.value.id == "self"):
+                continue
+            call = facts.parent(node)
+            if isinstance(call, (ast.List, ast.Tuple)):
+                call = facts.parent(call)  # `from_euler("xyz", [self.roll, ...], degrees=True)`
+            if isinstance(call, ast.Call):
+                read = unit_read_by(facts, call, node)
+                if read is not None:
+                    add(held[node.attr], read, f"`{facts.code_of(call.func)}` (as `self.{node.attr}`, in `{method.name}`)")
+    if parameters:
+        from geolint.factbase.summaries import bound  # no cycle at import time
+
+        summary = facts.project.summary(facts, init)
+        for index, (read, where, by_name) in (bound(summary).reads_unit.items() if summary is not None else ()):
+            if read and where and not by_name:
+                add(index, read, f"{where} (in `__init__`)")
+    return parameters, {index: value for index, value in found.items() if index not in conflicting}
+
+
+def _plain_parameter(scope: Scope, name: str) -> bool:
+    bound = scope.bindings.get(name, [])
+    return len(bound) == 1 and isinstance(bound[0], ParamBinding) and name not in scope.augmented
 
 
 def wrong_unit_passed(

@@ -16,7 +16,7 @@ from geolint.rules.rotation.angle_units import (
     DEGREES,
     RADIANS,
     AngleUnits,
-    degree_argument,
+    degree_arguments,
     enclosing_class,
     format_angle,
     is_trig_or_conversion,
@@ -449,9 +449,7 @@ class DegreesAsRadians(FactRule):
             found = []
             for call in self.facts.index.nodes(ast.Call):
                 assert isinstance(call, ast.Call)
-                argument = degree_argument(self.facts, call)
-                if argument is not None:
-                    found.append((argument, call))
+                found.extend((argument, call) for argument in degree_arguments(self.facts, call))
             return found
 
         return self.facts.module_fact("degree consumers", collect)

@@ -12,7 +12,7 @@ from geolint.rules.rotation.angle_units import (
     DEGREES,
     RADIANS,
     AngleUnits,
-    degree_argument,
+    degree_arguments,
     report_conversion_of_converted,
     report_hand_conversion_of_converted,
     wrong_unit_passed,
@@ -68,7 +68,7 @@ class RadiansAsDegrees(FactRule):
     code = "GEO305"
     name = "radians-as-degrees"
     # a conversion from degrees, or (for a project helper that reads degrees) radians in plain sight
-    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler")  # type: ignore[assignment]
+    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler|euler_from|2euler|EulerFrom")  # type: ignore[assignment]
 
     VALID = [
         Valid("import numpy as np\nimport cv2\ndef f(img, dy, dx):\n    return cv2.getRotationMatrix2D((0, 0), np.degrees(np.arctan2(dy, dx)), 1.0)\n"),
@@ -125,15 +125,17 @@ class RadiansAsDegrees(FactRule):
         if units.converts(node) == RADIANS:
             report_conversion_of_converted(self, node, self.code_of(node.func), positional_args(node)[0], RADIANS, units)
             return
-        angle = degree_argument(facts, node)
-        if angle is not None:
-            unit = units.unit_of(angle)
-            if unit is not None and unit.unit == RADIANS and not unit.by_name:
-                self.report(
-                    angle,
-                    f"`{self.code_of(node.func)}` reads its angle in degrees, but `{self.code_of(angle)}` is in radians ({unit.evidence})",
-                    evidence=(unit.evidence,),
-                )
+        angles = degree_arguments(facts, node)
+        if angles:
+            for angle in angles:
+                unit = units.unit_of(angle)
+                if unit is not None and unit.unit == RADIANS and not unit.by_name:
+                    self.report(
+                        angle,
+                        f"`{self.code_of(node.func)}` reads its angle in degrees, but `{self.code_of(angle)}` is in radians ({unit.evidence})",
+                        evidence=(unit.evidence,),
+                    )
+                    break
             return
         if not is_scipy_rotation_method(facts, node.func, "from_euler"):
             return

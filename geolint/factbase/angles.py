@@ -1,0 +1,38 @@
+"""Angle units of library calls, by qualified name: what unit a call returns its angles in, and which
+calls read an angle as the length of a rotation vector.
+
+Each entry names where its unit was checked (the library's documentation or source).
+"""
+
+from __future__ import annotations
+
+DEGREES, RADIANS = "deg", "rad"
+
+# Library calls whose every returned angle (a tuple or array of Euler angles) is in one unit.
+RETURNED_ANGLES: dict[str, str] = {
+    # tf's transformations.py (Gohlke's, also shipped as tf_transformations and tf_conversions.transformations):
+    # euler_from_matrix computes each angle with math.atan2, and its doctest reads
+    # euler_from_quaternion([0.06146124, 0, 0, 0.99810947]) back as [0.123, 0, 0]: radians
+    **{
+        f"{module}.{name}": RADIANS
+        for module in ("tf.transformations", "tf_transformations", "tf_conversions.transformations")
+        for name in ("euler_from_quaternion", "euler_from_matrix")
+    },
+    # transforms3d.euler.quat2euler / mat2euler: the inverse of euler2quat / euler2mat (which take
+    # radians, math.cos(ai)); each angle computed with math.atan2 (transforms3d/euler.py)
+    "transforms3d.euler.quat2euler": RADIANS,
+    "transforms3d.euler.mat2euler": RADIANS,
+    # pytransform3d.rotations.euler_from_matrix / euler_from_quaternion: "Extracted rotation angles in
+    # radians about the axes i, j, k in this order" (pytransform3d/rotations/_conversions.py docstrings)
+    "pytransform3d.rotations.euler_from_matrix": RADIANS,
+    "pytransform3d.rotations.euler_from_quaternion": RADIANS,
+    # pybullet.getEulerFromQuaternion: the inverse of getQuaternionFromEuler (radians), "a list of 3
+    # floating point values, a vec3" (PyBullet Quickstart Guide, getEulerFromQuaternion)
+    "pybullet.getEulerFromQuaternion": RADIANS,
+}
+
+# Library calls that read a rotation vector (axis times angle) as their first argument, in radians:
+# numpy-quaternion's from_rotation_vector "Each vector represents the axis of the rotation, with norm
+# proportional to the angle of the rotation in radians" (moble/quaternion, quaternion/__init__.py).
+# (scipy's `Rotation.from_rotvec` is known through `is_scipy_rotation_method`.)
+ROTATION_VECTOR_READERS = frozenset({"quaternion.from_rotation_vector"})
