@@ -315,3 +315,57 @@ def test_a_parse_table_needs_a_radian_converter_and_a_plain_parser(tmp_path: Pat
     (tmp_path / "library.py").write_text("from math import radians\nFIELDS = {'RMC': [('course', radians, 8)], 'VTG': [('course', float, 1)]}\n")
     found = sorted((f["path"].rsplit("/", 1)[-1], f["line"]) for f in check(["."], cwd=tmp_path))
     assert found == [("builtin.py", 8), ("library.py", 2), ("plain.py", 8)]
+
+
+def test_a_class_constructor_reads_its_parameter_only_through_one_unconditional_store(tmp_path: Path) -> None:
+    """GEO305 reads `Heading(yaw)` as taking degrees when `__init__` stores `self.yaw = yaw` once and a
+    method converts `self.yaw` from degrees; any other store, a conditional one, or a method that reads
+    it in radians too leaves the constructor's unit unknown."""
+    flagged = (
+        "import math\n"
+        "class Heading:\n"
+        "    def __init__(self, yaw):\n"
+        "        self.yaw = yaw\n"
+        "    def forward(self):\n"
+        "        return math.cos(math.radians(self.yaw))\n"
+        "def heading_to(dy, dx):\n"
+        "    return Heading(math.atan2(dy, dx))\n"
+    )
+    silent = {
+        "setter.py": flagged.replace("    def forward", "    def turn(self, yaw_rad):\n        self.yaw = math.degrees(yaw_rad)\n    def forward"),
+        "conditional.py": flagged.replace("        self.yaw = yaw\n", "        if yaw is not None:\n            self.yaw = yaw\n"),
+        "both_units.py": flagged.replace("    def forward", "    def sine(self):\n        return math.sin(self.yaw)\n    def forward"),
+        "under_branch.py": flagged.replace("        return math.cos(math.radians(self.yaw))", "        if self.yaw:\n            return math.cos(math.radians(self.yaw))"),
+        "converted.py": flagged.replace("Heading(math.atan2(dy, dx))", "Heading(math.degrees(math.atan2(dy, dx)))"),
+    }
+    (tmp_path / "flagged.py").write_text(flagged)
+    for name, source in silent.items():
+        (tmp_path / name).write_text(source)
+    found = sorted((f["path"].rsplit("/", 1)[-1], f["line"], f["code"]) for f in check(["."], cwd=tmp_path))
+    assert found == [("flagged.py", 8, "GEO305")], found
+    message = check(["flagged.py"], cwd=tmp_path)[0]["message"]
+    assert "`Heading` stores its parameter `yaw` for `math.radians` (as `self.yaw`, in `forward`)" in message
+    assert "`math.atan2` returns radians" in message
+
+
+def test_library_euler_conversions_return_radians_through_aliases(tmp_path: Path) -> None:
+    """tf / transforms3d / pybullet Euler conversions, imported under any name, return radians: given
+    to a call that reads degrees, each is GEO305; converted first, silent."""
+    (tmp_path / "aliases.py").write_text(
+        "import cv2\n"
+        "import numpy as np\n"
+        "import pybullet as pb\n"
+        "import tf.transformations as tft\n"
+        "from transforms3d import euler as t3e\n"
+        "def a(q):\n"
+        "    return cv2.getRotationMatrix2D((0, 0), tft.euler_from_quaternion(q)[2], 1.0)\n"
+        "def b(q):\n"
+        "    _, _, yaw = t3e.quat2euler(q)\n"
+        "    return cv2.getRotationMatrix2D((0, 0), yaw, 1.0)\n"
+        "def c(q):\n"
+        "    return cv2.getRotationMatrix2D((0, 0), pb.getEulerFromQuaternion(q)[2], 1.0)\n"
+        "def d(q):\n"
+        "    return cv2.getRotationMatrix2D((0, 0), np.degrees(tft.euler_from_quaternion(q)[2]), 1.0)\n"
+    )
+    found = [(f["line"], f["code"]) for f in check(["aliases.py"], cwd=tmp_path)]
+    assert found == [(7, "GEO305"), (10, "GEO305"), (12, "GEO305")], found

@@ -810,8 +810,8 @@ def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, .
             if not (isinstance(node.value, ast.Name) and node.value.id == "self"):
                 continue
             call = facts.parent(node)
-            if isinstance(call, (ast.List, ast.Tuple)):
-                call = facts.parent(call)  # `from_euler("xyz", [self.roll, ...], degrees=True)`
+            if isinstance(call, (ast.List, ast.Tuple, ast.keyword)):
+                call = facts.parent(call)  # `from_euler("xyz", [self.roll, ...], degrees=True)`, `Rotation(yaw=self.yaw)`
             if isinstance(call, ast.Call):
                 read = unit_read_by(facts, call, node)
                 if read is not None:

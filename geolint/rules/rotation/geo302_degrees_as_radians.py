@@ -52,7 +52,8 @@ class DegreesAsRadians(FactRule):
     Flags literal angles larger than 2 pi passed where radians are expected: scipy
     `Rotation.from_euler` / `from_rotvec` without `degrees=True`, transforms3d `euler2*` and
     `axangle2*`, pytransform3d `*_from_euler` / `*_from_angle`, spatialmath `SE3.Rx` and friends
-    without `unit="deg"`, ROS `quaternion_from_euler`, pybullet `getQuaternionFromEuler`, and
+    without `unit="deg"`, ROS `quaternion_from_euler`, pybullet `getQuaternionFromEuler`,
+    numpy-quaternion's `from_rotation_vector`, and
     `np.sin`/`math.cos` of a whole multiple of 15 degrees (`np.cos(90)`). Through data it also flags a value the code itself
     puts in degrees passed to those APIs (and to `np.degrees` / `np.rad2deg`): a name that says
     so (`yaw_deg`, `fov_degrees`, `tiltDeg`), the result of `np.degrees` / `np.rad2deg` /
@@ -61,8 +62,11 @@ class DegreesAsRadians(FactRule):
     `self` attributes, elements (`angles[2]`), negation, halving and sums of degrees; a
     parameter whose only value is a literal default above 2 pi (`fovy=30`); and such a value
     passed to a project helper (here or in another module, through helpers that call helpers)
-    that hands the parameter unchanged to one of those APIs, or names it in radians (`theta_rad`)
-    when the value's degrees are computed rather than only named; and a name or `self` attribute
+    that hands the parameter unchanged to one of those APIs (or scales a rotation vector by it,
+    `quaternion.from_rotation_vector(theta * axis)`), or names it in radians (`theta_rad`)
+    when the value's degrees are computed rather than only named; such a value passed to a project
+    class whose constructor stores the parameter as it is (`self.angle = angle`) for a method that
+    hands it to one of those APIs (`np.tan(self.angle)`); and a name or `self` attribute
     bound only to literal angle lists (`UPRIGHT = [90, 0, 0]`) passed whole to those APIs.
 
     Constants count too: a module constant, class attribute or `self.x = <literal>` that is the
@@ -120,6 +124,10 @@ class DegreesAsRadians(FactRule):
     API through a name (`UPRIGHT = [90, 0, 0]`), are judged only when every large
     one is a whole multiple of 15 (`[90, 0, 0]`): scene constants such as `[0, 160, -80]` are
     often tuned by eye in the simulator, so the rotation they give is the one wanted.
+    A class's constructor is read only through attributes stored once, unconditionally in `__init__`,
+    and read by the class's own methods; a class whose methods read the attribute in both units says
+    nothing. A helper's parameter that scales a rotation vector is taken for its angle: a helper
+    scaling an angle by a time step (`from_rotvec(omega * dt)`) would be said to read `dt` in radians.
     """
 
     code = "GEO302"
@@ -169,6 +177,16 @@ class DegreesAsRadians(FactRule):
         ),
     ]
     INVALID = [
+        Invalid(
+            "import numpy as np\nimport quaternion\n"
+            "def quat_from_angle_axis(theta, axis):\n    return quaternion.from_rotation_vector(theta * axis)\n"
+            "def look(c):\n    theta = -180 * np.arccos(c) / np.pi\n    return quat_from_angle_axis(theta, np.array([0, 1, 0]))\n"
+        ),
+        Invalid(
+            "import numpy as np\nclass Steering:\n    def __init__(self, angle):\n        self.angle = angle\n"
+            "    def curvature(self, wheelbase):\n        return np.tan(self.angle) / wheelbase\n"
+            "def f(command):\n    return Steering(np.degrees(command))\n"
+        ),
         Invalid("import math as m\nclass Config:\n    def __init__(self):\n        self.phi = 73.17\n        self.offset = 0.05 * m.sin(self.phi)\n"),
         Invalid("import numpy as np\nHIP_TILT = 30.0\ndef height(h):\n    return h * np.cos(HIP_TILT / 2)\n"),
         Invalid(

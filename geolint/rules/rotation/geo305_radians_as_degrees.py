@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import ast
+import re
 
-from geolint.factbase.model import keyword, positional_args
+from geolint.factbase.model import keyword, positional_args, string
 from geolint.factbase.rotations import is_scipy_rotation_method
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
@@ -20,6 +21,11 @@ from geolint.rules.rotation.angle_units import (
 from geolint.rules.triggers import AllOf
 
 
+# `angle_units="degrees"`, `unit="deg"`: a keyword that states the unit of the call's angles
+_UNIT_KEYWORD = re.compile(r"(?:^|_)units?$")
+_DEGREE_STRINGS = frozenset({"deg", "degree", "degrees"})
+
+
 class RadiansAsDegrees(FactRule):
     """An angle the code already has in radians is converted from degrees again, or passed as degrees.
 
@@ -28,15 +34,22 @@ class RadiansAsDegrees(FactRule):
     written by hand (`x * np.pi / 180`, `x * (math.pi / 180)`, `x * 0.0174533`), applied to a
     value that is already in radians, scipy `Rotation.from_euler(..., degrees=True)` given one, and a
     library call that reads degrees given one (OpenGL `glRotatef` / `glRotated`, OpenCV
-    `getRotationMatrix2D`, `scipy.ndimage.rotate`, torchvision's `rotate`; not when only a name
-    says radians). Radians
+    `getRotationMatrix2D`, `scipy.ndimage.rotate`, torchvision's `rotate`, CARLA's
+    `carla.Rotation(pitch, yaw, roll)`; not when only a name says radians). Radians
     are known from the code itself: an inverse trigonometric function (`np.arctan2`,
-    `math.acos`), a previous `np.radians`, scipy's `as_euler` without `degrees=True`, `np.pi`,
+    `math.acos`), a previous `np.radians`, scipy's `as_euler` without `degrees=True`, a library's
+    Euler conversion (tf's `euler_from_quaternion` / `euler_from_matrix`, transforms3d's
+    `quat2euler` / `mat2euler`, pytransform3d's `euler_from_*`, pybullet's
+    `getEulerFromQuaternion`; each element, unpacked or indexed), `np.pi`,
     or a name that says so (`theta_rad`, `yaw_radians`), followed through local variables and
     halving or negation, and through project helpers whose every `return` is in radians. A value
     in radians passed to a project helper that hands the parameter unchanged to one of those
     conversions, or names it in degrees (`angle_in_degrees`), is flagged too (not when only names
-    say so on both sides).
+    say so on both sides); so is one passed to a project class whose constructor stores the
+    parameter as it is (`self.yaw = yaw`) for a method that converts it from degrees
+    (`np.radians(self.yaw)`) or hands it to a library reading degrees (`carla.Rotation(self.pitch,
+    ...)`), here or in another module, and a value in radians in a call that states by a keyword
+    that its angles are in degrees (`Pose(roll=np.pi / 2, angle_units="degrees")`, `unit="deg"`).
 
     ## Why is this bad?
     Converting radians "to radians" divides the angle by about 57.3: a 90 degree heading becomes
@@ -62,15 +75,30 @@ class RadiansAsDegrees(FactRule):
     in degrees in the same scope. A library that reads degrees is known only when the call names
     it (`cv2.getRotationMatrix2D`, `glRotatef` also under `from OpenGL.GL import *`): PIL's
     `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are methods of values geolint does not
-    type.
+    type. A class's constructor is read only through attributes stored once, unconditionally in
+    `__init__`, and read by the class's own methods (not by other classes, `rotation.yaw`); a class
+    whose methods read the attribute in both units says nothing. A keyword named `unit` / `*_units`
+    with the value `"deg"` / `"degrees"` is taken to state the unit of the call's angles; a helper
+    whose keyword picks the unit of its output would be misread.
     """
 
     code = "GEO305"
     name = "radians-as-degrees"
     # a conversion from degrees, or (for a project helper that reads degrees) radians in plain sight
-    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler|euler_from|2euler|EulerFrom")  # type: ignore[assignment]
+    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler|euler_from|2euler|EulerFrom|units?\s*=\s*[\"\']deg")  # type: ignore[assignment]
 
     VALID = [
+        Valid(
+            "import math\nclass Heading:\n    def __init__(self, yaw):\n        self.yaw = yaw\n"
+            "    def forward(self):\n        return math.cos(math.radians(self.yaw))\n"
+            "def f(dy, dx):\n    return Heading(math.degrees(math.atan2(dy, dx)))\n"
+        ),
+        Valid(  # read in both units by its own methods: what it takes is not known
+            "import math\nclass Bearing:\n    def __init__(self, angle):\n        self.angle = angle\n"
+            "    def a(self):\n        return math.radians(self.angle)\n    def b(self):\n        return math.cos(self.angle)\n"
+            "def f(dy, dx):\n    return Bearing(math.atan2(dy, dx))\n"
+        ),
+        Valid("import numpy as np\ndef f(make_pose):\n    return make_pose(roll=90.0, yaw=np.degrees(np.pi / 2), angle_units='degrees')\n"),
         Valid("import numpy as np\nimport cv2\ndef f(img, dy, dx):\n    return cv2.getRotationMatrix2D((0, 0), np.degrees(np.arctan2(dy, dx)), 1.0)\n"),
         Valid("import numpy as np\ndef f(heading_deg):\n    return np.deg2rad(heading_deg)\n"),
         Valid("import numpy as np\ndef f(dy, dx):\n    return np.degrees(np.arctan2(dy, dx))\n"),
@@ -84,6 +112,23 @@ class RadiansAsDegrees(FactRule):
         Valid("import numpy as np\ndef f(x):\n    theta_rad = np.degrees(x)\n    return np.radians(theta_rad)\n"),  # conflicting
     ]
     INVALID = [
+        Invalid(
+            "import cv2\nfrom tf.transformations import euler_from_quaternion\ndef f(q):\n"
+            "    roll, pitch, yaw = euler_from_quaternion(q)\n    return cv2.getRotationMatrix2D((0, 0), yaw, 1.0)\n"
+        ),
+        Invalid(
+            "import math\nclass Heading:\n    def __init__(self, yaw):\n        self.yaw = yaw\n"
+            "    def forward(self):\n        return math.cos(math.radians(self.yaw))\n"
+            "def f(dy, dx):\n    return Heading(math.atan2(dy, dx))\n"
+        ),
+        Invalid(
+            "class Rotation:\n    def __init__(self, pitch=0.0, yaw=0.0, roll=0.0):\n"
+            "        self.pitch = pitch\n        self.yaw = yaw\n        self.roll = roll\n"
+            "    def as_carla(self):\n        import carla\n        return carla.Rotation(pitch=self.pitch)\n"
+            "def f(quat):\n    from tf.transformations import euler_from_quaternion\n"
+            "    return Rotation(pitch=euler_from_quaternion(quat)[1])\n"
+        ),
+        Invalid("import numpy as np\ndef f(make_pose):\n    return make_pose(roll=np.pi / 2, yaw=-90.0, angle_units='degrees')\n"),
         Invalid("import numpy as np\nimport cv2\ndef f(img, dy, dx):\n    return cv2.getRotationMatrix2D((0, 0), np.arctan2(dy, dx), 1.0)\n"),
         Invalid(
             "import numpy as np\n"
@@ -115,6 +160,29 @@ class RadiansAsDegrees(FactRule):
         for node in self.facts.index.nodes(ast.BinOp):
             report_hand_conversion_of_converted(self, node, RADIANS, units)  # type: ignore[arg-type]
 
+    def _check_unit_keyword(self, node: ast.Call, units: AngleUnits) -> bool:
+        """`Pose(roll=np.pi / 2, ..., angle_units="degrees")`, `SE3.Rx(np.pi / 2, unit="deg")`: the call
+        says by a keyword that its angles are in degrees, and one of them is in radians by the code
+        (not by a name)."""
+        stated = next(
+            (given for given in node.keywords if given.arg and _UNIT_KEYWORD.search(given.arg) and string(given.value) in _DEGREE_STRINGS), None
+        )
+        if stated is None:
+            return False
+        for argument in [*node.args, *(given.value for given in node.keywords if given is not stated)]:
+            for element in argument.elts if isinstance(argument, (ast.List, ast.Tuple)) else [argument]:
+                unit = units.unit_of(element)
+                if unit is not None and unit.unit == RADIANS and not unit.by_name:
+                    said = f"{stated.arg}={self.code_of(stated.value)}"
+                    self.report(
+                        element,
+                        f"`{self.code_of(node.func)}(..., {said})` is told its angles are in degrees, but `{self.code_of(element)}` "
+                        f"is in radians ({unit.evidence})",
+                        evidence=(f"`{said}` states degrees", unit.evidence),
+                    )
+                    return True
+        return False
+
     def _check(self, node: ast.Call, units: AngleUnits) -> None:
         facts = self.facts
         found = wrong_unit_passed(facts, node, DEGREES, units)
@@ -124,6 +192,8 @@ class RadiansAsDegrees(FactRule):
             return
         if units.converts(node) == RADIANS:
             report_conversion_of_converted(self, node, self.code_of(node.func), positional_args(node)[0], RADIANS, units)
+            return
+        if node.keywords and self._check_unit_keyword(node, units):
             return
         angles = degree_arguments(facts, node)
         if angles:
