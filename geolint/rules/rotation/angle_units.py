@@ -25,6 +25,7 @@ import math
 import re
 from collections import Counter
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from geolint.factbase.angles import DEGREES, RADIANS, RETURNED_ANGLES, ROTATION_VECTOR_READERS
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
@@ -39,6 +40,9 @@ from geolint.factbase.model import (
     walk_within,
 )
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
+
+if TYPE_CHECKING:
+    from geolint.factbase.summaries import FunctionSummary
 
 _DEGREE_WORDS = frozenset({"deg", "degs", "degree", "degrees"})
 _RADIAN_WORDS = frozenset({"rad", "rads", "radian", "radians"})
@@ -148,9 +152,10 @@ class AngleUnits:
                 stores = facts.index.self_attribute_stores.get(node.attr, [])
                 return self._agree(by_name, [self.unit_of(store) for store in stores] if stores else [])
             return by_name
-        if isinstance(node, ast.Subscript) and isinstance(node.value, (ast.Name, ast.Attribute, ast.Call)):
-            # `angles_deg[0]`, `euler_from_quaternion(q)[2]`: an element of an array of angles has its unit
-            return self.unit_of(node.value)
+        if isinstance(node, ast.Subscript) and isinstance(node.value, (ast.Name, ast.Attribute)):
+            return self.unit_of(node.value)  # `angles_deg[0]`: an element of an array of angles has its unit
+        if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Call):
+            return self._unit_of_library_call(node.value)  # `euler_from_quaternion(q)[2]`
         return None
 
     def converts_by_hand(self, node: ast.BinOp) -> tuple[str, ast.expr] | None:
@@ -205,6 +210,14 @@ class AngleUnits:
             if summary is not None and summary.angle_unit is not None:
                 unit, evidence, by_name = summary.angle_unit
                 return Unit(unit, f"`{facts.code_of(call.func)}` returns {_word(unit)}: {evidence}", by_name)
+        return self._unit_of_library_call(call)
+
+    def _unit_of_library_call(self, call: ast.Call) -> Unit | None:
+        """The unit a library call returns its angles in (not asking project helpers' summaries)."""
+        facts = self.facts
+        converted = self.converts(call)
+        if converted is not None:
+            return Unit(converted, f"`{facts.code_of(call.func)}` returns {_word(converted)}", False)
         qualified = facts.qualified_name(call.func) or ""
         module, _, name = qualified.rpartition(".")
         if module in _ANGLE_MODULES and name in _INVERSE_TRIG:
@@ -250,7 +263,7 @@ class AngleUnits:
         value = binding.value
         if isinstance(value, (ast.Tuple, ast.List)):
             return self.unit_of(value.elts[binding.position]) if binding.position < len(value.elts) else None
-        return self.unit_of(value) if isinstance(value, ast.Call) else None
+        return self._unit_of_library_call(value) if isinstance(value, ast.Call) else None
 
     def bound_literal(self, node: ast.Name | ast.Attribute) -> Unit | None:
         """DEGREES when `node` is a constant bound once, in the whole module it lives in, to a literal
@@ -308,6 +321,17 @@ class AngleUnits:
     def _is_pi(self, node: ast.AST) -> bool:
         qualified = self.facts.qualified_name(node) or ""
         return qualified in ("numpy.pi", "math.pi", "torch.pi")
+
+
+class _LibraryUnits(AngleUnits):
+    """`unit_of` from this module's code and libraries only: no project helper's summary, no constant of
+    another module (a cheap first look that reads no other module)."""
+
+    def _unit_of_call(self, call: ast.Call) -> Unit | None:
+        return self._unit_of_library_call(call)
+
+    def bound_literal(self, node: ast.Name | ast.Attribute) -> Unit | None:
+        return None
 
 
 def plausible_degrees(value: float) -> bool:
@@ -674,21 +698,51 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
     to an API reading `unit` (directly or through further helpers), or names its parameter in that
     unit, each with how it gets there and whether only a name says so; and the arguments of a
     project class's constructor that stores them for a method to read in `unit` (`constructor_reads`)."""
-    if any(isinstance(arg, ast.Starred) for arg in call.args):
+    args = call.args
+    if args and facts.may_have_summary(call):
+        if any(isinstance(arg, ast.Starred) for arg in args):
+            return []
+        units = facts.shared(AngleUnits) if units is None else units
+        other = RADIANS if unit == DEGREES else DEGREES
+        if any((given := units.unit_of(arg)) is not None and given.unit == other for arg in args):
+            summary = facts.function_summary(call)
+            if summary is not None:
+                return _summary_reads(facts, call, unit, summary)
+        return _class_reads(facts, call, unit, None)
+    if not args and not call.keywords:
         return []
-    function = bool(call.args) and facts.may_have_summary(call)
-    if not function and not _may_be_project_class(facts, call):
-        return []
-    units = facts.shared(AngleUnits) if units is None else units
+    func = call.func
+    if type(func) is ast.Name and func.id in _top_level_classes(facts):  # type: ignore[attr-defined]
+        local = _top_level_class(facts, func.id)  # type: ignore[attr-defined]
+        if local is None or not constructor_reads(facts, local)[1] or any(isinstance(arg, ast.Starred) for arg in args):
+            return []  # a class of this module whose constructor reads no unit
+        return _class_reads(facts, call, unit, local)
+    if not args and facts.may_have_summary(call):
+        return _class_reads(facts, call, unit, None)
+    return []
+
+
+def _class_reads(facts: FactBase, call: ast.Call, unit: str, local: ast.ClassDef | None) -> list[tuple[ast.expr, str, bool]]:
+    """`_constructor_reads_of` for a call of a class of this module (`local`) or, named in CapWords, of
+    a project module, when an argument is in the other unit by this module's own evidence or a
+    library's (asked before the class is looked up: not through a project helper's summary or another
+    module's constant, which would read more modules)."""
+    if local is None:
+        if unit == RADIANS:
+            return []  # a class of another module is asked for its degrees only (GEO305's files, which its trigger narrows)
+        func = call.func
+        name = func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else ""
+        if not name[:1].isupper():
+            return []  # a class is named in CapWords
     other = RADIANS if unit == DEGREES else DEGREES
+    cheap = facts.shared(_LibraryUnits)
     given = [*call.args, *(keyword.value for keyword in call.keywords if keyword.arg)]
-    if not any((found := units.unit_of(arg)) is not None and found.unit == other for arg in given):
-        return []  # no argument in the other unit: the helper's summary cannot matter
-    summary = facts.function_summary(call) if function else None
-    if summary is None:
-        return _constructor_reads_of(facts, call, unit)
-    if not summary.reads_unit:
+    if not any((found := cheap.unit_of(arg)) is not None and found.unit == other for arg in given):
         return []
+    return _constructor_reads_of(facts, call, unit, cheap)
+
+
+def _summary_reads(facts: FactBase, call: ast.Call, unit: str, summary: FunctionSummary) -> list[tuple[ast.expr, str, bool]]:
     helper = facts.code_of(call.func)
     found = []
     for index, (read, where, by_name) in sorted(summary.reads_unit.items()):
@@ -702,24 +756,22 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
     return found
 
 
-def _may_be_project_class(facts: FactBase, call: ast.Call) -> bool:
-    """A cheap test: a call of a name that is a class of this module or imported from a project module."""
-    func = call.func
-    if isinstance(func, ast.Name) and func.id in _top_level_classes(facts):
-        return True
-    return facts.may_have_summary(call)
-
-
 def _top_level_classes(facts: FactBase) -> frozenset[str]:
     return facts.module_fact("top-level classes", lambda: frozenset(node.name for node in facts.index.tree.body if isinstance(node, ast.ClassDef)))
 
 
-def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str) -> list[tuple[ast.expr, str, bool]]:
-    located = project_class(facts, call.func)
+def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits) -> list[tuple[ast.expr, str, bool]]:
+    """The arguments of a project class's constructor call that it reads in `unit` (`constructor_reads`),
+    when one of them is in the other unit: the class first (its module is one the call's kind already
+    asked for), the arguments' units only for the parameters it reads."""
+    located = _project_class(facts, call.func)
     if located is None:
         return []
     other, cls = located
     parameters, reads = constructor_reads(other, cls)
+    if not reads:
+        return []
+    wrong = RADIANS if unit == DEGREES else DEGREES
     found = []
     for index, (read, where) in sorted(reads.items()):
         if read != unit:
@@ -729,10 +781,15 @@ def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str) -> list[tu
             argument: ast.expr | None = call.args[index]
         else:
             argument = getattr(keyword(call, parameter), "value", None)
-        if argument is not None:
+        given = None if argument is None else units.unit_of(argument)
+        if given is not None and given.unit == wrong:
             how = f"`{facts.code_of(call.func)}` stores its parameter `{parameter}` for {where}, which reads {_word(unit)}"
             found.append((argument, how, False))
     return found
+
+
+def _project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ast.ClassDef] | None:
+    return facts.memoised("project class", func, lambda: project_class(facts, func))
 
 
 def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ast.ClassDef] | None:
@@ -773,24 +830,23 @@ def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, .
         return (), {}
     parameters = tuple(arg.arg for arg in every[1:])
     scope = facts.index.scopes.get(init)
-    if scope is None:
+    if scope is None or not parameters:
         return parameters, {}
     plain = {name for name in parameters if _plain_parameter(scope, name)}
-    # `self.<attr>` stored in the class: attr -> the stored values
-    stores: dict[str, list[ast.expr]] = {}
-    for method in cls.body:
-        if not isinstance(method, (ast.FunctionDef, ast.AsyncFunctionDef)):
+    loads, stores = _self_attributes(facts)
+    held: dict[str, int] = {}  # `self.<attr> = <parameter>`, the class's one store of `self.attr` -> the parameter's index
+    direct: list[tuple[ast.Call, ast.Name]] = []  # `np.radians(yaw)` in `__init__` itself
+    for node in walk_within(init):
+        if isinstance(node, ast.Call):
+            direct.extend((node, arg) for arg in node.args if isinstance(arg, ast.Name) and arg.id in plain)
             continue
-        for node in walk_within(method):
-            if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load) and isinstance(node.value, ast.Name) and node.value.id == "self":
-                parent = facts.parent(node)
-                value = parent.value if isinstance(parent, ast.Assign) and len(parent.targets) == 1 else None
-                stores.setdefault(node.attr, []).append(value)  # type: ignore[arg-type]
-    held: dict[str, int] = {}  # attr -> the parameter index it holds
-    for attr, values in stores.items():
-        value = values[0]
-        if len(values) == 1 and isinstance(value, ast.Name) and value.id in plain and facts.index.scope_of(value).node is init and _unconditional(facts, value):
-            held[attr] = parameters.index(value.id)
+        if not (isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.value, ast.Name) and node.value.id in plain):
+            continue
+        target = node.targets[0]
+        if not (isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name) and target.value.id == "self"):
+            continue
+        if [store for store in stores.get(target.attr, ()) if enclosing_class(facts, store) is cls] == [target] and _unconditional(facts, node.value):
+            held[target.attr] = parameters.index(node.value.id)
     found: dict[int, tuple[str, str]] = {}
     conflicting: set[int] = set()
 
@@ -801,29 +857,39 @@ def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, .
         elif known[0] != unit:
             conflicting.add(index)
 
-    for method in cls.body:
-        if not isinstance(method, ast.FunctionDef) or not held:
-            continue
-        for node in walk_within(method):
-            if not (isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and node.attr in held):
-                continue
-            if not (isinstance(node.value, ast.Name) and node.value.id == "self"):
-                continue
+    for attr, index in held.items():
+        for node in loads.get(attr, ()):
             call = facts.parent(node)
             if isinstance(call, (ast.List, ast.Tuple, ast.keyword)):
                 call = facts.parent(call)  # `from_euler("xyz", [self.roll, ...], degrees=True)`, `Rotation(yaw=self.yaw)`
-            if isinstance(call, ast.Call):
-                read = unit_read_by(facts, call, node)
-                if read is not None:
-                    add(held[node.attr], read, f"`{facts.code_of(call.func)}` (as `self.{node.attr}`, in `{method.name}`)")
-    if parameters:
-        from geolint.factbase.summaries import bound  # no cycle at import time
-
-        summary = facts.project.summary(facts, init)
-        for index, (read, where, by_name) in (bound(summary).reads_unit.items() if summary is not None else ()):
-            if read and where and not by_name:
-                add(index, read, f"{where} (in `__init__`)")
+            if not isinstance(call, ast.Call) or enclosing_class(facts, node) is not cls:
+                continue
+            read = unit_read_by(facts, call, node)
+            if read is not None:
+                method = facts.index.scope_of(node).node
+                add(index, read, f"`{facts.code_of(call.func)}` (as `self.{attr}`, in `{getattr(method, 'name', '?')}`)")
+    for call, argument in direct:
+        read = unit_read_by(facts, call, argument)
+        if read is not None:
+            add(parameters.index(argument.id), read, f"`{facts.code_of(call.func)}` (in `__init__`)")
     return parameters, {index: value for index, value in found.items() if index not in conflicting}
+
+
+def _self_attributes(facts: FactBase) -> tuple[dict[str, list[ast.Attribute]], dict[str, list[ast.Attribute]]]:
+    """The module's reads and its stores (or deletions) of `self.<attr>`, by attribute name; with a
+    `setattr` of a computed name anywhere, every attribute counts as stored once more."""
+
+    def collect() -> tuple[dict[str, list[ast.Attribute]], dict[str, list[ast.Attribute]]]:
+        loads: dict[str, list[ast.Attribute]] = {}
+        stores: dict[str, list[ast.Attribute]] = {}
+        for node in facts.index.nodes(ast.Attribute):
+            if isinstance(node.value, ast.Name) and node.value.id == "self":  # type: ignore[attr-defined]
+                (loads if isinstance(node.ctx, ast.Load) else stores).setdefault(node.attr, []).append(node)  # type: ignore[attr-defined,arg-type]
+        if "setattr" in facts.index.source and (_attribute_stores(facts)["*"] or any(count >= 1 << 20 for count in _attribute_stores(facts).values())):
+            stores = {attr: [*found, *found] for attr, found in stores.items()}  # `setattr(self, key, value)`: anything
+        return loads, stores
+
+    return facts.module_fact("self attributes", collect)
 
 
 def _plain_parameter(scope: Scope, name: str) -> bool:

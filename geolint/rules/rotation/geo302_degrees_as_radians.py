@@ -64,8 +64,8 @@ class DegreesAsRadians(FactRule):
     passed to a project helper (here or in another module, through helpers that call helpers)
     that hands the parameter unchanged to one of those APIs (or scales a rotation vector by it,
     `quaternion.from_rotation_vector(theta * axis)`), or names it in radians (`theta_rad`)
-    when the value's degrees are computed rather than only named; such a value passed to a project
-    class whose constructor stores the parameter as it is (`self.angle = angle`) for a method that
+    when the value's degrees are computed rather than only named; such a value passed to a class of
+    the same module whose constructor stores the parameter as it is (`self.angle = angle`) for a method that
     hands it to one of those APIs (`np.tan(self.angle)`); and a name or `self` attribute
     bound only to literal angle lists (`UPRIGHT = [90, 0, 0]`) passed whole to those APIs.
 
@@ -126,7 +126,8 @@ class DegreesAsRadians(FactRule):
     often tuned by eye in the simulator, so the rotation they give is the one wanted.
     A class's constructor is read only through attributes stored once, unconditionally in `__init__`,
     and read by the class's own methods; a class whose methods read the attribute in both units says
-    nothing. A helper's parameter that scales a rotation vector is taken for its angle: a helper
+    nothing; a class of another module is not asked (GEO305 asks it for degrees), and the value's
+    degrees must show in the module's own code or a library call, not in a project helper's return. A helper's parameter that scales a rotation vector is taken for its angle: a helper
     scaling an angle by a time step (`from_rotvec(omega * dt)`) would be said to read `dt` in radians.
     """
 

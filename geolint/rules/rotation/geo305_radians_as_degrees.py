@@ -77,7 +77,8 @@ class RadiansAsDegrees(FactRule):
     `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are methods of values geolint does not
     type. A class's constructor is read only through attributes stored once, unconditionally in
     `__init__`, and read by the class's own methods (not by other classes, `rotation.yaw`); a class
-    whose methods read the attribute in both units says nothing. A keyword named `unit` / `*_units`
+    whose methods read the attribute in both units says nothing, and the value's radians must show in
+    the module's own code or a library call (not only in a project helper's return). A keyword named `unit` / `*_units`
     with the value `"deg"` / `"degrees"` is taken to state the unit of the call's angles; a helper
     whose keyword picks the unit of its output would be misread.
     """
