@@ -709,7 +709,7 @@ class FactBase:
             if binding.default is not None and self.is_non_geometric(binding.default):
                 return True
             annotation = binding.arg.annotation
-            return annotation is not None and _is_scalar_annotation(annotation)
+            return annotation is not None and is_scalar_annotation(annotation)
         if not isinstance(binding, ast.expr):
             return False
         if isinstance(binding, ast.Constant):
@@ -1381,7 +1381,7 @@ def _is_xyz_slice(target: ast.Subscript) -> bool:
     return len(parts) == 2 and is_full_slice(parts[0]) and is_slice_upto(parts[1], 3)
 
 
-def _is_scalar_annotation(annotation: ast.expr) -> bool:
+def is_scalar_annotation(annotation: ast.expr) -> bool:
     text = ast.unparse(annotation)
     words = set(re.split(r"[\s|\[\],]+", text)) - {""}
     scalar = {"int", "float", "str", "bool", "SupportsIndex", "None", "Optional", "typing.Optional", "Literal"}

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase.index import ParamBinding
-from geolint.factbase.model import OPERATORS, _is_scalar_annotation, last_name, positional_args, string, transposed_value, walk_within
+from geolint.factbase.model import OPERATORS, is_scalar_annotation, last_name, positional_args, string, transposed_value, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.kind.geo104_normals_left_behind import _returned_names, _TransformFinder, _uses_outside_returns
@@ -419,7 +419,7 @@ class FreeVectorsLeftBehind(FactRule):
             if isinstance(node, ast.AnnAssign):
                 target, values = node.target, [node.value]
                 is_field = isinstance(target, ast.Name) and target.id == name  # a dataclass field
-                if (is_field or _is_self_attribute(target, name)) and _is_scalar_annotation(node.annotation):
+                if (is_field or _is_self_attribute(target, name)) and is_scalar_annotation(node.annotation):
                     return True
                 if not _is_self_attribute(target, name):
                     continue
@@ -440,7 +440,7 @@ class FreeVectorsLeftBehind(FactRule):
         if isinstance(value, ast.Name):
             bindings = self.facts.bindings(value) or []
             return bool(bindings) and all(
-                isinstance(binding, ParamBinding) and binding.arg.annotation is not None and _is_scalar_annotation(binding.arg.annotation)
+                isinstance(binding, ParamBinding) and binding.arg.annotation is not None and is_scalar_annotation(binding.arg.annotation)
                 for binding in bindings
             )
         return False

@@ -385,8 +385,8 @@ def enclosing_class(facts: FactBase, node: ast.AST) -> ast.ClassDef | None:
 
 
 def _top_level_class(facts: FactBase, name: str) -> ast.ClassDef | None:
-    found = [node for node in facts.index.tree.body if isinstance(node, ast.ClassDef) and node.name == name]
-    return found[0] if len(found) == 1 else None
+    """The module's one top-level class of that name (None when there is none, or two)."""
+    return _top_level_classes(facts).get(name)
 
 
 def _instance_or_class_literal(facts: FactBase, cls: ast.ClassDef | None, attr: str, where: str) -> tuple[float, str] | None:
@@ -440,18 +440,8 @@ def _class_of(facts: FactBase, owner: ast.expr) -> tuple[FactBase, ast.ClassDef,
         owner, instance = stores[0].func, True
     if not isinstance(owner, ast.Name):
         return None
-    local = _top_level_class(facts, owner.id)
-    if local is not None:
-        return facts, local, instance
-    imported = facts.index.imports.get(owner.id)
-    if imported is None or not facts.cross_module:
-        return None
-    found = facts._defining_module(imported, facts.path)
-    if found is None:
-        return None
-    other, name = found
-    cls = _top_level_class(other, name)
-    return None if cls is None else (other, cls, instance)
+    found = project_class(facts, owner)
+    return None if found is None else (*found, instance)
 
 
 def _short_path(path: str) -> str:
@@ -756,8 +746,15 @@ def _summary_reads(facts: FactBase, call: ast.Call, unit: str, summary: Function
     return found
 
 
-def _top_level_classes(facts: FactBase) -> frozenset[str]:
-    return facts.module_fact("top-level classes", lambda: frozenset(node.name for node in facts.index.tree.body if isinstance(node, ast.ClassDef)))
+def _top_level_classes(facts: FactBase) -> dict[str, ast.ClassDef | None]:
+    """The module's top-level classes by name; None for a name defined twice (read once per module)."""
+
+    def find() -> dict[str, ast.ClassDef | None]:
+        classes = [node for node in facts.index.tree.body if isinstance(node, ast.ClassDef)]
+        counts = Counter(node.name for node in classes)
+        return {node.name: node if counts[node.name] == 1 else None for node in classes}
+
+    return facts.module_fact("top-level classes", find)
 
 
 def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits) -> list[tuple[ast.expr, str, bool]]:
@@ -782,7 +779,7 @@ def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str, units: Ang
         else:
             argument = getattr(keyword(call, parameter), "value", None)
         given = None if argument is None else units.unit_of(argument)
-        if given is not None and given.unit == wrong:
+        if argument is not None and given is not None and given.unit == wrong:
             how = f"`{facts.code_of(call.func)}` stores its parameter `{parameter}` for {where}, which reads {_word(unit)}"
             found.append((argument, how, False))
     return found
