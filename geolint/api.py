@@ -22,7 +22,7 @@ from typing import Callable, Collection, Iterator, Sequence
 
 from geolint import config as config_module
 from geolint import engine
-from geolint.cache import FindingsCache, ImportsCache, VotesCache, content_hash, default_cache_dir
+from geolint.cache import DiscoveryCache, FindingsCache, ImportsCache, VotesCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
 from geolint.factbase import conventions, ros_packages
 from geolint.factbase.summaries import ImportGraph, consulted_folders, folder_listings, project_root
@@ -118,8 +118,9 @@ def lint_paths(
     `files`, `cache_hits`, `linted`, `errors`. Raises `DiscoveryError` for a path that does not exist.
     """
     config = config or Config()
-    sources = discover([Path(p) for p in paths], config, force_exclude=force_exclude)
     directory = cache_dir or default_cache_dir(config_root(config))
+    listing = DiscoveryCache(directory) if use_cache else None
+    sources = discover([Path(p) for p in paths], config, force_exclude=force_exclude, cache=listing)
     cache = FindingsCache(directory, config) if use_cache else None
     resolved = ImportsCache(directory) if use_cache else None
     votes = VotesCache(directory) if use_cache else None

@@ -9,7 +9,8 @@ development), and the whole config (select/ignore included). The file lives in
 runs never see a torn file; concurrent runs at worst lose each other's new entries.
 
 A second file, `imports-*.json`, keeps where each file's project imports resolved (`ImportsCache`),
-so a re-run reads and hashes each file but neither scans nor resolves its imports again.
+so a re-run reads and hashes each file but neither scans nor resolves its imports again; a third,
+`discovery-*.json`, keeps which files the paths given hold (`DiscoveryCache`), so it lists no folder.
 """
 
 from __future__ import annotations
@@ -21,10 +22,13 @@ import tempfile
 import time
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Iterable
+from typing import TYPE_CHECKING, Any, Iterable
 
 from geolint._version import __version__
 from geolint.lint_types import Config, Edit, Finding, Fix, Severity
+
+if TYPE_CHECKING:
+    from geolint.files import Consulted
 
 CACHE_DIR_ENV = "GEOLINT_CACHE_DIR"
 CACHE_FOLDER = ".geolint_cache"
@@ -36,7 +40,10 @@ def content_hash(data: bytes) -> str:
 
 
 # The parts of the package whose code decides what a file's findings are.
-FINDINGS_SOURCES = ("rules", "semantic", "factbase", "algebra.py", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py")
+FINDINGS_SOURCES = (
+    "rules", "semantic", "factbase", "algebra.py", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py",
+    "files.py",  # which files a folder holds
+)  # fmt: skip
 
 
 @lru_cache(maxsize=1)
@@ -160,6 +167,49 @@ class ImportsCache:
             pass
 
 
+class DiscoveryCache:
+    """Which files an earlier run found under the paths it was given, reused while every folder it
+    listed keeps its mtime, every `.gitignore` it read its mtime and size, and every linked file its
+    target (folder stamps as in `ImportsCache`; a run that saw a stamp too fresh stores nothing).
+    Keyed by the question (cwd, config root, excludes, paths) and the package's fingerprint."""
+
+    def __init__(self, directory: Path) -> None:
+        self.directory = directory
+        self.started_ns = time.time_ns()
+
+    def _file(self, question: tuple[Any, ...]) -> Path:
+        key = hashlib.blake2b(f"{settings_key(None)}|{question!r}".encode(), digest_size=12).hexdigest()
+        return self.directory / f"discovery-{key}.json"
+
+    def load(self, question: tuple[Any, ...]) -> list[tuple[str, str, str]] | None:
+        """[(path, display, real path), ...] as the last run with this question found them, or None."""
+        try:
+            with open(self._file(question), encoding="utf-8") as stream:
+                stored = json.load(stream)
+            folders, files, links, sources = stored["folders"], stored["files"], stored["links"], stored["sources"]
+            if any(_mtime_ns(folder) != stamp for folder, stamp in folders.items()):
+                return None
+            if any(_stat_stamp(file) != stamp for file, stamp in files.items()):
+                return None
+            if any(os.path.realpath(link) != target for link, target in links.items()):
+                return None
+            return [(path, display, real) for path, display, real in sources]
+        except (OSError, ValueError, KeyError, TypeError, AttributeError):
+            return None  # no answer yet, or a damaged one: walk the folders
+
+    def save(self, question: tuple[Any, ...], sources: list[tuple[str, str, str]], consulted: Consulted, links: dict[str, str]) -> None:
+        folders = {folder: _mtime_ns(folder) for folder in consulted.folders}
+        files = {file: _stat_stamp(file) for file in consulted.files}
+        fresh = [stamp for stamp in folders.values() if stamp is not None]
+        fresh += [stamp[0] for stamp in files.values() if stamp is not None]
+        if any(stamp >= self.started_ns - _MTIME_SLACK_NS for stamp in fresh):
+            return  # a folder or .gitignore too fresh to trust its stamp
+        try:
+            _write_atomically(self.directory, self._file(question), {"folders": folders, "files": files, "links": links, "sources": sources})
+        except OSError:
+            pass
+
+
 class VotesCache:
     """What each project file says about its naming convention (`conventions.remembered_file_votes`),
     reused while the file's mtime and size are unchanged: a warm run learns its projects' conventions,
@@ -200,6 +250,15 @@ def _mtime_ns(folder: str) -> int | None:
         return os.stat(folder).st_mtime_ns
     except OSError:
         return None  # a folder looked in that does not exist: its creation changes the answer
+
+
+def _stat_stamp(file: str) -> list[int] | None:
+    """[mtime, size] (a list, as JSON gives it back), or None for a file that is not there."""
+    try:
+        stat = os.stat(file)
+    except OSError:
+        return None
+    return [stat.st_mtime_ns, stat.st_size]
 
 
 def _write_atomically(directory: Path, file: Path, content: Any) -> None:

@@ -13,13 +13,16 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import Iterable, Sequence
+from typing import TYPE_CHECKING, Iterable, Sequence
 
 from geolint.config import config_root
 from geolint.lint_types import Config
+
+if TYPE_CHECKING:
+    from geolint.cache import DiscoveryCache
 
 # Folders nobody wants linted (tools' caches, virtualenvs, build output).
 DEFAULT_EXCLUDES = (
@@ -59,10 +62,25 @@ def exclude_patterns(config: Config) -> tuple[str, ...]:
     return tuple(base) + tuple(config.extend_exclude)
 
 
-def discover(paths: Sequence[Path], config: Config, *, force_exclude: bool = False) -> list[SourceFile]:
-    """Every file to lint under `paths`, without duplicates, sorted by display path."""
+def discover(
+    paths: Sequence[Path], config: Config, *, force_exclude: bool = False, cache: DiscoveryCache | None = None
+) -> list[SourceFile]:
+    """Every file to lint under `paths`, without duplicates, sorted by display path.
+
+    With a `cache`, an earlier run's answer is reused while every folder it listed and every
+    `.gitignore` it read are unchanged (a warm run then lists no folder at all).
+    """
     root = config_root(config).resolve()
-    excluder = _Excluder(root, exclude_patterns(config))
+    patterns = exclude_patterns(config)
+    question = (os.getcwd(), str(root), patterns, force_exclude, tuple(str(path) for path in paths))
+    if cache is not None and not all(path.is_dir() for path in paths):
+        cache = None  # files named one by one (pre-commit's way) need no listing, and their lists vary
+    # (a named folder that still is one, each listed folder with its mtime unchanged: the same files)
+    if cache is not None:
+        stored = cache.load(question)
+        if stored is not None:
+            return [SourceFile(Path(path), display, Path(real)) for path, display, real in stored]
+    excluder = _Excluder(root, patterns)
     found: dict[Path, SourceFile] = {}
     for given in paths:
         if not given.exists():
@@ -70,12 +88,16 @@ def discover(paths: Sequence[Path], config: Config, *, force_exclude: bool = Fal
         if given.is_dir():
             walk_excluder = excluder
             if not force_exclude and _excluded_file(given.resolve() / "__init__.py", excluder):
-                walk_excluder = _Excluder(given.resolve(), excluder.patterns)
+                walk_excluder = _Excluder(given.resolve(), excluder.patterns, excluder.consulted)
             for file, display, real in _walk(given, walk_excluder):
                 found.setdefault(real, SourceFile(file, display, real))
         elif not (force_exclude and _excluded_file(given.resolve(), excluder)):
             found.setdefault(given.resolve(), SourceFile(given, _display(given), given.resolve()))
-    return sorted(found.values(), key=lambda source: source.display)
+    sources = sorted(found.values(), key=lambda source: source.display)
+    if cache is not None:
+        links = {str(source.path): str(source.real_path()) for source in sources if source.path.is_symlink()}
+        cache.save(question, [(str(s.path), s.display, str(s.real_path())) for s in sources], excluder.consulted, links)
+    return sources
 
 
 def _display(path: Path | str) -> str:
@@ -104,8 +126,9 @@ def _walk(top: Path, excluder: _Excluder) -> Iterable[tuple[Path, str, Path]]:
                 entries = sorted(scan, key=lambda entry: entry.name)
         except OSError:
             continue  # unreadable folder: os.walk skips it too
+        excluder.consulted.folders.add(resolved_folder)
         if any(entry.name == ".gitignore" for entry in entries):
-            spec = _read_gitignore(os.path.join(folder, ".gitignore"))
+            spec = excluder.read_gitignore(os.path.join(resolved_folder, ".gitignore"))
             if spec is not None:
                 gitignores.append((resolved_folder, spec))
         active = [(base, spec) for base, spec in gitignores if resolved_folder == base or resolved_folder.startswith(base + os.sep)]
@@ -141,7 +164,7 @@ def _excluded_file(file: Path, excluder: _Excluder) -> bool:
     for folder in folders:
         if folder != root and excluder.excluded(folder, is_dir=True):
             return True
-        spec = _read_gitignore(str(folder / ".gitignore")) if (folder / ".gitignore").is_file() else None
+        spec = excluder.gitignore_in(folder)
         if spec is not None:
             gitignores.append((str(folder), spec))
         if folder != root and _gitignored(gitignores[:-1] if spec is not None else gitignores, str(folder), True):
@@ -180,14 +203,34 @@ def _gitignored(active: list[tuple[str, object]], candidate: str, is_dir: bool) 
     return False
 
 
+@dataclass
+class Consulted:
+    """What a discovery's answer rests on: the folders it listed (or looked in for a `.gitignore`)
+    and the `.gitignore` files it read."""
+
+    folders: set[str] = field(default_factory=set)
+    files: set[str] = field(default_factory=set)
+
+
 class _Excluder:
     """Matches resolved paths against the exclude patterns, anchored at the config root."""
 
-    def __init__(self, root: Path, patterns: tuple[str, ...]) -> None:
+    def __init__(self, root: Path, patterns: tuple[str, ...], consulted: Consulted | None = None) -> None:
         self.root = str(root)
         self.patterns = patterns
         self.spec = _spec(patterns)
         self._any_pattern = _any_pattern(patterns)
+        self.consulted = consulted if consulted is not None else Consulted()
+
+    def read_gitignore(self, path: str):  # -> pathspec.GitIgnoreSpec | None
+        self.consulted.files.add(path)
+        return _read_gitignore(path)
+
+    def gitignore_in(self, folder: Path):  # -> pathspec.GitIgnoreSpec | None
+        """The spec of `folder/.gitignore`, if there is one (the folder's listing says whether)."""
+        self.consulted.folders.add(str(folder))
+        gitignore = folder / ".gitignore"
+        return self.read_gitignore(str(gitignore)) if gitignore.is_file() else None
 
     def excluded(self, path: Path | str, *, is_dir: bool) -> bool:
         text = os.path.normpath(str(path))
@@ -208,6 +251,6 @@ class _Excluder:
         parts = top.relative_to(folder).parts
         for depth in range(len(parts)):
             current = folder.joinpath(*parts[:depth])
-            spec = _read_gitignore(str(current / ".gitignore")) if (current / ".gitignore").is_file() else None
+            spec = self.gitignore_in(current)
             if spec is not None:
                 yield str(current), spec

@@ -125,6 +125,8 @@ def test_resolved_imports_are_reused_while_the_folders_they_were_resolved_in_kee
     before = os.stat(slam)
     cli_real.write("slam/geometry.py", _GEOMETRY)
     os.utime(slam, ns=(before.st_atime_ns, before.st_mtime_ns))
+    for listing in cli_real.cache_dir.glob("discovery-*.json"):
+        listing.unlink()  # the reused listing would hide the module too: this test is about the imports
     hidden = cli_real("check", "--verbose", "--format", "json")
     assert counts(hidden.stderr) == (3, 1) and json.loads(hidden.stdout) == []  # only the new module linted
 
@@ -237,3 +239,68 @@ def test_an_edit_that_leaves_the_projects_naming_reading_alone_relints_only_its_
     cli_real.write("planner.py", _NAMES_ONLY + "T_world_tool = T_world_base @ T_base_tool\n")  # one more composition
     again = cli_real("check", "--verbose", "--format", "json")
     assert counts(again.stderr) == (2, 1)
+
+
+def test_a_warm_run_lists_no_folder_while_every_folder_keeps_its_mtime(cli_real):
+    """Proven by hiding a new module behind its folder's old mtime (nothing a real edit does): the
+    reused listing does not know it, so nothing is linted."""
+    cli_real.write("app/main.py", "x = 1\n")
+    _age_folders(cli_real.project)
+    first = cli_real("check", "--verbose", "--format", "json")
+    assert counts(first.stderr) == (0, 1) and len(list(cli_real.cache_dir.glob("discovery-*.json"))) == 1
+    app = cli_real.project / "app"
+    before = os.stat(app)
+    cli_real.write("app/hidden.py", "y = 2\n")
+    os.utime(app, ns=(before.st_atime_ns, before.st_mtime_ns))
+    assert counts(cli_real("check", "--verbose", "--format", "json").stderr) == (1, 0)
+
+
+def test_a_file_added_or_removed_is_seen_by_the_next_run(cli_real):
+    cli_real.write("app/main.py", "x = 1\n")
+    _age_folders(cli_real.project)
+    cli_real("check", "--format", "json")
+    cli_real.write("app/new.py", "y = 2\n")  # app/'s mtime moves on
+    assert counts(cli_real("check", "--verbose", "--format", "json").stderr) == (1, 1)
+    _age_folders(cli_real.project)
+    cli_real("check", "--format", "json")
+    (cli_real.project / "app" / "main.py").unlink()
+    assert re.search(r"files: 1,", cli_real("check", "--verbose", "--format", "json").stderr)
+
+
+def test_a_gitignore_edited_in_place_changes_what_is_linted(cli_real):
+    """Editing `.gitignore` leaves its folder's mtime alone: its own stamp is what tells."""
+    cli_real.write(".gitignore", "generated/\n")
+    cli_real.write("generated/out.py", "x = 1\n")
+    cli_real.write("main.py", "y = 2\n")
+    _age_folders(cli_real.project)
+    _age_file(cli_real.project / ".gitignore")
+    assert re.search(r"files: 1,", cli_real("check", "--verbose", "--format", "json").stderr)
+    folder = os.stat(cli_real.project)
+    (cli_real.project / ".gitignore").write_text("# nothing ignored\n")
+    os.utime(cli_real.project, ns=(folder.st_atime_ns, folder.st_mtime_ns))
+    assert re.search(r"files: 2,", cli_real("check", "--verbose", "--format", "json").stderr)
+
+
+def test_listings_of_folders_changed_just_now_are_not_stored(cli_real):
+    cli_real.write("app/main.py", "x = 1\n")
+    cli_real("check", "--format", "json")
+    assert list(cli_real.cache_dir.glob("findings-*.json")) and not list(cli_real.cache_dir.glob("discovery-*.json"))
+
+
+def test_a_damaged_listing_walks_the_folders_again(cli_real):
+    cli_real.write("app/main.py", "x = 1\n")
+    cli_real.write("app/other.py", "x = 2\n")
+    _age_folders(cli_real.project)
+    cli_real("check", "--format", "json")
+    (stored,) = cli_real.cache_dir.glob("discovery-*.json")
+    for damage in ("{not json", "[]", '{"folders": {}, "files": {}, "links": {}, "sources": [["a.py"]]}', '{"folders": 3}'):
+        stored.write_text(damage)
+        assert re.search(r"files: 2,", cli_real("check", "--verbose", "--format", "json").stderr)
+
+
+def test_files_named_one_by_one_store_no_listing(cli_real):
+    """pre-commit names every staged file: each commit's list differs, and naming needs no walk."""
+    cli_real.write("app/main.py", "x = 1\n")
+    _age_folders(cli_real.project)
+    cli_real("check", "--format", "json", "app/main.py")
+    assert not list(cli_real.cache_dir.glob("discovery-*.json"))
