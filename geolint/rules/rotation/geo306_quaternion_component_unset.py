@@ -28,6 +28,9 @@ class QuaternionComponentUnset(FactRule):
     known), copies three of the quaternion's components from one source
     (`msg.pose.orientation.x = rotation.x`, `.y = rotation.y`, `.z = rotation.z`) and never sets
     the fourth, neither by itself nor by replacing the whole quaternion or a message around it.
+    Also flags x, y and z written from three elements in a row of one sequence (`s[0]`, `s[1]`,
+    `s[2]`, each maybe through the same call, `f(s[0], table)`) with w never set: whether `s` holds
+    three angles or a quaternion, the message's quaternion is wrong.
 
     ## Why is this bad?
     The missing component keeps the message's default: w is 0.0 in ROS 1 (genpy) and 1.0 in ROS 2
@@ -65,8 +68,10 @@ class QuaternionComponentUnset(FactRule):
     message is not handed anywhere (a call, another name) before the last component is copied: a
     helper may set the missing one. When w is the one missing, the source's name must say it is a
     rotation (`rotation`, `orientation`, `quat`, `q`...), since a Quaternion message is sometimes
-    used to carry three angles. Components copied through a helper, or from different sources, are
-    not looked at.
+    used to carry three angles; elements in a row of a sequence are flagged whatever its name, as
+    only a known message's field (`Imu.orientation`, `Pose.orientation`, `Transform.rotation`) is
+    checked, never a bare Quaternion message. Components copied through a helper, or from
+    different sources, are not looked at.
     """
 
     code = "GEO306"
@@ -81,6 +86,16 @@ class QuaternionComponentUnset(FactRule):
         # a Quaternion message carrying three angles: the source says no rotation
         Valid(
             "from geometry_msgs.msg import Quaternion\ndef f(rpy):\n    q = Quaternion()\n    q.x = rpy.x\n    q.y = rpy.y\n    q.z = rpy.z\n    return q\n"
+        ),
+        # elements of a sequence with w set from it too
+        Valid(
+            "from geometry_msgs.msg import Pose\ndef f(q):\n    pose = Pose()\n    pose.orientation.x = q[0]\n"
+            "    pose.orientation.y = q[1]\n    pose.orientation.z = q[2]\n    pose.orientation.w = q[3]\n    return pose\n"
+        ),
+        # elements not in a row (a different mistake, if any)
+        Valid(
+            "from geometry_msgs.msg import Pose\ndef f(q):\n    pose = Pose()\n    pose.orientation.x = q[0]\n"
+            "    pose.orientation.y = q[0]\n    pose.orientation.z = q[2]\n    return pose\n"
         ),
         # handed to a helper before the components are copied: it may set w
         Valid(
@@ -99,6 +114,12 @@ class QuaternionComponentUnset(FactRule):
         ),
     ]
     INVALID = [
+        # three values of a sequence in a row, w never set (an inertial unit's roll, pitch, yaw)
+        Invalid(
+            "from sensor_msgs.msg import Imu\ndef f(unit):\n    values = unit.getValues()\n    msg = Imu()\n"
+            "    msg.orientation.x = scale(values[0], 1.0)\n    msg.orientation.y = scale(values[1], 1.0)\n"
+            "    msg.orientation.z = scale(values[2], 1.0)\n    return msg\n"
+        ),
         Invalid(
             "from geometry_msgs.msg import PoseWithCovariance\ndef f(tform):\n    msg = PoseWithCovariance()\n"
             "    msg.pose.orientation.x = tform.rotation.x\n    msg.pose.orientation.y = tform.rotation.y\n"
@@ -137,14 +158,19 @@ class QuaternionComponentUnset(FactRule):
         block = facts.parent(assignments[0])
         if any(facts.parent(statement) is not block for statement in assignments) or not _one_block(block, assignments):
             return  # in different arms of an `if`: the fourth may be set in a third
-        sources = {_source(target, statement.value) for target, statement in zip(targets, assignments)}
-        if len(sources) != 1 or None in sources:
-            return  # not `o.x = s.x`, `o.y = s.y`, `o.z = s.z` from one `s`
-        source = sources.pop()
-        assert source is not None
         missing = next(component for component in _COMPONENTS if component not in {target.attr for target in targets})
-        if missing == "w" and not _ROTATION_WORDS & set(source.rsplit(".", 1)[-1].lower().split("_")):
-            return
+        sources = {_source(target, statement.value) for target, statement in zip(targets, assignments)}
+        elements = None
+        if len(sources) != 1 or None in sources:
+            elements = _elements(facts, targets, assignments) if missing == "w" else None
+            if elements is None:
+                return  # not `o.x = s.x`, `o.y = s.y`, `o.z = s.z` from one `s`, nor `s[0]`, `s[1]`, `s[2]`
+            source = elements
+        else:
+            source = sources.pop()  # type: ignore[assignment]
+            assert source is not None
+            if missing == "w" and not _ROTATION_WORDS & set(source.rsplit(".", 1)[-1].lower().split("_")):
+                return
         root = targets[0].value
         while isinstance(root, ast.Attribute):
             root = root.value
@@ -157,6 +183,14 @@ class QuaternionComponentUnset(FactRule):
             return
         indent = " " * last.col_offset
         text = facts.code_of(last)
+        if elements is not None:
+            first = min(assignments, key=lambda statement: (statement.lineno, statement.col_offset))
+            self.report(
+                first,  # no fix to insert after the last copy: the three values go in from the first one (as GEO307 reports)
+                f"`{path}.w` is never set: x, y, z are {elements}, three values in a row, and w keeps `{built}`'s default "
+                f"({_DEFAULTS['w']}): three angles (roll, pitch, yaw) are no quaternion, and a quaternion needs its w",
+            )
+            return
         fix = f"{text}\n{indent}{path}.{missing} = {source}.{missing}" if "\n" not in text else None
         self.report(
             last,
@@ -207,6 +241,32 @@ def _source(target: ast.Attribute, value: ast.expr) -> str | None:
     if isinstance(value, ast.Attribute) and value.attr == target.attr:
         return dotted_name(value.value)
     return None
+
+
+def _elements(facts: object, targets: list[ast.Attribute], assignments: list[ast.Assign]) -> str | None:
+    """For `o.x = s[i]`, `o.y = s[i + 1]`, `o.z = s[i + 2]` (each maybe through one call `f(s[k], *rest)`
+    with the same `f` and the same other arguments): how the finding names the three; else None."""
+    shapes = set()
+    for target, statement in zip(targets, assignments):
+        value = statement.value
+        wrapper = None
+        if isinstance(value, ast.Call) and value.args and not isinstance(value.args[0], ast.Starred):
+            rest = [facts.code_of(argument) for argument in value.args[1:]] + [facts.code_of(item) for item in value.keywords]  # type: ignore[attr-defined]
+            wrapper = (facts.code_of(value.func), tuple(rest))  # type: ignore[attr-defined]
+            value = value.args[0]
+        if not isinstance(value, ast.Subscript) or not isinstance(value.slice, ast.Constant) or type(value.slice.value) is not int:
+            return None
+        sequence = dotted_name(value.value)
+        if sequence is None:
+            return None
+        shapes.add((sequence, wrapper, value.slice.value - "xyz".index(target.attr)))
+    if len(shapes) != 1:
+        return None
+    sequence, wrapper, offset = shapes.pop()
+    if offset < 0:
+        return None
+    elements = f"`{sequence}[{offset}]`, `{sequence}[{offset + 1}]`, `{sequence}[{offset + 2}]`"
+    return elements if wrapper is None else f"`{wrapper[0]}` of {elements}"
 
 
 def _one_block(block: ast.AST | None, statements: list[ast.Assign]) -> bool:

@@ -1,0 +1,350 @@
+"""GEO307 euler-angles-in-quaternion: Euler angles (roll, pitch, yaw) written into a quaternion's components."""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from geolint.factbase.angles import (
+    EULER_METHOD_NAMES,
+    RETURNED_ANGLES,
+    RETURNED_EULER_METHODS,
+)
+from geolint.factbase.index import Scope, UnpackBinding
+from geolint.factbase.messages import MessageTypes
+from geolint.factbase.model import dotted_name, number, positional_args, walk_within
+from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_value
+from geolint.factbase.rule_support import FactRule
+from geolint.rules.base import Invalid, Valid
+from geolint.rules.triggers import AllOf
+
+_QUATERNION = "geometry_msgs.msg.Quaternion"
+_COMPONENTS = ("x", "y", "z", "w")
+# Fields that hold a message's orientation: a Quaternion message placed there is read as a rotation.
+_ORIENTATION_FIELDS = frozenset({"orientation", "rotation"})
+_ANGLE_WORDS = ("roll", "pitch", "yaw")
+_SEQUENCE_WORDS = frozenset({"rpy", "euler", "eulers"})
+# Words that make `yaw_rate`, `roll_vel`, `pitch_std` something other than an angle.
+_NOT_AN_ANGLE = frozenset(
+    {"rate", "rates", "vel", "velocity", "speed", "dot", "acc", "accel", "std", "sigma", "cov", "covariance", "noise", "gain", "sin", "cos", "half"}
+)
+_UNIT_CALLS = frozenset({"degrees", "radians", "deg2rad", "rad2deg"})
+_MAX_DEPTH = 6
+
+
+@dataclass(frozen=True)
+class _Angle:
+    label: str  # which angle: "roll", "element 2 of `rpy`"
+    evidence: str  # why it is an Euler angle
+    strong: bool  # a library call says it (not a name)
+    instead: str | None = None  # the same object's call that returns a quaternion
+
+
+@dataclass(frozen=True)
+class _Source:
+    names: tuple[str, ...]  # the angles in order, when the source says
+    evidence: str
+    strong: bool
+    instead: str | None = None
+
+
+class EulerAnglesInQuaternion(FactRule):
+    """Euler angles (roll, pitch, yaw) are written into a quaternion message's components.
+
+    ## What it does
+    Flags a ROS `geometry_msgs/Quaternion` (a message's `orientation` or `rotation` field, a
+    `Quaternion()` built and placed there, or `Quaternion(x=..., y=..., z=..., w=...)`) whose `x`, `y`,
+    `z` or `w` is given an Euler angle. An angle is known from the library call that returned it:
+    an element of tf's `euler_from_quaternion` / `euler_from_matrix`, transforms3d's `quat2euler`,
+    pybullet's `getEulerFromQuaternion`, scipy's `as_euler`, Webots' `InertialUnit.getRollPitchYaw()`
+    (the tables of `geolint.factbase.angles`), followed through names, `-a`, `float(a)` and
+    `np.degrees(a)`. Names alone (`roll`, `pitch`, `yaw`, `rpy[0]`) count only when they fill two
+    components or more with different angles.
+
+    ## Why is this bad?
+    A quaternion's components are not angles: (x, y, z) is the rotation axis times sin(angle / 2) and
+    w is cos(angle / 2). Roll, pitch and yaw copied into x, y and z give a quaternion that is not unit
+    length and not the rotation (with w left at its default, 0.0 in ROS 1 and 1.0 in ROS 2, a small
+    roll of 0.1 rad reads as a rotation of about 11 degrees in ROS 2 and 180 degrees in ROS 1).
+    Consumers (tf, RViz, robot_localization) normalise it or reject it without a word.
+
+    ## Example
+    ```python
+    from sensor_msgs.msg import Imu
+
+    def imu_message(inertial_unit):
+        rpy = inertial_unit.getRollPitchYaw()
+        msg = Imu()
+        msg.orientation.x = rpy[0]
+        msg.orientation.y = rpy[1]
+        msg.orientation.z = rpy[2]
+        return msg
+    ```
+
+    ## Use instead
+    ```python
+    from sensor_msgs.msg import Imu
+    from tf_transformations import quaternion_from_euler
+
+    def imu_message(inertial_unit):
+        roll, pitch, yaw = inertial_unit.getRollPitchYaw()
+        msg = Imu()
+        msg.orientation.x, msg.orientation.y, msg.orientation.z, msg.orientation.w = quaternion_from_euler(roll, pitch, yaw)
+        return msg
+    ```
+    (or, in Webots, `inertial_unit.getQuaternion()`, which returns x, y, z, w).
+
+    ## Fix safety
+    No fix is offered: which Euler convention the angles follow (the axes and their order) is the
+    author's to state in the conversion.
+
+    ## Known problems
+    Only `geometry_msgs` Quaternion messages are checked (a Quaternion message that is neither a
+    field of a known message nor put into an `orientation` / `rotation` may carry three angles on
+    purpose, and is left alone), and only components written one by one or as constructor arguments:
+    `q.x, q.y, q.z = angles` is not read. An angle reaching the component through a project helper
+    (`interpolate(rpy[0], table)`) or a container is not followed. A name such as `roll` alone in
+    one component is not enough.
+    """
+
+    code = "GEO307"
+    name = "euler-angles-in-quaternion"
+    triggers = AllOf(r"_msgs", r"[Ee]uler|RollPitchYaw|roll|pitch|yaw|rpy")
+
+    VALID = [
+        # the conversion the quaternion needs
+        Valid(
+            "from geometry_msgs.msg import Pose\nfrom tf.transformations import euler_from_quaternion, quaternion_from_euler\n"
+            "def f(q):\n    roll, pitch, yaw = euler_from_quaternion(q)\n    x, y, z, w = quaternion_from_euler(roll, pitch, 0.0)\n"
+            "    pose = Pose()\n    pose.orientation.x = x\n    pose.orientation.y = y\n    pose.orientation.z = z\n    pose.orientation.w = w\n    return pose\n"
+        ),
+        # a half-angle formula: sin(yaw / 2) is a component, yaw is not
+        Valid(
+            "import math\nfrom geometry_msgs.msg import Quaternion\nfrom tf.transformations import euler_from_quaternion\n"
+            "def f(q):\n    yaw = euler_from_quaternion(q)[2]\n    return Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))\n"
+        ),
+        # a Quaternion message carrying three angles, published as such: not an orientation
+        Valid(
+            "from geometry_msgs.msg import Quaternion\nfrom tf.transformations import euler_from_quaternion\n"
+            "def f(pub, q):\n    rpy = euler_from_quaternion(q)\n    msg = Quaternion()\n    msg.x = rpy[0]\n    msg.y = rpy[1]\n    msg.z = rpy[2]\n    pub.publish(msg)\n"
+        ),
+        # one name alone is no evidence
+        Valid("from geometry_msgs.msg import Pose\ndef f(yaw):\n    pose = Pose()\n    pose.orientation.z = yaw\n    pose.orientation.w = 1.0\n    return pose\n"),
+    ]
+    INVALID = [
+        Invalid(
+            "from sensor_msgs.msg import Imu\ndef f(imu):\n    rpy = imu.getRollPitchYaw()\n    msg = Imu()\n    msg.orientation.x = rpy[0]\n"
+            "    msg.orientation.y = rpy[1]\n    msg.orientation.z = rpy[2]\n    return msg\n"
+        ),
+        Invalid(
+            "from geometry_msgs.msg import Pose, Quaternion\nfrom tf_transformations import euler_from_quaternion\n"
+            "def f(q):\n    roll, pitch, yaw = euler_from_quaternion(q)\n    return Pose(orientation=Quaternion(x=roll, y=-pitch, z=yaw, w=1.0))\n"
+        ),
+        # names only, but three components from roll, pitch and yaw
+        Invalid(
+            "from geometry_msgs.msg import PoseStamped\ndef f(roll, pitch, yaw):\n    p = PoseStamped()\n    p.pose.orientation.x = roll\n"
+            "    p.pose.orientation.y = pitch\n    p.pose.orientation.z = yaw\n    return p\n"
+        ),
+    ]
+
+    def run(self) -> None:
+        facts = self.facts
+        types = facts.shared(MessageTypes)
+        for scope in facts.index.scopes.values():
+            stores: dict[str, list[tuple[str, ast.expr, ast.Attribute]]] = {}
+            for target, value in scope.attribute_stores:
+                if target.attr in _COMPONENTS:
+                    path = dotted_name(target.value)
+                    if path is not None:
+                        stores.setdefault(path, []).append((target.attr, value, target))
+            for path, written in stores.items():
+                quaternion = written[0][2].value
+                if self._is_quaternion(types, quaternion) and self._read_as_rotation(quaternion):
+                    self._check(path, [(component, value) for component, value, _ in written], written[0][2])
+        for call in facts.index.nodes(ast.Call):
+            if facts.called_name(call.func) == "Quaternion" and facts.qualified_name(call.func) == _QUATERNION:  # type: ignore[attr-defined]
+                given = [(component, value) for component, value in zip(_COMPONENTS, positional_args(call))]  # type: ignore[arg-type]
+                given += [(item.arg, item.value) for item in call.keywords if item.arg in _COMPONENTS]  # type: ignore[attr-defined]
+                if given and self._placed_as_rotation(call):  # type: ignore[arg-type]
+                    self._check(f"{facts.code_of(call.func)}(...)", given, call)  # type: ignore[attr-defined,arg-type]
+
+    def _check(self, quaternion: str, given: list[tuple[str, ast.expr]], anchor: ast.AST) -> None:
+        angles = [(component, value, self._angle(value, 0)) for component, value in given]
+        found = [(component, value, angle) for component, value, angle in angles if angle is not None]
+        strong = [item for item in found if item[2].strong]
+        if not strong and len({angle.label for _, _, angle in found}) < 2:
+            return  # a name alone (`q.z = yaw`) is no evidence
+        component, value, angle = (strong or found)[0]
+        others = [f"{c} = `{self.code_of(v)}`" for c, v, _ in found if v is not value]
+        also = f" (and {', '.join(others)})" if others else ""
+        instead = f"use `{angle.instead})" if angle.instead else "convert the angles (`quaternion_from_euler(roll, pitch, yaw)`)"
+        self.report(
+            anchor,
+            f"{_slot(quaternion, component)} is given `{self.code_of(value)}`{also}, an Euler angle ({angle.label}: {angle.evidence}); "
+            f"a quaternion's components are not angles: {instead} and set all four",
+        )
+
+    def _is_quaternion(self, types: MessageTypes, node: ast.expr) -> bool:
+        """A Quaternion message: a field the fact base knows (`msg.orientation` of an `Imu()`), or a name
+        bound only to `Quaternion()`."""
+        if isinstance(node, ast.Attribute):
+            return types.class_of(node) == _QUATERNION
+        if not isinstance(node, ast.Name):
+            return False
+        bound = self.facts.bindings(node) or []
+        facts = self.facts
+        return bool(bound) and all(
+            isinstance(binding, ast.Call) and facts.qualified_name(binding.func) == _QUATERNION for binding in bound
+        )
+
+    # -- where the quaternion goes ------------------------------------------------------------------
+
+    def _read_as_rotation(self, quaternion: ast.expr) -> bool:
+        """A field of a known message (`msg.orientation`), or a Quaternion message built alone and
+        then put into an orientation (not a carrier of three numbers)."""
+        if isinstance(quaternion, ast.Attribute):
+            return True  # the class says Quaternion only through a known message's field or `self.q` built here
+        if not isinstance(quaternion, ast.Name):
+            return False
+        scope = self.facts.index.scope_of(quaternion)
+        for node in self._uses(quaternion.id, scope):
+            if self._placed_as_rotation(node):
+                return True
+        return False
+
+    @staticmethod
+    def _uses(name: str, scope: Scope) -> list[ast.Name]:
+        return [node for node in walk_within(scope.node) if isinstance(node, ast.Name) and node.id == name and isinstance(node.ctx, ast.Load)]
+
+    def _placed_as_rotation(self, node: ast.expr) -> bool:
+        """`pose.orientation = node`, `Pose(orientation=node)`, `Transform(rotation=node)`."""
+        parent = self.facts.parent(node)
+        if isinstance(parent, ast.keyword):
+            return parent.arg in _ORIENTATION_FIELDS
+        if isinstance(parent, ast.Assign) and parent.value is node:
+            return any(isinstance(target, ast.Attribute) and target.attr in _ORIENTATION_FIELDS for target in parent.targets)
+        return False
+
+    # -- what the value is --------------------------------------------------------------------------
+
+    def _angle(self, node: ast.expr, depth: int) -> _Angle | None:
+        """Why `node` is an Euler angle, or None."""
+        if depth > _MAX_DEPTH:
+            return None
+        facts = self.facts
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            return self._angle(node.operand, depth + 1)
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+            if number(node.right) is not None:
+                return self._angle(node.left, depth + 1)  # `yaw + 0.1`, still an angle (not `yaw / 2`)
+            return None
+        if isinstance(node, ast.Call):
+            called = facts.called_name(node.func)
+            arguments = positional_args(node)
+            if len(arguments) == 1 and not node.keywords and (called == "float" or called in _UNIT_CALLS):
+                return self._angle(arguments[0], depth + 1)
+            return None
+        if isinstance(node, ast.Subscript):
+            position = number(node.slice)
+            if position is None or position != int(position):
+                return None
+            return self._element(node.value, int(position), depth + 1)
+        if isinstance(node, ast.Name):
+            if node.id in facts.index.scope_of(node).augmented:
+                return None
+            bound = facts.bindings(node) or []
+            found = [self._bound_angle(binding, depth + 1) for binding in bound]
+            if found and all(angle is not None and angle.strong for angle in found):
+                return found[0]
+            return self._named(node.id, bound)
+        if isinstance(node, ast.Attribute):
+            if isinstance(node.value, ast.Name) and node.value.id == "self":
+                stores = facts.index.self_attribute_stores.get(node.attr, [])
+                found = [self._angle(store, depth + 1) for store in stores]
+                if found and all(angle is not None and angle.strong for angle in found):
+                    return found[0]
+                return self._named(node.attr, stores)
+            return self._named(node.attr, [])
+        return None
+
+    def _bound_angle(self, binding: object, depth: int) -> _Angle | None:
+        if isinstance(binding, UnpackBinding):
+            return self._element(binding.value, binding.position, depth)  # `roll, pitch, yaw = euler_from_quaternion(q)`
+        return self._angle(binding, depth) if isinstance(binding, ast.expr) else None
+
+    def _element(self, sequence: ast.expr, position: int, depth: int) -> _Angle | None:
+        """Element `position` of `sequence`, when `sequence` holds Euler angles."""
+        source = self._euler_source(sequence, depth)
+        if source is None:
+            return None
+        names = source.names
+        label = names[position] if 0 <= position < len(names) else f"element {position} of `{self.code_of(sequence)}`"
+        return _Angle(label, source.evidence, source.strong, source.instead)
+
+    def _euler_source(self, node: ast.expr, depth: int) -> _Source | None:
+        """The angles' names when known, why, and whether a library says so, for a value holding Euler angles."""
+        if depth > _MAX_DEPTH:
+            return None
+        facts = self.facts
+        if isinstance(node, ast.Call):
+            qualified = facts.qualified_name(node.func) or ""
+            if qualified in RETURNED_ANGLES:
+                return _Source((), f"`{qualified}` returns Euler angles", True)
+            func = node.func
+            if isinstance(func, ast.Attribute):
+                method = EULER_METHOD_NAMES.get(func.attr)
+                if method is not None and not node.args:
+                    _, names, twin = RETURNED_EULER_METHODS[method]
+                    return _Source(names, f"`{method}` returns them", True, twin)
+                if func.attr == "as_euler" and is_scipy_rotation_value(facts, func.value):
+                    return _Source((), "scipy's `as_euler` returns Euler angles", True)
+            return None
+        if isinstance(node, ast.Name):
+            bound = facts.bindings(node) or []
+            values = [binding for binding in bound if isinstance(binding, ast.expr)]
+            found = [self._euler_source(value, depth + 1) for value in values]
+            if found and len(values) == len(bound) and all(source is not None and source.strong for source in found):
+                return found[0]
+            words = _words(node.id)
+            if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(value) for value in values):
+                return _Source((), f"the name `{node.id}` says Euler angles", False)
+            return None
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+            stores = facts.index.self_attribute_stores.get(node.attr, [])
+            found = [self._euler_source(store, depth + 1) for store in stores]
+            if found and all(source is not None and source.strong for source in found):
+                return found[0]
+            words = _words(node.attr)
+            if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(store) for store in stores):
+                return _Source((), f"the name `{node.attr}` says Euler angles", False)
+        return None
+
+    @staticmethod
+    def _named(name: str, bound: Sequence[object]) -> _Angle | None:
+        """Weak evidence: a name that says roll, pitch or yaw, never bound to a trigonometric formula."""
+        words = _words(name)
+        said = [word for word in _ANGLE_WORDS if word in words]
+        if len(said) != 1 or words & _NOT_AN_ANGLE or words & _SEQUENCE_WORDS:
+            return None
+        if any(isinstance(binding, ast.expr) and _trig(binding) for binding in bound):
+            return None
+        return _Angle(said[0], f"the name `{name}` says so", False)
+
+
+def _slot(quaternion: str, component: str) -> str:
+    return f"`{quaternion}`'s {component}" if quaternion.endswith("(...)") else f"`{quaternion}.{component}`"
+
+
+def _words(name: str) -> set[str]:
+    return {word.lower() for word in re.findall(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|\d+", name)}
+
+
+def _trig(node: ast.expr) -> bool:
+    """A formula with sin or cos in it (a quaternion component computed from angles)."""
+    return any(
+        isinstance(part, ast.Call) and (getattr(part.func, "attr", None) or getattr(part.func, "id", None)) in TRIG_FUNCTIONS
+        for part in ast.walk(node)
+    )
+
