@@ -198,3 +198,32 @@ def test_three_elements_in_a_row_with_w_unset_are_geo306() -> None:
     assert codes(source.replace("lookup(values[2], table)", "lookup(values[2], other)")) == []
     assert codes(source.replace("values[2]", "values[1]")) == []
     assert codes(source.replace("return msg", "msg.orientation.w = 1.0\n        return msg")) == []
+
+
+def test_a_vector_of_angles_copied_into_an_orientation() -> None:
+    source = """
+    from geometry_msgs.msg import Pose
+
+    def from_state(state):
+        pose = Pose()
+        pose.orientation.x = state.rpy.x
+        pose.orientation.y = state.rpy.y
+        pose.orientation.z = state.rpy.z
+        pose.orientation.w = 1.0
+        return pose
+    """
+    assert codes(source) == [(6, "GEO307")]
+    assert codes(source.replace("rpy", "rotation")) == []
+
+
+def test_names_that_say_quaternion_are_not_angles() -> None:
+    source = """
+    from geometry_msgs.msg import Pose
+
+    def from_parts(roll_q, yaw_q):
+        pose = Pose()
+        pose.orientation.x = roll_q
+        pose.orientation.z = yaw_q
+        return pose
+    """
+    assert codes(source) == []

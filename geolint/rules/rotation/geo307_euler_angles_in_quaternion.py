@@ -26,9 +26,10 @@ _COMPONENTS = ("x", "y", "z", "w")
 _ORIENTATION_FIELDS = frozenset({"orientation", "rotation"})
 _ANGLE_WORDS = ("roll", "pitch", "yaw")
 _SEQUENCE_WORDS = frozenset({"rpy", "euler", "eulers"})
-# Words that make `yaw_rate`, `roll_vel`, `pitch_std` something other than an angle.
+# Words that make `yaw_rate`, `roll_vel`, `pitch_std`, `yaw_quat` something other than an angle.
 _NOT_AN_ANGLE = frozenset(
     {"rate", "rates", "vel", "velocity", "speed", "dot", "acc", "accel", "std", "sigma", "cov", "covariance", "noise", "gain", "sin", "cos", "half"}
+    | {"q", "quat", "quaternion", "qx", "qy", "qz", "qw", "orientation", "rot", "rotation"}
 )
 _UNIT_CALLS = frozenset({"degrees", "radians", "deg2rad", "rad2deg"})
 _MAX_DEPTH = 6
@@ -60,7 +61,7 @@ class EulerAnglesInQuaternion(FactRule):
     an element of tf's `euler_from_quaternion` / `euler_from_matrix`, transforms3d's `quat2euler`,
     pybullet's `getEulerFromQuaternion`, scipy's `as_euler`, Webots' `InertialUnit.getRollPitchYaw()`
     (the tables of `geolint.factbase.angles`), followed through names, `-a`, `float(a)` and
-    `np.degrees(a)`. Names alone (`roll`, `pitch`, `yaw`, `rpy[0]`) count only when they fill two
+    `np.degrees(a)`. Names alone (`roll`, `pitch`, `yaw`, `rpy[0]`, `rpy.x`) count only when they fill two
     components or more with different angles.
 
     ## Why is this bad?
@@ -106,7 +107,9 @@ class EulerAnglesInQuaternion(FactRule):
     purpose, and is left alone), and only components written one by one or as constructor arguments:
     `q.x, q.y, q.z = angles` is not read. An angle reaching the component through a project helper
     (`interpolate(rpy[0], table)`) or a container is not followed. A name such as `roll` alone in
-    one component is not enough.
+    one component is not enough. A `Pose` or `Imu` used on purpose to carry three angles to a
+    node of the same project is flagged too: every other reader of the message takes it for a
+    rotation.
     """
 
     code = "GEO307"
@@ -266,7 +269,19 @@ class EulerAnglesInQuaternion(FactRule):
                 if found and all(angle is not None and angle.strong for angle in found):
                     return found[0]
                 return self._named(node.attr, stores)
+            if node.attr in _COMPONENTS[:3]:
+                return self._component_of_angles(node)
             return self._named(node.attr, [])
+        return None
+
+    @staticmethod
+    def _component_of_angles(node: ast.Attribute) -> _Angle | None:
+        """Weak evidence: `rpy.x`, `self.euler.z`, a component of a 3-vector whose name says Euler angles."""
+        owner = node.value
+        name = owner.attr if isinstance(owner, ast.Attribute) else owner.id if isinstance(owner, ast.Name) else None
+        words = _words(name or "")
+        if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE:
+            return _Angle(f"`{name}.{node.attr}`", f"the name `{name}` says Euler angles", False)
         return None
 
     def _bound_angle(self, binding: object, depth: int) -> _Angle | None:
