@@ -60,8 +60,12 @@ class CallerTransformMutated(AstRule):
 
     ## Known problems
     Functions that are meant to update their argument are recognised only by returning nothing,
-    by returning the argument itself, or by their name (`set_*`, `update_*`, `apply_*`, `*_inplace`, a trailing underscore); an
-    in-place helper that also returns a status value is flagged.
+    by returning the argument itself, by writing other arguments' elements in place and returning
+    those (an in-place API such as `fill(uv, z, T)` that returns `uv, z`: the transform it
+    rewrites is taken for a scratch slot of that API, though a caller could still be surprised),
+    or by their name (`set_*`, `update_*`, `apply_*`, `*_inplace`, a trailing underscore); an
+    in-place helper that also returns a status value is flagged. Callers are not read: a helper
+    with no caller in the project, or whose every caller passes a copy, is judged all the same.
     """
 
     code = "GEO206"
@@ -78,6 +82,10 @@ class CallerTransformMutated(AstRule):
         Valid("def f(K, s):\n    K[:2, 2] *= s\n    return K\n"),
         Valid("def f(poses, c):\n    poses[:, :3, 3] -= c\n    return poses, c\n"),  # handed back: the caller rebinds
         Valid("def snap(obj, y):\n    obj.translation = y\n    return True\n"),  # moving a simulated object
+        Valid(  # an in-place API: fills uv and z and hands them back; T's translation is its scratch slot
+            "def reproject(uv, z, T, A):\n    for i in range(len(uv)):\n        T[:3, 3] = lift(uv[i], z[i])\n"
+            "        p = (A @ T)[:3, 3]\n        z[i] = p[2]\n        uv[i] = p[:2] / p[2]\n    return uv, z\n"
+        ),
     ]
     INVALID = [
         Invalid("def f(T, p):\n    T[:3, 3] = 0\n    return T @ p\n"),
@@ -87,6 +95,9 @@ class CallerTransformMutated(AstRule):
         ),
         Invalid("def f(poses, center, pts):\n    out = poses\n    out[:, :3, 3] -= center\n    return pts @ out\n"),
         Invalid("def heading(pose):\n    pose.pose.orientation.w = 1.0\n    return yaw_of(pose)\n"),
+        Invalid(  # returns a parameter it never writes: not an in-place API
+            "def reproject(uv, T, A):\n    T[:3, 3] = lift(uv)\n    return uv, A @ T\n"
+        ),
     ]
 
     def check(self, tree: ast.Module) -> None:
@@ -104,6 +115,8 @@ class CallerTransformMutated(AstRule):
                     parameter = _parameter_read_by(root, index)
                     if parameter is None or parameter in ("self", "cls") or _returns_name(function, {parameter, root.id}):
                         continue  # returned: an update-and-return helper whose caller rebinds
+                    if _returns_name(function, _parameters_written_in_place(function, index) - {parameter}):
+                        continue  # an in-place API: it fills other arguments and hands them back
                     self.report(
                         target,
                         f"`{function.name}` rewrites part of the transform its caller passed as "
@@ -127,6 +140,19 @@ def _returns_name(function: ast.FunctionDef | ast.AsyncFunctionDef, names: set[s
             if any(isinstance(value, ast.Name) and value.id in names for value in returned):
                 return True
     return False
+
+
+def _parameters_written_in_place(function: ast.FunctionDef | ast.AsyncFunctionDef, index: ModuleIndex) -> set[str]:
+    """The parameters whose elements the function stores into (`uv[i] = ...`, `out[:, 0] += d`)."""
+    written = set()
+    for statement in _own_statements(function):
+        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target] if isinstance(statement, ast.AugAssign) else []
+        for target in targets:
+            if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
+                parameter = _parameter_read_by(target.value, index)
+                if parameter is not None:
+                    written.add(parameter)
+    return written
 
 
 def _own_statements(function: ast.AST) -> list[ast.stmt]:
