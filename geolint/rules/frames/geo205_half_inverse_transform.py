@@ -10,11 +10,14 @@ from geolint.factbase.pose_parts import (
     application,
     difference_with,
     matmul_operands,
+    peel_same_value,
     pose_part,
     same_code,
     transposed_operand,
 )
-from geolint.factbase.reaching import scope_of
+from geolint.factbase.reaching import Unpacked, resolve, scope_of
+from geolint.factbase.summaries import may_be_project_module
+from geolint.factbase.vocabulary import THIRD_PARTY_ROOTS
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import MATMUL_TEXT, POSE_PART_TEXT, AllOf, AnyOf
 
@@ -79,7 +82,12 @@ class HalfInverseTransform(AstRule):
     ## Known problems
     A rotation read from a key is taken to be stored as a rotation (column form); when the same
     module writes that key from a computed matrix (`info["rot"] = R` laid out for `points @ R`),
-    the in-place row form is not judged. The rule needs evidence that R and t belong to one pose; rotations and translations passed in
+    the in-place row form is not judged. Nor is the row form `x @ R` (R not transposed) when R is an
+    entry or element of what a project function returned (`tform["rotation"]` of
+    `d, Z, tform = procrustes(X, Y)`, `rot` of `rot, trans = fit(X, Y)`): a port of MATLAB's
+    `procrustes` builds R for right multiplication (`Z = b * Y @ T + c` is the fitted map), and
+    the rule does not read the function to tell; a project function that returns a column-form
+    rotation in a dict is then missed. The rule needs evidence that R and t belong to one pose; rotations and translations passed in
     separately (`def f(R, t, p)`) are not checked. A codebase that stores a camera *centre* under a
     translation's name (`pose.t` = centre, so `R @ (p - pose.t)` is right) is flagged; such a
     value is better named `center`.
@@ -129,6 +137,15 @@ class HalfInverseTransform(AstRule):
             "    points[:, :3] = points[:, :3] @ T[:3, :3]\n"
             "    return points\n"
         ),
+        Valid(  # built by a project function, maybe for rows (MATLAB procrustes: Z = b * Y @ T + c)
+            "def fit(X, Y):\n    return 0.0, Y, {'rotation': rows_rotation(X, Y), 'translation': offset(X, Y)}\n"
+            "def align(pred, true):\n    d, Z, tform = fit(true, pred)\n"
+            "    return pred @ tform['rotation'] + tform['translation']\n"
+        ),
+        Valid(
+            "def fit(X, Y):\n    return rows_rotation(X, Y), offset(X, Y)\n"
+            "def align(pred, true):\n    rot, trans = fit(true, pred)\n    return pred @ rot + trans\n"
+        ),
     ]
     INVALID = [
         Invalid("p_cam = T[:3, :3].T @ p_world + T[:3, 3]\n"),
@@ -142,6 +159,14 @@ class HalfInverseTransform(AstRule):
         ),
         Invalid("def f(gt, p):\n    return gt['cam_R_m2c'].T.dot(p) + gt['cam_t_m2c'].reshape(3, 1)\n"),
         Invalid("def f(T, pts):\n    R, t = split_pose(T)\n    return (R.T @ pts.T).T + t\n"),
+        Invalid(  # transposed by hand: the author reads it as a rotation for column vectors
+            "def fit(X, Y):\n    return rows_rotation(X, Y), offset(X, Y)\n"
+            "def align(pred, true):\n    rot, trans = fit(true, pred)\n    return (rot.T @ pred.T).T + trans\n"
+        ),
+        Invalid(  # sliced from a 4x4 with the translation in the last column: column layout
+            "def fit(X, Y):\n    return make_pose(X, Y)\n"
+            "def align(pred, true):\n    T = fit(true, pred)\n    return pred @ T[:3, :3] + T[:3, 3]\n"
+        ),
         Invalid(
             "def invert(info):\n"
             "    M = np.eye(4)\n"
@@ -236,6 +261,8 @@ class HalfInverseTransform(AstRule):
             return  # `x = y @ R; x -= t`: not a point moved in place
         if self._module_stores_key_computed(previous.value, index):
             return  # `info["rot"] = R` with R composed for `points @ R`: the module chose the layout
+        if self._layout_unknown(applied, index):
+            return
         sign = "+" if isinstance(node.op, ast.Add) else "-"
         self.report(
             node,
@@ -243,6 +270,52 @@ class HalfInverseTransform(AstRule):
             f"and now its forward translation ({sign}= t): neither the pose nor its inverse. The inverse "
             "is Rᵀ (p - t) (rows: (p - t) @ R)",
         )
+
+    def _layout_unknown(self, applied: Application, index: ModuleIndex) -> bool:
+        """A row-form product `x @ R` (R not transposed) whose R is an entry of what a project function
+        returned (`tform["rotation"]` of `d, Z, tform = procrustes(X, Y)`, or `T` of `T, c = fit(X, Y)`):
+        that function may have built R for right multiplication (MATLAB's `Z = b * Y * T + c`), so
+        `x @ R` is not known to apply R's inverse. A 4x4 sliced (`T[:3, :3]`) says its layout."""
+        operands = matmul_operands(applied.product)
+        if operands is None or transposed_operand(operands[1]) is not None:
+            return False
+        node = operands[1]
+        for _ in range(8):
+            inner = peel_same_value(node)
+            if inner is not node:
+                node = inner
+                continue
+            if isinstance(node, ast.Name):
+                value = resolve(index, node)
+                if isinstance(value, Unpacked):
+                    return isinstance(value.value, ast.Call) and self._project_callee(value.value, index)
+                if value is node:
+                    return False
+                node = value
+                continue
+            break
+        if not (isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Constant) and isinstance(node.slice.value, str)):
+            return False
+        container = resolve(index, node.value) if isinstance(node.value, ast.Name) else node.value
+        if isinstance(container, Unpacked):
+            container = container.value
+        return isinstance(container, ast.Call) and self._project_callee(container, index)
+
+    def _project_callee(self, call: ast.Call, index: ModuleIndex) -> bool:
+        """Whether the called function may be one of the project's (this module's, or an imported
+        module the project's folders hold), not a library's."""
+        root = call.func
+        while isinstance(root, ast.Attribute):
+            root = root.value
+        if not isinstance(root, ast.Name):
+            return False
+        if root is call.func and root.id in index.functions:
+            return True
+        imported = index.imports.get(root.id)
+        if imported is None:
+            return False
+        top = imported.split(".")[0]
+        return top not in THIRD_PARTY_ROOTS and (not top or may_be_project_module(top, self.context.path))
 
     @staticmethod
     def _module_stores_key_computed(product: ast.expr, index: ModuleIndex) -> bool:
@@ -289,6 +362,8 @@ class HalfInverseTransform(AstRule):
             settled.add(applied.product)
             if not applied.inverse:
                 return  # R @ p + t, or R @ (p - t) + t (a rotation about the pose's origin)
+            if self._layout_unknown(applied, index):
+                return  # `b * Y @ T + c` with T from a project function: maybe built for rows
             removed = difference_with(applied.operand, index)
             if removed is not None and removed[1].pose == translation.pose:
                 return  # R.T @ (p - t) + t: an un-rotation about the pose's origin
