@@ -20,6 +20,7 @@ from geolint.rules.rotation.angle_units import (
     enclosing_class,
     format_angle,
     is_trig_or_conversion,
+    name_unit,
     radian_arguments,
     report_hand_conversion_of_converted,
     wrong_unit_passed,
@@ -109,7 +110,10 @@ class DegreesAsRadians(FactRule):
     ## Known problems
     All-caps names (`DEG`, `DEG2RAD`) and a bare `deg` are read as conversion factors, not angles,
     so `np.sin(30 * DEG)` stays silent; a `*_deg` name that actually holds radians (a stale
-    name) is flagged. A value mixed with radians evidence in the same argument is left alone.
+    name) is flagged, unless the function's own arithmetic contradicts its degree names (adds pi
+    to one or wraps it with pi, `degree = (degree + np.pi) % (2 * np.pi) - np.pi`) and only the
+    name says degrees (it is bound to a parameter or a value of no known unit): then it says
+    nothing, and a real degree slip in such a function is missed. A value mixed with radians evidence in the same argument is left alone.
     A constant is followed only when nothing else in its module stores that attribute or name
     (`global`, `+=`, `setattr` with a computed name, a class with base classes all make it silent),
     and only one step (`cfg = Configuration()` or `cfg: Configuration` then `cfg.phi`; not a `cfg`
@@ -176,8 +180,17 @@ class DegreesAsRadians(FactRule):
             "import math\nfrom OpenGL.GL import glRotatef\ndef draw(obj):\n    y_rot = obj['rotate']\n"
             "    glRotatef(y_rot, 0, 1, 0)\n    return math.cos(math.radians(y_rot))\n"
         ),
+        Valid(  # a stale name: the function's own arithmetic on its degree names is in radians
+            "import numpy as np\ndef arc(r, start_phase, sweep):\n    start_degree = start_phase\n"
+            "    degree = (start_degree - sweep + np.pi) % (2 * np.pi) - np.pi\n"
+            "    return r * np.cos(start_degree), r * np.sin(degree)\n"
+        ),
     ]
     INVALID = [
+        Invalid(  # computed degrees are degrees, whatever other names the function wraps in pi
+            "import numpy as np\ndef f(h):\n    yaw_deg = np.degrees(h)\n"
+            "    heading_deg = (h + np.pi) % (2 * np.pi) - np.pi\n    return np.cos(yaw_deg)\n"
+        ),
         Invalid(
             "import numpy as np\nimport quaternion\n"
             "def quat_from_angle_axis(theta, axis):\n    return quaternion.from_rotation_vector(theta * axis)\n"
@@ -520,6 +533,8 @@ class DegreesAsRadians(FactRule):
         in_degrees = [(element, unit) for element in elements if (unit := units.unit_of(element)) is not None and unit.unit == DEGREES]
         if not in_degrees or any(unit.unit == RADIANS for element in elements if (unit := units.unit_of(element)) is not None):
             return False  # nothing in degrees, or radians beside it: mixed evidence, say nothing
+        if all(self._named_only(found, units) for found, _ in in_degrees) and self._wraps_degree_names_in_pi(node, units):
+            return False  # `start_degree = start_phase` where `(degree + np.pi) % ...`: the names are stale
         element, unit = in_degrees[0]
         applicability = "unsafe" if any(found.by_name for _, found in in_degrees) else "safe"
         fix = self._degrees_keyword_fix(node)
@@ -535,6 +550,61 @@ class DegreesAsRadians(FactRule):
             evidence=(unit.evidence,),
         )
         return True
+
+    def _named_only(self, node: ast.expr, units: AngleUnits, depth: int = 4) -> bool:
+        """Whether only a name says `node` is in degrees: a name bound to parameters (no literal default),
+        to names bound so, or to values of no known unit (`start_degree = start_phase`)."""
+        if not isinstance(node, ast.Name) or depth <= 0 or units.bound_literal(node) is not None:
+            return False
+        for binding in self.facts.bindings(node) or []:
+            if isinstance(binding, ParamBinding):
+                continue
+            if not isinstance(binding, ast.expr):
+                return False
+            if isinstance(binding, ast.Name):
+                if not self._named_only(binding, units, depth - 1) and units.unit_of(binding) is not None:
+                    return False
+            elif units.unit_of(binding) is not None:
+                return False
+        return True
+
+    def _wraps_degree_names_in_pi(self, node: ast.Call, units: AngleUnits) -> bool:
+        """Whether the function holding `node` adds pi to, or wraps with pi, a value whose name says
+        degrees (`degree = (degree + np.pi) % (2 * np.pi) - np.pi`, `arc_degree = (x + np.pi) % ...`):
+        radian arithmetic, so its degree names say nothing."""
+        scope = self.facts.index.scope_of(node).node
+        if not isinstance(scope, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            return False
+        for statement in ast.walk(scope):
+            if isinstance(statement, (ast.Assign, ast.AugAssign)):
+                targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
+                named = [target for target in targets for name in ast.walk(target) if isinstance(name, ast.Name) and name_unit(name.id) == DEGREES]
+                if any(named_value and self._pi_arithmetic(named_value, units) for named_value in ([statement.value] if named else [])):
+                    return True
+            elif isinstance(statement, ast.BinOp) and self._pi_arithmetic(statement, units, degree_operand=True):
+                return True
+        return False
+
+    def _pi_arithmetic(self, node: ast.expr, units: AngleUnits, degree_operand: bool = False) -> bool:
+        """`x + np.pi`, `x - np.pi`, `x % (2 * np.pi)` somewhere in `node` (with `degree_operand`: `node`
+        itself, with a name that says degrees in `x`)."""
+        candidates = [node] if degree_operand else [found for found in ast.walk(node) if isinstance(found, ast.BinOp)]
+        for binop in candidates:
+            if not isinstance(binop, ast.BinOp) or not isinstance(binop.op, (ast.Add, ast.Sub, ast.Mod)):
+                continue
+            for side, other in ((binop.left, binop.right), (binop.right, binop.left)):
+                if self._is_pi_multiple(side, units) and (
+                    not degree_operand or any(isinstance(name, ast.Name) and name_unit(name.id) == DEGREES for name in ast.walk(other))
+                ):
+                    return True
+        return False
+
+    @staticmethod
+    def _is_pi_multiple(node: ast.expr, units: AngleUnits) -> bool:
+        """`np.pi`, `2 * np.pi`, `np.pi * 2`."""
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+            return (number(node.left) is not None and units._is_pi(node.right)) or (number(node.right) is not None and units._is_pi(node.left))
+        return units._is_pi(node)
 
     def _radian_angles(self, node: ast.Call) -> list[float] | None:
         """The literal angles of a call to a radian API, or None when the call is not one (or opted into degrees)."""
