@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import TYPE_CHECKING, Iterable, Sequence
+from typing import TYPE_CHECKING, Callable, Iterable, Sequence
 
 from geolint.config import config_root
 from geolint.lint_types import Config
@@ -117,10 +117,11 @@ def _walk(top: Path, excluder: _Excluder) -> Iterable[tuple[Path, str, Path]]:
     drops, folder by folder as `os.walk` goes (files first, then sub-folders; symlinked folders are not
     entered, so a folder's real path is the resolved top joined with its relative path)."""
     top_resolved = str(top.resolve())
-    gitignores: list[tuple[str, object]] = list(excluder.gitignores_above(Path(top_resolved)))
-    pending = [(str(top), top_resolved, _display(top))]
+    above = tuple(excluder.gitignores_above(Path(top_resolved)))
+    # each folder carries the `.gitignore` specs that apply in it: those above it and its own
+    pending = [(str(top), top_resolved, _display(top), above)]
     while pending:
-        folder, resolved_folder, display_folder = pending.pop()
+        folder, resolved_folder, display_folder, active = pending.pop()
         try:
             with os.scandir(folder) as scan:
                 entries = sorted(scan, key=lambda entry: entry.name)
@@ -130,8 +131,7 @@ def _walk(top: Path, excluder: _Excluder) -> Iterable[tuple[Path, str, Path]]:
         if any(entry.name == ".gitignore" for entry in entries):
             spec = excluder.read_gitignore(os.path.join(resolved_folder, ".gitignore"))
             if spec is not None:
-                gitignores.append((resolved_folder, spec))
-        active = [(base, spec) for base, spec in gitignores if resolved_folder == base or resolved_folder.startswith(base + os.sep)]
+                active = (*active, (resolved_folder, spec))
         display_prefix = "" if display_folder == os.curdir else display_folder + os.sep
         folders = []
         for entry in entries:
@@ -139,7 +139,7 @@ def _walk(top: Path, excluder: _Excluder) -> Iterable[tuple[Path, str, Path]]:
             candidate = os.path.join(resolved_folder, name)
             if _is_folder(entry):
                 if not entry.is_symlink() and not excluder.excluded(candidate, is_dir=True) and not _gitignored(active, candidate, True):
-                    folders.append((entry.path, candidate, display_prefix + name))
+                    folders.append((entry.path, candidate, display_prefix + name, active))
             elif name.endswith(PYTHON_SUFFIXES) and not excluder.excluded(candidate, is_dir=False) and not _gitignored(active, candidate, False):
                 path = Path(entry.path)
                 # realpath, not resolve(): a link in a loop must not end the whole run (RuntimeError)
@@ -160,7 +160,7 @@ def _excluded_file(file: Path, excluder: _Excluder) -> bool:
     if file.parent != root and root not in file.parents:
         return excluder.excluded(file, is_dir=False)
     folders = [folder for folder in reversed(file.parents) if folder == root or root in folder.parents]
-    gitignores: list[tuple[str, object]] = []
+    gitignores: list[tuple[str, Callable[[str], bool]]] = []
     for folder in folders:
         if folder != root and excluder.excluded(folder, is_dir=True):
             return True
@@ -186,21 +186,42 @@ def _any_pattern(patterns: tuple[str, ...]) -> re.Pattern[str] | None:
     return re.compile("|".join(f"(?:{regex})" for regex in regexes)) if regexes else None
 
 
-def _read_gitignore(path: str):  # -> pathspec.GitIgnoreSpec | None
+def _read_gitignore(path: str) -> Callable[[str], bool] | None:
     try:
         with open(path, encoding="utf-8", errors="replace") as stream:
             lines = tuple(stream.read().splitlines())
     except OSError:
         return None
-    return _spec(lines) if lines else None
+    return _gitignore_matcher(lines) if lines else None
 
 
-def _gitignored(active: list[tuple[str, object]], candidate: str, is_dir: bool) -> bool:
-    for base, spec in active:
-        relative = os.path.relpath(candidate, base).replace(os.sep, "/") + ("/" if is_dir else "")
-        if spec.match_file(relative):  # type: ignore[attr-defined]
+def _gitignored(active: Sequence[tuple[str, Callable[[str], bool]]], candidate: str, is_dir: bool) -> bool:
+    """Whether a `.gitignore` in `active` (each with its folder, which holds `candidate`) drops it."""
+    for base, matches in active:
+        if candidate.startswith(base + os.sep):
+            relative = candidate[len(base) + 1 :]
+        else:
+            relative = os.path.relpath(candidate, base)
+        relative = relative.replace(os.sep, "/") + ("/" if is_dir else "")
+        if matches(relative):
             return True
     return False
+
+
+@lru_cache(maxsize=256)
+def _gitignore_matcher(lines: tuple[str, ...]) -> Callable[[str], bool]:
+    """`spec.match_file` for the spec of these lines; for one that negates nothing (most), the first
+    pattern that matches decides, so its compiled regexes are searched in order without pathspec's
+    per-pattern calls (pathspec's own test: `regex.search`)."""
+    spec = _spec(lines)
+    searches = []
+    for pattern in spec.patterns:
+        if pattern.include is None:
+            continue  # a comment or a blank line
+        if pattern.include is not True or pattern.regex is None:
+            return lambda relative: bool(spec.match_file(relative))
+        searches.append(pattern.regex.search)
+    return lambda relative: any(search(relative) is not None for search in searches)
 
 
 @dataclass
@@ -222,11 +243,11 @@ class _Excluder:
         self._any_pattern = _any_pattern(patterns)
         self.consulted = consulted if consulted is not None else Consulted()
 
-    def read_gitignore(self, path: str):  # -> pathspec.GitIgnoreSpec | None
+    def read_gitignore(self, path: str) -> Callable[[str], bool] | None:
         self.consulted.files.add(path)
         return _read_gitignore(path)
 
-    def gitignore_in(self, folder: Path):  # -> pathspec.GitIgnoreSpec | None
+    def gitignore_in(self, folder: Path) -> Callable[[str], bool] | None:
         """The spec of `folder/.gitignore`, if there is one (the folder's listing says whether)."""
         self.consulted.folders.add(str(folder))
         gitignore = folder / ".gitignore"
@@ -243,7 +264,7 @@ class _Excluder:
             return self._any_pattern.match(relative) is not None
         return bool(self.spec.match_file(relative))
 
-    def gitignores_above(self, top: Path) -> Iterable[tuple[str, object]]:
+    def gitignores_above(self, top: Path) -> Iterable[tuple[str, Callable[[str], bool]]]:
         """`.gitignore` files between the config root and `top` (exclusive), which also apply inside it."""
         if not (str(top) + os.sep).startswith(self.root + os.sep):
             return

@@ -277,9 +277,12 @@ class FactBase:
         self._memo.clear()
         self._module_facts = {}  # a scratch copy's close leaves the module's own facts to it
 
-    def _cached(self, tag: str, node: ast.AST, compute: Callable[[], _T], order: str = "") -> _T | None:
+    def _cached(self, tag: str, node: ast.AST, compute: Callable[..., _T], order: str = "") -> _T | None:
+        """`compute(self, node)` (with `order`, when given) once per node, tag and order, guarded
+        against cycles. `compute` is the class's function, not a closure: nothing is allocated on
+        a hit (asked hundreds of thousands of times a run)."""
         key = (tag, id(node), order)
-        value = self._memo.get(key, _MISSING)  # one lookup on a hit (asked hundreds of thousands of times a run)
+        value = self._memo.get(key, _MISSING)  # one lookup on a hit
         if value is not _MISSING:
             return value  # type: ignore[return-value]
         active = self._active
@@ -287,7 +290,7 @@ class FactBase:
             return None  # a cycle (`x = x + v`) or runaway depth: no evidence
         active.add(key)
         try:
-            value = compute()
+            value = compute(self, node, order) if order else compute(self, node)
         finally:
             active.discard(key)
         self._memo[key] = value
@@ -408,7 +411,7 @@ class FactBase:
     # -- kind --------------------------------------------------------------------------------
     def kind_of(self, node: ast.AST) -> Kind | None:
         """The geometric kind of an expression, or None."""
-        return self._cached("kind", node, lambda: self._kind(node))
+        return self._cached("kind", node, FactBase._kind)
 
     def is_free(self, node: ast.AST) -> bool:
         """A free vector (direction, normal, velocity...): rotated only, never translated."""
@@ -571,7 +574,7 @@ class FactBase:
 
     def function_summary(self, call: ast.Call) -> FunctionSummary | None:
         """What the called helper does (a function of this module, or of a project module it imports)."""
-        return self._cached("summary", call, lambda: self._function_summary(call))
+        return self._cached("summary", call, FactBase._function_summary)
 
     def _function_summary(self, call: ast.Call) -> FunctionSummary | None:
         found = self.called_function(call)
@@ -783,7 +786,7 @@ class FactBase:
     def has_geometric_evidence(self, node: ast.AST) -> bool:
         """Whether a point-like expression is visibly geometric (not a file offset, a cursor
         position or a tuple): a strong or frame-stating name, a mesh attribute, or array flow."""
-        return bool(self._cached("evidence", node, lambda: self._evidence(node)))
+        return bool(self._cached("evidence", node, FactBase._evidence))
 
     def _evidence(self, node: ast.AST) -> bool:
         if isinstance(node, ast.Name):
@@ -812,7 +815,7 @@ class FactBase:
     def translating_library_object(self, node: ast.AST) -> str | None:
         """"PyKDL.Frame" or "spatialmath.SE3" when `node` is one (built directly, through a
         variable, or returned by a helper of this module): `*` with them translates vectors."""
-        return self._cached("library", node, lambda: self._library_object(node))
+        return self._cached("library", node, FactBase._library_object)
 
     def _library_object(self, node: ast.AST) -> str | None:
         if isinstance(node, ast.Name):
@@ -846,7 +849,7 @@ class FactBase:
         return None if fact is None else fact.frames
 
     def frame_fact(self, node: ast.AST, order: str = DST_FIRST) -> FrameFact | None:
-        return self._cached("frames", node, lambda: self._frames(node, order), order)
+        return self._cached("frames", node, FactBase._frames, order)
 
     def readings(self) -> tuple[str, ...]:
         """The orders a rule must check: a frame problem is reported only when every reading has it."""
@@ -1066,12 +1069,12 @@ class FactBase:
     # -- homogeneous coordinates ---------------------------------------------------------------
     def homogeneous(self, node: ast.AST) -> Homogeneous | None:
         """The homogeneous construction `node` is (directly, or through a variable), or None."""
-        return self._cached("homog", node, lambda: self._homogeneous(node))
+        return self._cached("homog", node, FactBase._homogeneous)
 
     def homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
         """The homogeneous value whose construction is exactly `node` (including an `np.ones(4)`
         buffer filled later), or None."""
-        return self._cached("built", node, lambda: self._homogeneous_built_by(node))
+        return self._cached("built", node, FactBase._homogeneous_built_by)
 
     def _homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
         if not self._may_build_homogeneous(node):
