@@ -72,7 +72,8 @@ def discover(
     """
     root = config_root(config).resolve()
     patterns = exclude_patterns(config)
-    question = (os.getcwd(), str(root), patterns, force_exclude, tuple(str(path) for path in paths))
+    # (a named folder that is a link asks another question once the link points elsewhere)
+    question = (os.getcwd(), str(root), patterns, force_exclude, tuple((str(path), os.path.realpath(path)) for path in paths))
     if cache is not None and not all(path.is_dir() for path in paths):
         cache = None  # files named one by one (pre-commit's way) need no listing, and their lists vary
     # (a named folder that still is one, each listed folder with its mtime unchanged: the same files)

@@ -304,3 +304,18 @@ def test_files_named_one_by_one_store_no_listing(cli_real):
     _age_folders(cli_real.project)
     cli_real("check", "--format", "json", "app/main.py")
     assert not list(cli_real.cache_dir.glob("discovery-*.json"))
+
+
+def test_a_named_folder_that_is_a_link_is_listed_again_once_it_points_elsewhere(cli_real):
+    cli_real.write("one/a.py", "x = 1\n")
+    cli_real.write("two/a.py", "x = 1\n")
+    cli_real.write("two/b.py", "x = 2\n")
+    (cli_real.project / "current").symlink_to("one")
+    _age_folders(cli_real.project)
+    assert re.search(r"files: 1,", cli_real("check", "--verbose", "--format", "json", "current").stderr)
+    link = cli_real.project / "current"
+    folder = os.stat(cli_real.project)
+    link.unlink()
+    link.symlink_to("two")
+    os.utime(cli_real.project, ns=(folder.st_atime_ns, folder.st_mtime_ns))  # only the link's target tells
+    assert re.search(r"files: 2,", cli_real("check", "--verbose", "--format", "json", "current").stderr)
