@@ -227,3 +227,17 @@ def test_names_that_say_quaternion_are_not_angles() -> None:
         return pose
     """
     assert codes(source) == []
+
+
+def test_webots_roll_pitch_yaw_are_radians_for_the_unit_rules() -> None:
+    source = """
+    import math
+
+    def heading(robot):
+        imu = robot.getDevice("inertial unit")
+        yaw = imu.getRollPitchYaw()[2]
+        return math.radians(yaw), math.degrees(yaw)
+    """
+    found = lint_source(textwrap.dedent(source), "node.py", rules=[rule_by_code("GEO305")])
+    assert [(finding.line, finding.code) for finding in found] == [(7, "GEO305")]
+    assert "`controller.InertialUnit.getRollPitchYaw` returns its angles in radians" in found[0].message

@@ -27,7 +27,7 @@ from collections import Counter
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from geolint.factbase.angles import DEGREES, RADIANS, RETURNED_ANGLES, ROTATION_VECTOR_READERS
+from geolint.factbase.angles import DEGREES, EULER_METHOD_NAMES, RADIANS, RETURNED_ANGLES, RETURNED_EULER_METHODS, ROTATION_VECTOR_READERS
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import (
@@ -225,6 +225,10 @@ class AngleUnits:
         returned = RETURNED_ANGLES.get(qualified)
         if returned is not None:
             return Unit(returned, f"`{qualified}` returns its angles in {_word(returned)}", False)
+        method = EULER_METHOD_NAMES.get(call.func.attr) if isinstance(call.func, ast.Attribute) and not call.args else None
+        if method is not None:  # `imu.getRollPitchYaw()`: matched by its camelCase name on any receiver
+            returned = RETURNED_EULER_METHODS[method][0]
+            return Unit(returned, f"`{method}` returns its angles in {_word(returned)}", False)
         if isinstance(call.func, ast.Attribute) and call.func.attr in ("as_euler", "magnitude") and not call.keywords:
             from geolint.factbase.rotations import is_scipy_rotation_value
 

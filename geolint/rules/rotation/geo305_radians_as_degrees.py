@@ -40,7 +40,8 @@ class RadiansAsDegrees(FactRule):
     `math.acos`), a previous `np.radians`, scipy's `as_euler` without `degrees=True`, a library's
     Euler conversion (tf's `euler_from_quaternion` / `euler_from_matrix`, transforms3d's
     `quat2euler` / `mat2euler`, pytransform3d's `euler_from_*`, pybullet's
-    `getEulerFromQuaternion`; each element, unpacked or indexed), `np.pi`,
+    `getEulerFromQuaternion`, Webots' `InertialUnit.getRollPitchYaw()`; each element, unpacked or
+    indexed), `np.pi`,
     or a name that says so (`theta_rad`, `yaw_radians`), followed through local variables and
     halving or negation, and through project helpers whose every `return` is in radians. A value
     in radians passed to a project helper that hands the parameter unchanged to one of those
