@@ -27,7 +27,14 @@ from collections import Counter
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from geolint.factbase.angles import DEGREES, EULER_METHOD_NAMES, RADIANS, RETURNED_ANGLES, RETURNED_EULER_METHODS, ROTATION_VECTOR_READERS
+from geolint.factbase.angles import (
+    DEGREES,
+    EULER_METHOD_NAMES,
+    RADIANS,
+    RETURNED_ANGLES,
+    RETURNED_EULER_METHODS,
+    ROTATION_VECTOR_READERS,
+)
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import (
