@@ -13,7 +13,7 @@ import os
 import threading
 from collections import OrderedDict
 from dataclasses import dataclass, field
-from typing import Any, Union
+from typing import Any, Callable, Union
 
 from geolint.lint_types import Config
 
@@ -94,6 +94,9 @@ class ModuleIndex:
         self.by_type: dict[type, list[ast.AST]] = {}  # in source (pre-)order
         self.self_attribute_stores: dict[str, list[ast.expr]] = {}  # `self.x = value` anywhere in a class
         self._lines: list[str] | None = None
+        # where each line starts in the source, and the lines (`model._offset`'s character offsets)
+        self.line_starts: list[int] | None = None
+        self.line_texts: list[str] | None = None
         # Past `depth_limit` levels (the module node is level 1) the walk stops: `too_deep` is then
         # True and `too_deep_at` the first node (source order) on the first level past it that has
         # a position (the guards' depth check, measured on the same walk)
@@ -346,7 +349,6 @@ class ModuleIndex:
         """Drop what queries built on the index (merged node lists, lines, flow tables): they are
         rebuilt on demand, and a kept index then takes no more memory than a fresh one."""
         self._merged = {}
-        self.__dict__.pop("_lines", None)
         self._lines = None
         self.flow = {}
 
@@ -361,7 +363,7 @@ class ModuleIndex:
         found = self._merged.get(kinds)
         if found is None:
             found = [node for kind in kinds for node in self.by_type.get(kind, [])]
-            positioned = all("lineno" in kind._attributes for kind in kinds)  # then in C, not `_position`
+            positioned = all("lineno" in getattr(kind, "_attributes", ()) for kind in kinds)  # then in C, not `_position`
             found.sort(key=_LINE_AND_COLUMN if positioned else _position)
             self._merged[kinds] = found
         return found
@@ -407,11 +409,11 @@ class ModuleIndex:
             return None
         if end is None:
             return None
-        lines = self.__dict__.get("_lines")
+        lines = self._lines
         if lines is None:
             from geolint.engine import split_lines  # \n, \r\n and \r, not \f: as ast counts lines
 
-            lines = self.__dict__["_lines"] = split_lines(self.source)
+            lines = self._lines = split_lines(self.source)
         if not 0 <= first <= last < len(lines):
             return None
         if first == last:
@@ -467,7 +469,7 @@ _MATMUL_METHODS = ("dot", "matmul")
 _SCOPE_MAKERS = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 # What the walk records for the nodes that bind names, make scopes, return or multiply matrices
 # (by exact type, as `ast` makes them: one dictionary look-up per node).
-_RECORDERS = {
+_RECORDERS: dict[type, Callable[[ModuleIndex, Any, Scope], Scope]] = {
     ast.FunctionDef: ModuleIndex._record_function, ast.AsyncFunctionDef: ModuleIndex._record_function,
     ast.Lambda: ModuleIndex._record_lambda, ast.ClassDef: ModuleIndex._record_class,
     ast.Assign: ModuleIndex._record_assign, ast.AnnAssign: ModuleIndex._record_annotated,

@@ -23,7 +23,7 @@ import builtins
 import sys
 import re
 from dataclasses import dataclass
-from typing import Callable, Iterator, TypeVar
+from typing import Callable, Iterator, Literal, TypeVar
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase import summaries
@@ -138,9 +138,11 @@ def number(node: ast.AST | None) -> int | float | None:
     if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
         inner = number(node.operand)
         return None if inner is None else -inner
-    if isinstance(node, ast.Constant) and type(node.value) in (int, float):
-        # 1e999 is inf and a 400-digit integer overflows a float: no value to reason about.
-        return node.value if abs(node.value) <= sys.float_info.max else None  # type: ignore[no-any-return]
+    if isinstance(node, ast.Constant):
+        value = node.value
+        if type(value) is int or type(value) is float:  # not a bool
+            # 1e999 is inf and a 400-digit integer overflows a float: no value to reason about.
+            return value if abs(value) <= sys.float_info.max else None
     return None
 
 
@@ -392,7 +394,7 @@ class FactBase:
         """`a @ b`, `a.dot(b)`, `np.dot(a, b)`, `np.matmul(a, b)`, `torch.matmul/bmm(a, b)`."""
         kind = type(node)
         if kind is ast.BinOp:
-            return MatMul(node, node.left, node.right) if type(node.op) is ast.MatMult else None  # type: ignore[attr-defined]
+            return MatMul(node, node.left, node.right) if type(node.op) is ast.MatMult else None  # type: ignore[attr-defined,arg-type]
         # asked of every call by several rules: the callee's last name rules out nearly all at once
         if isinstance(node, ast.Call) and self.called_name(node.func) in _MATMUL_CALL_NAMES:
             positional = positional_args(node)
@@ -1055,7 +1057,7 @@ class FactBase:
         # a result is declared when the operands its frames come from are
         if left.is_operator and right.is_operator:
             if same_frame(left.src, right.dst) is True:
-                operator = "rotation" if left.operator == right.operator == "rotation" else "transform"
+                operator: Literal["rotation", "transform"] = "rotation" if left.operator == right.operator == "rotation" else "transform"
                 declared = left_fact.declared and right_fact.declared
                 return FrameFact(NameFrames(dst=left.dst, src=right.src, operator=operator), evidence, declared)
             return None
@@ -1202,13 +1204,14 @@ class FactBase:
         widths = [number(width) for width in _flat_literal(positional[1])]
         if qualified == "torch.nn.functional.pad":  # (left, right) of the last axis first
             appends_one = len(widths) >= 2 and widths[:2] == [0, 1] and not any(widths[2:])
-            mode, value = (positional[2:3] or [None])[0], (positional[3:4] or [None])[0]
+            mode: ast.expr | None = positional[2] if len(positional) > 2 else None
+            value: ast.expr | None = positional[3] if len(positional) > 3 else None
             value_word = "value"
         elif qualified is not None and qualified.rpartition(".")[0] in vocab.ARRAY_MODULES:
             # numpy's per-axis pairs, the last axis last; a bare `(0, 1)` pads every axis
             pairs = positional[1].elts if isinstance(positional[1], (ast.Tuple, ast.List)) else []
             appends_one = len(pairs) >= 2 and all(isinstance(pair, (ast.Tuple, ast.List)) for pair in pairs) and widths == [0] * (2 * len(pairs) - 1) + [1]
-            mode, value, value_word = (positional[2:3] or [None])[0], None, "constant_values"
+            mode, value, value_word = positional[2] if len(positional) > 2 else None, None, "constant_values"
         else:
             return None
         mode_keyword, value_keyword = keyword(node, "mode"), keyword(node, value_word)
@@ -1220,7 +1223,7 @@ class FactBase:
             return Homogeneous(inner=positional[0], w=0, construction=node, fixed=None, explicit=False)
         return self._with_w(node, positional[0], value, explicit=False)
 
-    def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[ast.AST, str]] | None]:
+    def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[ast.AST | _LastName, str]] | None]:
         """The constant w a construction appends, and the edits (node, new text) that give the other w."""
         literal = number(node)
         if literal in (0, 1) and isinstance(node, ast.Constant):
@@ -1460,7 +1463,7 @@ def replace_span(index: ModuleIndex, outer: ast.AST, edits: list[tuple[ast.AST |
                 pieces.append((start - base, end - base, new))
                 continue
             end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[arg-type]
-            start = end - len(node.attr)
+            start = None if end is None else end - len(node.attr)
         else:
             start = _offset(index, node.lineno, node.col_offset)  # type: ignore[attr-defined]
             end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined,arg-type]
@@ -1478,7 +1481,7 @@ def _offset(index: ModuleIndex, line: int | None, byte_column: int | None) -> in
     """The character offset in the module's source of an ast (line, UTF-8 byte column)."""
     if line is None or byte_column is None:
         return None
-    starts = index.__dict__.get("_line_starts")
+    starts = index.line_starts
     if starts is None:
         from geolint.engine import split_lines
 
@@ -1486,9 +1489,8 @@ def _offset(index: ModuleIndex, line: int | None, byte_column: int | None) -> in
         starts = [0]
         for text in lines:
             starts.append(starts[-1] + len(text))
-        index.__dict__["_line_starts"] = starts
-        index.__dict__["_line_texts"] = lines
-    lines = index.__dict__["_line_texts"]
+        index.line_starts, index.line_texts = starts, lines
+    lines = index.line_texts or []
     if not 1 <= line <= len(lines):
         return None
     text = lines[line - 1]
