@@ -514,11 +514,17 @@ def _word(unit: str | None) -> str:
     return "degrees" if unit == DEGREES else "radians"
 
 
+def may_read_radians(called: str) -> bool:
+    """Whether a call named `called` (`FactBase.called_name`) can be one `radian_arguments` knows
+    (trig and `degrees` / `rad2deg` included): the cheap first test, asked of every call of a module.
+    For any other name `radian_arguments` is None and `is_trig_or_conversion` is False."""
+    return called in _RADIAN_API_NAMES or called.startswith(("euler2", "axangle2")) or called.endswith(("_from_euler", "_from_angle"))
+
+
 def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
     """The angle arguments of a call to a radian API, or None when the call is not one (or opted into degrees)."""
     func = node.func
-    called = facts.called_name(func) or ""
-    if not (called in _RADIAN_API_NAMES or called.startswith(("euler2", "axangle2")) or called.endswith(("_from_euler", "_from_angle"))):
+    if not may_read_radians(facts.called_name(func) or ""):
         return None  # named like none of the APIs below (asked of every call of a module)
     positional = positional_args(node)
     name = last_name(func) or ""

@@ -20,6 +20,7 @@ from geolint.rules.rotation.angle_units import (
     enclosing_class,
     format_angle,
     is_trig_or_conversion,
+    may_read_radians,
     name_unit,
     radian_arguments,
     report_hand_conversion_of_converted,
@@ -42,6 +43,7 @@ class _GateOrDivisionByPi:
     def search_with(self, source: str, config: object, /) -> bool:
         return GATE_TRIGGER.search_with(source, config) or _DIVIDES_BY_PI.search(source) is not None
 _RADIAN_CONVERTERS = frozenset({"math.radians", "numpy.radians", "numpy.deg2rad"})
+_MATH_TRIG = frozenset(f"math.{fn}" for fn in TRIG_FUNCTIONS)
 _ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
 _RADIAN_NAME = re.compile(r"(?i)rad")
 
@@ -259,10 +261,13 @@ class DegreesAsRadians(FactRule):
     ]
 
     def run(self) -> None:
-        units = self.facts.shared(AngleUnits)
-        self._arguments: dict[int, list[ast.expr] | None] = {}
-        for node in self.facts.index.nodes(ast.Call):
-            self._check(node, units)  # type: ignore[arg-type]
+        facts = self.facts
+        units = facts.shared(AngleUnits)
+        # the call being checked and its `radian_arguments` (asked by several checks of one call)
+        self._arguments: tuple[ast.Call | None, list[ast.expr] | None] = (None, None)
+        consumers = bool(self._degree_consumers())
+        for node in facts.index.nodes(ast.Call):
+            self._check(node, units, consumers)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.BinOp):
             report_hand_conversion_of_converted(self, node, DEGREES, units)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.Dict):
@@ -333,13 +338,26 @@ class DegreesAsRadians(FactRule):
 
     def _radian_arguments(self, node: ast.Call) -> list[ast.expr] | None:
         """`radian_arguments`, worked out once per call (three of the checks below ask)."""
-        key = id(node)
-        if key not in self._arguments:
-            self._arguments[key] = radian_arguments(self.facts, node)
-        return self._arguments[key]
+        checked, arguments = self._arguments
+        if checked is not node:
+            arguments = radian_arguments(self.facts, node)
+            self._arguments = (node, arguments)
+        return arguments
 
-    def _check(self, node: ast.Call, units: AngleUnits) -> None:
-        angles = self._radian_angles(node)
+    def _check(self, node: ast.Call, units: AngleUnits, consumers: bool) -> None:
+        # one cheap name test first: a call named like no radian API (most calls) has no radian
+        # arguments, so only the helper and shared-value checks can say anything about it
+        if may_read_radians(self.facts.called_name(node.func) or "") and self._check_radian_api(node, units):
+            return
+        if self._check_helper(node, units):
+            return
+        if consumers:
+            self._check_shared_value(node)
+
+    def _check_radian_api(self, node: ast.Call, units: AngleUnits) -> bool:
+        """The checks of a call that may be a radian API; True once one reports."""
+        trig = is_trig_or_conversion(self.facts, node)
+        angles = self._radian_angles(node, trig)
         if angles is not None:
             too_big = [value for value in angles if abs(value) > _TWO_PI]
             if too_big and last_name(node.func) == "getQuaternionFromEuler" and not all(_round_degrees(value) for value in too_big):
@@ -354,20 +372,14 @@ class DegreesAsRadians(FactRule):
                     replacement=fix,
                     fix_description="pass degrees=True",
                 )
-                return
-        if self._check_bound_literals(node):
-            return
-        if self._check_units(node, units):
-            return
-        if self._check_helper(node, units):
-            return
-        self._check_shared_value(node)
+                return True
+        return self._check_bound_literals(node, trig) or self._check_units(node, units)
 
-    def _check_bound_literals(self, node: ast.Call) -> bool:
+    def _check_bound_literals(self, node: ast.Call, trig: bool) -> bool:
         """`ORN = [90, 0, 0]` then `p.getQuaternionFromEuler(ORN)`: a name (or `self` attribute) whose
         every binding is a literal list of angles, passed whole to a radian API. Judged like literals
         in the call, and only when every large angle is a whole multiple of 15 (FP20)."""
-        if is_trig_or_conversion(self.facts, node):
+        if trig:
             return False  # trig of a named scalar has its own, name-guarded path
         for argument in self._radian_arguments(node) or []:
             bound = self._literal_list_bindings(argument)
@@ -606,15 +618,13 @@ class DegreesAsRadians(FactRule):
             return (number(node.left) is not None and units._is_pi(node.right)) or (number(node.right) is not None and units._is_pi(node.left))
         return units._is_pi(node)
 
-    def _radian_angles(self, node: ast.Call) -> list[float] | None:
-        """The literal angles of a call to a radian API, or None when the call is not one (or opted into degrees)."""
+    def _radian_angles(self, node: ast.Call, trig: bool) -> list[float] | None:
+        """The literal angles of a call to a radian API, or None when the call is not one (or opted into
+        degrees). `trig`: `is_trig_or_conversion` of the call."""
         facts = self.facts
         func = node.func
-        positional = positional_args(node)
-        name = last_name(func) or ""
-        qualified = facts.qualified_name(func) or ""
-        if name in TRIG_FUNCTIONS and len(positional) == 1 and (
-            facts.is_array_call(func, *TRIG_FUNCTIONS) or qualified in {f"math.{fn}" for fn in TRIG_FUNCTIONS}
+        if last_name(func) in TRIG_FUNCTIONS and len(positional := positional_args(node)) == 1 and (
+            facts.is_array_call(func, *TRIG_FUNCTIONS) or facts.qualified_name(func) in _MATH_TRIG
         ):
             value = number(positional[0])
             if value is None:
@@ -623,7 +633,7 @@ class DegreesAsRadians(FactRule):
                 return [float(value)]
             return None
         arguments = self._radian_arguments(node)
-        if arguments is None or is_trig_or_conversion(facts, node):
+        if arguments is None or trig:
             return None
         return _literals_of(arguments)
 
