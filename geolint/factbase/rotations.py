@@ -256,6 +256,8 @@ _PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]
     "invertTransform": ((1,), frozenset({"orientation"})),
     "calculateInverseKinematics": ((3,), frozenset({"targetOrientation"})),
 }
+# the names `pybullet_orientation_arguments` reads (its cheap first test, by `last_name`)
+PYBULLET_ORIENTATION_CALLS = frozenset(_PYBULLET_ORIENTATION_ARGUMENTS)
 _PYBULLET_CONSUMERS = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
 _DATA_PRODUCERS = {
     **{f"roma.{name}": SCALAR_LAST for name in (
@@ -331,6 +333,12 @@ def _imported_modules(facts: FactBase) -> list[str]:
         *(node.module for node in facts.index.nodes(ast.ImportFrom) if node.module),  # type: ignore[attr-defined]
         *(alias.name for node in facts.index.nodes(ast.Import) for alias in node.names),  # type: ignore[attr-defined]
     ]
+
+
+def mentions_isaac_core(facts: FactBase) -> bool:
+    """Whether the module imports something of Isaac Sim's core: without it `isaac_orientation_arguments`
+    is [] for every call (a rule asking of every call may test this once per module)."""
+    return _mentions_isaac_core(facts)
 
 
 def _mentions_isaac_core(facts: FactBase) -> bool:

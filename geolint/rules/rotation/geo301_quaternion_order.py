@@ -10,11 +10,13 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_label, field_order
 from geolint.factbase.model import FactBase, last_name, number, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import (
+    PYBULLET_ORIENTATION_CALLS,
     SCALAR_FIRST,
     SCALAR_LAST,
     accepts_stacks,
     api_label,
     isaac_orientation_arguments,
+    mentions_isaac_core,
     pybullet_orientation_arguments,
     quaternion_argument,
     quaternion_order,
@@ -88,6 +90,9 @@ class _GateOrOrderName:
 
 
 _GATE_OR_ORDER_NAME = _GateOrOrderName()
+# the expressions `QuaternionFlow.order_of` / `reorder_of` can know something of; for any other (a
+# constant, an f-string, a comparison...) both are None, found without following anything
+_MAY_HAVE_ORDER = frozenset({ast.UnaryOp, ast.BinOp, ast.Call, ast.Name, ast.Attribute, ast.Subscript, ast.List, ast.Tuple})
 _LETTERS = frozenset(_COMPONENTS)
 
 
@@ -409,8 +414,9 @@ class QuaternionOrder(FactRule):
     def run(self) -> None:
         facts = self.facts
         flow = facts.shared(QuaternionFlow)
+        isaac = mentions_isaac_core(facts)  # else no call has Isaac Sim orientation arguments
         for node in facts.index.nodes(ast.Call):
-            self._check(node, flow)  # type: ignore[arg-type]
+            self._check(node, flow, isaac)  # type: ignore[arg-type]
         self._check_component_writes(flow)
         self._check_formula_reads(flow)
         if _mentions_order_flag(facts.index.source):
@@ -538,13 +544,15 @@ class QuaternionOrder(FactRule):
                     return True
         return False
 
-    def _check(self, node: ast.Call, flow: QuaternionFlow) -> None:
+    def _check(self, node: ast.Call, flow: QuaternionFlow, isaac: bool) -> None:
         facts = self.facts
         self._check_helper(node, flow)
-        for orientation in pybullet_orientation_arguments(node):
-            self._check_value(node, orientation, SCALAR_LAST, flow)
-        for orientation in isaac_orientation_arguments(facts, node):
-            self._check_value(node, orientation, SCALAR_FIRST, flow)
+        if last_name(node.func) in PYBULLET_ORIENTATION_CALLS:
+            for orientation in pybullet_orientation_arguments(node):
+                self._check_value(node, orientation, SCALAR_LAST, flow)
+        if isaac:
+            for orientation in isaac_orientation_arguments(facts, node):
+                self._check_value(node, orientation, SCALAR_FIRST, flow)
         for given in node.keywords:  # `PoseTrajectory3D(orientations_quat_wxyz=q)`: the parameter states its order
             stated = name_order(given.arg) if given.arg is not None else None
             if given.arg is not None and stated in STANDARD_ORDERS:
@@ -605,7 +613,7 @@ class QuaternionOrder(FactRule):
         facts = self.facts
         if not node.args or any(isinstance(arg, ast.Starred) for arg in node.args) or not facts.may_have_summary(node):
             return
-        if not any(flow.reorder_of(arg) is not None or flow.order_of(arg) is not None for arg in node.args):
+        if not any(type(arg) in _MAY_HAVE_ORDER and (flow.reorder_of(arg) is not None or flow.order_of(arg) is not None) for arg in node.args):
             return  # nothing with a known order or a reorder: the helper's summary cannot matter
         summary = facts.function_summary(node)
         if summary is None:

@@ -94,6 +94,9 @@ def label(order: str) -> str:
 
 def name_order(name: str) -> str | None:
     """`quat_wxyz`, `orientations_quat_xyzw`: the order a name states in so many words."""
+    lowered = name.lower()
+    if "wxyz" not in lowered and "xyzw" not in lowered:
+        return None  # the regex's words are not there (asked of every name and keyword)
     found = {match.lower() for match in _NAME_ORDER.findall(name)}
     return found.pop() if len(found) == 1 else None
 
