@@ -700,6 +700,11 @@ def _early_exit_line(body: list[ast.stmt]) -> int:
     return 1 << 30
 
 
+# the expressions `AngleUnits.unit_of` can know a unit of; for any other (a constant, a list, a
+# comparison...) it is None, found without following anything
+_MAY_HAVE_UNIT = frozenset({ast.UnaryOp, ast.BinOp, ast.Call, ast.Name, ast.Attribute, ast.Subscript})
+
+
 def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:
     """The arguments of a call to a project helper that passes them, unchanged and unconditionally,
     to an API reading `unit` (directly or through further helpers), or names its parameter in that
@@ -711,7 +716,7 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
             return []
         units = facts.shared(AngleUnits) if units is None else units
         other = RADIANS if unit == DEGREES else DEGREES
-        if any((given := units.unit_of(arg)) is not None and given.unit == other for arg in args):
+        if any(type(arg) in _MAY_HAVE_UNIT and (given := units.unit_of(arg)) is not None and given.unit == other for arg in args):
             summary = facts.function_summary(call)
             if summary is not None:
                 return _summary_reads(facts, call, unit, summary)
