@@ -92,7 +92,7 @@ DEGREE_CONSUMERS: dict[str, tuple[tuple[int, str], ...]] = {
     # yaw and roll likewise (CARLA Python API reference, Docs/python_api.md, carla.Rotation)
     "carla.Rotation": ((0, "pitch"), (1, "yaw"), (2, "roll")),
 }
-_DEGREE_CONSUMER_NAMES = frozenset(qualified.rpartition(".")[2] for qualified in DEGREE_CONSUMERS)
+DEGREE_CONSUMER_NAMES = frozenset(qualified.rpartition(".")[2] for qualified in DEGREE_CONSUMERS)  # by `called_name`
 _GL_ROTATE = frozenset({"glRotatef", "glRotated"})
 _GL_PACKAGES = frozenset({"OpenGL", "pyglet"})  # `from pyglet.gl import *`: the usual way GL is imported
 
@@ -583,7 +583,7 @@ def is_trig_or_conversion(facts: FactBase, node: ast.Call) -> bool:
 def degree_arguments(facts: FactBase, call: ast.Call) -> list[ast.expr]:
     """The angle arguments of a library call that reads degrees (`DEGREE_CONSUMERS`), else [].
     `glRotatef` also counts under a star import of OpenGL or pyglet (the name is OpenGL's own)."""
-    if facts.called_name(call.func) not in _DEGREE_CONSUMER_NAMES:
+    if facts.called_name(call.func) not in DEGREE_CONSUMER_NAMES:
         return []  # the cheap test first: asked of every call
     qualified = facts.qualified_name(call.func) or ""
     found = DEGREE_CONSUMERS.get(qualified)

@@ -748,10 +748,14 @@ class QuaternionOrder(FactRule):
     def _check_component_writes(self, flow: QuaternionFlow) -> None:
         facts = self.facts
         for node in facts.index.nodes(ast.Dict):
+            if len(node.keys) < 4:  # type: ignore[attr-defined]
+                continue  # four components need four keys
             mapping = {string(key): value for key, value in zip(node.keys, node.values) if string(key) in _LETTERS}  # type: ignore[attr-defined]
             if len(mapping) == 4:
                 self._check_components(node, mapping, flow, '`"{letter}": {value}`')  # type: ignore[arg-type]
         for node in facts.index.nodes(ast.Call):
+            if len(node.keywords) < 4:  # type: ignore[attr-defined]
+                continue
             mapping = {given.arg: given.value for given in node.keywords if given.arg in _LETTERS}  # type: ignore[attr-defined]
             if len(mapping) == 4:
                 self._check_components(node, mapping, flow, "`{letter}={value}`")  # type: ignore[arg-type]

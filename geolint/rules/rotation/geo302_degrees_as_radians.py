@@ -13,6 +13,7 @@ from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.rotation.angle_units import (
+    DEGREE_CONSUMER_NAMES,
     DEGREES,
     RADIANS,
     AngleUnits,
@@ -491,9 +492,11 @@ class DegreesAsRadians(FactRule):
 
         def collect() -> list[tuple[ast.expr, ast.Call]]:
             found = []
-            for call in self.facts.index.nodes(ast.Call):
+            facts = self.facts
+            for call in facts.index.nodes(ast.Call):
                 assert isinstance(call, ast.Call)
-                found.extend((argument, call) for argument in degree_arguments(self.facts, call))
+                if facts.called_name(call.func) in DEGREE_CONSUMER_NAMES:  # `degree_arguments`' own first test
+                    found.extend((argument, call) for argument in degree_arguments(facts, call))
             return found
 
         return self.facts.module_fact("degree consumers", collect)
