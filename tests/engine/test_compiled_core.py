@@ -7,6 +7,7 @@ import os
 import shutil
 import subprocess
 import sys
+import sysconfig
 from pathlib import Path
 
 import pytest
@@ -38,6 +39,7 @@ def _check_fixtures(package_parent: Path) -> subprocess.CompletedProcess[str]:
 
 @pytest.mark.slow
 @pytest.mark.skipif(shutil.which("cc") is None and shutil.which("gcc") is None, reason="no C compiler")
+@pytest.mark.skipif(not (Path(sysconfig.get_paths()["include"]) / "Python.h").is_file(), reason="no Python headers")
 def test_the_compiled_core_finds_what_pure_python_finds(tmp_path):
     pytest.importorskip("mypyc")
     copy = tmp_path / "geolint"
