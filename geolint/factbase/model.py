@@ -571,8 +571,7 @@ class FactBase:
             return root is func and bool(self.index.star_imports) and self._star_imported_callee(func) is not None  # type: ignore[arg-type]
         # `from numpy import array` then `array(x)`: a third-party function has no summary either,
         # nor one of a package the project's folders do not hold (`gym.make`, `time.sleep`)
-        top = imported.split(".")[0]
-        return top not in vocab.THIRD_PARTY_ROOTS and (not top or not self.path or summaries.may_be_project_module(top, self.path))
+        return summaries.may_be_project_import(imported, self.path)
 
     def function_summary(self, call: ast.Call) -> FunctionSummary | None:
         """What the called helper does (a function of this module, or of a project module it imports)."""

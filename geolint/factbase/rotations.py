@@ -311,7 +311,7 @@ def isaac_orientation_arguments(facts: FactBase, call: ast.Call) -> list[ast.exp
     `RigidPrimView(...)`) or of `create_prim`, and the orientation of `set_world_pose(position, orientation)`,
     `set_local_pose`, `set_default_state`, `set_world_poses`, `set_local_poses` in a module that imports
     Isaac Sim's core (OmniGibson's prims, which take x, y, z, w, are left alone)."""
-    if not _mentions_isaac_core(facts):
+    if not mentions_isaac_core(facts):
         return []  # every call below is Isaac Sim's, which only an import of its core can bring in
     func = call.func
     if isinstance(func, ast.Attribute) and func.attr in _ISAAC_POSE_SETTERS:
@@ -338,10 +338,6 @@ def _imported_modules(facts: FactBase) -> list[str]:
 def mentions_isaac_core(facts: FactBase) -> bool:
     """Whether the module imports something of Isaac Sim's core: without it `isaac_orientation_arguments`
     is [] for every call (a rule asking of every call may test this once per module)."""
-    return _mentions_isaac_core(facts)
-
-
-def _mentions_isaac_core(facts: FactBase) -> bool:
     return facts.module_fact("mentions isaac core", lambda: any(name.startswith(_ISAAC_CORE) for name in _imported_modules(facts)))
 
 
@@ -349,7 +345,7 @@ def _imports_isaac_core(facts: FactBase) -> bool:
     """Isaac Sim's core, and not OmniGibson (whose prims take x, y, z, w)."""
 
     def compute() -> bool:
-        return _mentions_isaac_core(facts) and not any(name.startswith("omnigibson") for name in _imported_modules(facts))
+        return mentions_isaac_core(facts) and not any(name.startswith("omnigibson") for name in _imported_modules(facts))
 
     return facts.module_fact("imports isaac core", compute)
 

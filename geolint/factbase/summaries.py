@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Sequence
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase.index import ParamBinding, index_of_file  # no cycle: the index imports no fact base module
+from geolint.factbase.vocabulary import THIRD_PARTY_ROOTS
 
 if TYPE_CHECKING:
     from geolint.factbase.index import ModuleIndex
@@ -99,7 +100,7 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
     scope = facts.index.scopes.get(function)
     if scope is None:
         return summary
-    plain = {name for name in params if _only_bound_as_parameter(facts, scope, name)}
+    plain = {name for name in params if only_bound_as_parameter(scope, name)}
     # `return f(...)` of a summary not known yet on a cycle's first pass says nothing either way (the
     # cycle's later passes see what the other `return`s agree on)
     returns = [value for value in scope.returns if not _pending(facts, value)]
@@ -188,7 +189,7 @@ def _pending(facts: FactBase, value: ast.expr) -> bool:
     return summary is not None and summary.pending
 
 
-def _only_bound_as_parameter(facts: FactBase, scope, name: str) -> bool:  # type: ignore[no-untyped-def]
+def only_bound_as_parameter(scope, name: str) -> bool:  # type: ignore[no-untyped-def]
     """A parameter never rebound in its function (so what a callee does to it, it does to the argument)."""
     bound = scope.bindings.get(name, [])
     return len(bound) == 1 and isinstance(bound[0], ParamBinding) and name not in scope.augmented
@@ -499,6 +500,13 @@ def module_file(module: str, importer: str, level: int = 0) -> Path | None:
 def module_path(module: str, importer: str, level: int = 0) -> str | None:
     """`module_file` as an absolute `str` path."""
     return _module_file_from(module, _folder_of(importer), level)
+
+
+def may_be_project_import(imported: str, importer: str) -> bool:
+    """Whether a name imported as `imported` (`slam.geometry.apply_pose`) may be a project module's:
+    not a known third-party package (`numpy`, `torch`), and one a project folder can hold."""
+    top = imported.split(".")[0]
+    return top not in THIRD_PARTY_ROOTS and (not top or not importer or may_be_project_module(top, importer))
 
 
 def may_be_project_module(top: str, importer: str) -> bool:

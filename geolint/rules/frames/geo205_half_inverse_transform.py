@@ -16,8 +16,7 @@ from geolint.factbase.pose_parts import (
     transposed_operand,
 )
 from geolint.factbase.reaching import Unpacked, resolve, scope_of
-from geolint.factbase.summaries import may_be_project_module
-from geolint.factbase.vocabulary import THIRD_PARTY_ROOTS
+from geolint.factbase.summaries import may_be_project_import
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import MATMUL_TEXT, POSE_PART_TEXT, AllOf, AnyOf
 
@@ -312,10 +311,7 @@ class HalfInverseTransform(AstRule):
         if root is call.func and root.id in index.functions:
             return True
         imported = index.imports.get(root.id)
-        if imported is None:
-            return False
-        top = imported.split(".")[0]
-        return top not in THIRD_PARTY_ROOTS and (not top or may_be_project_module(top, self.context.path))
+        return imported is not None and may_be_project_import(imported, self.context.path)
 
     @staticmethod
     def _module_stores_key_computed(product: ast.expr, index: ModuleIndex) -> bool:

@@ -47,6 +47,7 @@ from geolint.factbase.model import (
     walk_within,
 )
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
+from geolint.factbase.summaries import only_bound_as_parameter
 
 if TYPE_CHECKING:
     from geolint.factbase.summaries import FunctionSummary
@@ -851,7 +852,7 @@ def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, .
     scope = facts.index.scopes.get(init)
     if scope is None or not parameters:
         return parameters, {}
-    plain = {name for name in parameters if _plain_parameter(scope, name)}
+    plain = {name for name in parameters if only_bound_as_parameter(scope, name)}
     loads, stores = _self_attributes(facts)
     held: dict[str, int] = {}  # `self.<attr> = <parameter>`, the class's one store of `self.attr` -> the parameter's index
     direct: list[tuple[ast.Call, ast.Name]] = []  # `np.radians(yaw)` in `__init__` itself
@@ -909,11 +910,6 @@ def _self_attributes(facts: FactBase) -> tuple[dict[str, list[ast.Attribute]], d
         return loads, stores
 
     return facts.module_fact("self attributes", collect)
-
-
-def _plain_parameter(scope: Scope, name: str) -> bool:
-    bound = scope.bindings.get(name, [])
-    return len(bound) == 1 and isinstance(bound[0], ParamBinding) and name not in scope.augmented
 
 
 def wrong_unit_passed(

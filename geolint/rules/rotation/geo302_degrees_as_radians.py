@@ -593,8 +593,8 @@ class DegreesAsRadians(FactRule):
         for statement in ast.walk(scope):
             if isinstance(statement, (ast.Assign, ast.AugAssign)):
                 targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
-                named = [target for target in targets for name in ast.walk(target) if isinstance(name, ast.Name) and name_unit(name.id) == DEGREES]
-                if any(named_value and self._pi_arithmetic(named_value, units) for named_value in ([statement.value] if named else [])):
+                named = any(isinstance(name, ast.Name) and name_unit(name.id) == DEGREES for target in targets for name in ast.walk(target))
+                if named and self._pi_arithmetic(statement.value, units):
                     return True
             elif isinstance(statement, ast.BinOp) and self._pi_arithmetic(statement, units, degree_operand=True):
                 return True

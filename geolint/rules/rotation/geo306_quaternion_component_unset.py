@@ -6,7 +6,7 @@ import ast
 
 from geolint.factbase.index import FUNCTION_NODES
 from geolint.factbase.messages import MessageTypes
-from geolint.factbase.model import dotted_name, walk_within
+from geolint.factbase.model import FactBase, dotted_name, walk_within
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
@@ -243,7 +243,7 @@ def _source(target: ast.Attribute, value: ast.expr) -> str | None:
     return None
 
 
-def _elements(facts: object, targets: list[ast.Attribute], assignments: list[ast.Assign]) -> str | None:
+def _elements(facts: FactBase, targets: list[ast.Attribute], assignments: list[ast.Assign]) -> str | None:
     """For `o.x = s[i]`, `o.y = s[i + 1]`, `o.z = s[i + 2]` (each maybe through one call `f(s[k], *rest)`
     with the same `f` and the same other arguments): how the finding names the three; else None."""
     shapes = set()
@@ -251,8 +251,8 @@ def _elements(facts: object, targets: list[ast.Attribute], assignments: list[ast
         value = statement.value
         wrapper = None
         if isinstance(value, ast.Call) and value.args and not isinstance(value.args[0], ast.Starred):
-            rest = [facts.code_of(argument) for argument in value.args[1:]] + [facts.code_of(item) for item in value.keywords]  # type: ignore[attr-defined]
-            wrapper = (facts.code_of(value.func), tuple(rest))  # type: ignore[attr-defined]
+            rest = [facts.code_of(argument) for argument in value.args[1:]] + [facts.code_of(item) for item in value.keywords]
+            wrapper = (facts.code_of(value.func), tuple(rest))
             value = value.args[0]
         if not isinstance(value, ast.Subscript) or not isinstance(value.slice, ast.Constant) or type(value.slice.value) is not int:
             return None
