@@ -7,8 +7,11 @@ a test fails when the committed file is out of date).
 
 from __future__ import annotations
 
+import ast
 import inspect
 import re
+import sys
+from pathlib import Path
 from typing import TYPE_CHECKING, Sequence
 
 if TYPE_CHECKING:
@@ -18,8 +21,31 @@ SECTION = re.compile(r"^##\s+(?P<title>.+?)\s*$", re.MULTILINE)
 
 
 def rule_doc(rule: type[RuleAttributes]) -> str:
-    """The rule's documentation (its docstring, dedented)."""
-    return inspect.cleandoc(rule.__doc__ or "").strip()
+    """The rule's documentation (its docstring, dedented), with the shared section on naming
+    conventions for the rules that read names as frames."""
+    doc = inspect.cleandoc(_docstring(rule)).strip()
+    if rule.documents_naming:
+        from geolint.factbase.rule_support import NAMING_OPTIONS
+
+        doc = f"{doc}\n\n{NAMING_OPTIONS}"
+    return doc
+
+
+def _docstring(rule: type[RuleAttributes]) -> str:
+    """The class docstring; for a class compiled by mypyc (which does not keep it), read from the
+    module's source file, which the compiled build ships beside the extension."""
+    module_file = getattr(sys.modules.get(rule.__module__), "__file__", None) or ""
+    if module_file.endswith(".py"):
+        return rule.__doc__ or ""
+    source = Path(module_file).with_name(f"{rule.__module__.rpartition('.')[2]}.py")
+    try:
+        tree = ast.parse(source.read_text(encoding="utf-8"))
+    except (OSError, SyntaxError, ValueError):
+        return ""
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ClassDef) and node.name == rule.__name__:
+            return ast.get_docstring(node, clean=False) or ""
+    return ""
 
 
 def doc_sections(rule: type[RuleAttributes]) -> dict[str, str]:

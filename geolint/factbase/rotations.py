@@ -134,7 +134,7 @@ def spread_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
         return None
     qualified = facts.qualified_name(call.func) or ""
     if (
-        qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", _GTSAM_ROT3_QUATERNION, *_EIGEN_QUATERNIONS)
+        qualified in _COMPONENT_CONSTRUCTORS
         or (qualified.startswith("geometry_msgs.") and qualified.endswith(".Quaternion"))
         or is_numpy_quaternion_constructor(facts, qualified)
     ):
@@ -424,6 +424,10 @@ _EIGEN_QUATERNIONS = ("pinocchio.Quaternion", "eigenpy.Quaternion")
 # GTSAM: `Rot3.Quaternion(w, x, y, z)` "Create from Quaternion coefficients" (gtsam/geometry/Rot3.h; C++
 # `Rot3::quaternion(double w, double x, double y, double z)` in older releases, `Quaternion` in the wrapper)
 _GTSAM_ROT3_QUATERNION = "gtsam.Rot3.Quaternion"
+# constructors taking the four components one by one (geometry_msgs and numpy-quaternion are tested apart)
+_COMPONENT_CONSTRUCTORS = frozenset(
+    {"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", _GTSAM_ROT3_QUATERNION, *_EIGEN_QUATERNIONS}
+)
 # MuJoCo's quaternions are (w, x, y, z) (its own tests expect the identity `{1, 0, 0, 0}` from mju_mat2Rot);
 # the utility functions write into their first argument: `mju_quat2Mat(res, quat)`, `mju_quat2Vel(res, quat,
 # dt)`, `mju_quatIntegrate(quat, vel, scale)`. Name -> position of the quaternion read.

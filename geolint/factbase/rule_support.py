@@ -3,13 +3,12 @@
 from __future__ import annotations
 
 import ast
-import inspect
-from typing import NamedTuple, Sequence, TypeVar
+from typing import ClassVar, NamedTuple, Sequence
 
 from geolint.factbase.model import FactBase, FrameFact, MatMul
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.lint_types import Applicability
-from geolint.rules.base import AstRule
+from geolint.rules.base import AstRule, RuleTrigger
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -17,7 +16,7 @@ from geolint.semantic.names import NameFrames, same_frame
 # only where the convention is stated (see geolint.factbase.conventions).
 STATED = {"naming": "dst-first"}
 
-# The `## Options` section of every rule that reads frames from names (one text, appended by `documents_naming`).
+# The `## Options` section of every rule that reads frames from names (`documents_naming = True`; one text).
 NAMING_OPTIONS = """\
 ## Options
 `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
@@ -34,20 +33,11 @@ Elsewhere a finding needs an explicit declaration: `from_frame=`/`to_frame=`, `.
 tf2's `lookup_transform(target, source, t)`, pycolmap's `cam_from_world`, BOP's `cam_R_w2c`,
 geolint's types (`T: TransformMatrix["world", "cam"]`, `p: Point[Camera]`)."""
 
-_Rule = TypeVar("_Rule", bound=type)
-
-
-def documents_naming(rule: _Rule) -> _Rule:
-    """Append the shared `## Options` section on names as frames to a frame rule's documentation."""
-    rule.__doc__ = f"{inspect.cleandoc(rule.__doc__ or '')}\n\n{NAMING_OPTIONS}"
-    return rule
-
-
 class FactRule(AstRule):
     """An `AstRule` that reads the module's shared fact base (`self.facts`)."""
 
     needs_facts = True
-    triggers = GATE_TRIGGER
+    triggers: ClassVar[RuleTrigger | None] = GATE_TRIGGER
 
     @property
     def facts(self) -> FactBase:

@@ -236,9 +236,9 @@ def _record_call(
         read = unit_read_by(facts, call, arguments[index])
         if read is not None:
             _add_unit_read(summary, own, read, f"`{facts.code_of(call.func)}`")
-        order = quaternion_read_by(facts, call, arguments[index])
-        if order is not None:
-            _add_quaternion_read(summary, own, order, f"`{facts.code_of(call.func)}`")
+        read_order = quaternion_read_by(facts, call, arguments[index])
+        if read_order is not None:
+            _add_quaternion_read(summary, own, read_order, f"`{facts.code_of(call.func)}`")
 
 
 def _record_rotation_vector(facts: FactBase, call: ast.Call, plain: set[str], summary: FunctionSummary) -> None:

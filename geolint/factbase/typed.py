@@ -13,10 +13,10 @@ from __future__ import annotations
 import ast
 
 from geolint.factbase.model import last_name
-from geolint.semantic.names import NameFrames
+from geolint.semantic.names import NameFrames, Operator
 
 # geolint's generic types by what they state: operators take (Dst, Src), values one frame
-OPERATOR_TYPES = {
+OPERATOR_TYPES: dict[str, Operator] = {
     "Transform": "transform",
     "TransformMatrix": "transform",
     "RotationMatrix": "rotation",

@@ -13,6 +13,7 @@ from typing import Any, Sequence
 
 from geolint._version import __version__
 from geolint.api import rule_url
+from geolint.docs import rule_doc
 from geolint.lint_types import Finding, Severity
 
 SCHEMA_URI = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -37,7 +38,7 @@ def _rule_summary(code: str, fallback: str) -> str:
         rule = rule_by_code(code)
     except Exception:  # a broken rule module must not stop the report from being written
         rule = None
-    doc = (rule.__doc__ or "").strip() if rule is not None else ""
+    doc = rule_doc(rule) if rule is not None else ""
     return doc.splitlines()[0].strip() if doc else fallback
 
 

@@ -99,6 +99,9 @@ class RuleAttributes:
     triggers: ClassVar[RuleTrigger | None] = None
     VALID: ClassVar[Sequence[Valid]] = ()
     INVALID: ClassVar[Sequence[Invalid]] = ()
+    # Frame rules that read names as frames share one `## Options` section on naming conventions,
+    # which the documentation appends (`geolint.factbase.rule_support.NAMING_OPTIONS`).
+    documents_naming: ClassVar[bool] = False
 
 
 class AstRule(RuleAttributes):

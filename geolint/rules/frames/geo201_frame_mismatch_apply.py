@@ -4,11 +4,10 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
-from geolint.factbase.rule_support import documents_naming, STATED, Mismatch, ProductRule
+from geolint.factbase.rule_support import STATED, Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
-@documents_naming
 class FrameMismatchApply(ProductRule):
     """A transform is applied to a value expressed in a frame it does not map from.
 
@@ -43,6 +42,7 @@ class FrameMismatchApply(ProductRule):
 
     code = "GEO201"
     name = "frame-mismatch-apply"
+    documents_naming = True
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),

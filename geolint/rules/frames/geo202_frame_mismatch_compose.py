@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import EXTRINSICS_EVIDENCE, FrameFact, MatMul
-from geolint.factbase.rule_support import documents_naming, STATED, Mismatch, ProductRule
+from geolint.factbase.rule_support import STATED, Mismatch, ProductRule
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -18,7 +18,6 @@ WAYPOINT_WORDS = frozenset(
 )  # fmt: skip
 
 
-@documents_naming
 class FrameMismatchCompose(ProductRule):
     """Two transforms are composed although the inner frames do not match.
 
@@ -54,6 +53,7 @@ class FrameMismatchCompose(ProductRule):
 
     code = "GEO202"
     name = "frame-mismatch-compose"
+    documents_naming = True
 
     VALID = [
         Valid("T_world_tool = T_world_base @ T_base_tool\n"),

@@ -7,11 +7,10 @@ import ast
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.bosdyn import in_tform_words
 from geolint.factbase.model import FactBase, last_name, walk_within
-from geolint.factbase.rule_support import documents_naming, STATED, FactRule, Mismatch
+from geolint.factbase.rule_support import STATED, FactRule, Mismatch
 from geolint.semantic.names import NameFrames, same_frame
 
 
-@documents_naming
 class FrameMismatchAssign(FactRule):
     """A value is stored under a name that states another frame.
 
@@ -53,6 +52,7 @@ class FrameMismatchAssign(FactRule):
 
     code = "GEO203"
     name = "frame-mismatch-assign"
+    documents_naming = True
 
     VALID = [
         Valid("p_world = T_world_cam @ p_cam\n"),
@@ -107,7 +107,7 @@ class FrameMismatchAssign(FactRule):
             if isinstance(node, ast.Assign):
                 for target in node.targets:
                     self._check(target, node.value)
-            elif node.value is not None:
+            elif isinstance(node, ast.AnnAssign) and node.value is not None:
                 self._check(node.target, node.value)
 
     def _check(self, target: ast.expr, value: ast.expr) -> None:

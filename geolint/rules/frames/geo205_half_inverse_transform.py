@@ -186,7 +186,7 @@ class HalfInverseTransform(AstRule):
         index = index_of(tree)
         settled: set[ast.AST] = set()  # products already judged as part of a sum
         for node in index.nodes(ast.BinOp):
-            if isinstance(node.op, (ast.Add, ast.Sub)):
+            if isinstance(node.op, (ast.Add, ast.Sub)):  # type: ignore[attr-defined]
                 self._check_sum(node, index, settled)  # type: ignore[arg-type]
         for node in index.nodes(ast.BinOp, ast.Call):
             if node not in settled and matmul_operands(node) is not None:

@@ -77,7 +77,7 @@ class RotationIndexedAsPose(AstRule):
     ]
 
     def check(self, tree: ast.Module) -> None:
-        candidates: list[ast.Subscript] = []
+        candidates: list[tuple[ast.Subscript, ast.Name]] = []
         square_names: set[str] = set()  # names some assignment may make 3x3 (a cheap first cut)
         index = index_of(tree)
         for assign in index.nodes(ast.Assign):
@@ -88,15 +88,15 @@ class RotationIndexedAsPose(AstRule):
                 continue
             indices = subscript_parts(node)
             if len(indices) <= 2 and any(_past_third(part) for part in indices[:2]):
-                candidates.append(node)
-        for node in candidates:
-            if node.value.id not in square_names:  # type: ignore[attr-defined]
+                candidates.append((node, node.value))
+        for node, matrix in candidates:
+            if matrix.id not in square_names:
                 continue
-            if matrix_shape(node.value, index) != 3 or _resized_in_place(node.value, index):
+            if matrix_shape(matrix, index) != 3 or _resized_in_place(matrix, index):
                 continue
             self.report(
                 node,
-                f"`{node.value.id}` is a 3x3 rotation, but `{ast.unparse(node)}` indexes it as a 4x4 pose "
+                f"`{matrix.id}` is a 3x3 rotation, but `{ast.unparse(node)}` indexes it as a 4x4 pose "
                 "(there is no row or column 3): use the 4x4 pose it came from, or build one",
             )
 

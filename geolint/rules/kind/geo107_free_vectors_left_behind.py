@@ -5,6 +5,7 @@ from __future__ import annotations
 import ast
 import re
 from dataclasses import dataclass
+from typing import AbstractSet
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase.index import ParamBinding
@@ -307,7 +308,7 @@ class FreeVectorsLeftBehind(FactRule):
 
     def _check_members(self, function: ast.AST, body: list[ast.AST], layouts: _Layouts) -> None:
         stores = _stores(body)
-        moves: list[tuple[_Member, ast.AST, str]] = []
+        moves: list[tuple[_Member, ast.expr, str]] = []
         for target, value in stores:
             if not _may_hold_positions(target):
                 continue
@@ -360,13 +361,13 @@ class FreeVectorsLeftBehind(FactRule):
         columns = moved.columns or frozenset()
         if how == "mirrored":
             axis = next(iter(columns))
-            velocity = {column for column, component in velocity.items() if component == axis}
+            velocity_columns = {column for column, component in velocity.items() if component == axis}
         else:
-            velocity = set(velocity)
+            velocity_columns = set(velocity)
         written_columns = {column for m in written if m.columns is not None for column in m.columns}
         if any(m.columns is None and m.name is None for m in written) or (moved.owner, None) in touched:
             return []
-        missing_velocity = sorted(column for column in velocity if column not in written_columns)
+        missing_velocity = sorted(column for column in velocity_columns if column not in written_columns)
         if missing_velocity and not any(_overlaps(moved.owner, column, touched) for column in missing_velocity):
             found.append(f"velocity column{'s' if len(missing_velocity) > 1 else ''} {_span(missing_velocity)} ({source})")
         mirrored_vertical = how == "mirrored" and not columns & {0, 1}
@@ -473,7 +474,7 @@ class FreeVectorsLeftBehind(FactRule):
                 return argument, value
         return value, None
 
-    def _touched(self, body: list[ast.AST], skip_stackers: bool = False, skip_calls: set[int] = frozenset()) -> set[tuple[str, str | int | None]]:  # type: ignore[assignment]
+    def _touched(self, body: list[ast.AST], skip_stackers: bool = False, skip_calls: AbstractSet[int] = frozenset()) -> set[tuple[str, str | int | None]]:
         """(owner, member) pairs handed to a call or a product in the function (maybe rotated there):
         a member by name or column number, a whole value with None."""
         facts = self.facts

@@ -267,6 +267,36 @@ class QuaternionOrder(FactRule):
             "def load(data):\n    return {'quat': torch.roll(data[:, 3:7], 1, -1)}\n"
             "def show(orientation):\n    return tra.quaternion_matrix(np.roll(orientation, -1))\n"
         ),  # the module stores data rolled the other way: the second roll may undo the first
+        Valid(
+            "import numpy as np\nimport quaternion\nfrom scipy.spatial.transform import Rotation\n"
+            "def f(M):\n    x, y, z, w = Rotation.from_matrix(M).as_quat()\n    return np.quaternion(w, x, y, z)\n"
+        ),
+        Valid(  # without `import quaternion`, `np.quaternion` is not numpy-quaternion's type
+            "import numpy as np\nfrom scipy.spatial.transform import Rotation\n"
+            "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
+        ),
+        Valid(  # the unpacking names lie (w holds x ...), so [w, x, y, z] is scipy's x, y, z, w again
+            "from scipy.spatial.transform import Rotation\ndef target(euler):\n"
+            "    q = Rotation.from_euler('XYZ', euler).as_quat()\n    w, x, y, z = q\n"
+            "    return Rotation.from_quat([w, x, y, z]).as_matrix()\n"
+        ),
+        Valid(
+            "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef yaw(msg: VehicleOdometry):\n    q = msg.q\n"
+            "    return math.atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] ** 2 + q[3] ** 2))\n"
+        ),
+        Valid(  # yaw of (x, y, z, w) or roll of (w, x, y, z): the code does not say which
+            "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef angle(msg: VehicleOdometry):\n    q = msg.q\n"
+            "    return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
+        ),
+        Valid(
+            "import torch\nfrom .rotations import quat_conjugate, quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
+            "    mul = quat_mul(a, quat_conjugate(b, w_last), w_last)\n    vec = mul[:, :3] if w_last else mul[:, 1:]\n"
+            "    return 2 * torch.asin(torch.norm(vec, dim=-1).clamp(max=1.0))\n"
+        ),
+        Valid(  # the flag is not passed: the order is fixed
+            "import torch\nfrom .rotations import quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
+            "    mul = quat_mul(a, b, True)\n    return torch.norm(mul[:, :3], dim=-1)\n"
+        ),
     ]
     INVALID = [
         Invalid(
@@ -360,19 +390,6 @@ class QuaternionOrder(FactRule):
             "import numpy as np\nimport quaternion\nfrom scipy.spatial.transform import Rotation\n"
             "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
         ),
-        Valid(
-            "import numpy as np\nimport quaternion\nfrom scipy.spatial.transform import Rotation\n"
-            "def f(M):\n    x, y, z, w = Rotation.from_matrix(M).as_quat()\n    return np.quaternion(w, x, y, z)\n"
-        ),
-        Valid(  # without `import quaternion`, `np.quaternion` is not numpy-quaternion's type
-            "import numpy as np\nfrom scipy.spatial.transform import Rotation\n"
-            "def f(M):\n    return np.quaternion(*Rotation.from_matrix(M).as_quat())\n"
-        ),
-        Valid(  # the unpacking names lie (w holds x ...), so [w, x, y, z] is scipy's x, y, z, w again
-            "from scipy.spatial.transform import Rotation\ndef target(euler):\n"
-            "    q = Rotation.from_euler('XYZ', euler).as_quat()\n    w, x, y, z = q\n"
-            "    return Rotation.from_quat([w, x, y, z]).as_matrix()\n"
-        ),
         Invalid(  # the textbook yaw by index takes w from q[3]: x, y, z, w, but PX4's q is w, x, y, z
             "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef yaw(msg: VehicleOdometry):\n    q = msg.q\n"
             "    return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
@@ -383,27 +400,10 @@ class QuaternionOrder(FactRule):
             "    return math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))\n"
             "def f(r, p, y):\n    return heading(euler2quat(r, p, y))\n"
         ),
-        Valid(
-            "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef yaw(msg: VehicleOdometry):\n    q = msg.q\n"
-            "    return math.atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] ** 2 + q[3] ** 2))\n"
-        ),
-        Valid(  # yaw of (x, y, z, w) or roll of (w, x, y, z): the code does not say which
-            "import math\nfrom px4_msgs.msg import VehicleOdometry\ndef angle(msg: VehicleOdometry):\n    q = msg.q\n"
-            "    return math.atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))\n"
-        ),
         Invalid(
             "import torch\nfrom .rotations import quat_conjugate, quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
             "    mul = quat_mul(a, quat_conjugate(b, w_last), w_last)\n"
             "    return 2 * torch.asin(torch.norm(mul[:, 1:], dim=-1).clamp(max=1.0))\n"
-        ),
-        Valid(
-            "import torch\nfrom .rotations import quat_conjugate, quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
-            "    mul = quat_mul(a, quat_conjugate(b, w_last), w_last)\n    vec = mul[:, :3] if w_last else mul[:, 1:]\n"
-            "    return 2 * torch.asin(torch.norm(vec, dim=-1).clamp(max=1.0))\n"
-        ),
-        Valid(  # the flag is not passed: the order is fixed
-            "import torch\nfrom .rotations import quat_mul\ndef quat_angle(a, b, w_last: bool):\n"
-            "    mul = quat_mul(a, b, True)\n    return torch.norm(mul[:, :3], dim=-1)\n"
         ),
         Invalid(
             "from geometry_msgs.msg import Quaternion\nq2 = Quaternion(o.w, o.x, o.y, o.z)\n",

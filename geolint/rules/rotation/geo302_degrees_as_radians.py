@@ -491,7 +491,7 @@ class DegreesAsRadians(FactRule):
         """The module's calls to a library reading degrees (`DEGREE_CONSUMERS`), with their angle argument."""
 
         def collect() -> list[tuple[ast.expr, ast.Call]]:
-            found = []
+            found: list[tuple[ast.expr, ast.Call]] = []
             facts = self.facts
             for call in facts.index.nodes(ast.Call):
                 assert isinstance(call, ast.Call)

@@ -215,10 +215,10 @@ class RadiansAsDegrees(FactRule):
         if degrees is None or not (isinstance(degrees.value, ast.Constant) and degrees.value.value is True):
             return
         positional = positional_args(node)
-        angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
-        if angles is None:
+        given = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
+        if given is None:
             return
-        elements = list(angles.elts) if isinstance(angles, (ast.List, ast.Tuple)) else [angles]
+        elements = list(given.elts) if isinstance(given, (ast.List, ast.Tuple)) else [given]
         judged = [(element, units.unit_of(element)) for element in elements]
         in_radians = [(element, unit) for element, unit in judged if unit is not None and unit.unit == RADIANS]
         if not in_radians or any(unit is not None and unit.unit == DEGREES for _, unit in judged):

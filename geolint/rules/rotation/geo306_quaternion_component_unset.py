@@ -229,7 +229,7 @@ class QuaternionComponentUnset(FactRule):
                 if context is ast.Load and dotted_name(node) == path and not isinstance(facts.parent(node), ast.Attribute):
                     return False  # the quaternion itself handed on (a helper may normalise or complete it)
             elif kind is ast.Name:
-                if node.id == root and _before(node, last) and not _writes_into(facts, node):  # type: ignore[attr-defined]
+                if node.id == root and _before(node, last) and not _writes_into(facts, node):  # type: ignore[attr-defined, arg-type]
                     return False  # the message handed on before the copy is complete
             elif kind is ast.Call and isinstance(node.func, ast.Name) and node.func.id == "setattr":  # type: ignore[attr-defined]
                 return False

@@ -469,9 +469,9 @@ class QuaternionFlow:
                 for target, value in scope.attribute_stores:
                     owner = target.value
                     if isinstance(owner, ast.Name) and owner.id == "self":
-                        enclosing = scope.node
+                        enclosing: ast.AST | None = scope.node
                         while enclosing is not None and not isinstance(enclosing, ast.ClassDef):
-                            enclosing = facts.parent(enclosing)  # type: ignore[assignment]
+                            enclosing = facts.parent(enclosing)
                         owner_class: str | None = enclosing.name if isinstance(enclosing, ast.ClassDef) else None
                     else:
                         owner_class = self._class_of(owner) if isinstance(owner, ast.Name) else None

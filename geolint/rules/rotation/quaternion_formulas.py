@@ -227,7 +227,7 @@ def formula_reads_within(facts: FactBase, function: ast.AST) -> list[FormulaRead
 
 
 def _find(facts: FactBase) -> list[FormulaRead]:
-    found: list[FormulaRead] = []
+    found: list[FormulaRead | None] = []
     index = facts.index
     # the angle formulas only where the text calls one of their functions (most modules call none)
     if any(name in index.source for name in (*_ATAN2, *_ASIN)):
@@ -238,7 +238,7 @@ def _find(facts: FactBase) -> list[FormulaRead]:
             elif name in _ASIN and len(node.args) == 1 and not node.keywords:  # type: ignore[attr-defined]
                 found.append(_angle(facts, node, [_unclamped(node.args[0])], (("pitch", (_PITCH,)),)))  # type: ignore[arg-type, attr-defined]
     for kind in (ast.List, ast.Tuple):
-        found.extend(_matrix(facts, node) for node in index.nodes(kind) if len(node.elts) == 3)  # type: ignore[attr-defined]
+        found.extend(_matrix(facts, node) for node in index.nodes(kind) if len(node.elts) == 3)  # type: ignore[attr-defined, arg-type]
     # in source order, as one walk would give them
     return sorted((read for read in found if read is not None), key=lambda read: (read.node.lineno, read.node.col_offset))
 
@@ -288,10 +288,11 @@ def _matrix(facts: FactBase, node: ast.List | ast.Tuple) -> FormulaRead | None:
         for transposed in (False, True):
             if _is_rotation_matrix(entries, order, transposed):  # type: ignore[arg-type]
                 matches.add((order, "rotation-matrix"))
+    matrix: ast.expr = node
     parent = facts.parent(node)
     if isinstance(parent, ast.Call) and len(parent.args) == 1 and parent.args[0] is node:
-        node = parent  # `np.array([[...], ...])`: the matrix is the call
-    return _decided(facts, node, expansion, matches)
+        matrix = parent  # `np.array([[...], ...])`: the matrix is the call
+    return _decided(facts, matrix, expansion, matches)
 
 
 def _is_rotation_matrix(entries: list[list[Polynomial]], order: str, transposed: bool) -> bool:
@@ -327,10 +328,10 @@ def _result_word(facts: FactBase, node: ast.expr) -> str | None:
     if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name):
         names.append(parent.targets[0].id)
     elif isinstance(parent, ast.Return):
-        function = parent
+        function: ast.AST | None = parent
         while function is not None and not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            function = facts.parent(function)  # type: ignore[assignment]
+            function = facts.parent(function)
         if function is not None:
-            names.append(function.name)  # type: ignore[attr-defined]
+            names.append(function.name)
     words = {_WORDS[word] for name in names for word in _WORDS if word in name.lower()}
     return words.pop() if len(words) == 1 else None
