@@ -156,6 +156,23 @@ def pybullet_orientation_arguments(call: ast.Call) -> list[ast.expr]:
     return found
 
 
+def pybullet_quaternion_values(call: ast.Call) -> list[tuple[str, ast.expr]]:
+    """(parameter, value) for each value a pybullet call reads as one (x, y, z, w) quaternion: its
+    orientation arguments, a shape's or a constraint's frame orientation, and each quaternion written
+    out in a list of them (a list literal's items, a list comprehension's element)."""
+    name = last_name(call.func) or ""
+    found = [("orientation", value) for value in pybullet_orientation_arguments(call)]
+    single, lists = _PYBULLET_FRAME_ORIENTATIONS.get(name, (frozenset(), frozenset()))
+    for given in call.keywords:
+        if given.arg in single:
+            found.append((given.arg, given.value))
+        elif given.arg in lists:
+            value = given.value
+            items = [value.elt] if isinstance(value, ast.ListComp) else value.elts if isinstance(value, (ast.List, ast.Tuple)) else []
+            found.extend((given.arg, item) for item in items)
+    return found
+
+
 def quaternion_producer(facts: FactBase, call: ast.Call) -> str | None:
     """The component order of the quaternion a library call returns, or None if unknown."""
     func = call.func
@@ -258,6 +275,20 @@ _PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]
 }
 # the names `pybullet_orientation_arguments` reads (its cheap first test, by `last_name`)
 PYBULLET_ORIENTATION_CALLS = frozenset(_PYBULLET_ORIENTATION_ARGUMENTS)
+# pybullet keywords that take (x, y, z, w) quaternions besides the orientation arguments above: (one
+# quaternion, a list of them, one per shape or link). pybullet.c reads each with
+# pybullet_internalSetVector4d, which leaves the default (0, 0, 0, 1) in place for a sequence that is not
+# four long (createCollisionShape, createVisualShape and their Array forms ignore its result).
+_PYBULLET_FRAME_ORIENTATIONS: dict[str, tuple[frozenset[str], frozenset[str]]] = {
+    "createVisualShape": (frozenset({"visualFrameOrientation"}), frozenset()),
+    "createCollisionShape": (frozenset({"collisionFrameOrientation"}), frozenset()),
+    "createVisualShapeArray": (frozenset(), frozenset({"visualFrameOrientations"})),
+    "createCollisionShapeArray": (frozenset(), frozenset({"collisionFrameOrientations"})),
+    "createMultiBody": (frozenset({"baseInertialFrameOrientation"}), frozenset({"linkOrientations", "linkInertialFrameOrientations"})),
+    "createConstraint": (frozenset({"parentFrameOrientation", "childFrameOrientation"}), frozenset()),
+}
+# the names `pybullet_quaternion_values` reads
+PYBULLET_QUATERNION_CALLS = PYBULLET_ORIENTATION_CALLS | frozenset(_PYBULLET_FRAME_ORIENTATIONS)
 _PYBULLET_CONSUMERS = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
 _DATA_PRODUCERS = {
     **{f"roma.{name}": SCALAR_LAST for name in (

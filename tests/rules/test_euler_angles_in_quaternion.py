@@ -241,3 +241,84 @@ def test_webots_roll_pitch_yaw_are_radians_for_the_unit_rules() -> None:
     found = lint_source(textwrap.dedent(source), "node.py", rules=[rule_by_code("GEO305")])
     assert [(finding.line, finding.code) for finding in found] == [(7, "GEO305")]
     assert "`controller.InertialUnit.getRollPitchYaw` returns its angles in radians" in found[0].message
+
+
+# -- pybullet parameters that take whole quaternions ---------------------------------------------------
+
+
+def test_roll_pitch_yaw_records_as_pybullet_shape_frames() -> None:
+    """A list comprehension of URDF rpy triples given as visualFrameOrientations (one quaternion per shape)."""
+    source = """
+    import pybullet as p
+
+    def clone_visuals(shapes):
+        return p.createVisualShapeArray(
+            shapeTypes=[s.kind for s in shapes],
+            visualFramePositions=[s.origin_xyz for s in shapes],
+            visualFrameOrientations=[s.origin_rpy for s in shapes],
+        )
+    """
+    (found,) = findings(source)
+    assert found[:2] == (8, "GEO307")
+    assert "`s.origin_rpy` holds Euler angles (the name `origin_rpy` says Euler angles)" in found[2]
+    assert "`createVisualShapeArray` reads `visualFrameOrientations` as a quaternion" in found[2]
+    assert "keeps the identity" in found[2]
+
+
+def test_converted_shape_frames_and_positions_named_rpy_are_silent() -> None:
+    source = """
+    import pybullet as p
+
+    def clone_visuals(shapes):
+        return p.createVisualShapeArray(
+            shapeTypes=[s.kind for s in shapes],
+            visualFramePositions=[s.origin_rpy for s in shapes],
+            visualFrameOrientations=[p.getQuaternionFromEuler(s.origin_rpy) for s in shapes],
+        )
+    """
+    assert codes(source) == []
+
+
+def test_each_item_of_a_link_orientation_list_is_checked() -> None:
+    source = """
+    import pybullet as p
+
+    def build(base_shape, link_shape, joint_rpy, base_euler):
+        return p.createMultiBody(
+            baseCollisionShapeIndex=base_shape,
+            baseInertialFrameOrientation=p.getQuaternionFromEuler(base_euler),
+            linkCollisionShapeIndices=[link_shape],
+            linkOrientations=[[0.0, 0.0, 0.0, 1.0], joint_rpy],
+            linkInertialFrameOrientations=[p.getQuaternionFromEuler(joint_rpy)],
+        )
+    """
+    assert codes(source) == [(9, "GEO307")]
+
+
+def test_pybullet_euler_angles_given_back_as_an_orientation() -> None:
+    """A library says the value is Euler angles (whatever its name): a positional orientation argument."""
+    source = """
+    import pybullet as pb
+
+    def align(body, reference):
+        position, orientation = pb.getBasePositionAndOrientation(reference)
+        angles = pb.getEulerFromQuaternion(orientation)
+        pb.resetBasePositionAndOrientation(body, position, angles)
+    """
+    (found,) = findings(source)
+    assert found[:2] == (7, "GEO307")
+    assert "getEulerFromQuaternion` returns Euler angles" in found[2]
+    assert "its orientation argument" in found[2] and "keeps the identity" not in found[2]
+
+
+def test_a_quaternion_named_after_its_angles_is_not_euler() -> None:
+    source = """
+    import pybullet as p
+
+    def spawn(path, position, roll, pitch, yaw):
+        orientation_from_euler = p.getQuaternionFromEuler([roll, pitch, yaw])
+        start_euler = p.getQuaternionFromEuler([0.0, 0.0, yaw])
+        p.loadURDF(path, position, start_euler)
+        return p.loadURDF(path, position, baseOrientation=orientation_from_euler)
+    """
+    assert codes(source) == []

@@ -1,4 +1,5 @@
-"""GEO307 euler-angles-in-quaternion: Euler angles (roll, pitch, yaw) written into a quaternion's components."""
+"""GEO307 euler-angles-in-quaternion: Euler angles (roll, pitch, yaw) written into a quaternion's components,
+or given whole where pybullet takes a quaternion."""
 
 from __future__ import annotations
 
@@ -14,8 +15,8 @@ from geolint.factbase.angles import (
 )
 from geolint.factbase.index import Scope, UnpackBinding
 from geolint.factbase.messages import MessageTypes
-from geolint.factbase.model import dotted_name, number, positional_args, walk_within
-from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_value
+from geolint.factbase.model import dotted_name, last_name, number, positional_args, walk_within
+from geolint.factbase.rotations import PYBULLET_QUATERNION_CALLS, TRIG_FUNCTIONS, is_scipy_rotation_value, pybullet_quaternion_values
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
@@ -52,7 +53,8 @@ class _Source:
 
 
 class EulerAnglesInQuaternion(FactRule):
-    """Euler angles (roll, pitch, yaw) are written into a quaternion message's components.
+    """Euler angles (roll, pitch, yaw) are written into a quaternion message's components, or given
+    where pybullet takes a quaternion.
 
     ## What it does
     Flags a ROS `geometry_msgs/Quaternion` (a message's `orientation` or `rotation` field, a
@@ -64,12 +66,27 @@ class EulerAnglesInQuaternion(FactRule):
     `np.degrees(a)`. Names alone (`roll`, `pitch`, `yaw`, `rpy[0]`, `rpy.x`) count only when they fill two
     components or more with different angles.
 
+    It also flags three Euler angles given whole where pybullet reads an (x, y, z, w) quaternion: the
+    orientation arguments GEO301 reads (`resetBasePositionAndOrientation`, `loadURDF`,
+    `multiplyTransforms`...), a shape's or a constraint's frame (`visualFrameOrientation`,
+    `collisionFrameOrientation`, `parentFrameOrientation`, `childFrameOrientation`,
+    `baseInertialFrameOrientation`), and each item of the per-shape and per-link lists
+    (`visualFrameOrientations`, `collisionFrameOrientations`, `linkOrientations`,
+    `linkInertialFrameOrientations`: a list literal's items, a list comprehension's element). Here a
+    value is Euler angles when a library call says so (`getEulerFromQuaternion`, as above) or when
+    its name or attribute says so (`rpy`, `euler`, `visual.origin_rpy`) and it is not bound to a call
+    that makes a quaternion (`start_euler = p.getQuaternionFromEuler(...)`).
+
     ## Why is this bad?
     A quaternion's components are not angles: (x, y, z) is the rotation axis times sin(angle / 2) and
     w is cos(angle / 2). Roll, pitch and yaw copied into x, y and z give a quaternion that is not unit
     length and not the rotation (with w left at its default, 0.0 in ROS 1 and 1.0 in ROS 2, a small
     roll of 0.1 rad reads as a rotation of about 11 degrees in ROS 2 and 180 degrees in ROS 1).
-    Consumers (tf, RViz, robot_localization) normalise it or reject it without a word.
+    Consumers (tf, RViz, robot_localization) normalise it or reject it without a word. pybullet reads
+    a quaternion with `pybullet_internalSetVector4d`, which leaves its default (0, 0, 0, 1) in place
+    for a sequence that is not four long, and the shape functions ignore its result
+    (`examples/pybullet/pybullet.c`, `createCollisionShape`, `createVisualShape` and their `Array`
+    forms): a shape frame given roll, pitch and yaw is silently left unrotated.
 
     ## Example
     ```python
@@ -109,12 +126,18 @@ class EulerAnglesInQuaternion(FactRule):
     (`interpolate(rpy[0], table)`) or a container is not followed. A name such as `roll` alone in
     one component is not enough. A `Pose` or `Imu` used on purpose to carry three angles to a
     node of the same project is flagged too: every other reader of the message takes it for a
-    rotation.
+    rotation. For pybullet, a name alone is enough (a value given whole, not one component): a
+    quaternion named `rpy` or `euler` that is a parameter or an attribute is flagged although it is
+    right. Lists of quaternions built elsewhere (`orientations.append(rpy)` before the call) and
+    pybullet calls on a client object whose Euler angles carry no telling name are not followed.
     """
 
     code = "GEO307"
     name = "euler-angles-in-quaternion"
-    triggers = AllOf(r"_msgs", r"[Ee]uler|RollPitchYaw|roll|pitch|yaw|rpy")
+    triggers = AllOf(
+        r"_msgs|Orientation|loadURDF|multiplyTransforms|invertTransform|calculateInverseKinematics",
+        r"[Ee]uler|RollPitchYaw|roll|pitch|yaw|rpy",
+    )
 
     VALID = [
         # the conversion the quaternion needs
@@ -135,6 +158,9 @@ class EulerAnglesInQuaternion(FactRule):
         ),
         # one name alone is no evidence
         Valid("from geometry_msgs.msg import Pose\ndef f(yaw):\n    pose = Pose()\n    pose.orientation.z = yaw\n    pose.orientation.w = 1.0\n    return pose\n"),
+        # pybullet: the angles converted, and a quaternion whose name mentions the angles it came from
+        Valid("import pybullet as p\np.createVisualShapeArray(shapeTypes=k, visualFrameOrientations=[p.getQuaternionFromEuler(v.rpy) for v in vs])\n"),
+        Valid("import pybullet as p\nstart_euler = p.getQuaternionFromEuler(rpy)\np.resetBasePositionAndOrientation(body, pos, start_euler)\n"),
     ]
     INVALID = [
         Invalid(
@@ -150,9 +176,19 @@ class EulerAnglesInQuaternion(FactRule):
             "from geometry_msgs.msg import PoseStamped\ndef f(roll, pitch, yaw):\n    p = PoseStamped()\n    p.pose.orientation.x = roll\n"
             "    p.pose.orientation.y = pitch\n    p.pose.orientation.z = yaw\n    return p\n"
         ),
+        # pybullet: URDF roll-pitch-yaw triples as the shapes' frame quaternions
+        Invalid("import pybullet as p\np.createVisualShapeArray(shapeTypes=k, visualFrameOrientations=[v.origin_rpy for v in vs])\n"),
     ]
 
     def run(self) -> None:
+        facts = self.facts
+        if "_msgs" in self.context.source:
+            self._check_messages()
+        for call in facts.index.nodes(ast.Call):
+            if last_name(call.func) in PYBULLET_QUATERNION_CALLS:  # type: ignore[attr-defined]
+                self._check_pybullet(call)  # type: ignore[arg-type]
+
+    def _check_messages(self) -> None:
         facts = self.facts
         types = facts.shared(MessageTypes)
         for scope in facts.index.scopes.values():
@@ -172,6 +208,32 @@ class EulerAnglesInQuaternion(FactRule):
                 given += [(item.arg, item.value) for item in call.keywords if item.arg in _COMPONENTS]  # type: ignore[attr-defined]
                 if given and self._placed_as_rotation(call):  # type: ignore[arg-type]
                     self._check(f"{facts.code_of(call.func)}(...)", given, call)  # type: ignore[attr-defined,arg-type]
+
+    def _check_pybullet(self, call: ast.Call) -> None:
+        """An Euler triple where pybullet takes a quaternion: `visualFrameOrientations=[v.rpy for v in shapes]`."""
+        for parameter, value in pybullet_quaternion_values(call):
+            source = self._euler_source(value, 0)
+            if source is None or not source.strong and self._names_a_quaternion(value):
+                continue
+            frame = parameter != "orientation"  # a shape's or a constraint's frame: a wrong length is ignored
+            slot = f"`{parameter}`" if frame else "its orientation argument"
+            ignored = " (pybullet keeps the identity in place of a sequence not four long)" if frame else ""
+            self.report(
+                value,
+                f"`{self.code_of(value)}` holds Euler angles ({source.evidence}), but pybullet's `{last_name(call.func)}` reads "
+                f"{slot} as a quaternion (x, y, z, w): three angles are no quaternion{ignored}; "
+                "convert them with `getQuaternionFromEuler`",
+            )
+
+    def _names_a_quaternion(self, value: ast.expr) -> bool:
+        """A name bound to a call that makes a quaternion (`euler_q = p.getQuaternionFromEuler(euler)`)."""
+        bound = self.facts.bindings(value) if isinstance(value, ast.Name) else None
+        return any(
+            isinstance(part, ast.Call) and "quat" in (last_name(part.func) or "").lower()
+            for binding in bound or []
+            if isinstance(binding, ast.expr)
+            for part in ast.walk(binding)
+        )
 
     def _check(self, quaternion: str, given: list[tuple[str, ast.expr]], anchor: ast.AST) -> None:
         angles = [(component, value, self._angle(value, 0)) for component, value in given]
@@ -326,12 +388,13 @@ class EulerAnglesInQuaternion(FactRule):
             if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(value) for value in values):
                 return _Source((), f"the name `{node.id}` says Euler angles", False)
             return None
-        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
-            stores = facts.index.self_attribute_stores.get(node.attr, [])
+        if isinstance(node, ast.Attribute):
+            is_self = isinstance(node.value, ast.Name) and node.value.id == "self"
+            stores = facts.index.self_attribute_stores.get(node.attr, []) if is_self else []
             found = [self._euler_source(store, depth + 1) for store in stores]
             if found and all(source is not None and source.strong for source in found):
                 return found[0]
-            words = _words(node.attr)
+            words = _words(node.attr)  # `self.rpy`, or another object's (`visual.origin_rpy`)
             if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(store) for store in stores):
                 return _Source((), f"the name `{node.attr}` says Euler angles", False)
         return None
