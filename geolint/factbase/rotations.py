@@ -158,7 +158,7 @@ def pybullet_orientation_arguments(call: ast.Call) -> list[ast.expr]:
 
 def pybullet_quaternion_values(call: ast.Call) -> list[tuple[str, ast.expr]]:
     """(parameter, value) for each value a pybullet call reads as one (x, y, z, w) quaternion: its
-    orientation arguments, a shape's or a constraint's frame orientation, and each quaternion written
+    orientation arguments, a shape's or a body's inertial frame orientation, and each quaternion written
     out in a list of them (a list literal's items, a list comprehension's element)."""
     name = last_name(call.func) or ""
     found = [("orientation", value) for value in pybullet_orientation_arguments(call)]
@@ -277,15 +277,15 @@ _PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]
 PYBULLET_ORIENTATION_CALLS = frozenset(_PYBULLET_ORIENTATION_ARGUMENTS)
 # pybullet keywords that take (x, y, z, w) quaternions besides the orientation arguments above: (one
 # quaternion, a list of them, one per shape or link). pybullet.c reads each with
-# pybullet_internalSetVector4d, which leaves the default (0, 0, 0, 1) in place for a sequence that is not
-# four long (createCollisionShape, createVisualShape and their Array forms ignore its result).
+# pybullet_internalSetVector4d and ignores its result, so a sequence that is not four long leaves the
+# default (0, 0, 0, 1) in place (createCollisionShape, createVisualShape, their Array forms, the base of
+# createMultiBody), or an uninitialised array for createMultiBody's links.
 _PYBULLET_FRAME_ORIENTATIONS: dict[str, tuple[frozenset[str], frozenset[str]]] = {
     "createVisualShape": (frozenset({"visualFrameOrientation"}), frozenset()),
     "createCollisionShape": (frozenset({"collisionFrameOrientation"}), frozenset()),
     "createVisualShapeArray": (frozenset(), frozenset({"visualFrameOrientations"})),
     "createCollisionShapeArray": (frozenset(), frozenset({"collisionFrameOrientations"})),
     "createMultiBody": (frozenset({"baseInertialFrameOrientation"}), frozenset({"linkOrientations", "linkInertialFrameOrientations"})),
-    "createConstraint": (frozenset({"parentFrameOrientation", "childFrameOrientation"}), frozenset()),
 }
 # the names `pybullet_quaternion_values` reads
 PYBULLET_QUATERNION_CALLS = PYBULLET_ORIENTATION_CALLS | frozenset(_PYBULLET_FRAME_ORIENTATIONS)

@@ -68,10 +68,9 @@ class EulerAnglesInQuaternion(FactRule):
 
     It also flags three Euler angles given whole where pybullet reads an (x, y, z, w) quaternion: the
     orientation arguments GEO301 reads (`resetBasePositionAndOrientation`, `loadURDF`,
-    `multiplyTransforms`...), a shape's or a constraint's frame (`visualFrameOrientation`,
-    `collisionFrameOrientation`, `parentFrameOrientation`, `childFrameOrientation`,
-    `baseInertialFrameOrientation`), and each item of the per-shape and per-link lists
-    (`visualFrameOrientations`, `collisionFrameOrientations`, `linkOrientations`,
+    `multiplyTransforms`...), a shape's frame or a body's inertial frame (`visualFrameOrientation`,
+    `collisionFrameOrientation`, `baseInertialFrameOrientation`), and each item of the per-shape and
+    per-link lists (`visualFrameOrientations`, `collisionFrameOrientations`, `linkOrientations`,
     `linkInertialFrameOrientations`: a list literal's items, a list comprehension's element). Here a
     value is Euler angles when a library call says so (`getEulerFromQuaternion`, as above) or when
     its name or attribute says so (`rpy`, `euler`, `visual.origin_rpy`) and it is not bound to a call
@@ -83,10 +82,10 @@ class EulerAnglesInQuaternion(FactRule):
     length and not the rotation (with w left at its default, 0.0 in ROS 1 and 1.0 in ROS 2, a small
     roll of 0.1 rad reads as a rotation of about 11 degrees in ROS 2 and 180 degrees in ROS 1).
     Consumers (tf, RViz, robot_localization) normalise it or reject it without a word. pybullet reads
-    a quaternion with `pybullet_internalSetVector4d`, which leaves its default (0, 0, 0, 1) in place
-    for a sequence that is not four long, and the shape functions ignore its result
-    (`examples/pybullet/pybullet.c`, `createCollisionShape`, `createVisualShape` and their `Array`
-    forms): a shape frame given roll, pitch and yaw is silently left unrotated.
+    a quaternion with `pybullet_internalSetVector4d`, and the shape functions and `createMultiBody`
+    ignore its result (`examples/pybullet/pybullet.c`): a sequence that is not four long leaves the
+    default (0, 0, 0, 1), so a shape frame given roll, pitch and yaw is silently left unrotated (a
+    link's frame is left uninitialised).
 
     ## Example
     ```python
@@ -119,7 +118,7 @@ class EulerAnglesInQuaternion(FactRule):
     author's to state in the conversion.
 
     ## Known problems
-    Only `geometry_msgs` Quaternion messages are checked (a Quaternion message that is neither a
+    Of messages, only `geometry_msgs` Quaternion messages are checked (a Quaternion message that is neither a
     field of a known message nor put into an `orientation` / `rotation` may carry three angles on
     purpose, and is left alone), and only components written one by one or as constructor arguments:
     `q.x, q.y, q.z = angles` is not read. An angle reaching the component through a project helper
@@ -185,8 +184,8 @@ class EulerAnglesInQuaternion(FactRule):
         if "_msgs" in self.context.source:
             self._check_messages()
         for call in facts.index.nodes(ast.Call):
-            if last_name(call.func) in PYBULLET_QUATERNION_CALLS:  # type: ignore[attr-defined]
-                self._check_pybullet(call)  # type: ignore[arg-type]
+            if isinstance(call, ast.Call) and (last_name(call.func) or "") in PYBULLET_QUATERNION_CALLS:
+                self._check_pybullet(call)
 
     def _check_messages(self) -> None:
         facts = self.facts
@@ -215,9 +214,9 @@ class EulerAnglesInQuaternion(FactRule):
             source = self._euler_source(value, 0)
             if source is None or not source.strong and self._names_a_quaternion(value):
                 continue
-            frame = parameter != "orientation"  # a shape's or a constraint's frame: a wrong length is ignored
+            frame = parameter != "orientation"  # a shape's or a link's frame: pybullet ignores a wrong length
             slot = f"`{parameter}`" if frame else "its orientation argument"
-            ignored = " (pybullet keeps the identity in place of a sequence not four long)" if frame else ""
+            ignored = " (pybullet ignores a sequence that is not four long here)" if frame else ""
             self.report(
                 value,
                 f"`{self.code_of(value)}` holds Euler angles ({source.evidence}), but pybullet's `{last_name(call.func)}` reads "
