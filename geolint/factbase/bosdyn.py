@@ -5,16 +5,18 @@ swaps the two. `bosdyn.client.frame_helpers` returns such transforms from a fram
 
 Names (`geolint.semantic.names.tform_frames`) and these calls are explicit statements in one
 vocabulary (the SDK's frame names), so two of them are compared word for word, where a name and a
-label of another library may use two words for one frame.
+label of another library may use two words for one frame. The exceptions are the few words Spot
+code writes for a role rather than one of the SDK's frames (`vision_tform_robot`, `ko_tform_body`):
+such a word agrees with the frames that can play its role (`same_tform_frame`).
 """
 
 from __future__ import annotations
 
 import ast
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Callable
 
 from geolint.factbase.model import FrameFact, keyword, positional_args, string
-from geolint.semantic.names import NameFrames
+from geolint.semantic.names import NameFrames, same_frame
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
@@ -42,6 +44,32 @@ _FRAME_CONSTANTS = {
     _HELPERS + "TOOL_FRAME_NAME": "tool",
     _HELPERS + "TASK_FRAME_NAME": "task",
 }
+
+
+# Words Spot code writes in `a_tform_b` names for a role, not a frame of the SDK's frame tree, with the
+# frames that play it. `robot`: the robot's pose is its body's, or the gravity-aligned body's (the SDK's
+# fetch tutorial: vision_tform_robot = get_a_tform_b(snapshot, VISION_FRAME_NAME, GRAV_ALIGNED_BODY_FRAME_NAME)).
+# `ko`: GraphNav's kinematic odometry, the odom frame (`set_localization(..., ko_tform_body=odom_tform_body)`).
+# `world`: a frame fixed in the world (fiducial_follow: body_tform_world = get_a_tform_b(snapshot,
+# BODY_FRAME_NAME, VISION_FRAME_NAME)).
+_ROLE_FRAMES = {
+    "robot": frozenset({"body", "flat_body"}),
+    "ko": frozenset({"odom"}),
+    "world": frozenset({"vision", "odom", "seed"}),
+}
+
+
+def same_tform_frame(first: str | None, second: str | None) -> bool | None:
+    """`same_frame` for two frames in the SDK's words, where a role word (`robot`) is each frame that plays it
+    (`body`, `flat_body`) and still another frame than the rest (`vision`, `hand`)."""
+    if first is not None and second is not None and (second in _ROLE_FRAMES.get(first, ()) or first in _ROLE_FRAMES.get(second, ())):
+        return True
+    return same_frame(first, second)
+
+
+def frame_comparison(*facts: FrameFact) -> Callable[[str | None, str | None], bool | None]:
+    """How to compare the frames of `facts`: with the SDK's role words when one of them is in its words."""
+    return same_tform_frame if any(in_tform_words(fact) for fact in facts) else same_frame
 
 
 def helper_frames(facts: FactBase, call: ast.Call) -> FrameFact | None:

@@ -3,14 +3,18 @@
 from __future__ import annotations
 
 import ast
-from typing import ClassVar, NamedTuple, Sequence
+from typing import Callable, ClassVar, NamedTuple, Sequence
 
+from geolint.factbase.bosdyn import frame_comparison
 from geolint.factbase.model import FactBase, FrameFact, MatMul
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.lint_types import Applicability
 from geolint.rules.base import AstRule, RuleTrigger
 from geolint.semantic.names import NameFrames, same_frame
 
+
+# How a rule compares two frames: `same_frame`, or the Spot SDK's with its role words (`bosdyn.frame_comparison`).
+SameFrame = Callable[[str | None, str | None], bool | None]
 
 # The `[tool.geolint]` table of examples whose frames rest on names alone: names are frame evidence
 # only where the convention is stated (see geolint.factbase.conventions).
@@ -123,7 +127,7 @@ class ProductRule(FactRule):
                     break
                 if not (facts.names_stated or left.declared or right.declared) or self.too_weak(left, right):
                     break
-                mismatch = self.problem(product, left.frames, right.frames)
+                mismatch = self.problem(product, left.frames, right.frames, frame_comparison(left, right))
                 if mismatch is None:
                     break
                 found.append((mismatch, left.evidence + right.evidence))
@@ -132,7 +136,8 @@ class ProductRule(FactRule):
                     mismatch, evidence = found[0]
                     self.report(node, mismatch.message, evidence=evidence, frames=mismatch.frames)
 
-    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames, same: SameFrame) -> Mismatch | None:
+        """`same` compares two frames (`same_frame`, or the Spot SDK's with its role words)."""
         raise NotImplementedError
 
     def too_weak(self, left: FrameFact, right: FrameFact) -> bool:

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
-from geolint.factbase.rule_support import STATED, Mismatch, ProductRule
-from geolint.semantic.names import NameFrames, same_frame
+from geolint.factbase.rule_support import STATED, Mismatch, ProductRule, SameFrame
+from geolint.semantic.names import NameFrames
 
 
 class FrameMismatchApply(ProductRule):
@@ -79,9 +79,9 @@ class FrameMismatchApply(ProductRule):
         ),
     ]
 
-    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames, same: SameFrame) -> Mismatch | None:
         if left.is_operator and right.frame is not None:
-            if same_frame(left.src, right.frame) is False:
+            if same(left.src, right.frame) is False:
                 assert left.src is not None
                 return Mismatch(
                     f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "
@@ -90,7 +90,7 @@ class FrameMismatchApply(ProductRule):
                 )
         elif right.is_operator and left.frame is not None:
             # Row vectors: `x @ M` applies M.T, which maps M.dst into M.src.
-            if same_frame(right.dst, left.frame) is False:
+            if same(right.dst, left.frame) is False:
                 assert right.dst is not None
                 return Mismatch(
                     f"`{self.code_of(product.left)} @ {self.code_of(product.right)}` maps {right.dst} into "

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import EXTRINSICS_EVIDENCE, FrameFact, MatMul
-from geolint.factbase.rule_support import STATED, Mismatch, ProductRule
-from geolint.semantic.names import NameFrames, same_frame
+from geolint.factbase.rule_support import STATED, Mismatch, ProductRule, SameFrame
+from geolint.semantic.names import NameFrames
 
 
 # Words that name a pose a body should take (a waypoint), not a body: `T_base_grasp` is the tcp's pose
@@ -89,12 +89,12 @@ class FrameMismatchCompose(ProductRule):
             any(item.endswith(EXTRINSICS_EVIDENCE) for item in fact.evidence) for fact in (left, right)
         )
 
-    def problem(self, product: MatMul, left: NameFrames, right: NameFrames) -> Mismatch | None:
+    def problem(self, product: MatMul, left: NameFrames, right: NameFrames, same: SameFrame) -> Mismatch | None:
         if not (left.is_operator and right.is_operator):
             return None
         if left.src in WAYPOINT_WORDS:
             return None  # `T_base_pregrasp * T_tcp_tool0`: the waypoint is where a body (the tcp) should be
-        if same_frame(left.src, right.dst) is False:
+        if same(left.src, right.dst) is False:
             assert left.src is not None and right.dst is not None
             return Mismatch(
                 f"`{self.code_of(product.left)}` maps {left.src} into {left.dst}, but "

@@ -5,9 +5,9 @@ from __future__ import annotations
 import ast
 
 from geolint.rules.base import Invalid, Valid
-from geolint.factbase.bosdyn import in_tform_words
+from geolint.factbase.bosdyn import frame_comparison, in_tform_words
 from geolint.factbase.model import FactBase, last_name, walk_within
-from geolint.factbase.rule_support import STATED, FactRule, Mismatch
+from geolint.factbase.rule_support import STATED, FactRule, Mismatch, SameFrame
 from geolint.semantic.names import NameFrames, same_frame
 
 
@@ -45,7 +45,12 @@ class FrameMismatchAssign(FactRule):
     labels and names may use other words for one frame. Boston Dynamics' Spot SDK is the exception:
     its `a_tform_b` names and `bosdyn.client.frame_helpers` calls use the SDK's frame names, so
     `odom_tform_body = get_vision_tform_body(snapshot)` is reported; a name with a qualifier
-    (`last_odom_tform_body`) or a waypoint (`body_tform_goal`) is not read. So `T_cam_world = T_world_cam` is reported
+    (`last_odom_tform_body`) or a waypoint (`body_tform_goal`) is not read. A few words in such names
+    are roles, not frames of the SDK, and agree with each frame that plays the role: `robot` with
+    `body` and `flat_body` (`vision_tform_robot = get_a_tform_b(snapshot, VISION_FRAME_NAME,
+    GRAV_ALIGNED_BODY_FRAME_NAME)` is the robot's pose), `ko` (GraphNav's kinematic odometry) with
+    `odom`, `world` with `vision`, `odom` and `seed`; so `vision_tform_robot` holding the hand's pose
+    is still reported, but one holding the body's is not, whichever of the two body frames it is. So `T_cam_world = T_world_cam` is reported
     only where the convention is stated; the rule's three true findings on real code all rested on
     declared frames.
     """
@@ -86,6 +91,11 @@ class FrameMismatchAssign(FactRule):
         Valid("from bosdyn.client.frame_helpers import get_vision_tform_body\nbody_tform_vision = get_vision_tform_body(snapshot).inverse()\n"),
         # a qualifier before the frame (`last_`) is not read as part of it
         Valid("from bosdyn.client import frame_helpers\nlast_odom_tform_body = frame_helpers.get_vision_tform_body(snapshot)\n"),
+        # `robot` is no frame of the SDK: the robot's pose is its body's, gravity-aligned or not
+        Valid(
+            "from bosdyn.client.frame_helpers import VISION_FRAME_NAME, GRAV_ALIGNED_BODY_FRAME_NAME, get_a_tform_b\n"
+            "vision_tform_robot = get_a_tform_b(snapshot, VISION_FRAME_NAME, GRAV_ALIGNED_BODY_FRAME_NAME)\n"
+        ),
     ]
     INVALID = [
         Invalid("p_world = T_cam_base @ p_base\n", options=STATED),
@@ -100,6 +110,8 @@ class FrameMismatchAssign(FactRule):
             "from bosdyn.client.frame_helpers import ODOM_FRAME_NAME, BODY_FRAME_NAME, get_a_tform_b\n"
             "body_tform_odom = get_a_tform_b(snapshot, ODOM_FRAME_NAME, BODY_FRAME_NAME)\n"
         ),
+        # the role word `robot` agrees with the body, but the pose is in vision, not odom
+        Invalid("from bosdyn.client import frame_helpers\nodom_tform_robot = frame_helpers.get_vision_tform_body(snapshot)\n"),
     ]
 
     def run(self) -> None:
@@ -132,7 +144,7 @@ class FrameMismatchAssign(FactRule):
                 return  # labels and names use different words (`T_table_world` from "patch"): only a reversal counts
             if not actual.declared and _is_relabel(value) and not _swaps_frames(stated.frames, actual.frames):
                 return  # `p_world = p_cam`, `cam2img = lidar2img`: two names, nothing computed; only a swap counts
-            mismatch = self._problem(target.id, value, stated.frames, actual.frames)
+            mismatch = self._problem(target.id, value, stated.frames, actual.frames, frame_comparison(stated, actual))
             if mismatch is None:
                 return
             messages.append((mismatch, stated.evidence + actual.evidence))
@@ -140,19 +152,15 @@ class FrameMismatchAssign(FactRule):
             mismatch, evidence = messages[0]
             self.report(value, mismatch.message, evidence=evidence, frames=mismatch.frames)
 
-    def _problem(self, name: str, value: ast.expr, stated: NameFrames, actual: NameFrames) -> Mismatch | None:
+    def _problem(self, name: str, value: ast.expr, stated: NameFrames, actual: NameFrames, same: SameFrame) -> Mismatch | None:
         if stated.is_operator and actual.is_operator:
             differing = [
                 (wanted, got)
                 for wanted, got in ((stated.dst, actual.dst), (stated.src, actual.src))
-                if same_frame(wanted, got) is False
+                if same(wanted, got) is False
             ]
             if differing:
-                hint = (
-                    " (an inverse is missing)"
-                    if same_frame(stated.dst, actual.src) and same_frame(stated.src, actual.dst)
-                    else ""
-                )
+                hint = " (an inverse is missing)" if same(stated.dst, actual.src) and same(stated.src, actual.dst) else ""
                 wanted, got = differing[0]
                 assert wanted is not None and got is not None
                 return Mismatch(
@@ -161,7 +169,7 @@ class FrameMismatchAssign(FactRule):
                     (wanted, got),
                 )
         elif not stated.is_operator and not actual.is_operator:
-            if same_frame(stated.frame, actual.frame) is False:
+            if same(stated.frame, actual.frame) is False:
                 assert stated.frame is not None and actual.frame is not None
                 return Mismatch(
                     f"`{name}` should be in {stated.frame}, but `{self.code_of(value)}` is in {actual.frame}",
