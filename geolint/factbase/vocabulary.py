@@ -45,6 +45,14 @@ PASSTHROUGH_FUNCTIONS = frozenset(
 PASSTHROUGH_METHODS = frozenset(
     {"copy", "astype", "reshape", "squeeze", "flatten", "ravel", "clone", "detach", "cpu", "cuda", "to", "float", "double", "numpy", "contiguous", "view"}
 )
+# Library calls that return a transform with no translation when one argument has a given value:
+# qualified name -> (the transform's position in the returned tuple, the argument's keyword, its
+# position, the value). nerfstudio's `auto_orient_and_center_poses(poses, method="up",
+# center_method="poses")` returns (poses, transform) with the translation -R @ mean_origin, which
+# is zeros for center_method="none".
+UNTRANSLATED_WITH = {
+    "nerfstudio.cameras.camera_utils.auto_orient_and_center_poses": (1, "center_method", 2, "none"),
+}
 # Calls that return a unit vector.
 UNIT_FUNCTIONS = frozenset({"unitize", "normalize", "normalized", "unit_vector", "norm_vector", "normalize_vector"})
 NORM_FUNCTIONS = frozenset({"norm", "vector_norm"})

@@ -6,7 +6,12 @@ import ast
 
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE
-from geolint.factbase.model import GEOMETRIC, is_zero, keyword, last_name, last_name_target, positional_args, replace_span, transposed_value
+from geolint.factbase import vocabulary as vocab
+from geolint.factbase.index import ParamBinding, UnpackBinding
+from geolint.factbase.model import (
+    GEOMETRIC, FactBase, is_transpose, is_zero, keyword, last_name, last_name_target, number, positional_args, replace_span,
+    string, subscript_parts, transposed_value,
+)  # fmt: skip
 from geolint.factbase.summaries import FunctionSummary
 from geolint.factbase.rule_support import FactRule, with_keyword
 from geolint.semantic.names import Kind as NameKind, kind_of_name
@@ -51,7 +56,13 @@ class DirectionTranslated(FactRule):
     builds wins over the name when it says points: an array written out as the origin next to
     points along the axes (`sensor_axis = np.array([[0, 0, 0], [l, 0, 0], [0, l, 0], [0, 0, l]])`,
     a drawn frame's tips) is a set of points. The three axes without the origin row stay
-    directions, though a drawing may mean them as tips too.
+    directions, though a drawing may mean them as tips too. A direction given w = 1 is not reported
+    where every matrix it is multiplied by is known to have no translation: a literal identity or a
+    block of one (`torch.eye(4)[:3, :4]`) never written into, nerfstudio's
+    `auto_orient_and_center_poses(..., center_method="none")`, or a parameter of a private helper
+    (`_name`) whose calls in the module all pass such; a private helper its module never calls is
+    reached by no matrix and is not reported either (a subclass elsewhere calling it is missed).
+    A public function's parameter may be given any matrix, so it is reported.
     """
 
     code = "GEO101"
@@ -80,6 +91,9 @@ class DirectionTranslated(FactRule):
             "    sensor_axis = np.array([[0, 0, 0], [length, 0, 0], [0, length, 0], [0, 0, length]])\n"
             "    return pose.transform_points(sensor_axis)\n"
         ),  # the origin and the axis tips: points to draw
+        # the only matrix the w = 1 normals meet is a literal identity: nothing is translated
+        Valid("import torch\nT = torch.eye(4)[:3, :4]\nn_h = torch.cat((normals, torch.ones_like(normals[..., :1])), -1) @ T.T\n"),
+        Valid("import numpy as np\nnormals_h = np.hstack([normals, np.ones((len(normals), 1))])\nout = normals_h @ np.eye(4).T\n"),
     ]
     INVALID = [
         Invalid(
@@ -118,6 +132,14 @@ class DirectionTranslated(FactRule):
         ),
         Invalid("from pytransform3d.transformations import vector_to_point\nn_h = vector_to_point(approach)\n"),
         Invalid("world_normal = obj.matrix_world @ face.normal\n"),
+        Invalid(
+            "import torch\nfrom nerfstudio.cameras.camera_utils import auto_orient_and_center_poses\n"
+            "poses, T = auto_orient_and_center_poses(poses)\n"
+            "n_h = torch.cat((normals, torch.ones_like(normals[..., :1])), -1) @ T.T\n",
+            expected_fix="import torch\nfrom nerfstudio.cameras.camera_utils import auto_orient_and_center_poses\n"
+            "poses, T = auto_orient_and_center_poses(poses)\n"
+            "n_h = torch.cat((normals, torch.zeros_like(normals[..., :1])), -1) @ T.T\n",
+        ),  # centred on the poses by default: the matrix translates
         Invalid(
             "import PyKDL\n"
             "def tool_frame(q):\n"
@@ -172,6 +194,8 @@ class DirectionTranslated(FactRule):
             return
         if not facts.is_free(homogeneous.inner):
             return
+        if self._meets_only_untranslated(homogeneous.construction):
+            return  # w = 1 is harmless where every matrix it meets has no translation (`torch.eye(4)[:3, :4]`)
         self.report(
             node,
             f"direction `{self.code_of(homogeneous.inner)}` is given w = 1, so a transform will translate it; "
@@ -179,6 +203,117 @@ class DirectionTranslated(FactRule):
             replacement=homogeneous.fixed,
             fix_description="use w = 0 for the direction",
         )
+
+    def _meets_only_untranslated(self, construction: ast.expr) -> bool:
+        """Whether the matrices a w = 1 construction is multiplied by are known, and none translates."""
+        partners = self._product_partners(construction)
+        return bool(partners) and not any(self._may_translate(matrix) for matrix in partners)
+
+    def _product_partners(self, construction: ast.expr) -> list[ast.expr]:
+        """The other operands of the products a construction is an operand of: directly
+        (`cat((n, ones), -1) @ T.T`), or through the one name it is stored in (`n_h = ...; T @ n_h.T`).
+        Empty when some use of it is not such a product, or none is."""
+        facts = self.facts
+        node: ast.AST = construction
+        parent = facts.parent(node)
+        while parent is not None and is_transpose(parent):
+            node, parent = parent, facts.parent(parent)
+        product = facts.matmul(parent) if parent is not None else None
+        if product is not None and node in (product.left, product.right):
+            return [product.right if node is product.left else product.left]
+        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+            return []
+        name, scope = parent.targets[0].id, facts.index.scope_of(parent)
+        partners = []
+        for use in ast.walk(scope.node):
+            if not (isinstance(use, ast.Name) and use.id == name and isinstance(use.ctx, ast.Load)) or facts.index.scope_of(use) is not scope:
+                continue
+            operand, above = use, facts.parent(use)
+            while above is not None and is_transpose(above):
+                operand, above = above, facts.parent(above)
+            product = facts.matmul(above) if above is not None else None
+            if product is None or operand not in (product.left, product.right):
+                return []  # used otherwise too: what it meets is not known
+            partners.append(product.right if operand is product.left else product.left)
+        return partners
+
+    def _may_translate(self, matrix: ast.expr, depth: int = 0) -> bool:
+        """False when `matrix` certainly has no translation: a literal identity (`np.eye(4)`,
+        `torch.eye(4)[:3, :4]`) never written into, a library transform made without one
+        (`vocabulary.UNTRANSLATED_WITH`: nerfstudio's `auto_orient_and_center_poses(...,
+        center_method="none")`), a name bound only to such, or a parameter of a private helper
+        whose calls in the module all pass such (a private helper nothing calls is reached by none)."""
+        facts = self.facts
+        while depth < 8:
+            depth += 1
+            inner = transposed_value(matrix)
+            if inner is not None:
+                matrix = inner
+            elif isinstance(matrix, ast.Subscript) and all(isinstance(part, ast.Slice) for part in subscript_parts(matrix)):
+                matrix = matrix.value  # a block of a matrix without translation has none
+            elif isinstance(matrix, ast.Call) and isinstance(matrix.func, ast.Attribute) and matrix.func.attr in vocab.PASSTHROUGH_METHODS:
+                matrix = matrix.func.value  # `.to(device)`, `.float()`
+            else:
+                break
+        if isinstance(matrix, ast.Call):
+            if facts.is_array_call(matrix.func, "eye", "identity"):
+                return False
+            return _untranslated_element(facts, matrix, None) is not True
+        if isinstance(matrix, ast.Subscript):
+            index = number(matrix.slice)
+            return not (isinstance(matrix.value, ast.Call) and index is not None and _untranslated_element(facts, matrix.value, int(index)))
+        if not isinstance(matrix, ast.Name) or depth >= 8:
+            return True
+        scope = facts.index.scope_of(matrix)
+        if matrix.id in scope.subscript_stores or matrix.id in scope.augmented:
+            return True  # `T = np.eye(4); T[:3, 3] = t`: written into
+        bindings = facts.bindings(matrix)
+        if not bindings:
+            return True
+        for binding in bindings:
+            if isinstance(binding, ast.expr):
+                if self._may_translate(binding, depth + 1):
+                    return True
+            elif isinstance(binding, UnpackBinding):
+                if not (isinstance(binding.value, ast.Call) and _untranslated_element(facts, binding.value, binding.position)):
+                    return True
+            elif not isinstance(binding, ParamBinding) or self._argument_may_translate(binding, depth + 1):
+                return True
+        return False
+
+    def _argument_may_translate(self, parameter: ParamBinding, depth: int) -> bool:
+        """Whether a call of the private helper that has `parameter` may pass a matrix that translates.
+        Only a private helper (`_name`) has all its calls in its module; one it is also named in
+        otherwise (passed as a callback, called on another object) may be given anything."""
+        facts = self.facts
+        function = parameter.function
+        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)) or not function.name.startswith("_") or function.name.startswith("__"):
+            return True
+        params = [arg.arg for arg in (*function.args.posonlyargs, *function.args.args)]
+        name = parameter.arg.arg
+        calls = [call for call in facts.index.nodes(ast.Call) if last_name(call.func) == function.name]  # type: ignore[attr-defined]
+        if facts.index.source.count(function.name) != len(calls) + 1:
+            return True  # named elsewhere than its definition and its calls
+        for call in calls:
+            assert isinstance(call, ast.Call)
+            if facts.own_method(call) is function:
+                position = params.index(name) - 1 if name in params else None
+            elif facts.called_function(call) == (facts, function):
+                position = params.index(name) if name in params else None
+            else:
+                return True  # a call of another object's method of that name
+            if any(isinstance(arg, ast.Starred) for arg in call.args) or any(given.arg is None for given in call.keywords):
+                return True
+            given = keyword(call, name)
+            if given is not None:
+                argument: ast.expr | None = given.value
+            elif position is not None and 0 <= position < len(call.args):
+                argument = call.args[position]
+            else:
+                argument = parameter.default
+            if argument is None or self._may_translate(argument, depth):
+                return True
+        return False
 
     def _check_binary(self, node: ast.BinOp) -> None:
         facts = self.facts
@@ -285,6 +420,18 @@ class DirectionTranslated(FactRule):
             f"`{self.code_of(positional[2])}` is a direction; rotate it with a zero position "
             "(`multiplyTransforms([0, 0, 0], orn, v, [0, 0, 0, 1])`) or `rotateVector`",
         )
+
+
+def _untranslated_element(facts: FactBase, call: ast.Call, position: int | None) -> bool:
+    """Whether element `position` of what `call` returns (None: the value itself) is a library transform
+    made without translation (`vocabulary.UNTRANSLATED_WITH`)."""
+    known = vocab.UNTRANSLATED_WITH.get(facts.qualified_name(call.func) or "")
+    if known is None:
+        return False
+    element, name, index, value = known
+    given = keyword(call, name)
+    argument = given.value if given is not None else call.args[index] if index < len(call.args) else None
+    return element == position and string(argument) == value
 
 
 def _through(summary: FunctionSummary, index: int) -> str:
