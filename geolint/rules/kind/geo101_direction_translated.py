@@ -228,7 +228,8 @@ class DirectionTranslated(FactRule):
         for use in ast.walk(scope.node):
             if not (isinstance(use, ast.Name) and use.id == name and isinstance(use.ctx, ast.Load)) or facts.index.scope_of(use) is not scope:
                 continue
-            operand, above = use, facts.parent(use)
+            operand: ast.AST = use
+            above = facts.parent(use)
             while above is not None and is_transpose(above):
                 operand, above = above, facts.parent(above)
             product = facts.matmul(above) if above is not None else None
