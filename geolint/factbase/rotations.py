@@ -118,6 +118,15 @@ def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
     return positional[0] if positional else None
 
 
+# pyquaternion's Quaternion class, and a module that re-exports it: the nuScenes devkit's
+# eval/common/utils.py imports it, and BEVFormer-style dataset code imports it from there.
+PYQUATERNION_CLASSES = frozenset(
+    {"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", "nuscenes.eval.common.utils.Quaternion"}
+)
+# pyquaternion Quaternion properties and methods that return another Quaternion
+PYQUATERNION_RETURNS_QUATERNION = frozenset({"inverse", "conjugate", "normalised", "unit"})
+
+
 def is_numpy_quaternion_constructor(facts: FactBase, qualified: str) -> bool:
     """numpy-quaternion's `np.quaternion(w, x, y, z)` / `quaternion.quaternion(...)`: numpy has the
     type only once the module imports `quaternion`, and a bare `quaternion` must be that import."""

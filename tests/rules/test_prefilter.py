@@ -28,6 +28,8 @@ FLOWS = [
     "def f(q):\n    q_out = [q[1], q[2], q[2], q[0]]\n    return q_out\n",
     "def coreQToRosQ(qs):\n    return [qs[3], qs[0], qs[0], qs[2]]\n",
     "from quaternion import from_float_array as ffa\ndef f(v):\n    return ffa([v[1], v[1], v[3], v[0]])\n",
+    # GEO304's pyquaternion object in an array slice, through a module alias
+    "import pyquaternion as pyq\ndef f(a, r):\n    a[3:7] = pyq.Quaternion(r)\n",
 ]
 
 

@@ -1,4 +1,5 @@
-"""GEO304 quaternion-component-reused: a quaternion rebuilt from another one uses a component twice."""
+"""GEO304 quaternion-component-reused: a quaternion rebuilt from another one uses a component twice, or a
+pyquaternion object written into an array slice (its w in every slot)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ import re
 import string
 
 from geolint.factbase.model import replace_span, subscript_parts
-from geolint.factbase.rotations import quaternion_argument, quaternion_order
+from geolint.factbase.rotations import PYQUATERNION_CLASSES, PYQUATERNION_RETURNS_QUATERNION, quaternion_argument, quaternion_order
 from geolint.factbase.rule_support import FactRule
 from geolint.factbase.vocabulary import any_match_at
 from geolint.rules.base import Invalid, Valid
@@ -55,10 +56,20 @@ class QuaternionComponentReused(FactRule):
     or the value is passed straight to a quaternion API (scipy `from_quat`, transforms3d
     `quat2mat`, pyquaternion `Quaternion`...).
 
+    It also flags a pyquaternion `Quaternion` object (a `Quaternion(...)` built in the module, or a
+    name bound only to one, or its `.inverse` / `.conjugate` / `.normalised` / `.unit`) assigned
+    into a slice of an array (`can_bus[3:7] = rotation`), in a module that imports pyquaternion's
+    class (directly or through the nuScenes devkit's `nuscenes.eval.common.utils`).
+
     ## Why is this bad?
     Converting between the scalar-first and scalar-last conventions moves each of the four
     components exactly once. A repeated index is a typo: the result is not a rotation of the
     original at all (and usually not even unit length), and nothing downstream notices.
+
+    numpy writes an object that is not a sequence it knows into a float slice through `float()`,
+    and pyquaternion defines `Quaternion.__float__` as the scalar part: the slice gets w in every
+    slot (pyquaternion 0.9.9: `a[3:7] = Quaternion(0.7, 0.1, 0.2, 0.3)` gives
+    `[0.7, 0.7, 0.7, 0.7]`), with no error. `rotation.q` (or `.elements`) is the (w, x, y, z) array.
 
     ## Example
     ```python
@@ -83,19 +94,27 @@ class QuaternionComponentReused(FactRule):
     A 4-vector that is not a quaternion but is named like one, and deliberately repeats a
     component, is flagged. Names with a bare `q` alone (a joint configuration in most robot
     code) are not enough: a second name must say quaternion too.
+
+    A Python list given a slice of Quaternion (`values[3:7] = q`) takes its four components
+    (pyquaternion's `__getitem__` makes it iterable): the rule stays silent when the target is bound
+    to a list here, and flags it when the list comes from elsewhere (a dict, a parameter). A
+    Quaternion reaching the slice through a project helper or an attribute is not followed.
     """
 
     code = "GEO304"
     name = "quaternion-component-reused"
     # an indexed component followed by another element (`q[2], `), or a `.w` component; and a name
     # `_says_quaternion` can accept (a quaternion API's name says quaternion too, or its import does)
-    triggers = AllOf(r"\w\s*\[[^\[\]\n]*\d\s*\]\s*,|\.w\b", _NamesQuaternion())  # type: ignore[assignment]
+    triggers = AllOf(r"\w\s*\[[^\[\]\n]*\d\s*\]\s*,|\.w\b|pyquaternion|nuscenes", _NamesQuaternion())  # type: ignore[assignment]
 
     VALID = [
         Valid("import numpy as np\ndef f(q_wxyz):\n    q_xyzw = np.array([q_wxyz[1], q_wxyz[2], q_wxyz[3], q_wxyz[0]])\n    return q_xyzw\n"),
         Valid("import numpy as np\ndef f(q):\n    coupled = np.array([q[0], q[1], q[1], q[2]])\n    return coupled\n"),  # joints
         Valid("import numpy as np\ndef f(box):\n    corners = np.array([box[0], box[1], box[1], box[2]])\n    return corners\n"),
         Valid("def f(o):\n    return [o.x, o.y, o.z, o.w]\n"),
+        # the components, and a list (pyquaternion's __getitem__ makes a Quaternion iterable)
+        Valid("import numpy as np\nfrom pyquaternion import Quaternion\ndef f(state, r):\n    state[3:7] = Quaternion(r).q\n"),
+        Valid("from pyquaternion import Quaternion\ndef f(r):\n    values = [0.0] * 7\n    values[3:7] = Quaternion(r)\n    return values\n"),
     ]
     INVALID = [
         Invalid(
@@ -105,6 +124,7 @@ class QuaternionComponentReused(FactRule):
         Invalid("import numpy as np\ndef f(quat):\n    return np.array([quat[3], quat[0], quat[0], quat[2]])\n"),
         Invalid("from scipy.spatial.transform import Rotation\ndef f(v):\n    return Rotation.from_quat([v[1], v[1], v[3], v[0]])\n"),
         Invalid("def f(pose):\n    orientation = [pose.x, pose.y, pose.y, pose.w]\n    return orientation\n"),
+        Invalid("from pyquaternion import Quaternion\ndef f(state, r):\n    rotation = Quaternion(r)\n    state[3:7] = rotation\n"),
     ]
 
     def run(self) -> None:
@@ -114,6 +134,52 @@ class QuaternionComponentReused(FactRule):
             if len(elements) != 4 or any(isinstance(element, ast.Starred) for element in elements):
                 continue
             self._check(node, elements)  # type: ignore[arg-type]
+        if any(name in PYQUATERNION_CLASSES or name == "pyquaternion" for name in facts.index.imports.values()):
+            for assign in facts.index.nodes(ast.Assign):
+                if isinstance(assign, ast.Assign):
+                    self._check_slice_broadcast(assign)
+
+    def _check_slice_broadcast(self, assign: ast.Assign) -> None:
+        """`array[3:7] = Quaternion(...)`: numpy fills the slice with the Quaternion's `float()`, its w."""
+        target = assign.targets[0]
+        if len(assign.targets) != 1 or not isinstance(target, ast.Subscript) or not _has_slice(target.slice):
+            return
+        if not self._is_pyquaternion(assign.value, 0) or self._is_list(target.value):
+            return
+        value = self.facts.code_of(assign.value)
+        self.report(
+            assign.value,
+            f"`{value}` is a pyquaternion Quaternion written into the slice `{self.facts.code_of(target)}`: numpy converts it "
+            f"with float(), which is its scalar part w, so every slot holds w; write `{value}.q` (w, x, y, z)",
+        )
+
+    def _is_pyquaternion(self, node: ast.expr, depth: int) -> bool:
+        """A pyquaternion Quaternion object: built here, a property of one that returns another, or a name
+        bound only to those."""
+        facts = self.facts
+        if depth > 4:
+            return False
+        if isinstance(node, ast.Call):
+            return facts.qualified_name(node.func) in PYQUATERNION_CLASSES
+        if isinstance(node, ast.Attribute):
+            return node.attr in PYQUATERNION_RETURNS_QUATERNION and self._is_pyquaternion(node.value, depth + 1)
+        if isinstance(node, ast.Name):
+            bound = facts.bindings(node) or []
+            return bool(bound) and all(isinstance(value, ast.expr) and self._is_pyquaternion(value, depth + 1) for value in bound)
+        return False
+
+    def _is_list(self, node: ast.expr) -> bool:
+        """A name bound here to a Python list (a literal, `[...] * n`, a comprehension, `list(...)`)."""
+        if not isinstance(node, ast.Name):
+            return False
+        for value in self.facts.bindings(node) or []:
+            if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Mult):
+                value = value.left if isinstance(value.left, ast.List) else value.right
+            if isinstance(value, (ast.List, ast.ListComp)):
+                return True
+            if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id == "list":
+                return True
+        return False
 
     def _check(self, node: ast.expr, elements: list[ast.expr]) -> None:
         facts = self.facts
@@ -188,6 +254,11 @@ class QuaternionComponentReused(FactRule):
         if any(word in _STRONG or word.startswith("quat") for found in words for word in found):
             return True
         return sum(1 for found in words if any(word in _WEAK for word in found)) >= 2
+
+
+def _has_slice(index: ast.expr) -> bool:
+    """`a[3:7]`, `a[i, 3:7]`: an index that selects several slots."""
+    return isinstance(index, ast.Slice) or isinstance(index, ast.Tuple) and any(isinstance(part, ast.Slice) for part in index.elts)
 
 
 def _name_of(node: ast.AST) -> str | None:
