@@ -369,3 +369,33 @@ def test_library_euler_conversions_return_radians_through_aliases(tmp_path: Path
     )
     found = [(f["line"], f["code"]) for f in check(["aliases.py"], cwd=tmp_path)]
     assert found == [(7, "GEO305"), (10, "GEO305"), (12, "GEO305")], found
+
+
+def test_a_loop_over_its_own_name_ends_the_class_search():
+    """`for elem in elem:` (an XML indent helper) loops over its own name: the search for the class of
+    a stored-to object must stop there, not recurse until the file is lost to GEO001 (and, compiled,
+    to a crash)."""
+    import ast
+    from textwrap import dedent
+
+    from geolint.factbase import facts_for_module
+    from geolint.lint_types import Config
+    from geolint.rules.rotation.quaternion_flow import QuaternionFlow
+
+    source = dedent(
+        """
+        def indent(elem, level=0):
+            if len(elem):
+                for elem in elem:
+                    indent(elem, level + 1)
+                if not elem.tail:
+                    elem.tail = " " * level
+
+        def orientation(record: Record):
+            return record.solver
+        """
+    )
+    tree = ast.parse(source)
+    facts = facts_for_module(tree, source, "indent.py", Config())
+    read = next(node for node in ast.walk(tree) if isinstance(node, ast.Attribute) and node.attr == "solver")
+    assert facts.shared(QuaternionFlow).order_of(read) is None

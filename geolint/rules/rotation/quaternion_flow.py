@@ -423,16 +423,17 @@ class QuaternionFlow:
         return by_value or by_name
 
     # -- records: `Record(quaternion=q)` read back as `record.quaternion` ------------------------
-    def _class_of(self, node: ast.expr) -> str | None:
+    def _class_of(self, node: ast.expr, visiting: frozenset[str] = frozenset()) -> str | None:
         """The class of a name's value when every binding says it: a constructor call, a parameter
-        annotated with one class (`label: Record`, `labels: List[Record]`), or a loop over such a parameter."""
-        if not isinstance(node, ast.Name):
+        annotated with one class (`label: Record`, `labels: List[Record]`), or a loop over such a parameter.
+        `visiting`: the names being resolved (`for elem in elem:` loops over its own name)."""
+        if not isinstance(node, ast.Name) or node.id in visiting:
             return None
         bound = self.facts.bindings(node) or []
-        found = {self._class_of_binding(binding) for binding in bound}
+        found = {self._class_of_binding(binding, visiting | {node.id}) for binding in bound}
         return found.pop() if len(found) == 1 and None not in found else None
 
-    def _class_of_binding(self, binding: object) -> str | None:
+    def _class_of_binding(self, binding: object, visiting: frozenset[str]) -> str | None:
         if isinstance(binding, ast.Call):
             name = last_name(binding.func)
             return name if name and name[:1].isupper() else None
@@ -447,7 +448,7 @@ class QuaternionFlow:
             classes = {name for name in classes if name[:1].isupper() and name not in _TYPING_WORDS}
             return classes.pop() if len(classes) == 1 else None
         if isinstance(binding, LoopBinding) and binding.position is None and isinstance(binding.iterable, ast.Name):
-            return self._class_of(binding.iterable)
+            return self._class_of(binding.iterable, visiting)
         return None
 
     def _record_stores(self, cls: str, attr: str) -> list[ast.expr | None]:
