@@ -13,6 +13,7 @@ import os
 import sys
 from typing import NoReturn, Sequence
 
+from geolint._build import is_compiled
 from geolint._version import __version__
 
 # subcommand -> one-line help; the module is geolint.commands.<subcommand with - as _>
@@ -43,7 +44,7 @@ def missing_extra_message(command: str, error: ImportError) -> str | None:
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="geolint", description="Catch geometric type errors in Python code.")
-    parser.add_argument("--version", action="version", version=f"geolint {__version__}")
+    parser.add_argument("--version", action="version", version=f"geolint {__version__}{' (compiled)' if is_compiled() else ''}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name, help_text in SUBCOMMANDS.items():
         sub = subparsers.add_parser(name, help=help_text, description=help_text)

@@ -22,7 +22,7 @@ import threading
 import tokenize
 from functools import lru_cache
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Iterable, Sequence
+from typing import TYPE_CHECKING, Iterable, Sequence, TypeGuard
 
 from geolint import guards, suppression
 from geolint.config import enabled_codes
@@ -141,8 +141,9 @@ def lint_source(
                 line, column, message = syntax_error
                 return _only_syntax_error(path, config, rules, line, column, f"syntax error: {message}")
 
-    ast_rules = [rule for rule in active if _is_ast_rule(rule)] if syntax_error is None else []
-    cst_rules = [rule for rule in active if not _is_ast_rule(rule)]
+    ast_rules, cst_rules = _split_rules(active)
+    if syntax_error is not None:
+        ast_rules = []
     if checked and syntax_error is None:
         limit = _depth_limit(source, config, bool(ast_rules), bool(cst_rules) or guards.TOO_COMPLEX in on or (
             suppression.UNUSED_SUPPRESSION in on and suppression.may_have_directives(source)
@@ -226,11 +227,22 @@ def _may_fire(rule: AnyRule, source: str, config: Config) -> bool:
     return bool(search_with(source, config) if search_with is not None else trigger.search(source))
 
 
-@lru_cache(maxsize=None)  # asked twice per rule per file
-def _is_ast_rule(rule: AnyRule) -> bool:
+def _is_ast_rule(rule: AnyRule) -> TypeGuard[type[AstRule]]:
     from geolint.rules.base import AstRule
 
     return issubclass(rule, AstRule)
+
+
+def _split_rules(rules: Iterable[AnyRule]) -> tuple[list[type[AstRule]], list[type[Rule]]]:
+    """The `ast` rules and the libcst rules, each in the given order."""
+    ast_rules: list[type[AstRule]] = []
+    cst_rules: list[type[Rule]] = []
+    for rule in rules:
+        if _is_ast_rule(rule):
+            ast_rules.append(rule)
+        else:
+            cst_rules.append(rule)  # type: ignore[arg-type]  # not an AstRule: a libcst Rule
+    return ast_rules, cst_rules
 
 
 def _run_ast_rules(source: str, path: str, config: Config, rule_classes: Sequence[type[AstRule]]) -> list[Finding]:

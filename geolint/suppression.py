@@ -144,7 +144,7 @@ def _multiline_strings_around(tree: ast.AST, row: int) -> list[tuple[int, int, i
     """
     node: ast.AST = tree
     while True:
-        inner = None
+        inner: ast.AST | None = None
         for field in _BODY_FIELDS:
             for child in getattr(node, field, None) or ():
                 if isinstance(child, ast.ExceptHandler) or (hasattr(ast, "match_case") and isinstance(child, ast.match_case)):
@@ -272,9 +272,10 @@ def _statement_spans(source: str) -> dict[int, int]:
     for node in ast.walk(tree):
         if not isinstance(node, ast.stmt):
             continue
-        start = min([node.lineno, *(d.lineno for d in getattr(node, "decorator_list", ()))])
+        decorators: list[ast.expr] = getattr(node, "decorator_list", [])
+        start = min([node.lineno, *(decorator.lineno for decorator in decorators)])
         body = getattr(node, "body", None)
-        if isinstance(body, list) and body and isinstance(body[0], ast.AST):
+        if isinstance(body, list) and body and isinstance(body[0], ast.stmt):
             end = max(node.lineno, body[0].lineno - 1)
         else:
             end = node.end_lineno or node.lineno

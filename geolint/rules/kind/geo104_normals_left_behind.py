@@ -183,7 +183,7 @@ class NormalsLeftBehind(FactRule):
 class _TransformFinder:
     """Finds the first place where a point-like value is multiplied by a matrix or transformed."""
 
-    def __init__(self, rule: NormalsLeftBehind, params_only: dict | None = None) -> None:  # type: ignore[type-arg]
+    def __init__(self, rule: FactRule, params_only: dict | None = None) -> None:  # type: ignore[type-arg]
         self.rule = rule
         self.params_only = params_only
 

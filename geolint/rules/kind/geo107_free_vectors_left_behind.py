@@ -636,7 +636,7 @@ class FreeVectorsLeftBehind(FactRule):
             and {"normal", "normals", "nrm", "nrms"} & set(tokens(vector.id))
             and vector.id in _returned_names(scope.returns)
             and not _uses_outside_returns(function, vector.id)
-            and _TransformFinder(self, params_only=scope.bindings).first(function, body_only=True) is not None  # type: ignore[arg-type]
+            and _TransformFinder(self, params_only=scope.bindings).first(function, body_only=True) is not None
         ):
             return False  # GEO104 reports it
         return True
