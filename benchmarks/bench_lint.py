@@ -10,6 +10,11 @@ benchmark does, with geolint's bytecode compiled first (as a wheel install leave
     python benchmarks/bench_lint.py /work/realcode --repeats 3 --skip-fixit   # the real-code corpus
     python benchmarks/bench_lint.py                      # the installed numpy source tree
     python benchmarks/bench_lint.py PATH --repeats 3 --fixit-repeats 1
+    python benchmarks/bench_lint.py /work/realcode --repeats 3 --skip-fixit --compiled   # + the mypyc build
+
+`--compiled` builds this checkout's optional compiled wheel first (`GEOLINT_MYPYC=1 pip wheel
+--no-build-isolation`, a few minutes, not timed; needs mypy and a C compiler) and adds its cold rows
+(`--compiled-site DIR` reuses an unpacked one).
 """
 
 from __future__ import annotations
@@ -24,6 +29,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import zipfile
 from pathlib import Path
 from typing import Callable
 
@@ -84,6 +90,8 @@ def main() -> int:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--fixit-repeats", type=int, default=1)
     parser.add_argument("--skip-fixit", action="store_true")
+    parser.add_argument("--compiled", action="store_true", help="also time the mypyc-compiled build (built first)")
+    parser.add_argument("--compiled-site", type=Path, default=None, help="an unpacked compiled wheel to time")
     args = parser.parse_args()
 
     tree = (args.tree or default_tree()).resolve()
@@ -116,6 +124,13 @@ def main() -> int:
         "geolint cold, --jobs 2": lambda: time_command([*geolint, "--no-cache", "--jobs", "2"], workdir, env),
         "geolint warm (cache)": lambda: time_command(geolint, workdir, env),
     }
+    compiled_site = args.compiled_site or (build_compiled(workdir) if args.compiled else None)
+    if compiled_site is not None:
+        compiled_env = {**env, "PYTHONPATH": str(compiled_site)}
+        version = subprocess.run([sys.executable, "-m", "geolint", "--version"], env=compiled_env, cwd=workdir, capture_output=True, text=True).stdout
+        assert "(compiled)" in version, f"{compiled_site} holds no compiled build: {version}"
+        measures["geolint cold, --jobs 1, compiled"] = lambda: time_command([*geolint, "--no-cache", "--jobs", "1"], workdir, compiled_env)
+        measures["geolint cold, --jobs 2, compiled"] = lambda: time_command([*geolint, "--no-cache", "--jobs", "2"], workdir, compiled_env)
     shutil.rmtree(workdir / "cache", ignore_errors=True)
     time_command(geolint, workdir, env)  # fill the cache (the cold rows run with --no-cache: they leave it alone)
     ruff = shutil.which("ruff", path=str(Path(sys.executable).parent)) or shutil.which("ruff")
@@ -152,11 +167,30 @@ def main() -> int:
     jobs_ratios = [one[0] / two[0] for one, two in zip(runs["geolint cold, --jobs 1"], runs["geolint cold, --jobs 2"])]
     print(f"per round, cold(jobs 1) / ast.parse: {', '.join(f'{r:.2f}x' for r in parse_ratios)} (median {statistics.median(parse_ratios):.2f}x)")
     print(f"per round, jobs 2 speed-up: {', '.join(f'{r:.2f}x' for r in jobs_ratios)} (median {statistics.median(jobs_ratios):.2f}x)")
+    if "geolint cold, --jobs 1, compiled" in runs:
+        compiled_ratios = [c[0] / p[0] for c, p in zip(runs["geolint cold, --jobs 1, compiled"], runs["ast.parse floor (1 process)"])]
+        speedups = [p[0] / c[0] for c, p in zip(runs["geolint cold, --jobs 1, compiled"], runs["geolint cold, --jobs 1"])]
+        print(f"per round, compiled cold(jobs 1) / ast.parse: {', '.join(f'{r:.2f}x' for r in compiled_ratios)} (median {statistics.median(compiled_ratios):.2f}x)")
+        print(f"per round, compiled speed-up over pure (jobs 1): {', '.join(f'{r:.2f}x' for r in speedups)} (median {statistics.median(speedups):.2f}x)")
     if "fixit lint (built-in rules)" in by_label:
         print(f"geolint cold (jobs 1) vs fixit: {by_label['fixit lint (built-in rules)'][0] / cold:.1f}x faster")
     print(f"load average at end: {' '.join(f'{value:.2f}' for value in os.getloadavg())}")
     shutil.rmtree(workdir, ignore_errors=True)
     return 0
+
+
+def build_compiled(workdir: Path) -> Path:
+    """Build this checkout's compiled wheel (GEOLINT_MYPYC=1) and unpack it; the unpacked folder."""
+    project = Path(__file__).resolve().parents[1]
+    wheels, site = workdir / "wheel", workdir / "compiled"
+    print("building the compiled wheel (not timed) ...")
+    subprocess.run(
+        [sys.executable, "-m", "pip", "wheel", "-q", "--no-build-isolation", "--no-deps", "-w", str(wheels), str(project)],
+        check=True, env={**os.environ, "GEOLINT_MYPYC": "1"}, stdout=subprocess.DEVNULL,
+    )  # fmt: skip
+    with zipfile.ZipFile(next(wheels.glob("*.whl"))) as wheel:
+        wheel.extractall(site)
+    return site
 
 
 if __name__ == "__main__":

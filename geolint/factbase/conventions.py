@@ -37,7 +37,7 @@ from dataclasses import astuple, dataclass, fields, replace
 from pathlib import Path
 from typing import NamedTuple
 
-from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames
+from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames, statements_under
 from geolint.factbase.summaries import project_root
 from geolint.lint_types import Config
 from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS
@@ -104,7 +104,7 @@ class Votes:
 def votes_of_tree(tree: ast.Module) -> Votes:
     """What one module's declarations say about the order of `T_a_b` names."""
     dst = src = 0
-    for node in ast.walk(tree):
+    for node in statements_under(tree):  # assignments are statements: no expression needs walking
         if not isinstance(node, (ast.Assign, ast.AnnAssign)) or not isinstance(node.value, ast.Call):
             continue
         targets = node.targets if isinstance(node, ast.Assign) else [node.target]

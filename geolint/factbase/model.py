@@ -1510,6 +1510,24 @@ def walk_within(node: ast.AST, stop_at_functions: bool = True) -> Iterator[ast.A
 
 
 _SCOPE_NODES = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
+_DEFINITIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+_STATEMENT_LISTS = ("body", "orelse", "finalbody", "handlers", "cases")
+
+
+def statements_under(node: ast.AST, into_definitions: bool = True) -> list[ast.AST]:
+    """The statements below `node` (and the `except` handlers and `match` cases that hold some),
+    found through statement lists only, never walking an expression; with `into_definitions` False,
+    not those of the functions and classes defined inside."""
+    found: list[ast.AST] = []
+    stack: list[ast.AST] = list(getattr(node, "body", []))
+    while stack:
+        statement = stack.pop()
+        found.append(statement)
+        if not into_definitions and isinstance(statement, _DEFINITIONS):
+            continue
+        for field in _STATEMENT_LISTS:
+            stack.extend(getattr(statement, field, ()))
+    return found
 
 
 __all__ = [

@@ -6,7 +6,7 @@ import ast
 import re
 
 from geolint.factbase import ModuleIndex, index_of
-from geolint.factbase.model import is_slice_upto
+from geolint.factbase.model import is_slice_upto, statements_under
 from geolint.factbase.pose_parts import int_value, matrix_indices
 from geolint.factbase.reaching import parameter_of, value_of
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -155,18 +155,9 @@ def _parameters_written_in_place(function: ast.FunctionDef | ast.AsyncFunctionDe
     return written
 
 
-def _own_statements(function: ast.AST) -> list[ast.stmt]:
+def _own_statements(function: ast.AST) -> list[ast.AST]:
     """The statements of a function, not of the functions and classes defined inside it."""
-    found: list[ast.stmt] = []
-    stack = list(getattr(function, "body", []))
-    while stack:
-        statement = stack.pop()
-        found.append(statement)
-        if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            continue
-        for field in ("body", "orelse", "finalbody", "handlers", "cases"):
-            stack.extend(getattr(statement, field, []))
-    return found
+    return statements_under(function, into_definitions=False)
 
 
 def _transform_part_root(target: ast.expr) -> ast.Name | None:

@@ -158,13 +158,10 @@ class InvalidTfFrameId(AstRule):
         if dialect is None:
             return
         index = index_of(tree)
-        parents: dict[ast.AST, ast.AST] = {}
-        for node in ast.walk(tree):
-            for child in ast.iter_child_nodes(node):
-                parents[child] = node
+        parents = index.parents
         static = "StaticTransformBroadcaster" in self.context.source or "static_transform" in self.context.source
         transforms = _TransformMessages(tree, parents)
-        for node in ast.walk(tree):
+        for node in index.nodes(ast.Assign, ast.Call):
             for site, value, role, slash_checked in _frame_sites(node, dialect, transforms, parents):
                 text = frame_string(value, index)
                 if not (slash_checked and text is not None and text.startswith("/")):
@@ -212,10 +209,11 @@ class InvalidTfFrameId(AstRule):
         """TF2 for a tf2 or ROS 2 module, ROS1_TF2 for a ROS 1 module whose package targets tf2, else None."""
         if _TF2_TEXT.search(self.context.source):
             return TF2
-        imported = _imported_modules(tree)
+        index = index_of(tree)
+        imported = _imported_modules(index)
         if not any(name == "rospy" or name.split(".")[0].endswith("_msgs") for name in imported):
             return None
-        if _uses_old_tf(tree, imported):
+        if _uses_old_tf(index, imported):
             return None  # `tf` code: Noetic's tf strips the slash itself (tf.cpp strip_leading_slash)
         return ROS1_TF2 if ros_packages.package_targets_tf2(self.context.path) else None
 
@@ -362,9 +360,9 @@ def _enclosing(node: ast.AST, parents: dict[ast.AST, ast.AST], kinds: tuple[type
     return current
 
 
-def _imported_modules(tree: ast.Module) -> list[str]:
+def _imported_modules(index: ModuleIndex) -> list[str]:
     found: list[str] = []
-    for node in ast.walk(tree):
+    for node in index.nodes(ast.Import, ast.ImportFrom):
         if isinstance(node, ast.Import):
             found.extend(alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
@@ -372,13 +370,13 @@ def _imported_modules(tree: ast.Module) -> list[str]:
     return found
 
 
-def _uses_old_tf(tree: ast.Module, imported: list[str]) -> bool:
+def _uses_old_tf(index: ModuleIndex, imported: list[str]) -> bool:
     """The module uses ROS 1 `tf` itself (a listener, a broadcaster, tf messages), not only
     `tf.transformations`, the quaternion and matrix helpers tf2 code imports as well."""
     if not any(name == "tf" or name.startswith("tf.") for name in imported):
         return False
     aliases: set[str] = set()
-    for node in ast.walk(tree):
+    for node in index.nodes(ast.Import, ast.ImportFrom):
         if isinstance(node, ast.ImportFrom) and node.module and not node.level:
             if node.module == "tf" and any(alias.name != "transformations" for alias in node.names):
                 return True
@@ -390,7 +388,7 @@ def _uses_old_tf(tree: ast.Module, imported: list[str]) -> bool:
                 return True
     return any(
         isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in aliases and node.attr != "transformations"
-        for node in ast.walk(tree)
+        for node in index.nodes(ast.Attribute)
     )
 
 
