@@ -183,8 +183,8 @@ class InvalidTfFrameId(AstRule):
                     applicability="unsafe",
                     fix_description="drop the leading slash" if literal else "",
                 )
-            if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef)):
-                self._check_transforms_of(node, parents, static)
+        for scope in (tree, *index.nodes(ast.FunctionDef, ast.AsyncFunctionDef)):
+            self._check_transforms_of(scope, parents, static)
 
     def _check_characters(self, site: str, value: ast.expr, text: str | None, index: ModuleIndex) -> None:
         """A quote or whitespace in the literal text of a frame id (all of it, or a literal part)."""
