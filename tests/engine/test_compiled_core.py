@@ -21,6 +21,15 @@ PROJECT = PACKAGE.parent
 FIXTURES = PROJECT / "fixtures"
 
 
+def test_the_readme_builds_it_the_way_the_test_does():
+    """The README's command and the wheel the slow test builds use the same switch and flag
+    (the test builds a wheel rather than installing over the environment it runs in)."""
+    from tests.cli.doc_snippets import block, commands_of
+
+    (command,) = commands_of(block("README.md", "Compiled build (optional, faster).").body)
+    assert command.split("  #")[0].split() == ["GEOLINT_MYPYC=1", "pip", "install", "--no-build-isolation", "."]
+
+
 def test_the_compiled_modules_type_check_cleanly():
     """mypyc refuses a module mypy does not accept, and checks the annotations at run time."""
     sources = compiled_sources(PACKAGE)
