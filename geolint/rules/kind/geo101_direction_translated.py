@@ -214,13 +214,10 @@ class DirectionTranslated(FactRule):
         (`cat((n, ones), -1) @ T.T`), or through the one name it is stored in (`n_h = ...; T @ n_h.T`).
         Empty when some use of it is not such a product, or none is."""
         facts = self.facts
-        node: ast.AST = construction
-        parent = facts.parent(node)
-        while parent is not None and is_transpose(parent):
-            node, parent = parent, facts.parent(parent)
-        product = facts.matmul(parent) if parent is not None else None
-        if product is not None and node in (product.left, product.right):
-            return [product.right if node is product.left else product.left]
+        node, parent = self._above_transposes(construction)
+        partner = self._partner_in_product(node, parent)
+        if partner is not None:
+            return [partner]
         if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
             return []
         name, scope = parent.targets[0].id, facts.index.scope_of(parent)
@@ -228,15 +225,25 @@ class DirectionTranslated(FactRule):
         for use in ast.walk(scope.node):
             if not (isinstance(use, ast.Name) and use.id == name and isinstance(use.ctx, ast.Load)) or facts.index.scope_of(use) is not scope:
                 continue
-            operand: ast.AST = use
-            above = facts.parent(use)
-            while above is not None and is_transpose(above):
-                operand, above = above, facts.parent(above)
-            product = facts.matmul(above) if above is not None else None
-            if product is None or operand not in (product.left, product.right):
+            partner = self._partner_in_product(*self._above_transposes(use))
+            if partner is None:
                 return []  # used otherwise too: what it meets is not known
-            partners.append(product.right if operand is product.left else product.left)
+            partners.append(partner)
         return partners
+
+    def _above_transposes(self, node: ast.AST) -> tuple[ast.AST, ast.AST | None]:
+        """`node` or the outermost transpose of it (`x.T`, `x.transpose(-1, -2)`), and its parent."""
+        parent = self.facts.parent(node)
+        while parent is not None and is_transpose(parent):
+            node, parent = parent, self.facts.parent(parent)
+        return node, parent
+
+    def _partner_in_product(self, operand: ast.AST, parent: ast.AST | None) -> ast.expr | None:
+        """The other operand of `parent` when it is a matrix product of `operand`, else None."""
+        product = self.facts.matmul(parent) if parent is not None else None
+        if product is None or operand not in (product.left, product.right):
+            return None
+        return product.right if operand is product.left else product.left
 
     def _may_translate(self, matrix: ast.expr, depth: int = 0) -> bool:
         """False when `matrix` certainly has no translation: a literal identity (`np.eye(4)`,
