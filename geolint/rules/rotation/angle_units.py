@@ -60,6 +60,8 @@ _TO_DEGREES = frozenset({"degrees", "rad2deg"})
 _TO_RADIANS = frozenset({"radians", "deg2rad"})
 _INVERSE_TRIG = frozenset({"arctan2", "arctan", "arcsin", "arccos", "atan2", "atan", "asin", "acos"})
 _ANGLE_MODULES = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"})
+# TensorFlow's `tf.acos`, `tf.math.atan2`... return radians as well (it has no degree conversions)
+_INVERSE_TRIG_MODULES = _ANGLE_MODULES | {"tensorflow", "tensorflow.math"}
 _MAX_DEPTH = 10
 _TWO_PI = 2 * math.pi
 _SPATIALMATH_ANGLE_CALLS = frozenset(
@@ -228,7 +230,7 @@ class AngleUnits:
             return Unit(converted, f"`{facts.code_of(call.func)}` returns {_word(converted)}", False)
         qualified = facts.qualified_name(call.func) or ""
         module, _, name = qualified.rpartition(".")
-        if module in _ANGLE_MODULES and name in _INVERSE_TRIG:
+        if module in _INVERSE_TRIG_MODULES and name in _INVERSE_TRIG:
             return Unit(RADIANS, f"`{facts.code_of(call.func)}` returns radians", False)
         returned = RETURNED_ANGLES.get(qualified)
         if returned is not None:

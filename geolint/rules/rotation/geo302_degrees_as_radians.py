@@ -143,6 +143,10 @@ class DegreesAsRadians(FactRule):
     triggers = _GateOrDivisionByPi()  # type: ignore[assignment]  # the gate, widened
 
     VALID = [
+        Valid(  # a degree name rebound to an arc cosine (radians) before it is converted
+            "import numpy as np\nimport tensorflow as tf\ndef colour(cosine):\n"
+            "    degree_diff = tf.acos(cosine)\n    return degree_diff * 180 / np.pi\n"
+        ),
         Valid(
             "import numpy as np\n"
             "class Orbit:\n"
