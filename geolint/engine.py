@@ -16,6 +16,7 @@ never pays for them.
 from __future__ import annotations
 
 import ast
+import codecs
 import io
 import re
 import threading
@@ -85,7 +86,10 @@ def _decode_problem(data: bytes, error: Exception) -> tuple[int, int, str]:
 def decode_source(data: bytes) -> tuple[str, str]:
     """The text of a Python file and the encoding it was read with (newlines kept as they are)."""
     # The first two lines as Python counts them (a CR-only file's cookie is on its first line too).
-    first_lines = iter(_FIRST_TWO_LINES.match(data).group().splitlines(keepends=True))  # type: ignore[union-attr]
+    first_two = _FIRST_TWO_LINES.match(data).group()  # type: ignore[union-attr]
+    if b"coding" not in first_two and not first_two.startswith(codecs.BOM_UTF8):
+        return data.decode("utf-8"), "utf-8"  # no cookie, no BOM: what tokenize would say, without asking it
+    first_lines = iter(first_two.splitlines(keepends=True))
     encoding, _ = tokenize.detect_encoding(lambda: next(first_lines, b""))  # "utf-8-sig" when there is a BOM
     return data.decode(encoding), encoding
 

@@ -37,6 +37,7 @@ from dataclasses import astuple, dataclass, fields, replace
 from pathlib import Path
 from typing import NamedTuple
 
+from geolint.factbase.index import parse_of_file
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames, statements_under
 from geolint.factbase.summaries import project_root
 from geolint.lint_types import Config
@@ -142,7 +143,8 @@ def votes_of_text(text: str) -> Votes:
     return Votes(composed_dst=dst, composed_src=src)
 
 
-def votes_of_source(source: str, tree: ast.Module | None = None) -> Votes:
+def votes_of_source(source: str, tree: ast.Module | None = None, file: tuple[str, tuple[int, int]] | None = None) -> Votes:
+    """What one module's text says; `file` (its path, size and mtime) lets a parse serve its lint too."""
     votes = votes_of_text(source) if "_" in source else Votes()
     if "pydrake" in source:
         votes = votes + Votes(drake_modules=1)
@@ -151,8 +153,10 @@ def votes_of_source(source: str, tree: ast.Module | None = None) -> Votes:
     if any(word in source for word in _DECLARING):
         if tree is None:
             try:
-                tree = ast.parse(source)
+                tree = ast.parse(source) if file is None else parse_of_file(file[0], source, file[1])
             except (SyntaxError, ValueError, MemoryError, RecursionError):
+                return votes
+            if tree is None:
                 return votes
         votes = votes + votes_of_tree(tree)
     return votes
@@ -228,7 +232,8 @@ def _votes_of_file(path: str) -> Votes:
     text = data.decode("utf-8", errors="replace")
     votes = Votes()
     if "pydrake" in text or "tf2_" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
-        votes = votes_of_source(text)
+        whole = len(data) < _MAX_BYTES  # a truncated text is not the file's
+        votes = votes_of_source(text, file=(path, (stat.st_size, stat.st_mtime_ns)) if whole else None)
     _file_votes[path] = (stat.st_mtime_ns, stat.st_size, votes)
     _files_read[0] += 1
     return votes

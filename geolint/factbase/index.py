@@ -603,6 +603,22 @@ def index_of_file(file: str | os.PathLike[str]) -> ModuleIndex | None:
     return index
 
 
+def parse_of_file(file: str, source: str, signature: tuple[int, int]) -> ast.Module | None:
+    """The tree of `source`, the text of `file` (read by a caller that has its size and mtime), or None
+    when it does not parse: parsed once and kept like `index_of_file`'s trees, so linting the file or
+    importing it later takes this tree (the naming votes read a project's files before any is linted)."""
+    key = os.path.abspath(file)
+    entry = _shared_entry(key)
+    if entry is not None and entry.source == source:
+        return entry.tree
+    try:
+        tree: ast.Module | None = ast.parse(source)
+    except (SyntaxError, ValueError, MemoryError, RecursionError):
+        tree = None
+    _share(key, _SharedModule(source, tree, None, signature))
+    return tree
+
+
 def shared_parse(path: str, source: str) -> tuple[ast.Module, ModuleIndex | None] | None:
     """The tree (and index, if built) of the module at `path` when one was kept for exactly `source`."""
     if path.startswith("<"):

@@ -27,7 +27,7 @@ before), and `R, t = split_pose(T)` gives each name an element of the unpacked v
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any, Callable, Iterator, Sequence
 
 from geolint.factbase.index import Binding, LoopBinding, ModuleIndex, OpaqueBinding, ParamBinding, Scope, UnpackBinding
@@ -157,7 +157,9 @@ def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Defin
                 iterable = generator.iter
                 point = (iterable.end_lineno or iterable.lineno, iterable.end_col_offset or 0)
                 for name, event in _loop_events(generator.target, iterable, holder, point):
-                    table.setdefault(name, []).append(replace(event, within=comprehension))
+                    table.setdefault(name, []).append(
+                        Definition(event.binding, event.statement, event.point, event.only_inside, comprehension, event.walrus)
+                    )
         for walrus in _walruses(index).get(key, ()):
             holder = statement_of(index, walrus)
             if holder is not None and isinstance(walrus.target, ast.Name):
@@ -241,7 +243,8 @@ def _match(events: list[Definition], bindings: Sequence[Binding]) -> list[Defini
             continue
         for number, binding in enumerate(remaining):
             if _same(event.binding, binding):
-                matched.append(replace(event, binding=binding))
+                # the constructor, not `dataclasses.replace`: this runs for every binding of every scope
+                matched.append(Definition(binding, event.statement, event.point, event.only_inside, event.within, event.walrus))
                 del remaining[number]
                 break
         else:
