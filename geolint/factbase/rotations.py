@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import ast
 
-from geolint.factbase.model import FactBase, keyword, last_name
+from geolint.factbase.model import FactBase, keyword, last_name, number
 
 SCALAR_LAST = "xyzw"
 SCALAR_FIRST = "wxyz"
@@ -483,3 +483,45 @@ _ISAAC_POSE_SETTERS = frozenset({"set_world_pose", "set_local_pose", "set_defaul
 
 def api_label(order: str) -> str:
     return "scalar-last (x, y, z, w)" if order == SCALAR_LAST else "scalar-first (w, x, y, z)"
+
+
+_FIELD_LETTERS = frozenset("wxyz")
+
+
+def component_writes_of_parameter(facts: FactBase, stores: list[tuple[ast.Attribute, ast.expr]], plain: set[str]) -> list[tuple[str, str, str]]:
+    """A function that fills one object's `x`, `y`, `z` and `w` from the four indices of one of its
+    parameters (`msg.x = q[0]` ... `msg.w = q[3]`), unconditionally: the parameter is read in that order.
+    Returns (parameter, order, where) for each such object; only the two standard orders count (x, y, z
+    permuted among themselves is an axis change, not a convention)."""
+    from geolint.rules.rotation.angle_units import _unconditional
+
+    groups: dict[str, dict[str, tuple[ast.Attribute, ast.Subscript]]] = {}
+    for target, value in stores:
+        if target.attr not in _FIELD_LETTERS or not isinstance(value, ast.Subscript):
+            continue
+        base = value.value
+        if not isinstance(base, ast.Name) or base.id not in plain:
+            continue
+        groups.setdefault(ast.dump(target.value), {})[target.attr] = (target, value)
+    found: list[tuple[str, str, str]] = []
+    for group in groups.values():
+        if len(group) != 4:
+            continue
+        bases = {value.value.id for _, value in group.values()}  # type: ignore[attr-defined]
+        positions: dict[int, str] = {}
+        for letter, (_, value) in group.items():
+            index = number(value.slice)
+            if type(index) is int and 0 <= index < 4:
+                positions[index] = letter
+        if len(bases) != 1 or len(positions) != 4:
+            continue
+        order = "".join(positions[index] for index in range(4))
+        if order not in (SCALAR_FIRST, SCALAR_LAST):
+            continue
+        if not all(_unconditional(facts, facts.parent(target) or target) for target, _ in group.values()):
+            continue
+        w_target, w_value = group["w"]
+        owner = facts.code_of(w_target.value)
+        where = f"the fields of `{owner}` in {', '.join(order)} order (`{owner}.w = {facts.code_of(w_value)}`)"
+        found.append((bases.pop(), order, where))
+    return found

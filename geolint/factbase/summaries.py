@@ -148,7 +148,17 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
                         summary.translates.add(params.index(operand.id))
     _add_named_units(summary)
     _record_formula_reads(facts, function, plain, summary)
+    if plain and scope.attribute_stores:
+        _record_component_writes(facts, scope.attribute_stores, plain, summary)
     return summary
+
+
+def _record_component_writes(facts: FactBase, stores: list[tuple[ast.Attribute, ast.expr]], plain: set[str], summary: FunctionSummary) -> None:
+    """`msg.x = q[0]` ... `msg.w = q[3]` on a parameter `q`: read in that order, as if handed to an API."""
+    from geolint.factbase.rotations import component_writes_of_parameter
+
+    for name, order, where in component_writes_of_parameter(facts, stores, plain):
+        _add_quaternion_read(summary, summary.parameters.index(name), order, where)
 
 
 def _record_formula_reads(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef, plain: set[str], summary: FunctionSummary) -> None:

@@ -421,9 +421,14 @@ class QuaternionOrder(FactRule):
         self._check_formula_reads(flow)
         if _mentions_order_flag(facts.index.source):
             self._check_order_flag_slices()
+        named_reads: dict[tuple[int, str, str], dict[str, tuple[ast.Name, ast.Subscript]]] = {}
         for node in facts.index.nodes(ast.Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
             self._check_message_field(node, flow)  # type: ignore[arg-type]
+            _collect_named_read(facts, node, named_reads)  # type: ignore[arg-type]
+        for group in named_reads.values():
+            if len(group) == 4:
+                self._check_named_reads(group, flow)
         if "roll" in facts.index.source:  # no `roll` in the text, no roll call (an alias is imported by name)
             for node in facts.index.nodes(ast.Call):
                 self._check_flat_roll(node, flow)  # type: ignore[arg-type]
@@ -744,6 +749,15 @@ class QuaternionOrder(FactRule):
             return replace_span(index, reorder.node, edits)  # type: ignore[arg-type]
         return None
 
+    def _check_named_reads(self, group: dict[str, tuple[ast.Name, ast.Subscript]], flow: QuaternionFlow) -> None:
+        """`ori_x = q[0]` ... `ori_w = q[3]`: four local names that say which component they hold, read by
+        index from one quaternion of known order with w taken from another index than the order puts it at."""
+        first = min((target for target, _ in group.values()), key=lambda t: (t.lineno, t.col_offset))
+        values: dict[str, ast.expr] = {letter: value for letter, (_, value) in group.items()}
+        names = {letter: target.id for letter, (target, _) in group.items()}
+        shape = "`" + names["w"].replace("{", "{{").replace("}", "}}")[:-1] + "{letter} = {value}`"
+        self._check_components(first, values, flow, shape, fixable=False)
+
     # -- components written one by one: dicts, keyword arguments, message fields ----------------
     def _check_component_writes(self, flow: QuaternionFlow) -> None:
         facts = self.facts
@@ -880,6 +894,21 @@ def _under_branch_on(facts: FactBase, node: ast.AST, function: ast.AST) -> bool:
             return True
         current = facts.parent(current)
     return False
+
+
+def _collect_named_read(facts: FactBase, node: ast.Assign, groups: dict[tuple[int, str, str], dict[str, tuple[ast.Name, ast.Subscript]]]) -> None:
+    """`ori_x = ee_quat[0]`: a name that says it holds one component (`_component`), bound to one index of
+    a name; grouped by scope, indexed name and the names' common prefix."""
+    if len(node.targets) != 1 or not isinstance(node.targets[0], ast.Name) or not isinstance(node.value, ast.Subscript):
+        return
+    target, value = node.targets[0], node.value
+    if not isinstance(value.value, ast.Name) or type(number(value.slice)) is not int:
+        return
+    component = _component(facts, target)
+    if component is None or component[1] == "":
+        return  # a bare `x = q[0]` may be anything; `qx`, `ori_x`, `quat_w` say a quaternion component
+    key = (id(facts.index.scope_of(node).node), value.value.id, component[1])
+    groups.setdefault(key, {})[component[0]] = (target, value)
 
 
 def _is_other_convention(order: str, expected: str) -> bool:
