@@ -403,3 +403,82 @@ def test_summaries_are_kept_per_lint() -> None:
     second = facts_for_module(tree, "x = 1\n", "<string>", Config())
     assert isinstance(first, FactBase) and first.project is not second.project
     assert first.scratch().project is first.project
+
+
+_FIELD_HELPERS = """\
+from geometry_msgs.msg import Quaternion
+def to_msg(q):
+    m = Quaternion()
+    m.x = q[0]
+    m.y = q[1]
+    m.z = q[2]
+    m.w = q[3]
+    return m
+def to_msg_wxyz(q):
+    m = Quaternion()
+    m.w = q[0]
+    m.x = q[1]
+    m.y = q[2]
+    m.z = q[3]
+    return m
+def to_msg_axes(q):
+    m = Quaternion()
+    m.y = q[0]
+    m.x = q[1]
+    m.z = q[2]
+    m.w = q[3]
+    return m
+def to_msg_maybe(q, ready):
+    m = Quaternion()
+    if ready:
+        m.x = q[0]
+        m.y = q[1]
+        m.z = q[2]
+        m.w = q[3]
+    return m
+def to_msg_rebound(q):
+    q = list(q)
+    m = Quaternion()
+    m.x = q[0]
+    m.y = q[1]
+    m.z = q[2]
+    m.w = q[3]
+    return m
+def to_msg_three(q):
+    m = Quaternion()
+    m.x = q[0]
+    m.y = q[1]
+    m.z = q[2]
+    return m
+"""
+
+
+def test_a_helper_that_writes_its_parameter_into_fields_reads_it_in_their_order() -> None:
+    """`m.x = q[0]` ... `m.w = q[3]`, unconditionally, on a parameter never rebound: the parameter is read
+    as x, y, z, w (or w, x, y, z); an axis permutation, a branch, a rebinding or a missing field say nothing."""
+    facts = facts_for_module(ast.parse(_FIELD_HELPERS), _FIELD_HELPERS, "<string>", Config())
+
+    def reads(name: str) -> dict[int, str]:
+        found = facts.project.summary(facts, facts.index.functions[name])
+        assert found is not None
+        return {index: order for index, (order, _) in found.reads_quaternion.items()}
+
+    assert reads("to_msg") == {0: "xyzw"}
+    assert reads("to_msg_wxyz") == {0: "wxyz"}
+    for silent in ("to_msg_axes", "to_msg_maybe", "to_msg_rebound", "to_msg_three"):
+        assert reads(silent) == {}, silent
+    calls = (
+        "from transforms3d.euler import euler2quat\n"
+        "from scipy.spatial.transform import Rotation\n"
+        "def publish(r, p, y, R):\n"
+        "    q = euler2quat(r, p, y)\n"
+        "    s = Rotation.from_matrix(R).as_quat()\n"
+        "    return to_msg(q), to_msg_wxyz(q), to_msg(s), to_msg_wxyz(s), to_msg_maybe(q, True)\n"
+    )
+    source = _FIELD_HELPERS + calls
+    lines = source.splitlines()
+    findings = sorted((f.line, f.column, f.code) for f in lint_source(source, "<string>", Config()))
+    line = len(lines)
+    assert [(found_line, code) for found_line, _, code in findings] == [(line, "GEO301"), (line, "GEO301")]
+    flagged = [lines[line - 1][: column - 1].rsplit(" ", 1)[-1] for _, column, _ in findings]
+    assert flagged == ["to_msg(", "to_msg_wxyz("]  # w, x, y, z into x, y, z, w fields, and the reverse

@@ -145,7 +145,12 @@ class QuaternionOrder(FactRule):
       is no evidence;
     - a value whose order is known passed to a project helper (here or in another module) that
       hands the parameter, unchanged and unconditionally, to one of those APIs
-      (`yaw_from_quat(msg.q)` where `def yaw_from_quat(q): return Rotation.from_quat(q)...`);
+      (`yaw_from_quat(msg.q)` where `def yaw_from_quat(q): return Rotation.from_quat(q)...`), or that
+      fills one object's `x`, `y`, `z`, `w` from the parameter's four indices, unconditionally
+      (`def to_ros(q): m = Quaternion(); m.x = q[0]; ...; m.w = q[3]` reads `q` as x, y, z, w);
+    - four local names that say which component they hold (`ori_x`, `qw`, `quat_z`; a bare `x` is
+      not enough), read by index from one quaternion of known order with w taken from another index
+      than the order puts it at (`ori_x = ee_quat[0]` ... `ori_w = ee_quat[3]` of a (w, x, y, z) value);
     - a textbook formula written by index that takes w from another component than the value's
       known order puts it in: the yaw `atan2(2 * (q[3] * q[2] + q[0] * q[1]), 1 - 2 * (q[1] ** 2 + q[2] ** 2))`,
       the roll, the pitch `asin(2 * (wy - xz))` and the 3x3 rotation matrix (or its transpose), read
@@ -205,7 +210,12 @@ class QuaternionOrder(FactRule):
     names), nor are Isaac Sim 4.5+'s `isaacsim.core.utils.rotations` functions; `quat_mul` & co. imported
     by star from two of these modules, or redefined by the module, are not read either. A quaternion
     that reaches a prim through a project class's constructor (`Cabinet(path, orientation=q)` whose
-    `__init__` stores it and passes it on) is not followed.
+    `__init__` stores it and passes it on) is not followed. A name imported in both branches of an
+    `if` (`from tf.transformations import quaternion_from_euler` under ROS 1, transforms3d's
+    `euler2quat as quaternion_from_euler` under ROS 2) is read as its last import, whichever branch a
+    call sits in. A helper in a sibling package of a ROS workspace (`carla_common/src/carla_common`
+    imported from `carla_ros_bridge/src/...`, each package with its own `setup.py`) is not found, so
+    its summary is unknown. Component names read by unpacking (`x, y, z, w = q`) are not judged.
     """
 
     code = "GEO301"
@@ -214,6 +224,14 @@ class QuaternionOrder(FactRule):
 
     VALID = [
         Valid("from scipy.spatial.transform import Rotation\nr = Rotation.from_quat([q.x, q.y, q.z, q.w])\n"),
+        Valid(
+            "from transforms3d.euler import euler2quat\ndef to_ros(msg, q):\n    msg.w = q[0]\n    msg.x = q[1]\n"
+            "    msg.y = q[2]\n    msg.z = q[3]\n    return msg\ndef f(msg, r, p, y):\n    return to_ros(msg, euler2quat(r, p, y))\n"
+        ),
+        Valid(
+            "from transforms3d.euler import euler2quat\ndef f(r, p, y):\n    q = euler2quat(r, p, y)\n"
+            "    qw = q[0]\n    qx = q[1]\n    qy = q[2]\n    qz = q[3]\n    return qx, qy, qz, qw\n"
+        ),
         Valid(
             "from scipy.spatial.transform import Rotation\n"
             "r = Rotation.from_quat([q.w, q.x, q.y, q.z], scalar_first=True)\n"
@@ -299,6 +317,14 @@ class QuaternionOrder(FactRule):
         ),
     ]
     INVALID = [
+        Invalid(
+            "from transforms3d.euler import euler2quat\ndef to_ros(msg, q):\n    msg.x = q[0]\n    msg.y = q[1]\n"
+            "    msg.z = q[2]\n    msg.w = q[3]\n    return msg\ndef f(msg, r, p, y):\n    return to_ros(msg, euler2quat(r, p, y))\n"
+        ),
+        Invalid(
+            "from transforms3d.euler import euler2quat\ndef f(r, p, y):\n    q = euler2quat(r, p, y)\n"
+            "    qx = q[0]\n    qy = q[1]\n    qz = q[2]\n    qw = q[3]\n    return qx, qy, qz, qw\n"
+        ),
         Invalid(
             "import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef root_rotvec(frames):\n"
             "    return Rotation.from_quat(np.roll(frames[:, 3:7], -1)).as_rotvec()\n",
