@@ -47,6 +47,10 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
     consumed = _simulator_order(facts, call, _CONSUMED) if called in _SIMULATOR_NAMES else None
     if consumed is not None:
         return consumed
+    if called in _TRANSFORMS3D_OPERATIONS or called in _TF_OPERATIONS:
+        operation = _operation_order(facts, func)
+        if operation is not None:
+            return operation
     if "uat" not in called and called != "from_float_array":
         return None  # every API below says quat / Quat in its name, but numpy-quaternion's from_float_array
     if is_scipy_rotation_method(facts, func, "from_quat"):
@@ -58,7 +62,7 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
             if not (isinstance(value, ast.Constant) and value.value is False):
                 return None  # decided at run time
         return SCALAR_LAST
-    qualified = facts.qualified_name(func) or ""
+    qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
     if qualified.startswith("transforms3d.") and name.startswith("quat2"):
         return SCALAR_FIRST
@@ -87,6 +91,22 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
     return _DATA_CONSUMERS.get(_library_key(qualified, name))
 
 
+# transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion) and the ROS
+# names they are imported under when a module supports ROS 1 (`tf.transformations`) and ROS 2
+_TRANSFORMS3D_OPERATIONS = frozenset({"qmult", "qconjugate", "qinverse"})
+_TF_OPERATIONS = frozenset({"quaternion_multiply", "quaternion_conjugate", "quaternion_inverse"})
+
+
+def _operation_order(facts: FactBase, func: ast.expr) -> str | None:
+    qualified = branch_qualified_name(facts, func) or ""
+    module, _, name = qualified.rpartition(".")
+    if module.startswith("transforms3d") and name in _TRANSFORMS3D_OPERATIONS:
+        return SCALAR_FIRST
+    if module in ("tf.transformations", "tf_transformations") and name in _TF_OPERATIONS:
+        return SCALAR_LAST
+    return None
+
+
 def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
     """The one argument of a quaternion consumer that holds the whole quaternion (a 4-vector or a
     stack of them), or None: the call spells components out, or the API takes no quaternion first."""
@@ -97,7 +117,7 @@ def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
     if is_scipy_rotation_method(facts, func, "from_quat"):
         given = keyword(call, "quat")
         return positional[0] if positional else given.value if given is not None else None
-    qualified = facts.qualified_name(func) or ""
+    qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion"):
         given = keyword(call, "array")
@@ -196,7 +216,7 @@ def quaternion_producer(facts: FactBase, call: ast.Call) -> str | None:
     produced = _simulator_order(facts, call, _PRODUCED) if facts.called_name(func) in _SIMULATOR_NAMES else None
     if produced is not None:
         return produced
-    qualified = facts.qualified_name(func) or ""
+    qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if name in _PYBULLET_QUATERNIONS:  # camelCase pybullet names, on the module or a client object
         return SCALAR_LAST
@@ -525,3 +545,53 @@ def component_writes_of_parameter(facts: FactBase, stores: list[tuple[ast.Attrib
         where = f"the fields of `{owner}` in {', '.join(order)} order (`{owner}.w = {facts.code_of(w_value)}`)"
         found.append((bases.pop(), order, where))
     return found
+
+
+class ImportBranches:
+    """Names the module imports in more than one arm of a module-level `if` (`if ROS_VERSION == 1: from
+    tf.transformations import quaternion_multiply` / `elif ROS_VERSION == 2: from transforms3d.quaternions
+    import qmult as quaternion_multiply`): local name -> [(qualified name, the `if`'s test, arm)]. The
+    index keeps the last import only; a call inside a function branch on the same test, in the same arm,
+    is resolved to that arm's import instead (`branch_qualified_name`)."""
+
+    def __init__(self, facts: FactBase) -> None:
+        found: dict[str, list[tuple[str, str, bool]]] = {}
+        for statement in facts.index.tree.body:
+            if isinstance(statement, ast.If):
+                _collect_branch_imports(statement, found)
+        self.alternatives = {name: arms for name, arms in found.items() if len({qualified for qualified, _, _ in arms}) > 1}
+
+
+def _collect_branch_imports(node: ast.If, found: dict[str, list[tuple[str, str, bool]]]) -> None:
+    test = ast.dump(node.test)
+    for arm, body in ((True, node.body), (False, node.orelse)):
+        for statement in body:
+            if isinstance(statement, ast.ImportFrom) and statement.module and not statement.level:
+                for alias in statement.names:
+                    if alias.name != "*":
+                        found.setdefault(alias.asname or alias.name, []).append((f"{statement.module}.{alias.name}", test, arm))
+            elif isinstance(statement, ast.If) and not arm and len(body) == 1:
+                _collect_branch_imports(statement, found)  # `elif`
+
+
+def branch_qualified_name(facts: FactBase, func: ast.AST) -> str | None:
+    """`facts.qualified_name(func)`, except for a name imported in several arms of a module-level `if`
+    and called inside a branch on the same test: that arm's import."""
+    qualified = facts.qualified_name(func)
+    if not isinstance(func, ast.Name) or not facts.index.imports.get(func.id):
+        return qualified
+    arms = facts.shared(ImportBranches).alternatives.get(func.id)
+    if not arms:
+        return qualified
+    child: ast.AST = func
+    current = facts.parent(func)
+    while current is not None:
+        if isinstance(current, ast.If):
+            test = ast.dump(current.test)
+            in_body = any(statement is child for statement in current.body)
+            for candidate, guard, arm in arms:
+                if guard == test and arm == in_body:
+                    return candidate
+        child = current
+        current = facts.parent(current)
+    return qualified

@@ -102,8 +102,8 @@ class QuaternionOrder(FactRule):
     ## What it does
     Flags a quaternion spelled out component by component (`[q.w, q.x, q.y, q.z]`,
     `[qx, qy, qz, qw]`) and passed to an API that expects the other order: scipy
-    `Rotation.from_quat` (x, y, z, w unless `scalar_first=True`), transforms3d `quat2*`,
-    pytransform3d `*_from_quaternion`, pyquaternion `Quaternion` and spatialmath
+    `Rotation.from_quat` (x, y, z, w unless `scalar_first=True`), transforms3d `quat2*` and
+    `qmult` / `qconjugate` / `qinverse`, pytransform3d `*_from_quaternion`, pyquaternion `Quaternion` and spatialmath
     `UnitQuaternion` (w, x, y, z), ROS `tf.transformations` and ROS 1 `geometry_msgs.msg.Quaternion`
     (x, y, z, w); also trimesh's
     `transformations`, pytorch3d `quaternion_*`, numpy-quaternion `from_float_array` and `np.quaternion` (a
@@ -210,10 +210,12 @@ class QuaternionOrder(FactRule):
     names), nor are Isaac Sim 4.5+'s `isaacsim.core.utils.rotations` functions; `quat_mul` & co. imported
     by star from two of these modules, or redefined by the module, are not read either. A quaternion
     that reaches a prim through a project class's constructor (`Cabinet(path, orientation=q)` whose
-    `__init__` stores it and passes it on) is not followed. A name imported in both branches of an
-    `if` (`from tf.transformations import quaternion_from_euler` under ROS 1, transforms3d's
-    `euler2quat as quaternion_from_euler` under ROS 2) is read as its last import, whichever branch a
-    call sits in. A helper in a sibling package of a ROS workspace (`carla_common/src/carla_common`
+    `__init__` stores it and passes it on) is not followed. A name imported in two arms of a
+    module-level `if` (`from tf.transformations import quaternion_multiply` under `if ROS_VERSION == 1:`,
+    transforms3d's `qmult as quaternion_multiply` under `elif ROS_VERSION == 2:`) is read as the import of
+    the arm when the call sits in a function branch on the same test (`if ROS_VERSION == 1:` again), and
+    as the last import elsewhere: a call outside any such branch runs under both, so a fixed order
+    given to it is wrong under one of them, but the finding names only the last import's order. A helper in a sibling package of a ROS workspace (`carla_common/src/carla_common`
     imported from `carla_ros_bridge/src/...`, each package with its own `setup.py`) is not found, so
     its summary is unknown. Component names read by unpacking (`x, y, z, w = q`) are not judged.
     """
