@@ -10,6 +10,8 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_label, field_order
 from geolint.factbase.model import FactBase, last_name, number, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import (
+    ImportBranches,
+    branch_qualified_name,
     PYBULLET_ORIENTATION_CALLS,
     SCALAR_FIRST,
     SCALAR_LAST,
@@ -638,7 +640,11 @@ class QuaternionOrder(FactRule):
             return f"`{self.code_of(consumer.target)}` ({field_label(consumer.cls, consumer.target.attr)})"
         if isinstance(consumer, _Helper):
             return f"`{self.code_of(consumer.call.func)}` (which passes its parameter `{consumer.parameter}` to {consumer.where})"
-        return f"`{self.code_of(consumer.func)}`"
+        func = consumer.func
+        if isinstance(func, ast.Name) and func.id in self.facts.shared(ImportBranches).alternatives:
+            # `quaternion_multiply` imported from tf under ROS 1 and as transforms3d's qmult under ROS 2
+            return f"`{func.id}` (here `{branch_qualified_name(self.facts, func)}`, one of its imports in the arms of an `if`)"
+        return f"`{self.code_of(func)}`"
 
     def _check_helper(self, node: ast.Call, flow: QuaternionFlow) -> None:
         """A quaternion whose order is known passed to a project helper that hands the parameter,
