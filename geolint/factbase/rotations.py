@@ -4,6 +4,7 @@ qualified names resolved through the module's imports (one table per question)."
 from __future__ import annotations
 
 import ast
+import re
 
 from geolint.factbase.model import FactBase, keyword, last_name, number
 
@@ -506,6 +507,8 @@ def api_label(order: str) -> str:
 
 
 _FIELD_LETTERS = frozenset("wxyz")
+# names that say a quaternion is the identity (`IDENTITY_QUAT`, `no_rotation`)
+IDENTITY_NAME = re.compile(r"(?i)(?:^|_)(?:identity|ident|no_rot(?:ation)?|zero_rot(?:ation)?|unit_quat(?:ernion)?)(?:$|_)")
 
 
 def component_writes_of_parameter(facts: FactBase, stores: list[tuple[ast.Attribute, ast.expr]], plain: set[str]) -> list[tuple[str, str, str]]:

@@ -10,6 +10,7 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_label, field_order
 from geolint.factbase.model import FactBase, last_name, number, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import (
+    IDENTITY_NAME,
     ImportBranches,
     branch_qualified_name,
     PYBULLET_ORIENTATION_CALLS,
@@ -688,7 +689,7 @@ class QuaternionOrder(FactRule):
         turn about z is written the same way."""
         if isinstance(argument, ast.Name):
             bound = self.facts.bindings(argument) or []
-            if _IDENTITY_NAME.search(argument.id) is None or len(bound) != 1 or not isinstance(bound[0], ast.expr):
+            if IDENTITY_NAME.search(argument.id) is None or len(bound) != 1 or not isinstance(bound[0], ast.expr):
                 return
             literal, shown = bound[0], f"`{argument.id}` is named an identity and is"
         elif _identity_comment(self.facts.index.source, argument):
@@ -1011,7 +1012,6 @@ def _takes_stacks(facts: FactBase, call: ast.Call | _MessageField | _Helper | _K
     return name in ("from_quat", "from_float_array", "as_quat_array") or name.startswith("quaternion_") or accepts_stacks(facts, call)
 
 
-_IDENTITY_NAME = re.compile(r"(?i)(?:^|_)(?:identity|ident|no_rot(?:ation)?|zero_rot(?:ation)?|unit_quat(?:ernion)?)(?:$|_)")
 
 
 def _identity_comment(source: str, node: ast.expr) -> bool:

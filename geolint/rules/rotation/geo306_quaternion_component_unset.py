@@ -6,7 +6,8 @@ import ast
 
 from geolint.factbase.index import FUNCTION_NODES
 from geolint.factbase.messages import MessageTypes
-from geolint.factbase.model import FactBase, dotted_name, walk_within
+from geolint.factbase.model import FactBase, dotted_name, number, walk_within
+from geolint.factbase.rotations import IDENTITY_NAME
 from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
@@ -30,7 +31,9 @@ class QuaternionComponentUnset(FactRule):
     the fourth, neither by itself nor by replacing the whole quaternion or a message around it.
     Also flags x, y and z written from three elements in a row of one sequence (`s[0]`, `s[1]`,
     `s[2]`, each maybe through the same call, `f(s[0], table)`) with w never set: whether `s` holds
-    three angles or a quaternion, the message's quaternion is wrong.
+    three angles or a quaternion, the message's quaternion is wrong. And flags a message whose name
+    says identity (`no_rotation`, `identity`) with only `x`, `y` or `z` set to 1 and w never set
+    (`no_rotation.rotation.x = 1.0`): the identity written in w, x, y, z order into an x, y, z, w message.
 
     ## Why is this bad?
     The missing component keeps the message's default: w is 0.0 in ROS 1 (genpy) and 1.0 in ROS 2
@@ -71,7 +74,8 @@ class QuaternionComponentUnset(FactRule):
     used to carry three angles; elements in a row of a sequence are flagged whatever its name, as
     only a known message's field (`Imu.orientation`, `Pose.orientation`, `Transform.rotation`) is
     checked, never a bare Quaternion message. Components copied through a helper, or from
-    different sources, are not looked at.
+    different sources, are not looked at. A lone `x = 1` is flagged only under a name that says
+    identity: a deliberate half turn about x (ROS 1's w default is 0) is written the same way.
     """
 
     code = "GEO306"
@@ -79,6 +83,8 @@ class QuaternionComponentUnset(FactRule):
     triggers = AllOf(r"\.[xyzw]\s*=[^=]", r"_msgs|Quaternion")
 
     VALID = [
+        Valid("from geometry_msgs.msg import Transform\ndef f():\n    no_rotation = Transform()\n    no_rotation.rotation.w = 1.0\n    return no_rotation\n"),
+        Valid("from geometry_msgs.msg import Transform\ndef f():\n    flipped = Transform()\n    flipped.rotation.x = 1.0\n    return flipped\n"),
         Valid(
             "from geometry_msgs.msg import Pose\ndef f(rotation):\n    pose = Pose()\n    pose.orientation.x = rotation.x\n"
             "    pose.orientation.y = rotation.y\n    pose.orientation.z = rotation.z\n    pose.orientation.w = rotation.w\n    return pose\n"
@@ -114,6 +120,10 @@ class QuaternionComponentUnset(FactRule):
         ),
     ]
     INVALID = [
+        Invalid(
+            "from geometry_msgs.msg import Transform\ndef f():\n    no_rotation = Transform()\n    no_rotation.rotation.x = 1.0\n    return no_rotation\n",
+            expected_fix="from geometry_msgs.msg import Transform\ndef f():\n    no_rotation = Transform()\n    no_rotation.rotation.w = 1.0\n    return no_rotation\n",
+        ),
         # three values of a sequence in a row, w never set (an inertial unit's roll, pitch, yaw)
         Invalid(
             "from sensor_msgs.msg import Imu\ndef f(unit):\n    values = unit.getValues()\n    msg = Imu()\n"
@@ -148,6 +158,37 @@ class QuaternionComponentUnset(FactRule):
             for path, targets in copies.items():
                 if len(targets) == 3 and len({target.attr for target in targets}) == 3:
                     self._check(scope_node, path, targets)
+                elif len(targets) == 1 and targets[0].attr != "w":
+                    self._check_identity(scope_node, path, targets[0])
+
+    def _check_identity(self, function: ast.AST, path: str, target: ast.Attribute) -> None:
+        """`no_rotation = Transform()` then `no_rotation.rotation.x = 1.0` and nothing else: the identity
+        written w-first into x; w keeps its default, so the quaternion is a half turn about x (ROS 1) or
+        not of unit length (ROS 2). Only when a name of the message or its path says identity."""
+        facts = self.facts
+        statement = facts.parent(target)
+        if not isinstance(statement, ast.Assign) or len(statement.targets) != 1 or number(statement.value) != 1:
+            return
+        if IDENTITY_NAME.search(path.replace(".", "_")) is None:
+            return
+        root = target.value
+        while isinstance(root, ast.Attribute):
+            root = root.value
+        if not isinstance(root, ast.Name):
+            return
+        built = self._built_here(root, target.value)
+        if built is None or not self._untouched(function, root.id, path, "w", built, statement):
+            return
+        self.report(
+            statement,
+            f"`{path}` is named for the identity, but only `{target.attr}` is set to 1 and w keeps `{built}`'s default "
+            f"({_DEFAULTS['w']}): (x, y, z, w) = ({', '.join('1' if c == target.attr else '0' for c in 'xyz')}, w) is a half turn "
+            f"about {target.attr} in ROS 1 and no unit quaternion in ROS 2; the identity is w = 1 (1 comes first only in "
+            "the w, x, y, z order)",
+            replacement=f"{facts.code_of(statement).rsplit('.' + target.attr, 1)[0]}.w = 1.0" if "\n" not in facts.code_of(statement) else None,
+            applicability="unsafe",
+            fix_description="set w to 1 instead",
+        )
 
     def _check(self, function: ast.AST, path: str, targets: list[ast.Attribute]) -> None:
         facts = self.facts
