@@ -179,12 +179,12 @@ class QuaternionComponentUnset(FactRule):
         built = self._built_here(root, target.value)
         if built is None or not self._untouched(function, root.id, path, "w", built, statement):
             return
+        vector = ", ".join("1" if component == target.attr else "0" for component in "xyz")
         self.report(
             statement,
             f"`{path}` is named for the identity, but only `{target.attr}` is set to 1 and w keeps `{built}`'s default "
-            f"({_DEFAULTS['w']}): (x, y, z, w) = ({', '.join('1' if c == target.attr else '0' for c in 'xyz')}, w) is a half turn "
-            f"about {target.attr} in ROS 1 and no unit quaternion in ROS 2; the identity is w = 1 (1 comes first only in "
-            "the w, x, y, z order)",
+            f"({_DEFAULTS['w']}): (x, y, z, w) = ({vector}, 0) is a half turn about {target.attr} in ROS 1, and ({vector}, 1) "
+            "is no unit quaternion in ROS 2; the identity is w = 1 (1 comes first only in the w, x, y, z order)",
             replacement=f"{facts.code_of(statement).rsplit('.' + target.attr, 1)[0]}.w = 1.0" if "\n" not in facts.code_of(statement) else None,
             applicability="unsafe",
             fix_description="set w to 1 instead",
