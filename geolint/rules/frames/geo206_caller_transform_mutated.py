@@ -102,27 +102,30 @@ class CallerTransformMutated(AstRule):
 
     def check(self, tree: ast.Module) -> None:
         index = index_of(tree)
-        for function in index.nodes(ast.FunctionDef, ast.AsyncFunctionDef):
-            assert isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
-            if _MUTATOR_NAME.search(function.name) or not _returns_value(function):
-                continue
-            for statement in _own_statements(function):
-                targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target] if isinstance(statement, ast.AugAssign) else []
-                for target in targets:
-                    root = _transform_part_root(target)
-                    if root is None:
-                        continue
-                    parameter = _parameter_read_by(root, index)
-                    if parameter is None or parameter in ("self", "cls") or _returns_name(function, {parameter, root.id}):
-                        continue  # returned: an update-and-return helper whose caller rebinds
-                    if _returns_name(function, _parameters_written_in_place(function, index) - {parameter}):
-                        continue  # an in-place API: it fills other arguments and hands them back
-                    self.report(
-                        target,
-                        f"`{function.name}` rewrites part of the transform its caller passed as "
-                        f"`{parameter}` (`{ast.unparse(target)}`), so the caller's transform changes "
-                        f"too; copy it first (`{parameter}.copy()`, `copy.deepcopy({parameter})`)",
-                    )
+        # from the writes to a transform's part, few in any module, to the function each is in
+        # (not every statement of every function)
+        for statement in index.nodes(ast.Assign, ast.AugAssign):
+            targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]  # type: ignore[attr-defined]
+            for target in targets:
+                root = _transform_part_root(target)
+                if root is None:
+                    continue
+                function = index.scope_of(statement).node
+                if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    continue  # module or class level: no caller's argument
+                if _MUTATOR_NAME.search(function.name) or not _returns_value(function):
+                    continue
+                parameter = _parameter_read_by(root, index)
+                if parameter is None or parameter in ("self", "cls") or _returns_name(function, {parameter, root.id}):
+                    continue  # returned: an update-and-return helper whose caller rebinds
+                if _returns_name(function, _parameters_written_in_place(function, index) - {parameter}):
+                    continue  # an in-place API: it fills other arguments and hands them back
+                self.report(
+                    target,
+                    f"`{function.name}` rewrites part of the transform its caller passed as "
+                    f"`{parameter}` (`{ast.unparse(target)}`), so the caller's transform changes "
+                    f"too; copy it first (`{parameter}.copy()`, `copy.deepcopy({parameter})`)",
+                )
 
 
 def _returns_value(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
