@@ -23,11 +23,10 @@ from __future__ import annotations
 import os
 import re
 import threading
-from functools import lru_cache
 
 from geolint.factbase import conventions
+from geolint.factbase.summaries import PACKAGE_MANIFEST, package_of_folder
 
-PACKAGE_MANIFEST = "package.xml"
 # a `<depend>`, `<build_depend>`, `<exec_depend>`, `<run_depend>`... on a tf2 package
 _TF2_DEPENDENCY = re.compile(
     r"<(?:\w+_)?depend>\s*tf2(?:_ros|_py|_geometry_msgs|_sensor_msgs|_kdl|_eigen|_bullet|_tools)?\s*</", re.IGNORECASE
@@ -51,19 +50,7 @@ def declares_tf2(manifest: str) -> bool:
 
 def package_folder(path: str) -> str | None:
     """The ROS package a file belongs to: the nearest folder above it holding a `package.xml`."""
-    return _package_of_folder(os.path.dirname(os.path.abspath(path)))
-
-
-@lru_cache(maxsize=65536)
-def _package_of_folder(folder: str) -> str | None:
-    candidate = folder
-    while True:
-        if os.path.isfile(os.path.join(candidate, PACKAGE_MANIFEST)):
-            return candidate
-        parent = os.path.dirname(candidate)
-        if parent == candidate:
-            return None
-        candidate = parent
+    return package_of_folder(os.path.dirname(os.path.abspath(path)))
 
 
 def package_targets_tf2(path: str) -> bool:
@@ -91,7 +78,7 @@ def forget_packages() -> None:
     """Let the next question about each package look at its files again (a long-lived process)."""
     with _lock:
         _package_evidence.clear()
-    _package_of_folder.cache_clear()
+    package_of_folder.cache_clear()
 
 
 def _manifest_declares_tf2(folder: str) -> bool:

@@ -525,7 +525,20 @@ def may_be_project_module(top: str, importer: str) -> bool:
     `carla` and `time` are in none of them). Always True outside `folder_listings`."""
     if _listings is None:
         return True
-    return _top_held_from(top, _folder_of(importer))
+    here = _folder_of(importer)
+    return _top_held_from(top, here) or _top_held_in_workspace(top, here)
+
+
+def _top_held_in_workspace(top: str, here: str) -> bool:
+    """`top` (or `top.py`) in a folder of the ROS workspace around `here` (`_workspace_folders`)."""
+    folders = _workspace_folders(here)
+    if not folders:
+        return False
+    key = (top, here)
+    found = _workspace_tops.get(key)
+    if found is None:
+        found = _workspace_tops[key] = any(_may_hold(base, top) or _may_hold(base, top + ".py") for base in folders)
+    return found
 
 
 def _top_held_from(top: str, here: str) -> bool:
@@ -557,7 +570,50 @@ def _module_file_from(module: str, here: str, level: int) -> str | None:
         found = _module_in(base, parts)
         if found is not None:
             return found
+    if not level:
+        for base in _workspace_folders(here):
+            found = _module_in(base, parts)
+            if found is not None:
+                return found
     return None
+
+
+@lru_cache(maxsize=65536)
+def _workspace_folders(here: str) -> tuple[str, ...]:
+    """Where the other packages of a ROS workspace keep their modules, for a file in one of them: the
+    packages beside its own (each with a `package.xml`), their `src/` (catkin) and themselves
+    (ament_python). A workspace's packages import each other (`carla_common.transforms` from
+    `carla_ros_bridge`), and none of them holds the others."""
+    package = package_of_folder(here)
+    if package is None:
+        return ()
+    workspace = os.path.dirname(package)
+    try:
+        names = sorted(os.listdir(workspace))
+    except OSError:
+        return ()
+    found: list[str] = []
+    for name in names:
+        sibling = os.path.join(workspace, name)
+        if sibling != package and os.path.isfile(os.path.join(sibling, PACKAGE_MANIFEST)):
+            found += [os.path.join(sibling, "src"), sibling]
+    return tuple(found)
+
+
+PACKAGE_MANIFEST = "package.xml"  # a ROS package (REP 140/149)
+
+
+@lru_cache(maxsize=65536)
+def package_of_folder(folder: str) -> str | None:
+    """The ROS package a folder belongs to: the nearest folder at or above it holding a `package.xml`."""
+    candidate = folder
+    while True:
+        if os.path.isfile(os.path.join(candidate, PACKAGE_MANIFEST)):
+            return candidate
+        parent = os.path.dirname(candidate)
+        if parent == candidate:
+            return None
+        candidate = parent
 
 
 @lru_cache(maxsize=65536)
@@ -609,6 +665,7 @@ def _module_in(base: str, parts: tuple[str, ...]) -> str | None:
 # instead of a stat per module name per folder: `import numpy` is looked for in every folder up to the root)
 _listings: dict[str, frozenset[str]] | None = None
 _listed_tops: dict[tuple[str, str], bool] = {}  # `may_be_project_module`'s answers, for one listing
+_workspace_tops: dict[tuple[str, str], bool] = {}  # the same, for the packages of a ROS workspace
 
 
 @contextmanager
@@ -618,11 +675,13 @@ def folder_listings() -> Iterator[None]:
     global _listings
     _listings = {}
     _listed_tops.clear()
+    _workspace_tops.clear()
     try:
         yield
     finally:
         _listings = None
         _listed_tops.clear()
+        _workspace_tops.clear()
 
 
 def consulted_folders(files: Iterable[str]) -> set[str]:

@@ -482,3 +482,37 @@ def test_a_helper_that_writes_its_parameter_into_fields_reads_it_in_their_order(
     assert [(found_line, code) for found_line, _, code in findings] == [(line, "GEO301"), (line, "GEO301")]
     flagged = [lines[line - 1][: column - 1].rsplit(" ", 1)[-1] for _, column, _ in findings]
     assert flagged == ["to_msg(", "to_msg_wxyz("]  # w, x, y, z into x, y, z, w fields, and the reverse
+
+
+def _ros_workspace(root: Path, with_manifests: bool = True) -> Path:
+    """Two catkin packages side by side, each its own project (`setup.py`): the node in one imports a
+    helper of the other, which reads its parameter as x, y, z, w."""
+    workspace = root / "src"
+    common = workspace / "robot_common"
+    node = workspace / "robot_bridge"
+    (common / "src" / "robot_common").mkdir(parents=True)
+    (node / "src" / "robot_bridge").mkdir(parents=True)
+    for package in (common, node):
+        (package / "setup.py").write_text("from setuptools import setup\nsetup()\n")
+        if with_manifests:
+            (package / "package.xml").write_text(f"<package><name>{package.name}</name></package>\n")
+    (common / "src" / "robot_common" / "__init__.py").write_text("")
+    (common / "src" / "robot_common" / "transforms.py").write_text(_FIELD_HELPERS)
+    (node / "src" / "robot_bridge" / "__init__.py").write_text("")
+    (node / "src" / "robot_bridge" / "imu.py").write_text(
+        "from transforms3d.euler import euler2quat\n"
+        "import robot_common.transforms as trans\n"
+        "def orientation(roll, pitch, yaw):\n"
+        "    q = euler2quat(roll, pitch, yaw)\n"
+        "    return trans.to_msg(q)\n"
+    )
+    return workspace
+
+
+def test_a_helper_in_a_sibling_ros_package_is_read(tmp_path: Path) -> None:
+    """A ROS workspace's packages import each other: the node's w-first quaternion reaches the sibling
+    package's x, y, z, w helper. Without the manifests the folders are two unrelated projects."""
+    found, _ = _check(_ros_workspace(tmp_path / "ws"), "--no-cache")
+    assert ("robot_bridge/src/robot_bridge/imu.py", 5, "GEO301") in found
+    unrelated, _ = _check(_ros_workspace(tmp_path / "plain", with_manifests=False), "--no-cache")
+    assert not any(path.endswith("imu.py") for path, _, _ in unrelated)
