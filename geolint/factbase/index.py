@@ -541,10 +541,10 @@ def _matmul_operands(scope: Scope, *operands: ast.expr) -> None:
 
 
 # --- the project modules parsed in this process ------------------------------------------------
-# A module that is both linted and imported by another linted module is parsed and indexed once per
-# process, whichever comes first: the engine leaves each linted file's tree here, and the summaries
-# of imported helpers (`index_of_file`) take it, or leave theirs for the engine. Kept least recently
-# used first, up to a total text size (a tree and its index take about 40 bytes per character).
+# A project module that helpers' summaries parse (`index_of_file`, and the naming votes'
+# `parse_of_file`) is kept here, and its lint takes the tree and index when it comes (the engine's
+# own trees are not kept: few are imported after they are linted). Kept least recently used first,
+# up to a total text size (a tree and its index take about 40 bytes per character).
 _SHARED_BUDGET = 1_000_000  # characters
 _DEFAULT_DEPTH_LIMIT = Config.max_nesting_depth
 _shared: OrderedDict[str, _SharedModule] = OrderedDict()
@@ -627,20 +627,6 @@ def shared_parse(path: str, source: str) -> tuple[ast.Module, ModuleIndex | None
     if entry is None or entry.tree is None or entry.source != source:
         return None
     return entry.tree, entry.index
-
-
-def share_parse(path: str, source: str, tree: ast.Module, index: ModuleIndex | None) -> None:
-    """Keep the engine's tree of `path` (and its index, when complete) for the modules that import it."""
-    if path.startswith("<"):
-        return
-    key = os.path.abspath(path)
-    entry = _shared_entry(key)
-    if entry is not None and entry.tree is tree:
-        if entry.index is None and index is not None and not index.too_deep:
-            entry.index = index
-        return
-    complete = index if index is not None and not index.too_deep and index.tree is tree else None
-    _share(key, _SharedModule(source, tree, complete, None))
 
 
 def _shared_entry(key: str) -> _SharedModule | None:

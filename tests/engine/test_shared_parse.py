@@ -1,6 +1,7 @@
-"""A project module that is both linted and imported is parsed once per process (the engine and the
-summaries of imported helpers share its tree), and the shared tree never stands in for other text:
-an unsaved editor buffer, or a file edited on disk since."""
+"""A project module that the summaries of imported helpers parsed is not parsed again when it is
+linted (the engine takes that tree), the engine leaves its own trees to nobody (few modules are
+imported after they are linted), and a shared tree never stands in for other text: an unsaved
+editor buffer, or a file edited on disk since."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from geolint import api, engine
-from geolint.factbase.index import index_of_file
+from geolint.factbase.index import index_of_file, shared_parse
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures" / "projects"
 TRANSLATED = "points @ rotation.T + translation"
@@ -37,11 +38,12 @@ def test_the_engine_takes_the_tree_the_summaries_parsed(project: Path) -> None:
     assert engine.cached_ast(text) is index_of_file(geometry).tree  # not parsed a second time
 
 
-def test_the_summaries_take_the_tree_the_engine_parsed(project: Path) -> None:
+def test_the_engine_keeps_no_tree_of_its_own_for_importers(project: Path) -> None:
     geometry = project / "slam" / "geometry.py"
     text = geometry.read_text()
     api.lint_text(text, geometry)
-    assert index_of_file(geometry).tree is engine.cached_ast(text)
+    assert shared_parse(str(geometry), text) is None
+    assert index_of_file(geometry).tree is not engine.cached_ast(text)  # the importer's parse, from the file
     assert {(20, "GEO101"), (21, "GEO101")} <= _mapping_findings(project)
 
 
