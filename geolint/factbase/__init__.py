@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import ast
 import threading
+from dataclasses import replace
 
-from geolint.factbase.conventions import naming_config, orders_for
+from geolint.factbase.conventions import learned_aliases, naming_config, orders_for
 from geolint.factbase.index import ModuleIndex
 from geolint.factbase.model import FactBase
 from geolint.lint_types import Config
@@ -60,4 +61,7 @@ def facts_for_module(tree: ast.Module, source: str, path: str, config: Config) -
     index = module_index(tree, source)
     reading = orders_for(path, source, tree, config.naming.order)
     config = naming_config(config, reading)
+    aliases = learned_aliases(tree, source, reading.orders)
+    if aliases and not aliases.keys() & {key.lower() for key in config.frame_aliases}:
+        config = replace(config, frame_aliases={**aliases, **config.frame_aliases})
     return FactBase(index, config, path, reading.orders, order_names_mixed=reading.mixed, names_stated=reading.stated)

@@ -35,13 +35,13 @@ import re
 import threading
 from dataclasses import astuple, dataclass, fields, replace
 from pathlib import Path
-from typing import NamedTuple
+from typing import Iterator, NamedTuple
 
 from geolint.factbase.index import parse_of_file
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames, statements_under
 from geolint.factbase.summaries import project_root
 from geolint.lint_types import Config
-from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS
+from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS, NameFrames, is_frame
 
 _ORDER_NAME = re.compile(r"^_*([TRXH])_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)$")
 _COMPOSITION = re.compile(
@@ -105,25 +105,31 @@ class Votes:
 def votes_of_tree(tree: ast.Module) -> Votes:
     """What one module's declarations say about the order of `T_a_b` names."""
     dst = src = 0
-    for node in statements_under(tree):  # assignments are statements: no expression needs walking
-        if not isinstance(node, (ast.Assign, ast.AnnAssign)) or not isinstance(node.value, ast.Call):
-            continue
-        targets = node.targets if isinstance(node, ast.Assign) else [node.target]
-        declared = declared_call_frames(node.value)
-        if declared is None:
-            continue
-        frames = declared[0]
-        for target in targets:
-            name = target.attr if isinstance(target, ast.Attribute) else target.id if isinstance(target, ast.Name) else None
-            match = _ORDER_NAME.match(name or "")
-            if not match or match.group(1) not in TRANSFORM_LETTERS | ROTATION_LETTERS:
-                continue
-            first, second = match.group(2).lower(), match.group(3).lower()
+    for frames, named in _declarations_bound_to_names(tree):
+        for first, second in named:
             if (first, second) == (frames.dst, frames.src):
                 dst += 1
             elif (first, second) == (frames.src, frames.dst):
                 src += 1
     return Votes(declared_dst=dst, declared_src=src)
+
+
+def _declarations_bound_to_names(tree: ast.Module) -> Iterator[tuple[NameFrames, list[tuple[str, str]]]]:
+    """Each call that declares its frames and is assigned, with those frames and the two frame words
+    (lower-cased, in the order written) of each target named like `T_a_b`."""
+    for node in statements_under(tree):  # assignments are statements: no expression needs walking
+        if not isinstance(node, (ast.Assign, ast.AnnAssign)) or not isinstance(node.value, ast.Call):
+            continue
+        declared = declared_call_frames(node.value)
+        if declared is None:
+            continue
+        named: list[tuple[str, str]] = []
+        for target in node.targets if isinstance(node, ast.Assign) else [node.target]:
+            name = target.attr if isinstance(target, ast.Attribute) else target.id if isinstance(target, ast.Name) else None
+            match = _ORDER_NAME.match(name or "")
+            if match and match.group(1) in TRANSFORM_LETTERS | ROTATION_LETTERS:
+                named.append((match.group(2).lower(), match.group(3).lower()))
+        yield declared[0], named
 
 
 def votes_of_text(text: str) -> Votes:
@@ -301,3 +307,39 @@ def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") 
     if setting == SRC_FIRST:
         return NameReading((SRC_FIRST,), False, True, drake)
     return NameReading(votes.orders(), votes.mixed, votes.stated, drake)
+
+
+def learned_aliases(tree: ast.Module, source: str, orders: tuple[str, ...]) -> dict[str, str]:
+    """Frame words a module's names use for its declared frames: `T_ee_rot = RigidTransform(...,
+    from_frame='franka_tool', to_frame='franka_tool')` says `ee` is franka_tool (`rot` is no frame).
+
+    Like GEO203 (a declaration bound to a name with other words is a label, not a bug, unless it
+    reverses the name), a token paired with a declared frame in every open reading is that frame's
+    alias; a token that is itself some declaration's frame, or that pairs with two frames, is none.
+    """
+    if not any(word in source for word in _DECLARING):
+        return {}
+    explicit: set[str] = set()
+    found: dict[str, set[str]] = {}
+    for frames, named in _declarations_bound_to_names(tree):
+        explicit.update(frame for frame in (frames.src, frames.dst) if frame is not None)
+        for first, second in named:
+            readings: set[frozenset[tuple[str, str]]] = set()
+            for order in orders:
+                dst_token, src_token = (first, second) if order == DST_FIRST else (second, first)
+                readings.add(
+                    frozenset(
+                        (token, frame)
+                        for token, frame in ((dst_token, frames.dst), (src_token, frames.src))
+                        if frame is not None and token != frame and is_frame(token)
+                    )
+                )
+            if len(readings) != 1:
+                continue  # the readings pair the tokens differently: no alias is certain
+            for token, frame in readings.pop():
+                found.setdefault(token, set()).add(frame)
+    return {
+        token: next(iter(frames))
+        for token, frames in found.items()
+        if len(frames) == 1 and token not in explicit and not frames & found.keys()
+    }

@@ -278,10 +278,10 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
     if len(raw) == 3:
         first, middle, last = raw
         if naming.dst_first and first in TRANSFORM_LETTERS | ROTATION_LETTERS:
-            if _is_frame(middle) and _is_frame(last):
+            if is_frame(middle) and is_frame(last):
                 yield NameFrames(dst=middle.lower(), src=last.lower(), operator=_operator(first))
         if naming.prefix_t and middle in TRANSFORM_LETTERS | ROTATION_LETTERS:
-            if _is_frame(first) and _is_frame(last):
+            if is_frame(first) and is_frame(last):
                 yield NameFrames(dst=first.lower(), src=last.lower(), operator=_operator(middle))
         lowered = [part.lower() for part in raw]
         both_known = _is_known_frame(first, known) and _is_known_frame(last, known)
@@ -327,14 +327,14 @@ def tform_frames(name: str) -> NameFrames | None:
 
 
 def _is_tform_frame(side: str) -> bool:
-    return side in TFORM_COMPOUND_FRAMES or "_" not in side and side.islower() and _is_frame(side)
+    return side in TFORM_COMPOUND_FRAMES or "_" not in side and side.islower() and is_frame(side)
 
 
 def _operator(letter: str) -> Operator:
     return "rotation" if letter in ROTATION_LETTERS else "transform"
 
 
-def _is_frame(word: str) -> bool:
+def is_frame(word: str) -> bool:
     """A token that can name a frame: a lower-case word or a one-letter upper-case frame."""
     if re.fullmatch(_MONOGRAM_FRAME, word):
         return True

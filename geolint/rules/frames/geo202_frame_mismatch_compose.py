@@ -49,6 +49,10 @@ class FrameMismatchCompose(ProductRule):
     Without a stated convention, a composition whose frames come from names alone
     (`T_world_base @ T_cam_tool`) is not reported: none of the 24 such findings triaged on real code
     was a bug (`T_base_grasp` names a waypoint, `rel_w2c` a correction, and projects mix orders).
+    A name's frame word is read as the explicit frame a declaration bound to that name gives it
+    (`T_ee_rot = RigidTransform(..., from_frame="franka_tool", to_frame="franka_tool")` makes `ee`
+    franka_tool in that module), but only within the module that declares it: an abbreviation used
+    in one module and declared in another still meets the explicit string as another frame.
     """
 
     code = "GEO202"
@@ -67,6 +71,8 @@ class FrameMismatchCompose(ProductRule):
         Valid("w2c = reference_w2c @ best_w2c\n"),  # one of two same-direction extrinsics is a relative correction
         Valid("T_world_body = T_word_tcp @ T_tcp_body\n"),  # `word`: `world` misspelt
         Valid("T_world_tool = T_world_base @ T_cam_tool\n"),  # names on both sides, no convention stated: too weak
+        # `T_ee_rot` is declared from and to "tool": the module's `ee` names that frame (`rot` is no frame)
+        Valid('T_ee_rot = RigidTransform(R, t, from_frame="tool", to_frame="tool")\nT = T_ee_world * T_ee_rot\n'),
     ]
     INVALID = [
         Invalid("T_world_tool = T_world_base @ T_cam_tool\n", options=STATED),
@@ -79,6 +85,8 @@ class FrameMismatchCompose(ProductRule):
         Invalid("T_world_grasp = T_world_base @ T_object_grasp\n", options=STATED),  # a waypoint word elsewhere changes nothing
         # no convention stated: the declared side is evidence enough, in either reading of the name
         Invalid('base_pose = RigidTransform(R, t, from_frame="base", to_frame="world")\nT = base_pose * T_cam_tool\n'),
+        # `ee` is learned to be "tool"; `cam` is still another frame
+        Invalid('T_ee_rot = RigidTransform(R, t, from_frame="tool", to_frame="tool")\nT = T_cam_world * T_ee_rot\n'),
     ]
 
     def too_weak(self, left: FrameFact, right: FrameFact) -> bool:
