@@ -206,7 +206,7 @@ def _reuse_shared_parse(path: str, source: str) -> ModuleIndex | None:
 
     The engine does not leave its own trees for later importers: few are imported after they are
     linted, and kept trees crowd the imported modules' trees out of the shared budget and are freed
-    long after, out of the processor's caches (5% slower on 40 realcode repositories)."""
+    long after, out of the processor's caches (3.8% more time, compiled, on 40 realcode repositories)."""
     from geolint.factbase import index as index_module, remember_index
 
     shared = index_module.shared_parse(path, source)

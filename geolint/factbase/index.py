@@ -582,14 +582,9 @@ def index_of_file(file: str | os.PathLike[str]) -> ModuleIndex | None:
         except OSError:
             return None
         if entry is not None and entry.source == source:
-            entry.signature = signature  # the engine's tree of this very text
+            entry.signature = signature  # a tree of this very text (the naming votes' parse)
         else:
-            try:
-                tree: ast.Module | None = ast.parse(source)
-            except (SyntaxError, ValueError, MemoryError, RecursionError):
-                tree = None
-            entry = _SharedModule(source, tree, None, signature)
-            _share(key, entry)
+            entry = _parse_and_share(key, source, signature)
     if entry.tree is None:
         return None
     index = entry.index
@@ -611,12 +606,18 @@ def parse_of_file(file: str, source: str, signature: tuple[int, int]) -> ast.Mod
     entry = _shared_entry(key)
     if entry is not None and entry.source == source:
         return entry.tree
+    return _parse_and_share(key, source, signature).tree
+
+
+def _parse_and_share(key: str, source: str, signature: tuple[int, int]) -> _SharedModule:
+    """Parse a project module's text (None for a text that does not parse) and keep it under `key`."""
     try:
         tree: ast.Module | None = ast.parse(source)
     except (SyntaxError, ValueError, MemoryError, RecursionError):
         tree = None
-    _share(key, _SharedModule(source, tree, None, signature))
-    return tree
+    entry = _SharedModule(source, tree, None, signature)
+    _share(key, entry)
+    return entry
 
 
 def shared_parse(path: str, source: str) -> tuple[ast.Module, ModuleIndex | None] | None:

@@ -578,6 +578,9 @@ def _module_file_from(module: str, here: str, level: int) -> str | None:
     return None
 
 
+PACKAGE_MANIFEST = "package.xml"  # a ROS package (REP 140/149)
+
+
 @lru_cache(maxsize=65536)
 def _workspace_folders(here: str) -> tuple[str, ...]:
     """Where the other packages of a ROS workspace keep their modules, for a file in one of them: the
@@ -598,9 +601,6 @@ def _workspace_folders(here: str) -> tuple[str, ...]:
         if sibling != package and os.path.isfile(os.path.join(sibling, PACKAGE_MANIFEST)):
             found += [os.path.join(sibling, "src"), sibling]
     return tuple(found)
-
-
-PACKAGE_MANIFEST = "package.xml"  # a ROS package (REP 140/149)
 
 
 @lru_cache(maxsize=65536)

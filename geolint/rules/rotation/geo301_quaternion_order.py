@@ -218,9 +218,9 @@ class QuaternionOrder(FactRule):
     transforms3d's `qmult as quaternion_multiply` under `elif ROS_VERSION == 2:`) is read as the import of
     the arm when the call sits in a function branch on the same test (`if ROS_VERSION == 1:` again), and
     as the last import elsewhere: a call outside any such branch runs under both, so a fixed order
-    given to it is wrong under one of them, but the finding names only the last import's order. A helper in a sibling package of a ROS workspace (`carla_common/src/carla_common`
-    imported from `carla_ros_bridge/src/...`, each package with its own `setup.py`) is not found, so
-    its summary is unknown. Component names read by unpacking (`x, y, z, w = q`) are not judged.
+    given to it is wrong under one of them, but the finding names only the last import's order. A helper in a sibling package of a ROS workspace is found only when both packages hold a
+    `package.xml` side by side (`carla_common/src/carla_common` imported from `carla_ros_bridge/src/...`);
+    packages nested in meta-package folders are not searched. Component names read by unpacking (`x, y, z, w = q`) are not judged.
     """
 
     code = "GEO301"
