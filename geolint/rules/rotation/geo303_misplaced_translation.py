@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 
 from geolint.factbase import ModuleIndex, index_of
-from geolint.factbase.model import is_slice_upto, is_zero
+from geolint.factbase.model import is_full_slice, is_slice_upto, is_zero
 from geolint.factbase.pose_parts import (
     call_name,
     int_value,
@@ -13,6 +13,7 @@ from geolint.factbase.pose_parts import (
     matrix_indices,
     pose_key,
     pose_part,
+    peel_same_value,
     same_code,
     square_shape,
     stack_key,
@@ -38,7 +39,10 @@ class MisplacedTranslation(AstRule):
     (`poses[:, :3, :3] -= poses[:, :3, 3].mean(0)`) is flagged too. Reading the bottom row, and
     writing zeros into it, are fine. The mirror slip is flagged as well: a pose's rotation block
     given to a call that translates (`box.translate(-cam2ego[:3, :3])`, `translation_matrix(T[:3, :3])`),
-    where the translation column `[:3, 3]` was meant.
+    where the translation column `[:3, 3]` was meant. So is the read-side slip: the bottom row
+    (`T[3, :]`, `T[3, :3]`) stored where a translation goes (`{"location": list(T[3, :])}`,
+    `obj.location = T[3, :3]`, `translate(T[-1, :3])`) when the same function writes or reads the
+    translation column `T[:3, 3]` of that 4x4 (so it is laid out for column vectors).
 
     ## Why is this bad?
     In the column-vector convention (`T @ [x, y, z, 1]`, what numpy, Open3D, trimesh, ROS and
@@ -77,12 +81,21 @@ class MisplacedTranslation(AstRule):
     triggers = AllOf(
         r"\[[^\]\n]*(?:\b3|:\s*3)\s*,\s*(?::\s*3|0\s*:\s*3|[012])\s*\]\s*[-+*/]?="
         r"|translate\(|translation_matrix\(|set_translation\(|from_translation\("  # each led by its own word
+        r"|\[\s*(?:3|-1)\s*,\s*(?::\s*3?|0\s*:\s*3)\s*\]"  # a read of the bottom row (`T[3, :]`)
     )
 
     VALID = [
         Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[:3, 3] = t\n"),
         Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[3, :3] = 0\n"),
         Valid("import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nt = T[3, :3]\n"),  # a read
+        Valid(
+            "import numpy as np\ndef f(R, t):\n    T = np.eye(4)\n    T[:3, :3] = R\n    T[:3, 3] = t\n"
+            "    assert np.allclose(T[3, :], [0, 0, 0, 1])\n    return {'location': list(T[:3, 3]), 'row': list(T[3, :])}\n"
+        ),  # the bottom row read, but not stored as a translation
+        Valid(
+            "import numpy as np\ndef f(R, t, pts_h):\n    M = np.eye(4)\n    M[:3, :3] = R.T\n"
+            "    M[3, :3] = t\n    return {'translation': M[3, :3], 'points': pts_h @ M}\n"
+        ),  # the row-vector convention: no read of the translation column
         Valid("import numpy as np\nP = np.zeros((4, 4))\nP[3, 2] = -1.0\n"),  # a projection matrix
         Valid(
             "import numpy as np\ndef f(R, t, pts_h):\n    M = np.eye(4)\n    M[:3, :3] = R.T\n"
@@ -115,6 +128,12 @@ class MisplacedTranslation(AstRule):
     ]
     INVALID = [
         Invalid(
+            "import numpy as np\ndef f(R, t):\n    T = np.eye(4)\n    T[:3, :3] = R\n    T[:3, 3] = t\n"
+            "    return {'location': list(T[3, :]), 'rotation': R}\n",
+            expected_fix="import numpy as np\ndef f(R, t):\n    T = np.eye(4)\n    T[:3, :3] = R\n    T[:3, 3] = t\n"
+            "    return {'location': list(T[:3, 3]), 'rotation': R}\n",
+        ),
+        Invalid(
             "import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[3, :3] = t\n",
             expected_fix="import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[:3, 3] = t\n",
         ),
@@ -136,9 +155,20 @@ class MisplacedTranslation(AstRule):
 
     def check(self, tree: ast.Module) -> None:
         index = index_of(tree)
-        for node in index.nodes(ast.Call, ast.Assign, ast.AugAssign):
-            if isinstance(node, ast.Call) and call_name(node) in _TRANSLATING_CALLS:
-                self._check_translation_argument(node)
+        for node in index.nodes(ast.Call, ast.Assign, ast.AugAssign, ast.Dict):
+            if isinstance(node, ast.Dict):
+                for key, item in zip(node.keys, node.values):
+                    if isinstance(key, ast.Constant) and key.value in _TRANSLATION_KEYS:
+                        self._check_bottom_row_read(item, index)
+                continue
+            if isinstance(node, ast.Call):
+                for keyword in node.keywords:
+                    if keyword.arg in _TRANSLATION_KEYS:
+                        self._check_bottom_row_read(keyword.value, index)
+                if call_name(node) in _TRANSLATING_CALLS:
+                    if node.args:
+                        self._check_bottom_row_read(node.args[0], index)
+                    self._check_translation_argument(node)
                 continue
             if isinstance(node, ast.Assign):
                 targets, value = node.targets, node.value
@@ -147,6 +177,8 @@ class MisplacedTranslation(AstRule):
             else:
                 continue
             for target in targets:
+                if isinstance(node, ast.Assign) and _names_a_translation(target):
+                    self._check_bottom_row_read(value, index)
                 if not isinstance(target, ast.Subscript) or not isinstance(target.value, ast.Name):
                     continue
                 indices = matrix_indices(target)
@@ -190,6 +222,31 @@ class MisplacedTranslation(AstRule):
                 fix_description="pass the translation column",
             )
 
+    def _check_bottom_row_read(self, value: ast.expr, index: ModuleIndex) -> None:
+        """`{"location": list(T[3, :])}`: the bottom row of a column-convention 4x4 stored as a translation."""
+        read = _peel_vector(value)
+        if isinstance(read, ast.Name):
+            resolved = resolve(index, read)
+            if isinstance(resolved, ast.expr):
+                read = _peel_vector(resolved)
+        if not isinstance(read, ast.Subscript) or not isinstance(read.value, ast.Name):
+            return
+        indices = matrix_indices(read)
+        if indices is None or int_value(indices[1]) not in (3, -1):
+            return
+        if not (is_full_slice(indices[2]) or is_slice_upto(indices[2], 3)):
+            return
+        if not self._is_column_convention_pose(read, bool(indices[0]), index, read_side=True):
+            return
+        self.report(
+            read,
+            f"`{ast.unparse(read)}` is the bottom (homogeneous) row of a 4x4 pose, [0, 0, 0, 1], but it is "
+            "stored as a translation; the translation is column 3 (`[:3, 3]`)",
+            replacement=f"{ast.unparse(read.value)}[{subscript_indices_text(read)}:3, 3]",
+            applicability="unsafe",
+            fix_description="read the translation column",
+        )
+
     def _comes_from_own_translation(
         self, target: ast.Subscript, batch: list[ast.expr], value: ast.expr, index: ModuleIndex
     ) -> bool:
@@ -201,8 +258,15 @@ class MisplacedTranslation(AstRule):
         return source.pose in (key, f"{key}[{stack_key(batch)}]") or source.pose.startswith(f"{key}[")
 
     def _is_column_convention_pose(
-        self, target: ast.Subscript, stacked: bool, index: ModuleIndex, computed_translation: bool = False
+        self,
+        target: ast.Subscript,
+        stacked: bool,
+        index: ModuleIndex,
+        computed_translation: bool = False,
+        read_side: bool = False,
     ) -> bool:
+        """A 4x4 laid out for column vectors; for a read (`read_side`), only when the same function also
+        reads or writes its translation column `[:3, 3]` and nothing says it is laid out for row vectors."""
         shape = square_shape(target.value, index)
         if shape is None or shape[0] != 4 or (shape[1] and not stacked):
             return False
@@ -226,13 +290,15 @@ class MisplacedTranslation(AstRule):
             if not computed_translation and _writes_transposed_rotation(node, base, index):
                 row_layout = True  # [R^T 0; t 1]: the transpose of a pose, laid out for row vectors
             transposed = transposed_operand(node) if isinstance(node, ast.expr) else None
-            if transposed is not None and same_code(transposed, base):
+            if transposed is not None and same_code(transposed, base) and not (read_side and _inverts(node)):
                 row_layout = True  # built transposed (row-vector layout), then transposed into place
             operands = matmul_operands(node)
             if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], index):
                 row_layout = True  # points_h @ T: the row-vector convention
             if _row_vector_consumer(node, base, index):
                 row_layout = True  # vispy's MatrixTransform(T) applies T to row vectors
+        if read_side:
+            return reads_translation_column and not row_layout
         return states_pose and (reads_translation_column or not row_layout)
 
     def _report_bottom_row(self, target: ast.Subscript, column: ast.expr) -> None:
@@ -248,6 +314,37 @@ class MisplacedTranslation(AstRule):
             applicability="unsafe",
             fix_description="write the translation into column 3",
         )
+
+
+# Dict keys and keyword arguments whose value is a translation (`{"location": ...}`, `translation=...`).
+_TRANSLATION_KEYS = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
+# Words of a name that holds a translation (`cam_location`, `obj.position`, `t_w2c`).
+_TRANSLATION_WORDS = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
+
+
+def _inverts(node: ast.AST) -> bool:
+    """`np.linalg.inv(T)`, `T.inverse()`: an inverse, which keeps the layout (unlike a transpose)."""
+    return isinstance(node, ast.Call) and call_name(node) in ("inv", "pinv", "inverse", "inverted")
+
+
+def _names_a_translation(target: ast.expr) -> bool:
+    name = target.id if isinstance(target, ast.Name) else target.attr if isinstance(target, ast.Attribute) else ""
+    return not _TRANSLATION_WORDS.isdisjoint(name.lower().split("_"))
+
+
+def _peel_vector(node: ast.expr) -> ast.expr:
+    """`list(x)`, `tuple(x)`, `Vector(x)`, `x.tolist()`, `np.array(x)`, `x.copy()`: the same values."""
+    for _ in range(4):
+        inner = peel_same_value(node)
+        if inner is node and isinstance(node, ast.Call):
+            if call_name(node) in ("list", "tuple", "Vector") and len(node.args) == 1 and not node.keywords:
+                inner = node.args[0]
+            elif isinstance(node.func, ast.Attribute) and node.func.attr == "tolist" and not node.args:
+                inner = node.func.value
+        if inner is node or isinstance(inner, ast.Starred):
+            return node
+        node = inner
+    return node
 
 
 # Calls whose argument is a translation (nuScenes/pyquaternion boxes, trimesh, Open3D, spatialmath).
