@@ -13,6 +13,7 @@ such a word agrees with the frames that can play its role (`same_tform_frame`).
 from __future__ import annotations
 
 import ast
+from ast import Call
 from typing import TYPE_CHECKING, Callable
 
 from geolint.factbase.model import FrameFact, keyword, positional_args, string
@@ -72,7 +73,7 @@ def frame_comparison(*facts: FrameFact) -> Callable[[str | None, str | None], bo
     return same_tform_frame if any(in_tform_words(fact) for fact in facts) else same_frame
 
 
-def helper_frames(facts: FactBase, call: ast.Call) -> FrameFact | None:
+def helper_frames(facts: FactBase, call: Call) -> FrameFact | None:
     """The transform a frame_helpers call returns (`get_vision_tform_body(snapshot)`: body into vision)."""
     called = facts.called_name(call.func)
     if called is None or "_tform_" not in called:

@@ -30,6 +30,7 @@ composition of `T_` names are skipped by a substring test before any parsing).
 from __future__ import annotations
 
 import ast
+from ast import AnnAssign, Assign, Attribute, Call, Module, Name
 import os
 import re
 import threading
@@ -102,7 +103,7 @@ class Votes:
         return (DST_FIRST, SRC_FIRST)
 
 
-def votes_of_tree(tree: ast.Module) -> Votes:
+def votes_of_tree(tree: Module) -> Votes:
     """What one module's declarations say about the order of `T_a_b` names."""
     dst = src = 0
     for frames, named in _declarations_bound_to_names(tree):
@@ -114,18 +115,18 @@ def votes_of_tree(tree: ast.Module) -> Votes:
     return Votes(declared_dst=dst, declared_src=src)
 
 
-def _declarations_bound_to_names(tree: ast.Module) -> Iterator[tuple[NameFrames, list[tuple[str, str]]]]:
+def _declarations_bound_to_names(tree: Module) -> Iterator[tuple[NameFrames, list[tuple[str, str]]]]:
     """Each call that declares its frames and is assigned, with those frames and the two frame words
     (lower-cased, in the order written) of each target named like `T_a_b`."""
     for node in statements_under(tree):  # assignments are statements: no expression needs walking
-        if not isinstance(node, (ast.Assign, ast.AnnAssign)) or not isinstance(node.value, ast.Call):
+        if not isinstance(node, (Assign, AnnAssign)) or not isinstance(node.value, Call):
             continue
         declared = declared_call_frames(node.value)
         if declared is None:
             continue
         named: list[tuple[str, str]] = []
-        for target in node.targets if isinstance(node, ast.Assign) else [node.target]:
-            name = target.attr if isinstance(target, ast.Attribute) else target.id if isinstance(target, ast.Name) else None
+        for target in node.targets if isinstance(node, Assign) else [node.target]:
+            name = target.attr if isinstance(target, Attribute) else target.id if isinstance(target, Name) else None
             match = _ORDER_NAME.match(name or "")
             if match and match.group(1) in TRANSFORM_LETTERS | ROTATION_LETTERS:
                 named.append((match.group(2).lower(), match.group(3).lower()))
@@ -149,7 +150,7 @@ def votes_of_text(text: str) -> Votes:
     return Votes(composed_dst=dst, composed_src=src)
 
 
-def votes_of_source(source: str, tree: ast.Module | None = None, file: tuple[str, tuple[int, int]] | None = None) -> Votes:
+def votes_of_source(source: str, tree: Module | None = None, file: tuple[str, tuple[int, int]] | None = None) -> Votes:
     """What one module's text says; `file` (its path, size and mtime) lets a parse serve its lint too."""
     votes = votes_of_text(source) if "_" in source else Votes()
     if "pydrake" in source:
@@ -297,7 +298,7 @@ def naming_config(config: Config, reading: NameReading) -> Config:
 _decided_configs: dict[tuple[int, bool], tuple[Config, Config]] = {}
 
 
-def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") -> NameReading:
+def orders_for(path: str, source: str, tree: Module, setting: str = "auto") -> NameReading:
     """How this file's `T_a_b` names read: the config's order, or what the project's code says."""
     root = project_root(path) if os.path.isfile(path) else None
     votes = project_votes(root) if root is not None else votes_of_source(source, tree)
@@ -309,7 +310,7 @@ def orders_for(path: str, source: str, tree: ast.Module, setting: str = "auto") 
     return NameReading(votes.orders(), votes.mixed, votes.stated, drake)
 
 
-def learned_aliases(tree: ast.Module, source: str, orders: tuple[str, ...]) -> dict[str, str]:
+def learned_aliases(tree: Module, source: str, orders: tuple[str, ...]) -> dict[str, str]:
     """Frame words a module's names use for its declared frames: `T_ee_rot = RigidTransform(...,
     from_frame='franka_tool', to_frame='franka_tool')` says `ee` is franka_tool (`rot` is no frame).
 

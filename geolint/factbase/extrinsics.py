@@ -26,6 +26,7 @@ Every question answers None when the evidence is missing or contradictory.
 from __future__ import annotations
 
 import ast
+from ast import AST, Attribute, BinOp, Call, Div, MatMult, Mult, Name, Slice, Starred, Subscript, USub, UnaryOp
 import re
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -222,36 +223,36 @@ class ExtrinsicsEvidence:
         self.index = facts.index
         self._facts: NodeMemo[Extrinsic] = NodeMemo(max_depth=40)
 
-    def of(self, node: ast.AST) -> Extrinsic | None:
+    def of(self, node: AST) -> Extrinsic | None:
         return self._facts.get(id(node), lambda: self._of(node))
 
     # -- the evaluation ------------------------------------------------------------------------
-    def _of(self, node: ast.AST) -> Extrinsic | None:
+    def _of(self, node: AST) -> Extrinsic | None:
         if not isinstance(node, ast.expr):
             return None
         peeled = peel_same_value(node)
         if peeled is not node:
             return self.of(peeled)
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             return self._of_name(node)
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             return self._of_attribute(node)
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             return self._of_subscript(node)
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             return self._of_call(node)
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        if isinstance(node, UnaryOp) and isinstance(node.op, USub):
             return self._of_product(node.operand, negated=True)
-        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
+        if isinstance(node, BinOp) and isinstance(node.op, MatMult):
             return self._of_product(node, negated=False)
-        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.Div)):
+        if isinstance(node, BinOp) and isinstance(node.op, (Mult, Div)):
             # a translation in other units (`t * 0.001`, `t / 1000.0`) is the same translation
-            scaled = node.left if number(node.right) is not None else node.right if number(node.left) is not None and isinstance(node.op, ast.Mult) else None
+            scaled = node.left if number(node.right) is not None else node.right if number(node.left) is not None and isinstance(node.op, Mult) else None
             found = self.of(scaled) if scaled is not None else None
             return found if found is not None and found.part == TRANSLATION else None
         return None
 
-    def _of_name(self, node: ast.Name) -> Extrinsic | None:
+    def _of_name(self, node: Name) -> Extrinsic | None:
         value = value_of(self.index, node)
         if isinstance(value, ast.expr):
             found = self.of(value)
@@ -264,7 +265,7 @@ class ExtrinsicsEvidence:
             return None
         return name_extrinsic(self.facts, node.id)
 
-    def _of_attribute(self, node: ast.Attribute) -> Extrinsic | None:
+    def _of_attribute(self, node: Attribute) -> Extrinsic | None:
         if node.attr in ("T", "mT"):
             return self._transposed(node.value, f"`.{node.attr}`")
         if self.facts.is_module_like(node.value):
@@ -280,7 +281,7 @@ class ExtrinsicsEvidence:
             return None
         return name_extrinsic(self.facts, node.attr)
 
-    def _of_subscript(self, node: ast.Subscript) -> Extrinsic | None:
+    def _of_subscript(self, node: Subscript) -> Extrinsic | None:
         key = string(node.slice)
         if key is not None:
             return key_extrinsic(key)
@@ -290,7 +291,7 @@ class ExtrinsicsEvidence:
         indices = matrix_indices(node)
         if indices is None:
             index = node.slice
-            if isinstance(index, ast.Slice) and is_slice_upto(index, 3) or isinstance(index, ast.List):
+            if isinstance(index, Slice) and is_slice_upto(index, 3) or isinstance(index, ast.List):
                 return base  # `[:3]` drops the bottom row; `[[1, 0, 2, 3]]` permutes world axes
             return None
         _, row, column = indices
@@ -303,10 +304,10 @@ class ExtrinsicsEvidence:
             return base
         return None
 
-    def _of_call(self, node: ast.Call) -> Extrinsic | None:
+    def _of_call(self, node: Call) -> Extrinsic | None:
         func = node.func
         name = call_name(node)
-        if isinstance(func, ast.Attribute) and not node.args and not node.keywords:
+        if isinstance(func, Attribute) and not node.args and not node.keywords:
             known = EXTRINSIC_METHODS.get(func.attr)
             if known is not None and not self.facts.is_module_like(func.value):
                 direction, part, source = known
@@ -334,7 +335,7 @@ class ExtrinsicsEvidence:
 
     def _joined(self, elements: list[ast.expr]) -> Extrinsic | None:
         """`[R | t]` (and `[[R | t]; bottom]`): a pose when its known parts agree."""
-        parts = [self.of(element) for element in elements if not isinstance(element, ast.Starred)]
+        parts = [self.of(element) for element in elements if not isinstance(element, Starred)]
         known = [part for part in parts if part is not None]
         if not known or len({part.direction for part in known}) != 1:
             return None
@@ -344,18 +345,18 @@ class ExtrinsicsEvidence:
             return Extrinsic(first.direction, POSE, tuple(e for part in known for e in part.evidence), _weakest(known))
         return None
 
-    def _of_product(self, node: ast.AST, negated: bool) -> Extrinsic | None:
+    def _of_product(self, node: AST, negated: bool) -> Extrinsic | None:
         """`-R.T @ t` with R and t of one direction is the translation of the inverse pose
         (the camera centre when R, t are world-to-camera); row form `-t @ R` likewise."""
-        while isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        while isinstance(node, UnaryOp) and isinstance(node.op, USub):
             node, negated = node.operand, not negated
         operands = matmul_operands(node)
         if operands is None:
             return None
         left, right = operands
-        while isinstance(left, ast.UnaryOp) and isinstance(left.op, ast.USub):
+        while isinstance(left, UnaryOp) and isinstance(left.op, USub):
             left, negated = left.operand, not negated
-        while isinstance(right, ast.UnaryOp) and isinstance(right.op, ast.USub):
+        while isinstance(right, UnaryOp) and isinstance(right.op, USub):
             right, negated = right.operand, not negated
         if not negated:
             return None
@@ -374,8 +375,8 @@ class ExtrinsicsEvidence:
 
     # -- a 4x4 assembled from blocks -------------------------------------------------------------
     def block_stores(
-        self, name: ast.Name, before: ast.stmt | None = None, binding: object = None
-    ) -> list[tuple[ast.Subscript, ast.expr]]:
+        self, name: Name, before: ast.stmt | None = None, binding: object = None
+    ) -> list[tuple[Subscript, ast.expr]]:
         """`T[:3, :3] = ...` / `T[:3, 3] = ...` writes into the value `name` reads (the same binding;
         for an assignment's own target, pass `binding=id(statement)`), in its function, before
         `before` when given."""
@@ -386,14 +387,14 @@ class ExtrinsicsEvidence:
             return []
         stores = []
         for target, value in scope_of(index, name).subscript_stores.get(name.id, ()):
-            assert isinstance(target.value, ast.Name)
+            assert isinstance(target.value, Name)
             if before is not None and (target.lineno, target.col_offset) >= (before.lineno, before.col_offset):
                 continue
             if binding_of(index, target.value) == binding:
                 stores.append((target, value))
         return stores
 
-    def built_from_blocks(self, name: ast.Name, value: ast.expr) -> Extrinsic | None:
+    def built_from_blocks(self, name: Name, value: ast.expr) -> Extrinsic | None:
         """`T = np.eye(4)` whose rotation and translation blocks are then written: the pose the
         blocks state, when every known block agrees."""
         if not is_blank_matrix(value):
@@ -407,7 +408,7 @@ class ExtrinsicsEvidence:
         known = [part for _, part in parts]
         return Extrinsic(directions.pop(), POSE, tuple(e for part in known for e in part.evidence), _weakest(known))
 
-    def block_parts(self, stores: list[tuple[ast.Subscript, ast.expr]]) -> list[tuple[ast.expr, Extrinsic]]:
+    def block_parts(self, stores: list[tuple[Subscript, ast.expr]]) -> list[tuple[ast.expr, Extrinsic]]:
         """The rotation and translation blocks among `stores` whose values are known extrinsics parts."""
         found = []
         for target, value in stores:
@@ -417,7 +418,7 @@ class ExtrinsicsEvidence:
             column = indices[2]
             if is_slice_upto(column, 3):
                 wanted = ROTATION
-            elif not isinstance(column, ast.Slice) and int_value(column) in (3, -1):
+            elif not isinstance(column, Slice) and int_value(column) in (3, -1):
                 wanted = TRANSLATION
             else:
                 continue
@@ -434,7 +435,7 @@ def _weakest(parts: list[Extrinsic]) -> str:
 
 def is_blank_matrix(value: ast.expr) -> bool:
     """`np.eye(4)`, `np.identity(4)`, `torch.eye(4)`, `np.zeros((4, 4))`."""
-    if not isinstance(value, ast.Call) or call_name(value) not in _BLOCK_MAKERS or not value.args:
+    if not isinstance(value, Call) or call_name(value) not in _BLOCK_MAKERS or not value.args:
         return False
     size = value.args[0]
     if isinstance(size, (ast.Tuple, ast.List)):
@@ -446,15 +447,15 @@ _CAMERA_CLOUD_MAKERS = frozenset({"create_from_rgbd_image", "create_from_depth_i
 _CLOUD_MOVES = frozenset({"transform", "rotate", "translate", "scale"})
 
 
-def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: ast.AST) -> str | None:
+def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: AST) -> str | None:
     """Why `receiver` is an Open3D point cloud still in the camera frame where `use` runs: made by
     `PointCloud.create_from_rgbd_image` / `create_from_depth_image` without an extrinsic (with one,
     Open3D puts the cloud in the world frame), and not moved since. None otherwise."""
-    if not isinstance(receiver, ast.Name):
+    if not isinstance(receiver, Name):
         return None
     index = evidence.index
     made = value_of(index, receiver)
-    if not isinstance(made, ast.Call) or call_name(made) not in _CAMERA_CLOUD_MAKERS:
+    if not isinstance(made, Call) or call_name(made) not in _CAMERA_CLOUD_MAKERS:
         return None
     if "PointCloud" not in (evidence.facts.qualified_name(made.func) or ""):
         return None
@@ -466,9 +467,9 @@ def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: as
     if made_at is None or used_at is None or binding is None:
         return None
     start, end = (made_at.lineno, made_at.col_offset), (used_at.lineno, used_at.col_offset)
-    for call in evidence.facts.index.nodes(ast.Call):
+    for call in evidence.facts.index.nodes(Call):
         func = call.func  # type: ignore[attr-defined]
-        if not (isinstance(func, ast.Attribute) and func.attr in _CLOUD_MOVES and isinstance(func.value, ast.Name)):
+        if not (isinstance(func, Attribute) and func.attr in _CLOUD_MOVES and isinstance(func.value, Name)):
             continue
         if func.value.id != receiver.id or call is use:
             continue
@@ -488,11 +489,11 @@ OPEN3D_W2C_ARGUMENTS: dict[str, tuple[int | None, str]] = {
 }
 
 
-def open3d_w2c_argument(evidence: ExtrinsicsEvidence, call: ast.Call) -> tuple[ast.expr, str] | None:
+def open3d_w2c_argument(evidence: ExtrinsicsEvidence, call: Call) -> tuple[ast.expr, str] | None:
     """The argument of an Open3D call that must be a world-to-camera pose, and what says so."""
     name = call_name(call)
     wanted = OPEN3D_W2C_ARGUMENTS.get(name or "")
-    if wanted is None or not isinstance(call.func, ast.Attribute):
+    if wanted is None or not isinstance(call.func, Attribute):
         return None
     if name == "integrate":
         if not _is_tsdf_volume(evidence, call.func.value):
@@ -507,38 +508,38 @@ def open3d_w2c_argument(evidence: ExtrinsicsEvidence, call: ast.Call) -> tuple[a
     for given in call.keywords:
         if given.arg == keyword:
             return given.value, f"the extrinsic of {what}"
-    if position is not None and len(call.args) > position and not any(isinstance(a, ast.Starred) for a in call.args[: position + 1]):
+    if position is not None and len(call.args) > position and not any(isinstance(a, Starred) for a in call.args[: position + 1]):
         return call.args[position], f"the extrinsic of {what}"
     return None
 
 
 def _is_tsdf_volume(evidence: ExtrinsicsEvidence, receiver: ast.expr) -> bool:
     """`volume = o3d.pipelines.integration.ScalableTSDFVolume(...)`, directly or as `self.volume`."""
-    if isinstance(receiver, ast.Name):
+    if isinstance(receiver, Name):
         made = value_of(evidence.index, receiver)
         made_by = [made] if isinstance(made, ast.expr) else []
-    elif isinstance(receiver, ast.Attribute) and isinstance(receiver.value, ast.Name) and receiver.value.id == "self":
+    elif isinstance(receiver, Attribute) and isinstance(receiver.value, Name) and receiver.value.id == "self":
         made_by = evidence.facts.index.self_attribute_stores.get(receiver.attr, [])
     else:
         return False
     return bool(made_by) and all(
-        isinstance(made, ast.Call) and "TSDFVolume" in (evidence.facts.qualified_name(made.func) or "") for made in made_by
+        isinstance(made, Call) and "TSDFVolume" in (evidence.facts.qualified_name(made.func) or "") for made in made_by
     )
 
 
 _PYRENDER_CAMERAS = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "OrthographicCamera"})
 
 
-def pyrender_camera_pose(evidence: ExtrinsicsEvidence, call: ast.Call) -> ast.expr | None:
+def pyrender_camera_pose(evidence: ExtrinsicsEvidence, call: Call) -> ast.expr | None:
     """The `pose=` of `scene.add(camera, pose=...)` when `camera` is a pyrender camera: a scene
     node's pose maps the node into the scene, so a camera's is camera-to-world."""
-    if call_name(call) != "add" or not call.args or not isinstance(call.func, ast.Attribute):
+    if call_name(call) != "add" or not call.args or not isinstance(call.func, Attribute):
         return None
     pose = next((keyword.value for keyword in call.keywords if keyword.arg == "pose"), None)
     if pose is None:
         return None
     camera = call.args[0]
-    made = value_of(evidence.index, camera) if isinstance(camera, ast.Name) else camera
-    if not isinstance(made, ast.Call) or call_name(made) not in _PYRENDER_CAMERAS:
+    made = value_of(evidence.index, camera) if isinstance(camera, Name) else camera
+    if not isinstance(made, Call) or call_name(made) not in _PYRENDER_CAMERAS:
         return None
     return pose if (evidence.facts.qualified_name(made.func) or "").startswith("pyrender") else None

@@ -8,6 +8,17 @@ time (a parameter, `rospy.get_param`, an attribute) leaves the value unknown (No
 from __future__ import annotations
 
 import ast
+from ast import (
+    Add,
+    Attribute,
+    BinOp,
+    Call,
+    Constant,
+    FormattedValue,
+    JoinedStr,
+    Mod,
+    Name,
+)
 
 from geolint.factbase.index import ModuleIndex, module_constant
 from geolint.factbase.reaching import resolve, scope_of
@@ -20,34 +31,34 @@ def frame_string(node: ast.expr, index: ModuleIndex, depth: int = _MAX_DEPTH) ->
     """The string `node` certainly evaluates to, or None."""
     if depth <= 0:
         return None
-    if isinstance(node, ast.Constant):
+    if isinstance(node, Constant):
         return node.value if isinstance(node.value, str) else None
-    if isinstance(node, ast.Name):
+    if isinstance(node, Name):
         resolved = resolve(index, node)
         value: ast.expr | None = resolved if isinstance(resolved, ast.expr) else None
-        if isinstance(value, ast.Name):  # unknown here: a global the reading scope does not rebind?
+        if isinstance(value, Name):  # unknown here: a global the reading scope does not rebind?
             value = None if value.id in scope_of(index, value).bindings else module_constant(index, value.id)
-        return frame_string(value, index, depth - 1) if value is not None and not isinstance(value, ast.Name) else None
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+        return frame_string(value, index, depth - 1) if value is not None and not isinstance(value, Name) else None
+    if isinstance(node, BinOp) and isinstance(node.op, Add):
         left, right = frame_string(node.left, index, depth - 1), frame_string(node.right, index, depth - 1)
         return _short(left + right) if left is not None and right is not None else None
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mod):
+    if isinstance(node, BinOp) and isinstance(node.op, Mod):
         template = frame_string(node.left, index, depth - 1)
         parts = node.right.elts if isinstance(node.right, ast.Tuple) else [node.right]
         values = [frame_string(part, index, depth - 1) for part in parts]
         if template is None or None in values:
             return None
         return _formatted(lambda: template % tuple(values))
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "format" and not node.keywords:
+    if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr == "format" and not node.keywords:
         template = frame_string(node.func.value, index, depth - 1)
         values = [frame_string(arg, index, depth - 1) for arg in node.args]
         if template is None or None in values:
             return None
         return _formatted(lambda: template.format(*values))
-    if isinstance(node, ast.JoinedStr):
+    if isinstance(node, JoinedStr):
         pieces = []
         for piece in node.values:
-            if isinstance(piece, ast.FormattedValue):
+            if isinstance(piece, FormattedValue):
                 if piece.conversion not in (-1, ord("s")) or piece.format_spec is not None:
                     return None
                 piece = piece.value  # type: ignore[assignment]

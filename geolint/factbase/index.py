@@ -11,14 +11,48 @@ import ast
 import operator
 import os
 import threading
+from ast import (
+    AST,
+    AnnAssign,
+    Assign,
+    AsyncFor,
+    AsyncFunctionDef,
+    Attribute,
+    AugAssign,
+    BinOp,
+    Break,
+    Call,
+    ClassDef,
+    Constant,
+    Continue,
+    Del,
+    ExceptHandler,
+    For,
+    FunctionDef,
+    Global,
+    Import,
+    ImportFrom,
+    Lambda,
+    Load,
+    MatMult,
+    Module,
+    Name,
+    NamedExpr,
+    Nonlocal,
+    Pass,
+    Return,
+    Starred,
+    Store,
+    Subscript,
+)
 from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any, Callable, Union
 
 from geolint.lint_types import Config
 
-ScopeNode = Union[ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda]
-FUNCTION_NODES = (ast.FunctionDef, ast.AsyncFunctionDef)
+ScopeNode = Union[Module, FunctionDef, AsyncFunctionDef, ClassDef, Lambda]
+FUNCTION_NODES = (FunctionDef, AsyncFunctionDef)
 
 
 @dataclass(frozen=True)
@@ -38,7 +72,7 @@ class ParamBinding:
 
     arg: ast.arg
     default: ast.expr | None
-    function: ast.AST
+    function: AST
 
 
 @dataclass(frozen=True)
@@ -65,9 +99,9 @@ class Scope:
     parent: Scope | None
     bindings: dict[str, list[Binding]] = field(default_factory=dict)
     # `buf[:3] = x`: name -> [(subscript target, value)]
-    subscript_stores: dict[str, list[tuple[ast.Subscript, ast.expr]]] = field(default_factory=dict)
+    subscript_stores: dict[str, list[tuple[Subscript, ast.expr]]] = field(default_factory=dict)
     # `obj.attr = value`
-    attribute_stores: list[tuple[ast.Attribute, ast.expr]] = field(default_factory=list)
+    attribute_stores: list[tuple[Attribute, ast.expr]] = field(default_factory=list)
     augmented: set[str] = field(default_factory=set)
     # names used as an operand of a matrix product (`T @ x`, `x.dot(M)`)
     matmul_operands: set[str] = field(default_factory=set)
@@ -80,18 +114,18 @@ class Scope:
 class ModuleIndex:
     """The facts of one module that do not depend on the config."""
 
-    def __init__(self, tree: ast.Module, source: str, depth_limit: int | None = None) -> None:
+    def __init__(self, tree: Module, source: str, depth_limit: int | None = None) -> None:
         self.tree = tree
         self.source = source
-        self.parents: dict[ast.AST, ast.AST] = {}
-        self.scope_of_node: dict[ast.AST, Scope] = {}
-        self.scopes: dict[ast.AST, Scope] = {}
+        self.parents: dict[AST, AST] = {}
+        self.scope_of_node: dict[AST, Scope] = {}
+        self.scopes: dict[AST, Scope] = {}
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.imported_modules: set[str] = set()
         self.star_imports: list[str] = []  # `from .geometry import *`: the modules, with their leading dots
-        self.functions: dict[str, ast.FunctionDef | ast.AsyncFunctionDef] = {}  # module level
-        self.methods: dict[str, list[ast.FunctionDef | ast.AsyncFunctionDef]] = {}  # by name, in classes
-        self.by_type: dict[type, list[ast.AST]] = {}  # in source (pre-)order
+        self.functions: dict[str, FunctionDef | AsyncFunctionDef] = {}  # module level
+        self.methods: dict[str, list[FunctionDef | AsyncFunctionDef]] = {}  # by name, in classes
+        self.by_type: dict[type, list[AST]] = {}  # in source (pre-)order
         self.self_attribute_stores: dict[str, list[ast.expr]] = {}  # `self.x = value` anywhere in a class
         self._lines: list[str] | None = None
         # where each line starts in the source, and the lines (`model._offset`'s character offsets)
@@ -102,8 +136,8 @@ class ModuleIndex:
         # a position (the guards' depth check, measured on the same walk)
         self.depth_limit = depth_limit
         self.too_deep = False
-        self.too_deep_at: ast.AST | None = None
-        self._merged: dict[tuple[type, ...], list[ast.AST]] = {}
+        self.too_deep_at: AST | None = None
+        self._merged: dict[tuple[type, ...], list[AST]] = {}
         self.flow: dict[str, dict] = {}  # type: ignore[type-arg]  # `geolint.factbase.reaching`'s tables, built on first use
         self._build(depth_limit if depth_limit is not None else 1 << 62)
 
@@ -118,9 +152,9 @@ class ModuleIndex:
         reversed_fields = _REVERSED_CHILD_FIELDS
         role_of = _ROLE
         scope_makers = _SCOPE_MAKERS
-        AST, Call, Attribute = ast.AST, ast.Call, ast.Attribute
+        call_type, attribute_type, node_type = Call, Attribute, AST  # locals: each is read once per node
         # (node, scope the node's code runs in, its level); an explicit stack, so depth costs no recursion
-        stack: list[tuple[ast.AST, Scope, int]] = [(self.tree, root, 1)]
+        stack: list[tuple[AST, Scope, int]] = [(self.tree, root, 1)]
         pop, push = stack.pop, stack.append
         while stack:
             node, scope, depth = pop()
@@ -135,9 +169,9 @@ class ModuleIndex:
                 by_type[kind] = [node]
             else:
                 bucket.append(node)
-            if kind is Call:  # the commonest recorded node, inlined: `_record_call`
+            if kind is call_type:  # the commonest recorded node, inlined: `_record_call`
                 func = node.func  # type: ignore[attr-defined]
-                if type(func) is Attribute and func.attr in _MATMUL_METHODS:
+                if type(func) is attribute_type and func.attr in _MATMUL_METHODS:
                     _matmul_operands(scope, func.value, *node.args)  # type: ignore[attr-defined]
                 inner = scope
             else:
@@ -167,7 +201,7 @@ class ModuleIndex:
                     for child in reversed(value):
                         role = role_of.get(type(child))
                         if role is None:  # not a node (`Global.names`' strings), or a node type not seen yet
-                            role = _WALKED if isinstance(child, AST) else _SKIPPED
+                            role = _WALKED if isinstance(child, node_type) else _SKIPPED
                         if role == _SKIPPED:
                             continue
                         parents[child] = node
@@ -178,7 +212,7 @@ class ModuleIndex:
                 else:
                     role = role_of.get(type(value))
                     if role is None:  # a string or a number, or a node type not seen yet
-                        role = _WALKED if isinstance(value, AST) else _SKIPPED
+                        role = _WALKED if isinstance(value, node_type) else _SKIPPED
                     if role == _SKIPPED:
                         continue
                     parents[value] = node
@@ -187,7 +221,7 @@ class ModuleIndex:
                     else:
                         push((value, scope, depth))
 
-    def _past_the_limit(self, node: ast.AST) -> bool:
+    def _past_the_limit(self, node: AST) -> bool:
         """`node` is one level past the limit: the tree is too deep. Whether to stop the walk now:
         the guards name the first node of that level, in source order, that has a position (nodes
         past the limit are never expanded, so the walk goes on through that level only)."""
@@ -197,55 +231,55 @@ class ModuleIndex:
             return True
         return False
 
-    def _record(self, node: ast.AST, scope: Scope) -> Scope:
+    def _record(self, node: AST, scope: Scope) -> Scope:
         """Record what `node` binds in `scope`; return the scope its body runs in."""
         recorder = _RECORDERS.get(type(node))
         return recorder(self, node, scope) if recorder is not None else scope
 
-    def _record_function(self, node: ast.FunctionDef | ast.AsyncFunctionDef, scope: Scope) -> Scope:
+    def _record_function(self, node: FunctionDef | AsyncFunctionDef, scope: Scope) -> Scope:
         scope.bind(node.name, OpaqueBinding())
-        if isinstance(scope.node, ast.Module):
+        if isinstance(scope.node, Module):
             self.functions[node.name] = node
-        elif isinstance(scope.node, ast.ClassDef):
+        elif isinstance(scope.node, ClassDef):
             self.methods.setdefault(node.name, []).append(node)
         inner = Scope(node, scope)
         self.scopes[node] = inner
         self._bind_arguments(node.args, inner, node)
         return inner
 
-    def _record_lambda(self, node: ast.Lambda, scope: Scope) -> Scope:
+    def _record_lambda(self, node: Lambda, scope: Scope) -> Scope:
         inner = Scope(node, scope)
         self.scopes[node] = inner
         self._bind_arguments(node.args, inner, node)
         return inner
 
-    def _record_class(self, node: ast.ClassDef, scope: Scope) -> Scope:
+    def _record_class(self, node: ClassDef, scope: Scope) -> Scope:
         scope.bind(node.name, OpaqueBinding())
         inner = Scope(node, scope)
         self.scopes[node] = inner
         return inner
 
-    def _record_assign(self, node: ast.Assign, scope: Scope) -> Scope:
+    def _record_assign(self, node: Assign, scope: Scope) -> Scope:
         for target in node.targets:
             self._bind_target(target, node.value, scope)
         return scope
 
-    def _record_annotated(self, node: ast.AnnAssign, scope: Scope) -> Scope:
+    def _record_annotated(self, node: AnnAssign, scope: Scope) -> Scope:
         self._bind_target(node.target, node.value if node.value is not None else OpaqueBinding(), scope)
         return scope
 
-    def _record_augmented(self, node: ast.AugAssign, scope: Scope) -> Scope:
-        if isinstance(node.target, ast.Name):
+    def _record_augmented(self, node: AugAssign, scope: Scope) -> Scope:
+        if isinstance(node.target, Name):
             scope.augmented.add(node.target.id)
-        elif isinstance(node.target, ast.Attribute):
+        elif isinstance(node.target, Attribute):
             scope.attribute_stores.append((node.target, node.value))
         return scope
 
-    def _record_walrus(self, node: ast.NamedExpr, scope: Scope) -> Scope:
+    def _record_walrus(self, node: NamedExpr, scope: Scope) -> Scope:
         self._bind_target(node.target, node.value, scope)
         return scope
 
-    def _record_loop(self, node: ast.For | ast.AsyncFor | ast.comprehension, scope: Scope) -> Scope:
+    def _record_loop(self, node: For | AsyncFor | ast.comprehension, scope: Scope) -> Scope:
         self._bind_loop(node.target, node.iter, scope)
         return scope
 
@@ -254,33 +288,33 @@ class ModuleIndex:
             self._bind_target(node.optional_vars, OpaqueBinding(), scope)
         return scope
 
-    def _record_handler(self, node: ast.ExceptHandler, scope: Scope) -> Scope:
+    def _record_handler(self, node: ExceptHandler, scope: Scope) -> Scope:
         if node.name:
             scope.bind(node.name, OpaqueBinding())
         return scope
 
-    def _record_binary(self, node: ast.BinOp, scope: Scope) -> Scope:
-        if type(node.op) is ast.MatMult:
+    def _record_binary(self, node: BinOp, scope: Scope) -> Scope:
+        if type(node.op) is MatMult:
             _matmul_operands(scope, node.left, node.right)
         return scope
 
-    def _record_call(self, node: ast.Call, scope: Scope) -> Scope:
+    def _record_call(self, node: Call, scope: Scope) -> Scope:
         func = node.func
-        if type(func) is ast.Attribute and func.attr in _MATMUL_METHODS:
+        if type(func) is Attribute and func.attr in _MATMUL_METHODS:
             _matmul_operands(scope, func.value, *node.args)
         return scope
 
-    def _record_return(self, node: ast.Return, scope: Scope) -> Scope:
+    def _record_return(self, node: Return, scope: Scope) -> Scope:
         if node.value is not None:
             scope.returns.append(node.value)
         return scope
 
-    def _record_declaration(self, node: ast.Global | ast.Nonlocal, scope: Scope) -> Scope:
+    def _record_declaration(self, node: Global | Nonlocal, scope: Scope) -> Scope:
         for name in node.names:
             scope.bind(name, OpaqueBinding())
         return scope
 
-    def _record_import(self, node: ast.Import, scope: Scope) -> Scope:
+    def _record_import(self, node: Import, scope: Scope) -> Scope:
         for alias in node.names:
             if alias.asname:
                 local = alias.asname
@@ -292,7 +326,7 @@ class ModuleIndex:
             scope.bind(local, OpaqueBinding())
         return scope
 
-    def _record_import_from(self, node: ast.ImportFrom, scope: Scope) -> Scope:
+    def _record_import_from(self, node: ImportFrom, scope: Scope) -> Scope:
         # a relative import keeps its leading dots (`.utils.to_homogeneous`), resolved by summaries
         module = "." * node.level + (node.module or "")
         if module:
@@ -305,7 +339,7 @@ class ModuleIndex:
                 scope.bind(local, OpaqueBinding())
         return scope
 
-    def _bind_arguments(self, args: ast.arguments, scope: Scope, function: ast.AST) -> None:
+    def _bind_arguments(self, args: ast.arguments, scope: Scope, function: AST) -> None:
         positional = [*args.posonlyargs, *args.args]
         defaults: list[ast.expr | None] = [None] * (len(positional) - len(args.defaults)) + list(args.defaults)
         for arg, default in zip(positional, defaults):
@@ -317,30 +351,30 @@ class ModuleIndex:
                 scope.bind(star.arg, OpaqueBinding())
 
     def _bind_target(self, target: ast.expr, value: Binding, scope: Scope) -> None:
-        if isinstance(target, ast.Name):
+        if isinstance(target, Name):
             scope.bind(target.id, value)
         elif isinstance(target, (ast.Tuple, ast.List)):
             for position, element in enumerate(target.elts):
-                if isinstance(element, ast.Name) and isinstance(value, ast.expr):
+                if isinstance(element, Name) and isinstance(value, ast.expr):
                     scope.bind(element.id, UnpackBinding(value, position))
                 else:
                     self._bind_target(element, OpaqueBinding(), scope)
-        elif isinstance(target, ast.Starred):
+        elif isinstance(target, Starred):
             self._bind_target(target.value, OpaqueBinding(), scope)
-        elif isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
+        elif isinstance(target, Subscript) and isinstance(target.value, Name):
             if isinstance(value, ast.expr):
                 scope.subscript_stores.setdefault(target.value.id, []).append((target, value))
-        elif isinstance(target, ast.Attribute) and isinstance(value, ast.expr):
+        elif isinstance(target, Attribute) and isinstance(value, ast.expr):
             scope.attribute_stores.append((target, value))
-            if isinstance(target.value, ast.Name) and target.value.id == "self":
+            if isinstance(target.value, Name) and target.value.id == "self":
                 self.self_attribute_stores.setdefault(target.attr, []).append(value)
 
     def _bind_loop(self, target: ast.expr, iterable: ast.expr, scope: Scope) -> None:
-        if isinstance(target, ast.Name):
+        if isinstance(target, Name):
             scope.bind(target.id, LoopBinding(iterable))
         elif isinstance(target, (ast.Tuple, ast.List)):
             for position, element in enumerate(target.elts):
-                if isinstance(element, ast.Name):
+                if isinstance(element, Name):
                     scope.bind(element.id, LoopBinding(iterable, position))
                 else:
                     self._bind_target(element, OpaqueBinding(), scope)
@@ -353,7 +387,7 @@ class ModuleIndex:
         self.flow = {}
 
     # -- queries ------------------------------------------------------------------------
-    def nodes(self, *kinds: type) -> list[ast.AST]:
+    def nodes(self, *kinds: type) -> list[AST]:
         """Every node of these types, in source order (a list several rules share: never change it).
         Types without child nodes (`Name`, `Constant`...) are not listed."""
         if not _NO_CHILDREN.isdisjoint(kinds):
@@ -368,10 +402,10 @@ class ModuleIndex:
             self._merged[kinds] = found
         return found
 
-    def parent(self, node: ast.AST) -> ast.AST | None:
+    def parent(self, node: AST) -> AST | None:
         return self.parents.get(node)
 
-    def scope_of(self, node: ast.AST) -> Scope:
+    def scope_of(self, node: AST) -> Scope:
         return self.scope_of_node.get(node) or self.scopes[self.tree]
 
     def lookup(self, name: str, scope: Scope) -> list[Binding] | None:
@@ -380,12 +414,12 @@ class ModuleIndex:
             return scope.bindings[name]
         current = scope.parent
         while current is not None:
-            if not isinstance(current.node, ast.ClassDef) and name in current.bindings:
+            if not isinstance(current.node, ClassDef) and name in current.bindings:
                 return current.bindings[name]
             current = current.parent
         return None
 
-    def code_of(self, node: ast.AST) -> str:
+    def code_of(self, node: AST) -> str:
         """The source text of a node (normalised to one line when it spans several)."""
         segment = self._source_segment(node)
         if segment is None:
@@ -395,11 +429,11 @@ class ModuleIndex:
                 return "?"
         return " ".join(segment.split()) if "\n" in segment else segment
 
-    def segment(self, node: ast.AST) -> str:
+    def segment(self, node: AST) -> str:
         """The exact source text of a node's span (what a replacement replaces)."""
         return self._source_segment(node) or ""
 
-    def _source_segment(self, node: ast.AST) -> str | None:
+    def _source_segment(self, node: AST) -> str | None:
         """`ast.get_source_segment` on lines split once per module (it re-splits the whole source on
         every call, which made a module with many findings quadratic in its size)."""
         try:
@@ -411,7 +445,9 @@ class ModuleIndex:
             return None
         lines = self._lines
         if lines is None:
-            from geolint.engine import split_lines  # \n, \r\n and \r, not \f: as ast counts lines
+            from geolint.engine import (
+                split_lines,  # \n, \r\n and \r, not \f: as ast counts lines
+            )
 
             lines = self._lines = split_lines(self.source)
         if not 0 <= first <= last < len(lines):
@@ -425,11 +461,11 @@ class ModuleIndex:
 
 # Nodes nothing asks about (`Load`, `Add`...): not indexed, not walked.
 _LEAVES = frozenset(
-    {ast.Load, ast.Store, ast.Del, *ast.operator.__subclasses__(), *ast.unaryop.__subclasses__(),
+    {Load, Store, Del, *ast.operator.__subclasses__(), *ast.unaryop.__subclasses__(),
      *ast.cmpop.__subclasses__(), *ast.boolop.__subclasses__()}
 )  # fmt: skip
 # Nodes without child nodes worth walking (`Name`'s only child is its `Load`).
-_NO_CHILDREN = frozenset({ast.Name, ast.Constant, ast.alias, ast.Pass, ast.Break, ast.Continue})
+_NO_CHILDREN = frozenset({Name, Constant, ast.alias, Pass, Break, Continue})
 # Fields that never hold a node (or hold only `_LEAVES`): skipped without a look.
 _NOT_CHILD_FIELDS = frozenset(
     {"ctx", "op", "id", "attr", "arg", "name", "kind", "type_comment", "level", "module", "asname", "is_async", "conversion", "simple"}
@@ -448,14 +484,14 @@ def module_constant(index: ModuleIndex, name: str) -> ast.expr | None:
     found = module.bindings.get(name) or []
     if len(found) != 1 or not isinstance(found[0], ast.expr) or name in module.augmented:
         return None
-    if any(name in node.names for node in index.nodes(ast.Global)):  # type: ignore[attr-defined]
+    if any(name in node.names for node in index.nodes(Global)):  # type: ignore[attr-defined]
         return None
     return found[0]
 
 
-def _node_types(base: type[ast.AST] = ast.AST) -> list[type[ast.AST]]:
+def _node_types(base: type[AST] = AST) -> list[type[AST]]:
     """Every `ast` node class."""
-    found: list[type[ast.AST]] = []
+    found: list[type[AST]] = []
     for sub in base.__subclasses__():
         found += [sub, *_node_types(sub)]
     return found
@@ -466,23 +502,23 @@ _ROLE: dict[type, int] = {
     **{kind: _SKIPPED if kind in _LEAVES else _CHILDLESS if kind in _NO_CHILDREN else _WALKED for kind in _node_types()},
 }
 _MATMUL_METHODS = ("dot", "matmul")
-_SCOPE_MAKERS = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
+_SCOPE_MAKERS = frozenset({FunctionDef, AsyncFunctionDef, Lambda, ClassDef})
 # What the walk records for the nodes that bind names, make scopes, return or multiply matrices
 # (by exact type, as `ast` makes them: one dictionary look-up per node).
 _RECORDERS: dict[type, Callable[[ModuleIndex, Any, Scope], Scope]] = {
-    ast.FunctionDef: ModuleIndex._record_function, ast.AsyncFunctionDef: ModuleIndex._record_function,
-    ast.Lambda: ModuleIndex._record_lambda, ast.ClassDef: ModuleIndex._record_class,
-    ast.Assign: ModuleIndex._record_assign, ast.AnnAssign: ModuleIndex._record_annotated,
-    ast.AugAssign: ModuleIndex._record_augmented, ast.NamedExpr: ModuleIndex._record_walrus,
-    ast.For: ModuleIndex._record_loop, ast.AsyncFor: ModuleIndex._record_loop, ast.comprehension: ModuleIndex._record_loop,
-    ast.withitem: ModuleIndex._record_with_item, ast.ExceptHandler: ModuleIndex._record_handler,
-    ast.BinOp: ModuleIndex._record_binary, ast.Call: ModuleIndex._record_call, ast.Return: ModuleIndex._record_return,
-    ast.Global: ModuleIndex._record_declaration, ast.Nonlocal: ModuleIndex._record_declaration,
-    ast.Import: ModuleIndex._record_import, ast.ImportFrom: ModuleIndex._record_import_from,
+    FunctionDef: ModuleIndex._record_function, AsyncFunctionDef: ModuleIndex._record_function,
+    Lambda: ModuleIndex._record_lambda, ClassDef: ModuleIndex._record_class,
+    Assign: ModuleIndex._record_assign, AnnAssign: ModuleIndex._record_annotated,
+    AugAssign: ModuleIndex._record_augmented, NamedExpr: ModuleIndex._record_walrus,
+    For: ModuleIndex._record_loop, AsyncFor: ModuleIndex._record_loop, ast.comprehension: ModuleIndex._record_loop,
+    ast.withitem: ModuleIndex._record_with_item, ExceptHandler: ModuleIndex._record_handler,
+    BinOp: ModuleIndex._record_binary, Call: ModuleIndex._record_call, Return: ModuleIndex._record_return,
+    Global: ModuleIndex._record_declaration, Nonlocal: ModuleIndex._record_declaration,
+    Import: ModuleIndex._record_import, ImportFrom: ModuleIndex._record_import_from,
 }  # fmt: skip
 
 
-def child_nodes(node: ast.AST) -> list[ast.AST]:
+def child_nodes(node: AST) -> list[AST]:
     """`ast.iter_child_nodes(node)` as a list, less the leaves nothing asks about (`Load`, operators)."""
     kind = type(node)
     fields = _CHILD_FIELDS.get(kind)
@@ -495,32 +531,47 @@ def child_nodes(node: ast.AST) -> list[ast.AST]:
             for child in value:
                 role = _ROLE.get(type(child))
                 if role is None:  # not a node, or a node type not seen yet
-                    role = _WALKED if isinstance(child, ast.AST) else _SKIPPED
+                    role = _WALKED if isinstance(child, AST) else _SKIPPED
                 if role != _SKIPPED:
                     children.append(child)
         else:
             role = _ROLE.get(type(value))
             if role is None:
-                role = _WALKED if isinstance(value, ast.AST) else _SKIPPED
+                role = _WALKED if isinstance(value, AST) else _SKIPPED
             if role != _SKIPPED:
                 children.append(value)
     return children
 
 
-def _reversed_child_fields(kind: type[ast.AST]) -> tuple[str, ...]:
+_STATEMENT_LIST_FIELDS = ("body", "orelse", "finalbody", "handlers", "cases")
+_statement_lists_of: dict[type, tuple[str, ...]] = {}
+
+
+def statement_list_fields(node: AST) -> tuple[str, ...]:
+    """Which of `body`, `orelse`, `finalbody`, `handlers` and `cases` a statement (or an `except`
+    handler, or a `match` case) holds, in that order. Asked instead of `getattr` with a default,
+    which for each simple statement would first raise and format an `AttributeError`."""
+    kind = type(node)
+    fields = _statement_lists_of.get(kind)
+    if fields is None:
+        fields = _statement_lists_of[kind] = tuple(f for f in _STATEMENT_LIST_FIELDS if f in kind._fields)
+    return fields
+
+
+def _reversed_child_fields(kind: type[AST]) -> tuple[str, ...]:
     fields = _CHILD_FIELDS.get(kind)
     if fields is None:
         fields = _CHILD_FIELDS[kind] = tuple(f for f in kind._fields if f not in _NOT_CHILD_FIELDS)
     return fields[::-1]
 
 
-def _runs_in_inner_scope(node: ast.AST, child: ast.AST) -> bool:
+def _runs_in_inner_scope(node: AST, child: AST) -> bool:
     """Whether `child` of a scope-making `node` belongs to the new scope (not defaults, decorators, bases)."""
     if isinstance(node, FUNCTION_NODES):
         return not (child is node.args or child is node.returns or any(child is d for d in node.decorator_list))
-    if isinstance(node, ast.Lambda):
+    if isinstance(node, Lambda):
         return child is node.body
-    if isinstance(node, ast.ClassDef):
+    if isinstance(node, ClassDef):
         return not any(child is other for other in (*node.bases, *node.keywords, *node.decorator_list))
     return True
 
@@ -528,15 +579,15 @@ def _runs_in_inner_scope(node: ast.AST, child: ast.AST) -> bool:
 _LINE_AND_COLUMN = operator.attrgetter("lineno", "col_offset")
 
 
-def _position(node: ast.AST) -> tuple[int, int]:
+def _position(node: AST) -> tuple[int, int]:
     return (getattr(node, "lineno", 0), getattr(node, "col_offset", 0))
 
 
 def _matmul_operands(scope: Scope, *operands: ast.expr) -> None:
     for operand in operands:
-        while isinstance(operand, ast.Attribute) and operand.attr == "T":
+        while isinstance(operand, Attribute) and operand.attr == "T":
             operand = operand.value
-        if isinstance(operand, ast.Name):
+        if isinstance(operand, Name):
             scope.matmul_operands.add(operand.id)
 
 
@@ -557,7 +608,7 @@ class _SharedModule:
 
     __slots__ = ("source", "tree", "index", "signature")
 
-    def __init__(self, source: str, tree: ast.Module | None, index: ModuleIndex | None, signature: tuple[int, int] | None) -> None:
+    def __init__(self, source: str, tree: Module | None, index: ModuleIndex | None, signature: tuple[int, int] | None) -> None:
         self.source = source
         self.tree = tree  # None: the text does not parse
         self.index = index  # built on first use when the engine left only a tree
@@ -598,7 +649,7 @@ def index_of_file(file: str | os.PathLike[str]) -> ModuleIndex | None:
     return index
 
 
-def parse_of_file(file: str, source: str, signature: tuple[int, int]) -> ast.Module | None:
+def parse_of_file(file: str, source: str, signature: tuple[int, int]) -> Module | None:
     """The tree of `source`, the text of `file` (read by a caller that has its size and mtime), or None
     when it does not parse: parsed once and kept like `index_of_file`'s trees, so linting the file or
     importing it later takes this tree (the naming votes read a project's files before any is linted)."""
@@ -612,7 +663,7 @@ def parse_of_file(file: str, source: str, signature: tuple[int, int]) -> ast.Mod
 def _parse_and_share(key: str, source: str, signature: tuple[int, int]) -> _SharedModule:
     """Parse a project module's text (None for a text that does not parse) and keep it under `key`."""
     try:
-        tree: ast.Module | None = ast.parse(source)
+        tree: Module | None = ast.parse(source)
     except (SyntaxError, ValueError, MemoryError, RecursionError):
         tree = None
     entry = _SharedModule(source, tree, None, signature)
@@ -620,7 +671,7 @@ def _parse_and_share(key: str, source: str, signature: tuple[int, int]) -> _Shar
     return entry
 
 
-def shared_parse(path: str, source: str) -> tuple[ast.Module, ModuleIndex | None] | None:
+def shared_parse(path: str, source: str) -> tuple[Module, ModuleIndex | None] | None:
     """The tree (and index, if built) of the module at `path` when one was kept for exactly `source`."""
     if path.startswith("<"):
         return None

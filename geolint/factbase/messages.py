@@ -11,6 +11,7 @@ resolved through the module's imports, so `q` alone, or an unimported `VehicleOd
 from __future__ import annotations
 
 import ast
+from ast import Attribute, Call, ClassDef, Constant, Name
 
 from geolint.algebra import Kind
 from geolint.factbase.index import FUNCTION_NODES, ParamBinding
@@ -102,25 +103,25 @@ class MessageTypes:
         """The qualified message class of `node`'s value, when every binding agrees on a known one."""
         return self._classes.get(id(node), lambda: self._class(node))
 
-    def field_kind(self, node: ast.Attribute) -> Kind | None:
+    def field_kind(self, node: Attribute) -> Kind | None:
         """The kind of a message field's 3-vector (`msg.twist.twist.linear` of an Odometry: a free vector)."""
         owner = self.class_of(node.value)
         return None if owner is None else MESSAGE_FIELDS.get(owner, {}).get(node.attr, (None, None))[1]
 
     def _class(self, node: ast.expr) -> str | None:
         facts = self.facts
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             qualified = facts.qualified_name(node.func)
             return qualified if qualified in _KNOWN_CLASSES and not node.args else None
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             bound = facts.bindings(node) or []
             return _agreed([self._class_of_binding(binding) for binding in bound])
-        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+        if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
             stores = facts.index.self_attribute_stores.get(node.attr, [])
             # `self.odometry = None` before the first message, or the subscription handle stored under
             # the same name: reading `.q` from either would fail, so where `.q` is read it is the message
             return _agreed([self.class_of(store) for store in stores if not _has_no_fields(store)])
-        if isinstance(node, ast.Attribute):  # `msg.twist.twist`: the field's own message class
+        if isinstance(node, Attribute):  # `msg.twist.twist`: the field's own message class
             owner = self.class_of(node.value)
             return None if owner is None else MESSAGE_FIELDS.get(owner, {}).get(node.attr, (None, None))[0]
         return None
@@ -143,7 +144,7 @@ class MessageTypes:
         if not isinstance(function, FUNCTION_NODES):
             return None
         parameters = [*function.args.posonlyargs, *function.args.args]
-        is_method = isinstance(self.facts.parent(function), ast.ClassDef)
+        is_method = isinstance(self.facts.parent(function), ClassDef)
         if len(parameters) != 1 + is_method or parameters[is_method] is not binding.arg:
             return None
         return _agreed(list(self._registrations().get(function.name, ())))
@@ -156,7 +157,7 @@ class MessageTypes:
         facts = self.facts
         found: dict[str, set[str | None]] = {}
         called: set[str] = set()
-        for call in facts.index.nodes(ast.Call):
+        for call in facts.index.nodes(Call):
             func = call.func  # type: ignore[attr-defined]
             called.add(last_name(func) or "")
             registered = _subscription(call)  # type: ignore[arg-type]
@@ -170,7 +171,7 @@ class MessageTypes:
         return found
 
 
-def _subscription(call: ast.Call) -> tuple[ast.expr, ast.expr] | None:
+def _subscription(call: Call) -> tuple[ast.expr, ast.expr] | None:
     """`node.create_subscription(MsgType, topic, callback, qos)` (rclpy) or
     `rospy.Subscriber(topic, MsgType, callback)`: (message type, callback)."""
     func = call.func
@@ -185,7 +186,7 @@ def _subscription(call: ast.Call) -> tuple[ast.expr, ast.expr] | None:
     return (message_type, callback) if message_type is not None and callback is not None else None
 
 
-def _argument(call: ast.Call, positional: list[ast.expr], position: int, name: str) -> ast.expr | None:
+def _argument(call: Call, positional: list[ast.expr], position: int, name: str) -> ast.expr | None:
     if len(positional) > position:
         return positional[position]
     given = keyword(call, name)
@@ -194,9 +195,9 @@ def _argument(call: ast.Call, positional: list[ast.expr], position: int, name: s
 
 def _function_name(callback: ast.expr) -> str | None:
     """`self.on_odometry` or `on_odometry` (a lambda or a partial is not followed)."""
-    if isinstance(callback, ast.Attribute) and isinstance(callback.value, ast.Name) and callback.value.id == "self":
+    if isinstance(callback, Attribute) and isinstance(callback.value, Name) and callback.value.id == "self":
         return callback.attr
-    return callback.id if isinstance(callback, ast.Name) else None
+    return callback.id if isinstance(callback, Name) else None
 
 
 def _agreed(classes: list[str | None]) -> str | None:
@@ -206,9 +207,9 @@ def _agreed(classes: list[str | None]) -> str | None:
 
 def _has_no_fields(node: ast.expr) -> bool:
     """None, or an rclpy handle (`self.create_subscription(...)`): values with no message field."""
-    if isinstance(node, ast.Constant):
+    if isinstance(node, Constant):
         return node.value is None
-    return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _NODE_HANDLES
+    return isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in _NODE_HANDLES
 
 
 _NODE_HANDLES = frozenset({"create_subscription", "create_publisher", "create_timer", "create_client", "create_service"})

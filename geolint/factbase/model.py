@@ -19,6 +19,11 @@ Every question answers None when the evidence is missing or contradictory.
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, Add, AnnAssign, Assign, AsyncFunctionDef, AsyncWith, Attribute, BinOp, BoolOp, Call, ClassDef, Compare,
+    Constant, Div, FloorDiv, FunctionDef, JoinedStr, Lambda, MatMult, Mod, Mult, Name, Not, Pow, Slice, Starred, Sub,
+    Subscript, USub, UnaryOp, With,
+)
 import builtins
 import sys
 import re
@@ -38,6 +43,7 @@ from geolint.factbase.index import (
     OpaqueBinding,
     ParamBinding,
     UnpackBinding,
+    statement_list_fields,
 )
 from geolint.lint_types import Config
 from geolint.semantic.names import (
@@ -113,32 +119,32 @@ _BUILTIN_NAMES = frozenset(dir(builtins))  # `len(x)` under a star import: the b
 _MATMUL_CALL_NAMES = frozenset(("dot", "matmul", "bmm", "einsum"))  # what `FactBase.matmul` reads as a product
 
 
-def dotted_name(node: ast.AST) -> str | None:
+def dotted_name(node: AST) -> str | None:
     """`np.linalg.norm` for that expression; None for anything but a plain dotted name."""
     parts = []
-    while isinstance(node, ast.Attribute):
+    while isinstance(node, Attribute):
         parts.append(node.attr)
         node = node.value
-    if not isinstance(node, ast.Name):
+    if not isinstance(node, Name):
         return None
     parts.append(node.id)
     return ".".join(reversed(parts))
 
 
-def last_name(node: ast.AST) -> str | None:
-    if isinstance(node, ast.Name):
+def last_name(node: AST) -> str | None:
+    if isinstance(node, Name):
         return node.id
-    if isinstance(node, ast.Attribute):
+    if isinstance(node, Attribute):
         return node.attr
     return None
 
 
-def number(node: ast.AST | None) -> int | float | None:
+def number(node: AST | None) -> int | float | None:
     """The value of a numeric literal (with an optional unary minus), else None."""
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+    if isinstance(node, UnaryOp) and isinstance(node.op, USub):
         inner = number(node.operand)
         return None if inner is None else -inner
-    if isinstance(node, ast.Constant):
+    if isinstance(node, Constant):
         value = node.value
         if type(value) is int or type(value) is float:  # not a bool
             # 1e999 is inf and a 400-digit integer overflows a float: no value to reason about.
@@ -146,65 +152,65 @@ def number(node: ast.AST | None) -> int | float | None:
     return None
 
 
-def is_zero(node: ast.AST) -> bool:
+def is_zero(node: AST) -> bool:
     """A value that is all zeros: `0`, `[0, 0, 0]`, `(0.0, 0.0, 0.0)`, `[0.] * 3`, `np.zeros(3)`, `np.zeros_like(t)`."""
-    if isinstance(node, ast.Constant):
+    if isinstance(node, Constant):
         return node.value == 0
     if isinstance(node, (ast.List, ast.Tuple)):
         return bool(node.elts) and all(is_zero(element) for element in node.elts)
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+    if isinstance(node, BinOp) and isinstance(node.op, Mult):
         return is_zero(node.left) or is_zero(node.right)
-    return isinstance(node, ast.Call) and last_name(node.func) in ("zeros", "zeros_like")
+    return isinstance(node, Call) and last_name(node.func) in ("zeros", "zeros_like")
 
 
-def string(node: ast.AST | None) -> str | None:
-    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
+def string(node: AST | None) -> str | None:
+    return node.value if isinstance(node, Constant) and isinstance(node.value, str) else None
 
 
-def positional_args(call: ast.Call) -> list[ast.expr]:
-    return [arg for arg in call.args if not isinstance(arg, ast.Starred)]
+def positional_args(call: Call) -> list[ast.expr]:
+    return [arg for arg in call.args if not isinstance(arg, Starred)]
 
 
-def keyword(call: ast.Call, name: str) -> ast.keyword | None:
+def keyword(call: Call, name: str) -> ast.keyword | None:
     return next((kw for kw in call.keywords if kw.arg == name), None)
 
 
-def subscript_parts(node: ast.Subscript) -> list[ast.expr]:
+def subscript_parts(node: Subscript) -> list[ast.expr]:
     index = node.slice
     return list(index.elts) if isinstance(index, ast.Tuple) else [index]
 
 
-def is_slice_upto(part: ast.AST, stop: int) -> bool:
+def is_slice_upto(part: AST, stop: int) -> bool:
     """`:3` or `0:3` (no step)."""
-    if not isinstance(part, ast.Slice) or part.step is not None:
+    if not isinstance(part, Slice) or part.step is not None:
         return False
     if part.lower is not None and number(part.lower) != 0:
         return False
     return part.upper is not None and number(part.upper) == stop
 
 
-def is_full_slice(part: ast.AST) -> bool:
-    return isinstance(part, ast.Slice) and part.lower is None and part.upper is None and part.step is None
+def is_full_slice(part: AST) -> bool:
+    return isinstance(part, Slice) and part.lower is None and part.upper is None and part.step is None
 
 
-def is_index(part: ast.AST, *values: int) -> bool:
-    return not isinstance(part, ast.Slice) and number(part) in values
+def is_index(part: AST, *values: int) -> bool:
+    return not isinstance(part, Slice) and number(part) in values
 
 
-def is_transpose(node: ast.AST) -> bool:
+def is_transpose(node: AST) -> bool:
     """`x.T`, `x.mT`, `x.transpose(-1, -2)` / `x.transpose(1, 2)` / `x.swapaxes(-1, -2)`."""
-    if isinstance(node, ast.Attribute) and node.attr in ("T", "mT"):
+    if isinstance(node, Attribute) and node.attr in ("T", "mT"):
         return True
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in ("transpose", "swapaxes", "permute"):
+    if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in ("transpose", "swapaxes", "permute"):
         values = [number(arg) for arg in node.args]
         return node.func.attr != "permute" and (values == [] and node.func.attr == "transpose" or len(values) == 2 and None not in values)
     return False
 
 
-def transposed_value(node: ast.AST) -> ast.expr | None:
+def transposed_value(node: AST) -> ast.expr | None:
     """For `x.T` (and the torch spellings), x."""
     if is_transpose(node):
-        return node.value if isinstance(node, ast.Attribute) else node.func.value  # type: ignore[attr-defined,no-any-return]
+        return node.value if isinstance(node, Attribute) else node.func.value  # type: ignore[attr-defined,no-any-return]
     return None
 
 
@@ -279,7 +285,7 @@ class FactBase:
         self._memo.clear()
         self._module_facts = {}  # a scratch copy's close leaves the module's own facts to it
 
-    def _cached(self, tag: str, node: ast.AST, compute: Callable[..., _T], order: str = "") -> _T | None:
+    def _cached(self, tag: str, node: AST, compute: Callable[..., _T], order: str = "") -> _T | None:
         """`compute(self, node)` (with `order`, when given) once per node, tag and order, guarded
         against cycles. `compute` is the class's function, not a closure: nothing is allocated on
         a hit (asked hundreds of thousands of times a run)."""
@@ -298,20 +304,20 @@ class FactBase:
         self._memo[key] = value
         return value  # type: ignore[return-value]
 
-    def memoised(self, tag: str, node: ast.AST, compute: Callable[[], _T]) -> _T:
+    def memoised(self, tag: str, node: AST, compute: Callable[[], _T]) -> _T:
         """`compute()` once per `node` and `tag` for this module (no cycle guard: for facts that ask no others)."""
         key = (tag, id(node), "")
         if key not in self._memo:
             self._memo[key] = compute()
         return self._memo[key]  # type: ignore[return-value]
 
-    def parent(self, node: ast.AST) -> ast.AST | None:
+    def parent(self, node: AST) -> AST | None:
         return self.index.parents.get(node)
 
-    def code_of(self, node: ast.AST) -> str:
+    def code_of(self, node: AST) -> str:
         return self.index.code_of(node)
 
-    def bindings(self, name: ast.Name) -> list[Binding] | None:
+    def bindings(self, name: Name) -> list[Binding] | None:
         """The bindings of `name` that can reach it: in its own scope, in order (`reaching`);
         from an enclosing scope, all of them."""
         scope = self.index.scope_of(name)
@@ -320,7 +326,7 @@ class FactBase:
             return reaching_bindings(self.index, scope, name, own)
         return self.index.lookup(name.id, scope)
 
-    def qualified_name(self, node: ast.AST) -> str | None:
+    def qualified_name(self, node: AST) -> str | None:
         """The dotted name with its first component resolved through the module's imports."""
         key = id(node)
         known = self._qualified.get(key, _MISSING)
@@ -328,19 +334,19 @@ class FactBase:
             known = self._qualified[key] = self._qualify(node)
         return known  # type: ignore[return-value]
 
-    def called_name(self, func: ast.AST) -> str | None:
+    def called_name(self, func: AST) -> str | None:
         """The last part of `qualified_name(func)`, without resolving it: `PQ` imported by `from
         pyquaternion import Quaternion as PQ` is `Quaternion`, `np.cos` is `cos`. A cheap first test
         for the rules' tables of API names."""
         kind = type(func)
-        if kind is ast.Attribute:
+        if kind is Attribute:
             return func.attr  # type: ignore[attr-defined,no-any-return]
-        if kind is ast.Name:
+        if kind is Name:
             imported = self.index.imports.get(func.id)  # type: ignore[attr-defined]
             return func.id if imported is None else imported.rpartition(".")[2]  # type: ignore[attr-defined,no-any-return]
         return None
 
-    def _qualify(self, node: ast.AST) -> str | None:
+    def _qualify(self, node: AST) -> str | None:
         dotted = dotted_name(node)
         if dotted is None:
             return None
@@ -355,7 +361,7 @@ class FactBase:
     def _local_names(self) -> set[str]:
         return self.module_fact("local names", lambda: {name for scope in self.index.scopes.values() for name in scope.bindings})
 
-    def is_array_call(self, func: ast.AST, *names: str) -> bool:
+    def is_array_call(self, func: AST, *names: str) -> bool:
         """Whether `func` is `<array library>.<one of names>` (numpy, torch, jax.numpy, cupy)."""
         if self.called_name(func) not in names:
             return False
@@ -365,41 +371,41 @@ class FactBase:
         module, _, name = qualified.rpartition(".")
         return name in names and module in vocab.ARRAY_MODULES
 
-    def is_module_like(self, node: ast.AST) -> bool:
+    def is_module_like(self, node: AST) -> bool:
         """`np`, `np.linalg`, `scipy.spatial`: a (dotted) module name, never a value."""
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             return node.attr not in ("T", "mT") and self.is_module_like(node.value)
-        return isinstance(node, ast.Name) and (node.id in vocab.MODULE_LIKE or node.id in self.index.imported_modules)
+        return isinstance(node, Name) and (node.id in vocab.MODULE_LIKE or node.id in self.index.imported_modules)
 
-    def is_norm_call(self, node: ast.AST) -> bool:
+    def is_norm_call(self, node: AST) -> bool:
         """`np.linalg.norm(x, ...)`, `torch.norm(x)`, `x.norm(dim=-1)`, possibly indexed (`[:, None]`)."""
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             node = node.value
-        return isinstance(node, ast.Call) and last_name(node.func) in vocab.NORM_FUNCTIONS
+        return isinstance(node, Call) and last_name(node.func) in vocab.NORM_FUNCTIONS
 
-    def expects_failure(self, node: ast.AST) -> bool:
+    def expects_failure(self, node: AST) -> bool:
         """Whether `node` is inside `with pytest.raises(...)` / `self.assertRaises(...)`."""
         current = self.parent(node)
         while current is not None:
-            if isinstance(current, (ast.With, ast.AsyncWith)):
+            if isinstance(current, (With, AsyncWith)):
                 for item in current.items:
                     call = item.context_expr
-                    if isinstance(call, ast.Call) and last_name(call.func) in ("raises", "assertRaises", "assertRaisesRegex"):
+                    if isinstance(call, Call) and last_name(call.func) in ("raises", "assertRaises", "assertRaisesRegex"):
                         return True
             current = self.parent(current)
         return False
 
     # -- matrix products -------------------------------------------------------------------
-    def matmul(self, node: ast.AST) -> MatMul | None:
+    def matmul(self, node: AST) -> MatMul | None:
         """`a @ b`, `a.dot(b)`, `np.dot(a, b)`, `np.matmul(a, b)`, `torch.matmul/bmm(a, b)`."""
         kind = type(node)
-        if kind is ast.BinOp:
-            return MatMul(node, node.left, node.right) if type(node.op) is ast.MatMult else None  # type: ignore[attr-defined,arg-type]
+        if kind is BinOp:
+            return MatMul(node, node.left, node.right) if type(node.op) is MatMult else None  # type: ignore[attr-defined,arg-type]
         # asked of every call by several rules: the callee's last name rules out nearly all at once
-        if isinstance(node, ast.Call) and self.called_name(node.func) in _MATMUL_CALL_NAMES:
+        if isinstance(node, Call) and self.called_name(node.func) in _MATMUL_CALL_NAMES:
             positional = positional_args(node)
             func = node.func
-            if isinstance(func, ast.Attribute) and func.attr in ("dot", "matmul") and len(positional) == 1 and not node.keywords:
+            if isinstance(func, Attribute) and func.attr in ("dot", "matmul") and len(positional) == 1 and not node.keywords:
                 if not self.is_module_like(func.value):
                     return MatMul(node, func.value, positional[0])
             if len(positional) == 2 and len(node.args) == 2 and self.is_array_call(func, "dot", "matmul", "bmm"):
@@ -411,18 +417,18 @@ class FactBase:
         return None
 
     # -- kind --------------------------------------------------------------------------------
-    def kind_of(self, node: ast.AST) -> Kind | None:
+    def kind_of(self, node: AST) -> Kind | None:
         """The geometric kind of an expression, or None."""
         return self._cached("kind", node, FactBase._kind)
 
-    def is_free(self, node: ast.AST) -> bool:
+    def is_free(self, node: AST) -> bool:
         """A free vector (direction, normal, velocity...): rotated only, never translated."""
         return self.kind_of(node) in FREE
 
-    def _kind(self, node: ast.AST) -> Kind | None:
-        if isinstance(node, ast.Name):
+    def _kind(self, node: AST) -> Kind | None:
+        if isinstance(node, Name):
             return self._kind_of_variable(node)
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             if self.is_module_like(node.value):
                 return None
             attr = node.attr
@@ -436,19 +442,19 @@ class FactBase:
                 return Kind.DIRECTION
             if attr in vocab.POINT_ATTRIBUTES:
                 return Kind.POINT
-            if isinstance(node.value, ast.Name) and node.value.id == "self":
+            if isinstance(node.value, Name) and node.value.id == "self":
                 flowed = self._kind_of_self_attribute(attr)
                 if flowed is not None:
                     return flowed
             return self._name_kind(attr)
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             base = self.kind_of(node.value)
             if base in GEOMETRIC:
                 return base
             if base == Kind.TRANSFORM and self.rotation_block_of(node) is not None:
                 return Kind.ROTATION
             return None
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        if isinstance(node, UnaryOp) and isinstance(node.op, USub):
             kind = self.kind_of(node.operand)
             return kind if kind in FREE else None
         if isinstance(node, (ast.List, ast.Tuple)) and _origin_and_axis_tips(node):
@@ -456,9 +462,9 @@ class FactBase:
         if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 3:  # `[v.x, v.y, v.z]` is what v is
             whole = self._components_of_one_array(node.elts)
             return None if whole is None else self.kind_of(whole)
-        if isinstance(node, ast.BinOp):
+        if isinstance(node, BinOp):
             return self._kind_of_binary(node)
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             return self._kind_of_call(node)
         return None
 
@@ -474,22 +480,22 @@ class FactBase:
         kinds = {self.kind_of(value) for value in stores}
         return kinds.pop() if len(kinds) == 1 else None
 
-    def _kind_of_binary(self, node: ast.BinOp) -> Kind | None:
+    def _kind_of_binary(self, node: BinOp) -> Kind | None:
         op = node.op
-        if isinstance(op, ast.MatMult):
+        if isinstance(op, MatMult):
             return self._kind_of_product(node)
         left, right = self.kind_of(node.left), self.kind_of(node.right)
-        if isinstance(op, ast.Div):
+        if isinstance(op, Div):
             if self.is_norm_call(node.right):
                 return Kind.DIRECTION
             return Kind.DIRECTION if left in FREE and right is None else None
-        if isinstance(op, ast.Mult):
+        if isinstance(op, Mult):
             if left in FREE and right is None and not self._is_operator_expr(node.right):
                 return left
             if right in FREE and left is None and not self._is_operator_expr(node.left):
                 return right
             return None
-        if isinstance(op, ast.Sub):
+        if isinstance(op, Sub):
             if left == Kind.POINT and right == Kind.POINT:
                 return Kind.VECTOR  # algebra.sub: a displacement
             if left == Kind.POINT and right in FREE:
@@ -497,17 +503,17 @@ class FactBase:
             if left in FREE and right in FREE:
                 return Kind.VECTOR if Kind.VECTOR in (left, right) else Kind.DIRECTION
             return None
-        if isinstance(op, ast.Add):
+        if isinstance(op, Add):
             if left == Kind.POINT and right in FREE or right == Kind.POINT and left in FREE:
                 return Kind.POINT
             if left in FREE and right in FREE:
                 return Kind.VECTOR if Kind.VECTOR in (left, right) else Kind.DIRECTION
         return None
 
-    def _is_operator_expr(self, node: ast.AST) -> bool:
+    def _is_operator_expr(self, node: AST) -> bool:
         return self.kind_of(node) in OPERATORS
 
-    def _kind_of_product(self, node: ast.AST) -> Kind | None:
+    def _kind_of_product(self, node: AST) -> Kind | None:
         product = self.matmul(node)
         if product is None:
             return None
@@ -520,11 +526,11 @@ class FactBase:
             return left
         return None
 
-    def _kind_of_call(self, node: ast.Call) -> Kind | None:
+    def _kind_of_call(self, node: Call) -> Kind | None:
         func = node.func
         positional = positional_args(node)
         name = last_name(func)
-        if self.is_array_call(func, "cross") or (isinstance(func, ast.Name) and func.id == "cross"):
+        if self.is_array_call(func, "cross") or (isinstance(func, Name) and func.id == "cross"):
             return Kind.DIRECTION
         if name in vocab.UNIT_FUNCTIONS:
             return Kind.DIRECTION
@@ -535,7 +541,7 @@ class FactBase:
         tips = positional and isinstance(positional[0], ast.List) and _origin_and_axis_tips(positional[0])
         if tips and self.is_array_call(func, "array", "asarray", "tensor", "as_tensor"):
             return Kind.POINT  # `np.array([[0, 0, 0], [l, 0, 0], ...])`: the origin and axis tips
-        if isinstance(func, ast.Attribute) and not self.is_module_like(func.value):
+        if isinstance(func, Attribute) and not self.is_module_like(func.value):
             if func.attr in vocab.PASSTHROUGH_METHODS:
                 return self.kind_of(func.value)
             if func.attr in vocab.INVERSE_METHODS:
@@ -551,20 +557,20 @@ class FactBase:
         summary = self.function_summary(node)
         return None if summary is None else summary.returns
 
-    def may_have_summary(self, call: ast.Call) -> bool:
+    def may_have_summary(self, call: Call) -> bool:
         """A cheap test: whether the callee can be a function of this module or of a project module."""
         func = call.func
-        if type(func) is ast.Name:
+        if type(func) is Name:
             if func.id in self.index.functions:
                 return True
-        elif type(func) is ast.Attribute and type(func.value) is ast.Name and func.value.id == "self":  # type: ignore[attr-defined]
+        elif type(func) is Attribute and type(func.value) is Name and func.value.id == "self":  # type: ignore[attr-defined]
             return func.attr in self.index.methods  # type: ignore[attr-defined]
         if not self.cross_module:
             return False
         root = func
-        while type(root) is ast.Attribute:
+        while type(root) is Attribute:
             root = root.value  # type: ignore[attr-defined]
-        if type(root) is not ast.Name:
+        if type(root) is not Name:
             return False
         imported = self.index.imports.get(root.id)  # type: ignore[attr-defined]
         if imported is None:
@@ -573,11 +579,11 @@ class FactBase:
         # nor one of a package the project's folders do not hold (`gym.make`, `time.sleep`)
         return summaries.may_be_project_import(imported, self.path)
 
-    def function_summary(self, call: ast.Call) -> FunctionSummary | None:
+    def function_summary(self, call: Call) -> FunctionSummary | None:
         """What the called helper does (a function of this module, or of a project module it imports)."""
         return self._cached("summary", call, FactBase._function_summary)
 
-    def _function_summary(self, call: ast.Call) -> FunctionSummary | None:
+    def _function_summary(self, call: Call) -> FunctionSummary | None:
         found = self.called_function(call)
         if found is not None:
             return self.project.summary(*found)
@@ -587,17 +593,17 @@ class FactBase:
         summary = self.project.summary(self, method)
         return None if summary is None else summaries.bound(summary)
 
-    def own_method(self, call: ast.Call) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
+    def own_method(self, call: Call) -> FunctionDef | AsyncFunctionDef | None:
         """For `self.helper(...)` inside a method: the one `helper` of the same class, when it takes
         `self` (not a static or class method); else None."""
         func = call.func
-        if not (isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "self"):
+        if not (isinstance(func, Attribute) and isinstance(func.value, Name) and func.value.id == "self"):
             return None
         candidates = self.index.methods.get(func.attr, [])
         if not candidates:
             return None
         enclosing = self.parent(call)
-        while enclosing is not None and not isinstance(enclosing, ast.ClassDef):
+        while enclosing is not None and not isinstance(enclosing, ClassDef):
             enclosing = self.parent(enclosing)
         if enclosing is None:
             return None
@@ -606,42 +612,42 @@ class FactBase:
             return None  # overloads, properties, static/class methods: no plain bound method
         return own[0]
 
-    def called_function(self, call: ast.Call) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+    def called_function(self, call: Call) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
         """The project function a call runs (of this module, or of a project module it imports,
         through aliases, relative imports and package `__init__` re-exports) and the fact base of
         the module that defines it."""
         if not self.may_have_summary(call):
             return None
         func = call.func
-        if isinstance(func, ast.Name) and func.id in self.index.functions:
+        if isinstance(func, Name) and func.id in self.index.functions:
             return self, self.index.functions[func.id]
         if not self.cross_module:
             return None
-        head = func.id if isinstance(func, ast.Name) else dotted_name(func)
+        head = func.id if isinstance(func, Name) else dotted_name(func)
         if head is None:
             return None
         if head.split(".")[0] not in self.index.imports:
-            return self._star_imported_callee(func) if isinstance(func, ast.Name) else None
+            return self._star_imported_callee(func) if isinstance(func, Name) else None
         return self._imported_function(self.qualified_name(func) or "", self.path)
 
-    def _star_imported_callee(self, func: ast.Name) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+    def _star_imported_callee(self, func: Name) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
         """`star_imported_function` for a called name that no scope around the call binds."""
         return None if self.index.lookup(func.id, self.index.scope_of(func)) else self.star_imported_function(func.id)
 
-    def star_imported_function(self, name: str) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+    def star_imported_function(self, name: str) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
         """The project function a module-level `name` is when the module neither binds nor imports it
         there and exactly one of its star imports of project modules (`from ..collision import *`)
         defines it."""
         if not self.cross_module or name in _BUILTIN_NAMES or name in self.index.imports or name in self.index.scopes[self.index.tree].bindings:
             return None
 
-        def find() -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+        def find() -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
             found = [defined for module in self.index.star_imports if (defined := self._imported_function(f"{module}.{name}", self.path)) is not None]
             return found[0] if len(found) == 1 else None
 
         return self.module_fact(f"star-imported function {name}", find)
 
-    def _imported_function(self, qualified: str, importer: str) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+    def _imported_function(self, qualified: str, importer: str) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
         for _ in range(_MAX_REEXPORTS):
             found = self._defining_module(qualified, importer)
             if found is None:
@@ -664,7 +670,7 @@ class FactBase:
         other = None if file is None else self.project.facts_of(file)
         return None if other is None else (other, name)
 
-    def _kind_of_variable(self, name: ast.Name) -> Kind | None:
+    def _kind_of_variable(self, name: Name) -> Kind | None:
         stated = self._name_kind(name.id)
         bindings = self.bindings(name) or []
         flowed: set[Kind | None] = set()
@@ -691,7 +697,7 @@ class FactBase:
             iterable = binding.iterable
             if binding.position is None:
                 return self._element_kind(iterable)
-            if isinstance(iterable, ast.Call) and isinstance(iterable.func, ast.Name):
+            if isinstance(iterable, Call) and isinstance(iterable.func, Name):
                 args = positional_args(iterable)
                 if iterable.func.id == "enumerate" and binding.position == 1 and args:
                     return self._element_kind(args[0])
@@ -716,21 +722,21 @@ class FactBase:
             return annotation is not None and is_scalar_annotation(annotation)
         if not isinstance(binding, ast.expr):
             return False
-        if isinstance(binding, ast.Constant):
+        if isinstance(binding, Constant):
             return binding.value is not None and binding.value is not Ellipsis
-        if isinstance(binding, (ast.JoinedStr, ast.Compare, ast.BoolOp, ast.Dict, ast.Lambda)):
+        if isinstance(binding, (JoinedStr, Compare, BoolOp, ast.Dict, Lambda)):
             return True
-        if isinstance(binding, ast.UnaryOp):
-            return isinstance(binding.op, ast.Not) or self.is_non_geometric(binding.operand)
-        if isinstance(binding, ast.Call):
+        if isinstance(binding, UnaryOp):
+            return isinstance(binding.op, Not) or self.is_non_geometric(binding.operand)
+        if isinstance(binding, Call):
             name = last_name(binding.func)
             qualified = self.qualified_name(binding.func) or ""
             if name in ("len", "int", "float", "str", "bool", "range", "round", "abs", "sum", "max", "min"):
-                return isinstance(binding.func, ast.Name)
+                return isinstance(binding.func, Name)
             if qualified in vocab.FEATURE_FUNCTIONS:
                 return True  # a feature map sampled at points, not their coordinates
             return ".random." in f".{qualified}." or qualified.startswith("random.")
-        if isinstance(binding, ast.BinOp) and isinstance(binding.op, (ast.Div, ast.Mult, ast.FloorDiv, ast.Mod, ast.Pow)):
+        if isinstance(binding, BinOp) and isinstance(binding.op, (Div, Mult, FloorDiv, Mod, Pow)):
             # `velocity = distance / dt`: a ratio of two things that are not geometry
             if isinstance(binding.left, (ast.List, ast.Tuple)) or isinstance(binding.right, (ast.List, ast.Tuple)):
                 return False
@@ -742,92 +748,92 @@ class FactBase:
             )
         return False
 
-    def _may_be_array(self, node: ast.AST) -> bool:
+    def _may_be_array(self, node: AST) -> bool:
         """Whether an expression visibly builds an array (an array call, a subscript, a product)."""
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             qualified = self.qualified_name(node.func) or ""
-            return qualified.split(".")[0] in vocab.ARRAY_ROOTS or isinstance(node.func, ast.Attribute)
-        if isinstance(node, (ast.Subscript, ast.List, ast.Tuple)):
+            return qualified.split(".")[0] in vocab.ARRAY_ROOTS or isinstance(node.func, Attribute)
+        if isinstance(node, (Subscript, ast.List, ast.Tuple)):
             return True
-        if isinstance(node, ast.BinOp):
+        if isinstance(node, BinOp):
             return self._may_be_array(node.left) or self._may_be_array(node.right)
         return False
 
     # -- blocks of transforms ----------------------------------------------------------------
-    def rotation_block_of(self, node: ast.AST) -> ast.expr | None:
+    def rotation_block_of(self, node: AST) -> ast.expr | None:
         """For `M[:3, :3]` (or `M[..., :3, :3]`, `M[:, :3, :3]`), the matrix M; else None."""
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             parts = _drop_batch(subscript_parts(node))
             if len(parts) == 2 and is_slice_upto(parts[0], 3) and is_slice_upto(parts[1], 3):
                 return node.value
         return None
 
-    def translation_of(self, node: ast.AST) -> ast.expr | None:
+    def translation_of(self, node: AST) -> ast.expr | None:
         """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`), the matrix M; else None."""
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             parts = _drop_batch(subscript_parts(node))
             if len(parts) == 2 and is_slice_upto(parts[0], 3) and is_index(parts[1], 3, -1):
                 return node.value
         return None
 
-    def is_translation_like(self, node: ast.AST) -> bool:
+    def is_translation_like(self, node: AST) -> bool:
         """`t`, `trans`, `translation`, `t_world_cam`, `T[:3, 3]`, `pose.translation`, `tvec`."""
         if self.translation_of(node) is not None:
             return True
         word = last_name(node)
         if word is None:
             return False
-        if isinstance(node, ast.Attribute) and word in ("translation", "t", "trans", "p"):
+        if isinstance(node, Attribute) and word in ("translation", "t", "trans", "p"):
             return not self.is_module_like(node.value)
-        if not isinstance(node, ast.Name):
+        if not isinstance(node, Name):
             return False
         first = node.id.strip("_").split("_")[0].lower()
         return first in ("t", "trans", "translation", "tvec", "tran")
 
-    def has_geometric_evidence(self, node: ast.AST) -> bool:
+    def has_geometric_evidence(self, node: AST) -> bool:
         """Whether a point-like expression is visibly geometric (not a file offset, a cursor
         position or a tuple): a strong or frame-stating name, a mesh attribute, or array flow."""
         return bool(self._cached("evidence", node, FactBase._evidence))
 
-    def _evidence(self, node: ast.AST) -> bool:
-        if isinstance(node, ast.Name):
+    def _evidence(self, node: AST) -> bool:
+        if isinstance(node, Name):
             if states_geometry(node.id, self.config):
                 return True
             return any(
                 isinstance(binding, ast.expr) and self.has_geometric_evidence(binding)
                 for binding in self.bindings(node) or []
             )
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             if node.attr in ("T", "mT"):
                 return self.has_geometric_evidence(node.value)
             return node.attr in ("vertices", "centroid", "vertex_normals", "face_normals") or states_geometry(node.attr, self.config)
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             return self.has_geometric_evidence(node.value)
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             qualified = self.qualified_name(node.func) or ""
             return qualified.split(".")[0] in vocab.ARRAY_ROOTS or self.matmul(node) is not None
-        if isinstance(node, ast.BinOp):
-            if isinstance(node.op, ast.MatMult):
+        if isinstance(node, BinOp):
+            if isinstance(node.op, MatMult):
                 return True
             return self.has_geometric_evidence(node.left) or self.has_geometric_evidence(node.right)
         return False
 
     # -- library transforms ------------------------------------------------------------------
-    def translating_library_object(self, node: ast.AST) -> str | None:
+    def translating_library_object(self, node: AST) -> str | None:
         """"PyKDL.Frame" or "spatialmath.SE3" when `node` is one (built directly, through a
         variable, or returned by a helper of this module): `*` with them translates vectors."""
         return self._cached("library", node, FactBase._library_object)
 
-    def _library_object(self, node: ast.AST) -> str | None:
-        if isinstance(node, ast.Name):
+    def _library_object(self, node: AST) -> str | None:
+        if isinstance(node, Name):
             bindings = self.bindings(node) or []
             values = [b for b in bindings if isinstance(b, ast.expr)]
             found = {self.translating_library_object(b) for b in values}
             return found.pop() if len(found) == 1 and len(bindings) == len(values) else None
-        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+        if isinstance(node, BinOp) and isinstance(node.op, Mult):
             left, right = self.translating_library_object(node.left), self.translating_library_object(node.right)
             return left if left is not None and left == right else None  # SE3 * SE3 is an SE3
-        if not isinstance(node, ast.Call):
+        if not isinstance(node, Call):
             return None
         qualified = self.qualified_name(node.func) or ""
         parts = qualified.split(".")
@@ -835,7 +841,7 @@ class FactBase:
             return "PyKDL.Frame"
         if "SE3" in parts and parts[0] in ("spatialmath", "SE3") and parts[-1] != "inv":
             return "spatialmath.SE3"
-        if isinstance(node.func, ast.Name) and node.func.id in self.index.functions:
+        if isinstance(node.func, Name) and node.func.id in self.index.functions:
             scope = self.index.scopes.get(self.index.functions[node.func.id])
             if scope is not None and scope.returns:
                 found = {self.translating_library_object(value) for value in scope.returns}
@@ -843,13 +849,13 @@ class FactBase:
         return None
 
     # -- frames ------------------------------------------------------------------------------
-    def frames_of(self, node: ast.AST, order: str = DST_FIRST) -> NameFrames | None:
+    def frames_of(self, node: AST, order: str = DST_FIRST) -> NameFrames | None:
         """The frames of an expression (operator: dst/src; value: frame) with `T_a_b` names read
         in `order`, or None."""
         fact = self.frame_fact(node, order)
         return None if fact is None else fact.frames
 
-    def frame_fact(self, node: ast.AST, order: str = DST_FIRST) -> FrameFact | None:
+    def frame_fact(self, node: AST, order: str = DST_FIRST) -> FrameFact | None:
         return self._cached("frames", node, FactBase._frames, order)
 
     def readings(self) -> tuple[str, ...]:
@@ -882,10 +888,10 @@ class FactBase:
             return FrameFact(found.pop(), (f"`{name}` {EXTRINSICS_EVIDENCE}",))
         return None
 
-    def _frames(self, node: ast.AST, order: str) -> FrameFact | None:
-        if isinstance(node, ast.Name):
+    def _frames(self, node: AST, order: str) -> FrameFact | None:
+        if isinstance(node, Name):
             return self._frames_of_variable(node, order)
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             if node.attr in ("T", "mT"):
                 inner = self.frame_fact(node.value, order)
                 if inner is not None and inner.frames.is_operator:
@@ -897,7 +903,7 @@ class FactBase:
             if declared is not None:
                 return FrameFact(declared, (f"`.{node.attr}` ({vocab.DECLARING_ATTRIBUTE_SOURCES[node.attr]})",), True)
             return self.name_frames(node.attr, order)
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             key = string(node.slice)
             if key is not None:  # `meta["c2w"]`, `info["cam_R_w2c"]`: the key states the convention
                 if key in vocab.DECLARING_ATTRIBUTES:
@@ -914,28 +920,28 @@ class FactBase:
                     return FrameFact(NameFrames(frame=frames.dst), inner.evidence, inner.declared)
                 return None
             return inner
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        if isinstance(node, UnaryOp) and isinstance(node.op, USub):
             inner = self.frame_fact(node.operand, order)
             return inner if inner is not None and not inner.frames.is_operator else None
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             return self._frames_of_call(node, order)
-        if isinstance(node, ast.BinOp):
-            if isinstance(node.op, (ast.Add, ast.Sub)):
+        if isinstance(node, BinOp):
+            if isinstance(node.op, (Add, Sub)):
                 left, right = self.frame_fact(node.left, order), self.frame_fact(node.right, order)
                 if left is not None and not left.frames.is_operator and (right is None or right.frames == left.frames):
                     return left
                 if right is not None and not right.frames.is_operator and left is None:
                     return right
                 return None
-            if isinstance(node.op, ast.MatMult):
+            if isinstance(node.op, MatMult):
                 return self._frames_of_product(node.left, node.right, order)
-            if isinstance(node.op, ast.Mult):
+            if isinstance(node.op, Mult):
                 left = self.frame_fact(node.left, order)
                 if left is not None and left.frames.is_operator and left.frames.operator == "transform":
                     return self._frames_of_product(node.left, node.right, order)
         return None
 
-    def _frames_of_variable(self, node: ast.Name, order: str) -> FrameFact | None:
+    def _frames_of_variable(self, node: Name, order: str) -> FrameFact | None:
         bindings = self.bindings(node) or []
         if any(self._rebinds_own_inverse(node.id, binding) for binding in bindings):
             return None  # `world2cam = inv(world2cam)`: the name holds both directions
@@ -960,14 +966,14 @@ class FactBase:
         return None
 
     def _rebinds_own_inverse(self, name: str, binding: Binding) -> bool:
-        if not isinstance(binding, ast.Call):
+        if not isinstance(binding, Call):
             return False
         inner = None
         if last_name(binding.func) in vocab.INVERSE_FUNCTIONS and binding.args:
             inner = binding.args[0]
-        elif isinstance(binding.func, ast.Attribute) and binding.func.attr in vocab.INVERSE_METHODS:
+        elif isinstance(binding.func, Attribute) and binding.func.attr in vocab.INVERSE_METHODS:
             inner = binding.func.value
-        return isinstance(inner, ast.Name) and inner.id == name
+        return isinstance(inner, Name) and inner.id == name
 
     def _typed_frames(self, name: str, binding: Binding) -> FrameFact | None:
         """Frames a geolint type states for a parameter or an annotated assignment
@@ -976,9 +982,9 @@ class FactBase:
             annotation = binding.arg.annotation
         else:
             statement = self.parent(binding) if isinstance(binding, ast.expr) else None
-            annotated = isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name)
+            annotated = isinstance(statement, AnnAssign) and isinstance(statement.target, Name)
             annotation = statement.annotation if annotated and statement.target.id == name else None  # type: ignore[union-attr]
-        if not isinstance(annotation, ast.Subscript) or not (self.qualified_name(annotation.value) or "").startswith("geolint"):
+        if not isinstance(annotation, Subscript) or not (self.qualified_name(annotation.value) or "").startswith("geolint"):
             return None
         from geolint.factbase import typed
 
@@ -987,7 +993,7 @@ class FactBase:
             return None
         return FrameFact(frames, (f"annotation `{ast.unparse(annotation)}` at line {annotation.lineno}",), True)
 
-    def _frame_classes(self, annotation: ast.AST) -> dict[str, str]:
+    def _frame_classes(self, annotation: AST) -> dict[str, str]:
         """The `Frame` subclasses an annotation may name: this module's, and those it imports from project
         modules (`from arm.frames import Base`, where `class Base(Frame, name="base_link")`)."""
         from geolint.factbase import typed
@@ -996,7 +1002,7 @@ class FactBase:
         imported = {
             node.id: self.index.imports[node.id]
             for node in ast.walk(annotation)
-            if isinstance(node, ast.Name) and node.id not in classes and node.id in self.index.imports
+            if isinstance(node, Name) and node.id not in classes and node.id in self.index.imports
         }
         if not imported or not self.cross_module:
             return classes
@@ -1012,7 +1018,7 @@ class FactBase:
 
     def _declared_frames(self, value: ast.expr) -> FrameFact | None:
         """Frames a call states explicitly: `from_frame=`/`to_frame=`, `.as_frames(a, b)`, `lookup_transform(target, source, t)`."""
-        if not isinstance(value, ast.Call):
+        if not isinstance(value, Call):
             return None
         declared = declared_call_frames(value)
         if declared is None:
@@ -1020,7 +1026,7 @@ class FactBase:
         frames, how = declared
         return FrameFact(frames, (f"{how} at line {value.lineno}",), True)
 
-    def _frames_of_call(self, node: ast.Call, order: str) -> FrameFact | None:
+    def _frames_of_call(self, node: Call, order: str) -> FrameFact | None:
         declared = self._declared_frames(node) or bosdyn.helper_frames(self, node)
         if declared is not None:
             return declared
@@ -1033,7 +1039,7 @@ class FactBase:
         product = self.matmul(node)
         if product is not None:
             return self._frames_of_product(product.left, product.right, order)
-        if isinstance(func, ast.Attribute) and func.attr in vocab.INVERSE_METHODS and not self.is_module_like(func.value):
+        if isinstance(func, Attribute) and func.attr in vocab.INVERSE_METHODS and not self.is_module_like(func.value):
             inner = self.frame_fact(func.value, order)
             return FrameFact(inner.frames.inverted(), inner.evidence, inner.declared) if inner is not None and inner.frames.is_operator else None
         if last_name(func) in vocab.INVERSE_FUNCTIONS and len(positional) == 1:
@@ -1041,11 +1047,11 @@ class FactBase:
             return FrameFact(inner.frames.inverted(), inner.evidence, inner.declared) if inner is not None and inner.frames.is_operator else None
         if positional and self.is_array_call(func, *vocab.PASSTHROUGH_FUNCTIONS):
             return self.frame_fact(positional[0], order)
-        if isinstance(func, ast.Attribute) and func.attr in vocab.PASSTHROUGH_METHODS and not self.is_module_like(func.value):
+        if isinstance(func, Attribute) and func.attr in vocab.PASSTHROUGH_METHODS and not self.is_module_like(func.value):
             return self.frame_fact(func.value, order)
         return None
 
-    def _frames_of_product(self, left_node: ast.AST, right_node: ast.AST, order: str) -> FrameFact | None:
+    def _frames_of_product(self, left_node: AST, right_node: AST, order: str) -> FrameFact | None:
         left_fact, right_fact = self.frame_fact(left_node, order), self.frame_fact(right_node, order)
         if left_fact is None or right_fact is None:
             return None
@@ -1068,34 +1074,34 @@ class FactBase:
         return None
 
     # -- homogeneous coordinates ---------------------------------------------------------------
-    def homogeneous(self, node: ast.AST) -> Homogeneous | None:
+    def homogeneous(self, node: AST) -> Homogeneous | None:
         """The homogeneous construction `node` is (directly, or through a variable), or None."""
         return self._cached("homog", node, FactBase._homogeneous)
 
-    def homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
+    def homogeneous_built_by(self, node: AST) -> Homogeneous | None:
         """The homogeneous value whose construction is exactly `node` (including an `np.ones(4)`
         buffer filled later), or None."""
         return self._cached("built", node, FactBase._homogeneous_built_by)
 
-    def _homogeneous_built_by(self, node: ast.AST) -> Homogeneous | None:
+    def _homogeneous_built_by(self, node: AST) -> Homogeneous | None:
         if not self._may_build_homogeneous(node):
             return None
         found = self.homogeneous(node)
-        if found is None and isinstance(node, ast.Call):
+        if found is None and isinstance(node, Call):
             assign = self.parent(node)
-            if isinstance(assign, ast.Assign) and len(assign.targets) == 1 and isinstance(assign.targets[0], ast.Name):
+            if isinstance(assign, Assign) and len(assign.targets) == 1 and isinstance(assign.targets[0], Name):
                 found = self.homogeneous(assign.targets[0])
         return found if found is not None and found.construction is node else None
 
-    def _may_build_homogeneous(self, node: ast.AST) -> bool:
+    def _may_build_homogeneous(self, node: AST) -> bool:
         """False when `node` certainly builds no homogeneous value: a call that is none of the array
         makers `_homogeneous_call` and `_filled_buffer` know and cannot reach a helper's summary (it
         feeds no product), a subscript other than `np.r_`/`np.c_`. Rules ask this of every call and
         subscript of a module, so it is decided before any fact is looked up."""
         kind = type(node)
-        if kind is ast.Subscript:
+        if kind is Subscript:
             return self.is_array_call(node.value, "r_", "c_")  # type: ignore[attr-defined]
-        if kind is not ast.Call:
+        if kind is not Call:
             return True
         func = node.func  # type: ignore[attr-defined]
         if self.called_name(func) in _HOMOGENEOUS_MAKERS:
@@ -1104,10 +1110,10 @@ class FactBase:
                 module, _, name = qualified.rpartition(".")
                 if name in _HOMOGENEOUS_MAKERS and module in vocab.ARRAY_MODULES:
                     return True
-        return type(func) in (ast.Name, ast.Attribute) and self._feeds_a_product(node)
+        return type(func) in (Name, Attribute) and self._feeds_a_product(node)
 
-    def _homogeneous(self, node: ast.AST) -> Homogeneous | None:
-        if isinstance(node, ast.Name):
+    def _homogeneous(self, node: AST) -> Homogeneous | None:
+        if isinstance(node, Name):
             bindings = self.bindings(node) or []
             if len(bindings) != 1 or not isinstance(bindings[0], ast.expr):
                 return None
@@ -1115,15 +1121,15 @@ class FactBase:
             if direct is not None:
                 return direct
             return self._filled_buffer(node, bindings[0])
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             return self._homogeneous_call(node)
-        if isinstance(node, ast.Subscript) and self.is_array_call(node.value, "r_", "c_"):
+        if isinstance(node, Subscript) and self.is_array_call(node.value, "r_", "c_"):
             index = node.slice
-            if isinstance(index, ast.Tuple) and len(index.elts) == 2 and not any(isinstance(e, ast.Slice) for e in index.elts):
+            if isinstance(index, ast.Tuple) and len(index.elts) == 2 and not any(isinstance(e, Slice) for e in index.elts):
                 return self._with_w(node, index.elts[0], index.elts[1], explicit=False)
         return None
 
-    def _homogeneous_call(self, node: ast.Call) -> Homogeneous | None:
+    def _homogeneous_call(self, node: Call) -> Homogeneous | None:
         positional = positional_args(node)
         if self.called_name(node.func) == "pad":
             return self._padded_with_w(node, positional)
@@ -1133,7 +1139,7 @@ class FactBase:
             sequence = positional[0]
             if isinstance(sequence, (ast.List, ast.Tuple)) and len(sequence.elts) == 2:
                 first, second = sequence.elts
-                if not isinstance(first, ast.Starred) and self._last_axis(node):
+                if not isinstance(first, Starred) and self._last_axis(node):
                     return self._with_w(node, first, second, explicit=False)
         if self.is_array_call(node.func, "array", "asarray", "tensor", "as_tensor") and positional and isinstance(positional[0], ast.List):
             elements = positional[0].elts
@@ -1142,7 +1148,7 @@ class FactBase:
                 if base is not None:
                     return self._with_w(node, base, elements[3])
         if (
-            isinstance(node.func, (ast.Name, ast.Attribute))
+            isinstance(node.func, (Name, Attribute))
             and self._feeds_a_product(node)  # only then is a helper's w worth looking up
             and not self.is_array_call(node.func, *_ARRAY_BUILDERS)
         ):
@@ -1153,29 +1159,29 @@ class FactBase:
                     return Homogeneous(inner=positional[index], w=w, construction=node, fixed=None, explicit=True)
         return None
 
-    def _feeds_a_product(self, node: ast.AST) -> bool:
+    def _feeds_a_product(self, node: AST) -> bool:
         """Whether a value is a matrix product's operand, directly (through `.T`) or through the
         name it is assigned to, or is stored under a homogeneous name (`p_h`)."""
         parent = self.parent(node)
         while parent is not None and transposed_value(parent) is node:
             node, parent = parent, self.parent(parent)
-        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
+        if isinstance(parent, BinOp) and isinstance(parent.op, MatMult):
             return True
-        if isinstance(parent, ast.Call) and self.matmul(parent) is not None:
+        if isinstance(parent, Call) and self.matmul(parent) is not None:
             return True
         return self._stored_for_a_product(parent)
 
-    def _stored_for_a_product(self, parent: ast.AST | None) -> bool:
+    def _stored_for_a_product(self, parent: AST | None) -> bool:
         """Whether `parent` assigns a value to one name that says it is homogeneous (`p_h`) or that
         its scope later uses as a matrix product's operand."""
-        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+        if not (isinstance(parent, Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], Name)):
             return False
         target = parent.targets[0].id
         if set(target.lower().split("_")) & {"h", "hom", "homog", "homogeneous", "homo"}:
             return True
         return target in self.index.scope_of(parent).matmul_operands
 
-    def _last_axis(self, call: ast.Call) -> bool:
+    def _last_axis(self, call: Call) -> bool:
         """Whether a concatenation joins along the last axis (`axis=-1`/`dim=-1`/`axis=1`, or hstack/column_stack)."""
         name = last_name(call.func)
         if name in ("hstack", "column_stack"):
@@ -1194,7 +1200,7 @@ class FactBase:
         fixed = replace_span(self.index, construction, fixed_w)  # None when w is set outside the span
         return Homogeneous(inner=inner, w=w, construction=construction, fixed=fixed, explicit=explicit)
 
-    def _padded_with_w(self, node: ast.Call, positional: list[ast.expr]) -> Homogeneous | None:
+    def _padded_with_w(self, node: Call, positional: list[ast.expr]) -> Homogeneous | None:
         """`F.pad(x, (0, 1), value=1.0)` (torch) or `np.pad(x, ((0, 0), (0, 1)), constant_values=1)`: x with
         one constant appended along its last axis, 0 unless a value is given (both libraries' default)."""
         if len(positional) < 2 or len(positional) != len(node.args):
@@ -1222,22 +1228,22 @@ class FactBase:
             return Homogeneous(inner=positional[0], w=0, construction=node, fixed=None, explicit=False)
         return self._with_w(node, positional[0], value, explicit=False)
 
-    def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[ast.AST | _LastName, str]] | None]:
+    def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[AST | _LastName, str]] | None]:
         """The constant w a construction appends, and the edits (node, new text) that give the other w."""
         literal = number(node)
-        if literal in (0, 1) and isinstance(node, ast.Constant):
+        if literal in (0, 1) and isinstance(node, Constant):
             other = 1 - int(literal)  # type: ignore[arg-type]
             return int(literal), [(node, str(other) if isinstance(node.value, int) else f"{other}.0")]  # type: ignore[arg-type]
         if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 1:
             return self._w_value(node.elts[0])
-        if isinstance(node, ast.Name):  # `ones = np.ones((n, 1)); np.hstack([x, ones])`
+        if isinstance(node, Name):  # `ones = np.ones((n, 1)); np.hstack([x, ones])`
             bindings = self.bindings(node) or []
-            if len(bindings) == 1 and isinstance(bindings[0], ast.Call):
+            if len(bindings) == 1 and isinstance(bindings[0], Call):
                 return self._w_value(bindings[0])
-        if isinstance(node, ast.Call) and self.is_array_call(node.func, "ones", "zeros", "ones_like", "zeros_like"):
+        if isinstance(node, Call) and self.is_array_call(node.func, "ones", "zeros", "ones_like", "zeros_like"):
             w = 1 if last_name(node.func) in ("ones", "ones_like") else 0
             return w, [(_name_node_of(node.func), _SWAP[last_name(node.func) or ""])]
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in ("type_as", "to", "astype", "float", "double"):
+        if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in ("type_as", "to", "astype", "float", "double"):
             return self._w_value(node.func.value)
         return None, None
 
@@ -1249,13 +1255,13 @@ class FactBase:
         list), or whose last slot is written later, is a record with a 4th field, not w."""
         if homogeneous.explicit:
             return not _is_literal_four_vector(homogeneous.construction) or self._literal_reaches_a_transform(homogeneous.construction)
-        node: ast.AST = homogeneous.construction
+        node: AST = homogeneous.construction
         parent = self.parent(node)
         while parent is not None and is_transpose(parent):
             node, parent = parent, self.parent(parent)
-        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
+        if isinstance(parent, BinOp) and isinstance(parent.op, MatMult):
             return True
-        if isinstance(parent, ast.Call) and node in parent.args and self.matmul(parent) is not None:
+        if isinstance(parent, Call) and node in parent.args and self.matmul(parent) is not None:
             return True
         return self._stored_for_a_product(parent)
 
@@ -1265,7 +1271,7 @@ class FactBase:
         parent = self.parent(construction)
         if self._transform_use(construction, parent):
             return True
-        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+        if not (isinstance(parent, Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], Name)):
             return False
         name, scope = parent.targets[0].id, self.index.scope_of(parent)
         if any(_is_last_slot(target) for target, _ in scope.subscript_stores.get(name, [])):
@@ -1274,27 +1280,27 @@ class FactBase:
             return True
         return any(
             self.index.scope_of(call) is scope and self._transform_use(argument, call)
-            for call in self.index.nodes(ast.Call)
+            for call in self.index.nodes(Call)
             for argument in call.args  # type: ignore[attr-defined]
-            if isinstance(argument, ast.Name) and argument.id == name
+            if isinstance(argument, Name) and argument.id == name
         )
 
-    def _transform_use(self, node: ast.AST, parent: ast.AST | None) -> bool:
+    def _transform_use(self, node: AST, parent: AST | None) -> bool:
         """Whether `node` is an operand of a matrix product or an argument of a transform call."""
-        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
+        if isinstance(parent, BinOp) and isinstance(parent.op, MatMult):
             return True
-        if isinstance(parent, ast.Attribute) and parent.attr == "dot":
+        if isinstance(parent, Attribute) and parent.attr == "dot":
             return True
-        if not (isinstance(parent, ast.Call) and node in parent.args):
+        if not (isinstance(parent, Call) and node in parent.args):
             return False
         if self.matmul(parent) is not None:
             return True
         name = last_name(parent.func) or ""
         return _TRANSFORM_CALL.search(name) is not None and "quat" not in name.lower()
 
-    def _filled_buffer(self, name: ast.Name, value: ast.expr) -> Homogeneous | None:
+    def _filled_buffer(self, name: Name, value: ast.expr) -> Homogeneous | None:
         """`h = np.ones(4); h[:3] = x` (or `np.ones((n, 4)); h[:, :3] = x`): homogeneous x with w = 1."""
-        if not isinstance(value, ast.Call) or not self.is_array_call(value.func, "ones", "zeros"):
+        if not isinstance(value, Call) or not self.is_array_call(value.func, "ones", "zeros"):
             return None
         scope = self.index.scope_of(name)
         stores = scope.subscript_stores.get(name.id, [])
@@ -1312,9 +1318,9 @@ class FactBase:
         expression x; else None."""
         bases = []
         for position, element in enumerate(elements):
-            if isinstance(element, ast.Subscript) and is_index(element.slice, position):
+            if isinstance(element, Subscript) and is_index(element.slice, position):
                 bases.append(element.value)
-            elif isinstance(element, ast.Attribute) and element.attr == "xyz"[position]:
+            elif isinstance(element, Attribute) and element.attr == "xyz"[position]:
                 bases.append(element.value)
             else:
                 return None
@@ -1340,12 +1346,12 @@ _TRANSFORM_CALL = re.compile(r"transform|xform|apply|rotat|project|matmul|mul|do
 
 def _is_literal_four_vector(node: ast.expr) -> bool:
     """`np.array([a, b, c, w])`: four elements written out in one array call."""
-    if not (isinstance(node, ast.Call) and node.args and isinstance(node.args[0], ast.List)):
+    if not (isinstance(node, Call) and node.args and isinstance(node.args[0], ast.List)):
         return False
     return len(node.args[0].elts) == 4 and last_name(node.func) in ("array", "asarray", "tensor", "as_tensor")
 
 
-def _is_last_slot(target: ast.Subscript) -> bool:
+def _is_last_slot(target: Subscript) -> bool:
     """`v[3]`, `v[-1]`: the 4th slot of a 4-vector."""
     return number(target.slice) in (3, -1)
 
@@ -1360,26 +1366,26 @@ _SWAP = {"ones": "zeros", "zeros": "ones", "ones_like": "zeros_like", "zeros_lik
 class _LastName:
     """An edit target: only the last name of a called function (`np.ones` -> its `ones`)."""
 
-    func: ast.AST
+    func: AST
 
 
-def _name_node_of(func: ast.AST) -> _LastName:
+def _name_node_of(func: AST) -> _LastName:
     return _LastName(func)
 
 
-def last_name_target(func: ast.AST) -> _LastName:
+def last_name_target(func: AST) -> _LastName:
     """An edit target for `replace_span` that replaces only a called function's last name."""
     return _LastName(func)
 
 
 def _drop_batch(parts: list[ast.expr]) -> list[ast.expr]:
     """`M[..., :3, :3]` and `M[:, :3, :3]` index a batch of matrices like `M[:3, :3]` indexes one."""
-    if len(parts) == 3 and (isinstance(parts[0], ast.Constant) and parts[0].value is Ellipsis or is_full_slice(parts[0])):
+    if len(parts) == 3 and (isinstance(parts[0], Constant) and parts[0].value is Ellipsis or is_full_slice(parts[0])):
         return parts[1:]
     return parts
 
 
-def _is_xyz_slice(target: ast.Subscript) -> bool:
+def _is_xyz_slice(target: Subscript) -> bool:
     parts = subscript_parts(target)
     if len(parts) == 1:
         return is_slice_upto(parts[0], 3)
@@ -1425,25 +1431,25 @@ def einsum_operands(subscripts: ast.expr, first: ast.expr, second: ast.expr) -> 
     return None
 
 
-def declared_call_frames(call: ast.Call) -> tuple[NameFrames, str] | None:
+def declared_call_frames(call: Call) -> tuple[NameFrames, str] | None:
     """The frames a call states in so many words, and how it states them."""
     from_kw, to_kw = keyword(call, "from_frame"), keyword(call, "to_frame")
     source, target = string(from_kw.value) if from_kw else None, string(to_kw.value) if to_kw else None
     if source and target:
         return NameFrames(dst=target.lower(), src=source.lower(), operator="transform"), f"from_frame={source!r}, to_frame={target!r}"
     func = call.func
-    if isinstance(func, ast.Attribute) and func.attr == "as_frames" and len(call.args) >= 2:
+    if isinstance(func, Attribute) and func.attr == "as_frames" and len(call.args) >= 2:
         source, target = string(call.args[0]), string(call.args[1])
         if source and target:
             return NameFrames(dst=target.lower(), src=source.lower(), operator="transform"), f".as_frames({source!r}, {target!r})"
-    if isinstance(func, ast.Attribute) and func.attr in ("lookup_transform", "lookupTransform") and len(call.args) >= 2:
+    if isinstance(func, Attribute) and func.attr in ("lookup_transform", "lookupTransform") and len(call.args) >= 2:
         target, source = string(call.args[0]), string(call.args[1])
         if source and target:
             return NameFrames(dst=target.strip("/").lower(), src=source.strip("/").lower(), operator="transform"), f"{func.attr}({target!r}, {source!r})"
     return None
 
 
-def replace_span(index: ModuleIndex, outer: ast.AST, edits: list[tuple[ast.AST | _LastName, str]]) -> str | None:
+def replace_span(index: ModuleIndex, outer: AST, edits: list[tuple[AST | _LastName, str]]) -> str | None:
     """The source text of `outer` with each inner node's span replaced (for a `_LastName` target,
     only the function's last name)."""
     text = index.segment(outer)
@@ -1454,7 +1460,7 @@ def replace_span(index: ModuleIndex, outer: ast.AST, edits: list[tuple[ast.AST |
     for node, new in edits:
         if isinstance(node, _LastName):
             node = node.func
-            if not isinstance(node, ast.Attribute):
+            if not isinstance(node, Attribute):
                 start = _offset(index, node.lineno, node.col_offset)  # type: ignore[attr-defined]
                 end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined,arg-type]
                 if start is None or end is None or base is None:
@@ -1497,7 +1503,7 @@ def _offset(index: ModuleIndex, line: int | None, byte_column: int | None) -> in
     return starts[line - 1] + column  # type: ignore[no-any-return]
 
 
-def walk_within(node: ast.AST, stop_at_functions: bool = True) -> Iterator[ast.AST]:
+def walk_within(node: AST, stop_at_functions: bool = True) -> Iterator[AST]:
     """The nodes below `node` (iteratively), not entering nested functions when asked (leaves such as
     `Load` and operators left out)."""
     stack = child_nodes(node)
@@ -1509,24 +1515,23 @@ def walk_within(node: ast.AST, stop_at_functions: bool = True) -> Iterator[ast.A
         stack.extend(child_nodes(current))
 
 
-_SCOPE_NODES = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
-_DEFINITIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
-_STATEMENT_LISTS = ("body", "orelse", "finalbody", "handlers", "cases")
+_SCOPE_NODES = frozenset({FunctionDef, AsyncFunctionDef, Lambda, ClassDef})
+_DEFINITIONS = (FunctionDef, AsyncFunctionDef, ClassDef)
 
 
-def statements_under(node: ast.AST, into_definitions: bool = True) -> list[ast.AST]:
+def statements_under(node: AST, into_definitions: bool = True) -> list[AST]:
     """The statements below `node` (and the `except` handlers and `match` cases that hold some),
     found through statement lists only, never walking an expression; with `into_definitions` False,
     not those of the functions and classes defined inside."""
-    found: list[ast.AST] = []
-    stack: list[ast.AST] = list(getattr(node, "body", []))
+    found: list[AST] = []
+    stack: list[AST] = list(getattr(node, "body", []))
     while stack:
         statement = stack.pop()
         found.append(statement)
         if not into_definitions and isinstance(statement, _DEFINITIONS):
             continue
-        for field in _STATEMENT_LISTS:
-            stack.extend(getattr(statement, field, ()))
+        for field in statement_list_fields(statement):
+            stack.extend(getattr(statement, field))
     return found
 
 

@@ -20,6 +20,10 @@ the fact base's flow analysis, on the module's index); when several can reach it
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, Attribute, BinOp, Call, Constant, Div, IfExp, MatMult, Mult, Name, Slice, Starred, Sub, Subscript, UAdd,
+    USub, UnaryOp,
+)
 from dataclasses import dataclass
 
 from geolint.factbase.index import ModuleIndex
@@ -39,40 +43,40 @@ _SAME_VALUE_FUNCTIONS = frozenset(
 _INVERTING_FUNCTIONS = frozenset({"inv", "pinv", "inverse"})
 
 
-def same_code(first: ast.AST, second: ast.AST) -> bool:
+def same_code(first: AST, second: AST) -> bool:
     return ast.unparse(first) == ast.unparse(second)
 
 
-def int_value(node: ast.AST | None) -> int | None:
+def int_value(node: AST | None) -> int | None:
     """A literal integer, negatives included."""
-    if isinstance(node, ast.Constant) and type(node.value) is int:
+    if isinstance(node, Constant) and type(node.value) is int:
         return node.value
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+    if isinstance(node, UnaryOp) and isinstance(node.op, USub):
         inner = int_value(node.operand)
         return None if inner is None else -inner
     return None
 
 
-def call_name(node: ast.AST) -> str | None:
+def call_name(node: AST) -> str | None:
     """The last name of a call's function (`np.linalg.inv(x)` -> "inv")."""
-    return last_name(node.func) if isinstance(node, ast.Call) else None
+    return last_name(node.func) if isinstance(node, Call) else None
 
 
 def is_batch_index(node: ast.expr) -> bool:
     """`:`, `...` or a new axis (`None`) ahead of the matrix indices of a stack of matrices."""
-    return is_full_slice(node) or (isinstance(node, ast.Constant) and (node.value is Ellipsis or node.value is None))
+    return is_full_slice(node) or (isinstance(node, Constant) and (node.value is Ellipsis or node.value is None))
 
 
 def is_stack_index(node: ast.expr) -> bool:
     """An index that picks among stacked matrices: `:`, `...`, `None`, `head:tail`, `i`, `0`."""
-    if isinstance(node, ast.Slice):
+    if isinstance(node, Slice):
         return node.step is None
-    if isinstance(node, ast.Constant):
+    if isinstance(node, Constant):
         return node.value is Ellipsis or node.value is None or type(node.value) is int
-    return isinstance(node, (ast.Name, ast.Attribute))
+    return isinstance(node, (Name, Attribute))
 
 
-def matrix_indices(node: ast.Subscript) -> tuple[list[ast.expr], ast.expr, ast.expr] | None:
+def matrix_indices(node: Subscript) -> tuple[list[ast.expr], ast.expr, ast.expr] | None:
     """(batch indices, row index, column index) of a subscript with at least two indices."""
     indices = subscript_parts(node)
     if len(indices) < 2 or not all(is_stack_index(index) for index in indices[:-2]):
@@ -84,7 +88,7 @@ def stack_key(batch: list[ast.expr]) -> str:
     """Which matrices of a stack the batch indices pick, as text: new axes dropped, `...` read as `:`."""
     picked = []
     for index in batch:
-        if isinstance(index, ast.Constant) and index.value is None:
+        if isinstance(index, Constant) and index.value is None:
             continue
         picked.append(":" if is_batch_index(index) else ast.unparse(index))
     return ", ".join(picked)
@@ -124,20 +128,20 @@ def pose_part(node: ast.expr, index: ModuleIndex, depth: int = 12) -> PosePart |
     if transposed is not None:
         part = pose_part(transposed, index, depth - 1)
         return part.flipped() if part is not None and part.kind == "rotation" else None
-    if isinstance(node, ast.Name):
+    if isinstance(node, Name):
         value = resolve(index, node)
         if isinstance(value, Unpacked):
             return _unpacked_part(value)
         return None if value is node else pose_part(value, index, depth - 1)
-    if isinstance(node, ast.Subscript):
+    if isinstance(node, Subscript):
         return _sliced_part(node, index) or _keyed_part(node, index)
-    if isinstance(node, ast.Attribute):
+    if isinstance(node, Attribute):
         if node.attr == "rotation_matrix" and _quaternion_of(node.value) is not None:
             return _quaternion_part(node.value, index, depth)
         return _named_part(node.attr, node.value, index)
-    if isinstance(node, ast.Call):
+    if isinstance(node, Call):
         name = call_name(node)
-        if isinstance(node.func, ast.Attribute) and not node.args and not node.keywords:
+        if isinstance(node.func, Attribute) and not node.args and not node.keywords:
             if name == "as_matrix" or name == "as_dcm":
                 return _from_rotation_object(node.func.value, index, depth)
             if name in ("rotation", "translation", "rotationMatrix", "matrix"):
@@ -150,12 +154,12 @@ def pose_part(node: ast.expr, index: ModuleIndex, depth: int = 12) -> PosePart |
 
 def _from_rotation_object(node: ast.expr, index: ModuleIndex, depth: int) -> PosePart | None:
     """`Rotation.from_quat(pose.rotation).as_matrix()`: the pose's rotation as a matrix."""
-    if isinstance(node, ast.Name):
+    if isinstance(node, Name):
         resolved = resolve(index, node)
         if isinstance(resolved, Unpacked) or resolved is node:
             return None
         node = resolved
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+    if isinstance(node, Call) and isinstance(node.func, Attribute):
         if node.func.attr == "inv" and not node.args:
             part = _from_rotation_object(node.func.value, index, depth - 1)
             return part.flipped() if part is not None else None
@@ -167,16 +171,16 @@ def _from_rotation_object(node: ast.expr, index: ModuleIndex, depth: int) -> Pos
 
 def _quaternion_of(node: ast.expr) -> ast.expr | None:
     """`Quaternion(x)` (pyquaternion), possibly `.inverse`: the argument."""
-    if isinstance(node, ast.Attribute) and node.attr in ("inverse", "conjugate"):
+    if isinstance(node, Attribute) and node.attr in ("inverse", "conjugate"):
         return _quaternion_of(node.value)
-    if isinstance(node, ast.Call) and call_name(node) == "Quaternion" and len(node.args) == 1 and not node.keywords:
+    if isinstance(node, Call) and call_name(node) == "Quaternion" and len(node.args) == 1 and not node.keywords:
         return node.args[0]
     return None
 
 
 def _quaternion_part(node: ast.expr, index: ModuleIndex, depth: int) -> PosePart | None:
     inverted = False
-    while isinstance(node, ast.Attribute):
+    while isinstance(node, Attribute):
         inverted = not inverted
         node = node.value
     source = pose_part(node.args[0], index, depth - 1)  # type: ignore[attr-defined]
@@ -185,7 +189,7 @@ def _quaternion_part(node: ast.expr, index: ModuleIndex, depth: int) -> PosePart
     return source.flipped() if inverted else source
 
 
-def _sliced_part(node: ast.Subscript, index: ModuleIndex) -> PosePart | None:
+def _sliced_part(node: Subscript, index: ModuleIndex) -> PosePart | None:
     """`T[:3, :3]` / `T[:3, 3]` (`3:`, `-1`, `3:4`), and with batch indices `poses[:, :3, :3]`."""
     indices = matrix_indices(node)
     if indices is None:
@@ -205,15 +209,15 @@ def _sliced_part(node: ast.Subscript, index: ModuleIndex) -> PosePart | None:
 
 def is_column_slice_from(node: ast.expr, start: int) -> bool:
     """`3:` or `3:4`: the one column `start` as a slice."""
-    if not isinstance(node, ast.Slice) or node.step is not None or int_value(node.lower) != start:
+    if not isinstance(node, Slice) or node.step is not None or int_value(node.lower) != start:
         return False
     return node.upper is None or int_value(node.upper) == start + 1
 
 
-def _keyed_part(node: ast.Subscript, index: ModuleIndex) -> PosePart | None:
+def _keyed_part(node: Subscript, index: ModuleIndex) -> PosePart | None:
     """`pose["rotation"]` / `pose["translation"]`, `gt["cam_R_m2c"]` / `gt["cam_t_m2c"]`."""
     key = node.slice
-    if not (isinstance(key, ast.Constant) and isinstance(key.value, str)):
+    if not (isinstance(key, Constant) and isinstance(key.value, str)):
         return None
     return _named_part(key.value, node.value, index)
 
@@ -262,9 +266,9 @@ def _kind_of_local_name(name: str) -> str | None:
 def pose_key(base: ast.expr, index: ModuleIndex) -> str:
     """Text of the pose expression, plus which assignment its root name reads (a rebound T is another pose)."""
     root = base
-    while isinstance(root, (ast.Attribute, ast.Subscript)):
+    while isinstance(root, (Attribute, Subscript)):
         root = root.value
-    if isinstance(root, ast.Name):
+    if isinstance(root, Name):
         binding = binding_of(index, root)
         if binding is not None:
             return f"{ast.unparse(base)}@{binding}"
@@ -286,23 +290,23 @@ def translation_source(node: ast.expr, index: ModuleIndex, depth: int = 8) -> Po
     inner = peel_same_value(node)
     if inner is not node:
         return translation_source(inner, index, depth - 1)
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+    if isinstance(node, UnaryOp) and isinstance(node.op, USub):
         return translation_source(node.operand, index, depth - 1)
-    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.Div)):
+    if isinstance(node, BinOp) and isinstance(node.op, (Mult, Div)):
         for side, other in ((node.left, node.right), (node.right, node.left)):
-            if isinstance(other, (ast.Constant, ast.Name, ast.Attribute)) and (side is node.left or isinstance(node.op, ast.Mult)):
+            if isinstance(other, (Constant, Name, Attribute)) and (side is node.left or isinstance(node.op, Mult)):
                 found = translation_source(side, index, depth - 1)
                 if found is not None and pose_part(other, index) is None:
                     return found
         return None
-    if isinstance(node, ast.Call) and call_name(node) in _AGGREGATES:
+    if isinstance(node, Call) and call_name(node) in _AGGREGATES:
         func = node.func
-        if isinstance(func, ast.Attribute) and dotted_name(func.value) in ("np", "numpy", "torch", "jnp"):
+        if isinstance(func, Attribute) and dotted_name(func.value) in ("np", "numpy", "torch", "jnp"):
             return translation_source(node.args[0], index, depth - 1) if node.args else None
-        return translation_source(func.value, index, depth - 1) if isinstance(func, ast.Attribute) else None
-    if isinstance(node, ast.IfExp):
+        return translation_source(func.value, index, depth - 1) if isinstance(func, Attribute) else None
+    if isinstance(node, IfExp):
         return _every_source([node.body, node.orelse], index, depth)
-    if isinstance(node, ast.Name):
+    if isinstance(node, Name):
         return _every_source(assigned_values(index, node), index, depth)
     return None
 
@@ -311,7 +315,7 @@ def _every_source(candidates: list[ast.expr | Unpacked | None], index: ModuleInd
     """The translation all candidate values come from, zeros aside; None if one comes from elsewhere."""
     found = None
     for value in candidates:
-        if isinstance(value, ast.Call) and call_name(value) in ("zeros_like", "zeros"):
+        if isinstance(value, Call) and call_name(value) in ("zeros_like", "zeros"):
             continue
         source = translation_source(value, index, depth - 1) if isinstance(value, ast.expr) else None
         if source is None:
@@ -322,25 +326,25 @@ def _every_source(candidates: list[ast.expr | Unpacked | None], index: ModuleInd
 
 def peel_same_value(node: ast.expr) -> ast.expr:
     """`t.copy()`, `t.to(device)`, `t[:, None]`, `t.reshape(3, 1)`, `np.asarray(t)`: the same values."""
-    if isinstance(node, ast.Call):
+    if isinstance(node, Call):
         func = node.func
-        if isinstance(func, ast.Attribute) and func.attr in _SAME_VALUE_METHODS:
+        if isinstance(func, Attribute) and func.attr in _SAME_VALUE_METHODS:
             return func.value
-        if call_name(node) in _SAME_VALUE_FUNCTIONS and node.args and not isinstance(node.args[0], ast.Starred):
+        if call_name(node) in _SAME_VALUE_FUNCTIONS and node.args and not isinstance(node.args[0], Starred):
             return node.args[0]
-    if isinstance(node, ast.Subscript) and _is_broadcast_index(node):
+    if isinstance(node, Subscript) and _is_broadcast_index(node):
         return node.value
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.UAdd):
+    if isinstance(node, UnaryOp) and isinstance(node.op, UAdd):
         return node.operand
     return node
 
 
-def _is_broadcast_index(node: ast.Subscript) -> bool:
+def _is_broadcast_index(node: Subscript) -> bool:
     """`x[:, None]`, `x[None]`, `x[..., np.newaxis]`: only new axes and full slices."""
     indices = subscript_parts(node)
     has_new_axis = False
     for index in indices:
-        if (isinstance(index, ast.Constant) and index.value is None) or dotted_name(index) in ("np.newaxis", "numpy.newaxis"):
+        if (isinstance(index, Constant) and index.value is None) or dotted_name(index) in ("np.newaxis", "numpy.newaxis"):
             has_new_axis = True
         elif not is_batch_index(index):
             return False
@@ -350,13 +354,13 @@ def _is_broadcast_index(node: ast.Subscript) -> bool:
 def transposed_operand(node: ast.expr) -> ast.expr | None:
     """The matrix a transpose (or inverse) is taken of: `R.T`, `R.mT`, `R.t()`, `R.transpose(1, 2)`,
     `R.permute(0, 2, 1)`, `np.transpose(R)`, `torch.transpose(R, -1, -2)`, `np.linalg.inv(R)`."""
-    if isinstance(node, ast.Attribute) and node.attr in ("T", "mT"):
+    if isinstance(node, Attribute) and node.attr in ("T", "mT"):
         return node.value
-    if not isinstance(node, ast.Call) or node.keywords:
+    if not isinstance(node, Call) or node.keywords:
         return None
     func = node.func
     name = call_name(node)
-    if isinstance(func, ast.Attribute) and name in ("t", "transpose", "permute", "swapaxes", "inverse"):
+    if isinstance(func, Attribute) and name in ("t", "transpose", "permute", "swapaxes", "inverse"):
         axes = [int_value(argument) for argument in node.args]
         if name == "inverse" and not axes:
             return func.value
@@ -368,11 +372,11 @@ def transposed_operand(node: ast.expr) -> ast.expr | None:
             return func.value
         if name in ("transpose", "swapaxes") and len(node.args) >= 1:
             # np.transpose(R) / torch.transpose(R, 1, 2) called through a module
-            if dotted_name(func.value) in ("np", "numpy", "torch", "jnp") and not isinstance(node.args[0], ast.Starred):
+            if dotted_name(func.value) in ("np", "numpy", "torch", "jnp") and not isinstance(node.args[0], Starred):
                 rest = [int_value(argument) for argument in node.args[1:]]
                 if not rest or _swaps_last_two(rest):
                     return node.args[0]
-    if name in _INVERTING_FUNCTIONS and len(node.args) == 1 and isinstance(func, ast.Attribute):
+    if name in _INVERTING_FUNCTIONS and len(node.args) == 1 and isinstance(func, Attribute):
         if dotted_name(func.value) in ("np.linalg", "numpy.linalg", "torch.linalg", "torch", "la", "linalg", "scipy.linalg"):
             return node.args[0]
     return None
@@ -408,19 +412,19 @@ _MATMUL_FUNCTIONS = frozenset({"dot", "matmul", "bmm", "mm"})
 _ARRAY_LIBRARIES = frozenset({"np", "numpy", "torch", "jnp", "tf", "cp"})
 
 
-def matmul_operands(node: ast.AST) -> tuple[ast.expr, ast.expr] | None:
+def matmul_operands(node: AST) -> tuple[ast.expr, ast.expr] | None:
     """(left, right) of `a @ b`, `np.dot(a, b)`, `a.dot(b)`, `torch.matmul(a, b)`, `torch.bmm(a, b)`."""
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult):
+    if isinstance(node, BinOp) and isinstance(node.op, MatMult):
         return node.left, node.right
-    if not isinstance(node, ast.Call) or node.keywords:
+    if not isinstance(node, Call) or node.keywords:
         return None
     name = call_name(node)
-    if name == "einsum" and len(node.args) == 3 and dotted_name(node.func.value if isinstance(node.func, ast.Attribute) else node.func) in _ARRAY_LIBRARIES:
+    if name == "einsum" and len(node.args) == 3 and dotted_name(node.func.value if isinstance(node.func, Attribute) else node.func) in _ARRAY_LIBRARIES:
         return einsum_operands(*node.args)
     if name not in _MATMUL_FUNCTIONS:
         return None
     func = node.func
-    if not isinstance(func, ast.Attribute):
+    if not isinstance(func, Attribute):
         return None
     if dotted_name(func.value) in _ARRAY_LIBRARIES:
         return (node.args[0], node.args[1]) if len(node.args) == 2 and not _has_starred(node.args) else None
@@ -430,7 +434,7 @@ def matmul_operands(node: ast.AST) -> tuple[ast.expr, ast.expr] | None:
 
 
 def _has_starred(arguments: list[ast.expr]) -> bool:
-    return any(isinstance(argument, ast.Starred) for argument in arguments)
+    return any(isinstance(argument, Starred) for argument in arguments)
 
 
 def application(node: ast.expr, index: ModuleIndex) -> Application | None:
@@ -440,7 +444,7 @@ def application(node: ast.expr, index: ModuleIndex) -> Application | None:
     """
     outer = node
     for _ in range(8):
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             value = resolve(index, node)
             if isinstance(value, Unpacked) or value is node:
                 return None
@@ -477,14 +481,14 @@ def difference_with(node: ast.expr, index: ModuleIndex, depth: int = 6) -> tuple
             node = peeled
         elif transposed is not None:
             node = transposed
-        elif isinstance(node, ast.Name):
+        elif isinstance(node, Name):
             value = resolve(index, node)
             if isinstance(value, Unpacked) or value is node:
                 return None
             node = value
         else:
             break
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Sub):
+    if isinstance(node, BinOp) and isinstance(node.op, Sub):
         part = pose_part(node.right, index)
         if part is not None and part.kind == "translation":
             return node.left, part
@@ -525,7 +529,7 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
     there are batch axes ahead of them (`np.zeros((n, 4, 4))`, `torch.eye(4).repeat(n, 1, 1)`)."""
     if depth <= 0:
         return None
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+    if isinstance(node, Call) and isinstance(node.func, Attribute):
         method = node.func.attr
         if method in ("reshape", "view") and node.args:
             sizes = [int_value(argument) for argument in node.args]
@@ -538,7 +542,7 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
         if method in ("repeat", "expand") or (method == "unsqueeze" and int_value(node.args[0] if node.args else None) == 0):
             inner = square_shape(node.func.value, index, depth - 1)
             return (inner[0], True) if inner is not None else None
-    if isinstance(node, ast.Subscript) and _is_broadcast_index(node) and int_value(subscript_parts(node)[0]) is None:
+    if isinstance(node, Subscript) and _is_broadcast_index(node) and int_value(subscript_parts(node)[0]) is None:
         inner = square_shape(node.value, index, depth - 1)
         return (inner[0], True) if inner is not None else None
     peeled = peel_same_value(node)
@@ -547,7 +551,7 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
     transposed = transposed_operand(node)
     if transposed is not None:
         return square_shape(transposed, index, depth - 1)
-    if isinstance(node, ast.Name):
+    if isinstance(node, Name):
         value = resolve(index, node)
         if isinstance(value, Unpacked) or value is node:
             return None
@@ -555,18 +559,18 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
     if isinstance(node, (ast.List, ast.Tuple)):
         size = _literal_square(node)
         return (size, False) if size is not None else None
-    if isinstance(node, ast.Subscript):
+    if isinstance(node, Subscript):
         indices = matrix_indices(node)
         if indices is not None and is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3):
             return (3, bool(indices[0]))
         if call_name(node.value) == "Rodrigues" and int_value(node.slice) == 0:
             return (3, False)
         return None
-    if isinstance(node, ast.Attribute):
+    if isinstance(node, Attribute):
         if _quaternion_of(node.value) is not None and node.attr in ("rotation_matrix", "transformation_matrix"):
             return (3 if node.attr == "rotation_matrix" else 4, False)
         return None
-    if isinstance(node, ast.Call):
+    if isinstance(node, Call):
         name = call_name(node)
         if name in (_SIZE_MAKERS | _FILLED_MAKERS) and not _array_module_call(node):
             return None  # sympy's `eye(3)` / `zeros(3, 3)` make matrices with flat indexing (`s[3]`)
@@ -591,7 +595,7 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
 _ARRAY_MODULE_ROOTS = frozenset({"np", "numpy", "torch", "jnp", "jax", "cp", "cupy", "onp"})
 
 
-def _array_module_call(node: ast.Call) -> bool:
+def _array_module_call(node: Call) -> bool:
     """`np.eye(3)`, `torch.zeros(4, 4)`, `numpy.identity(4)`: a maker called through an array module."""
     return (dotted_name(node.func) or "").split(".")[0] in _ARRAY_MODULE_ROOTS
 
@@ -604,15 +608,15 @@ def _square_of_sizes(sizes: list[int | None]) -> tuple[int, bool] | None:
 
 
 def _reshapes(node: ast.expr) -> bool:
-    return isinstance(node, ast.Call) and call_name(node) in ("reshape", "view", "unsqueeze", "squeeze", "flatten", "ravel", "expand", "expand_dims")
+    return isinstance(node, Call) and call_name(node) in ("reshape", "view", "unsqueeze", "squeeze", "flatten", "ravel", "expand", "expand_dims")
 
 
-def _stacks(node: ast.Call) -> bool:
+def _stacks(node: Call) -> bool:
     """A torch maker (pytorch3d `quaternion_to_matrix`) keeps the batch shape of its input: not known 2-D."""
     return call_name(node) in ("quaternion_to_matrix", "euler_angles_to_matrix", "axis_angle_to_matrix")
 
 
-def _is_tf_style_maker(node: ast.Call) -> bool:
+def _is_tf_style_maker(node: Call) -> bool:
     """tf.transformations / transforms3d style 4x4 makers, not a method of some object."""
     return call_name(node) != "rotation_matrix" or dotted_name(node.func) in ("tf.transformations.rotation_matrix", "tft.rotation_matrix", "transformations.rotation_matrix")
 

@@ -27,15 +27,23 @@ before), and `R, t = split_pose(T)` gives each name an element of the unpacked v
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, AnnAssign, Assert, Assign, AsyncFor, AsyncFunctionDef, AsyncWith, AugAssign, BinOp, BoolOp, ClassDef,
+    DictComp, ExceptHandler, For, FunctionDef, GeneratorExp, IfExp, Import, ImportFrom, Lambda, ListComp, Load, Name,
+    NamedExpr, SetComp, Starred, Try, While, With,
+)
 from dataclasses import dataclass
 from typing import Any, Callable, Iterator, Sequence
 
-from geolint.factbase.index import Binding, LoopBinding, ModuleIndex, OpaqueBinding, ParamBinding, Scope, UnpackBinding
+from geolint.factbase.index import (
+    Binding, LoopBinding, ModuleIndex, OpaqueBinding, ParamBinding, Scope, UnpackBinding, statement_list_fields,
+)
 
 _MAX_BINDINGS = 64  # past this many rebindings of one name, order is not worth its cost: all count
-_LOOPS = (ast.For, ast.AsyncFor, ast.While)
+_LOOPS = (For, AsyncFor, While)
 _BLOCK_FIELDS = ("body", "orelse", "finalbody")
-_NESTED_SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+_ARMS = frozenset({"handlers", "cases"})  # lists of `except` handlers and `match` cases, whose bodies hold statements
+_NESTED_SCOPES = (FunctionDef, AsyncFunctionDef, ClassDef)
 
 
 @dataclass(frozen=True)
@@ -43,8 +51,8 @@ class Augmented:
     """`x op= value`, read as `x = x op value`: `value` is that `BinOp` (made once per statement),
     whose `x`, a copy of the target, reads what x held before the statement."""
 
-    statement: ast.AugAssign
-    value: ast.BinOp
+    statement: AugAssign
+    value: BinOp
 
 
 @dataclass(frozen=True)
@@ -55,8 +63,8 @@ class Definition:
     statement: ast.stmt
     point: tuple[int, int]
     only_inside: bool  # a loop target: bound in the loop's body only, maybe never (zero iterations)
-    within: ast.AST | None = None  # a comprehension's target: bound inside that comprehension only
-    walrus: ast.NamedExpr | None = None  # `(name := value)`, somewhere in `statement`'s own expressions
+    within: AST | None = None  # a comprehension's target: bound inside that comprehension only
+    walrus: NamedExpr | None = None  # `(name := value)`, somewhere in `statement`'s own expressions
 
 
 @dataclass(frozen=True)
@@ -70,9 +78,9 @@ class Unpacked:
     statement: ast.stmt
 
 
-def reaching_bindings(index: ModuleIndex, scope: Scope, use: ast.Name, bindings: Sequence[Binding]) -> list[Binding]:
+def reaching_bindings(index: ModuleIndex, scope: Scope, use: Name, bindings: Sequence[Binding]) -> list[Binding]:
     """The bindings of `use.id` (all of them: `bindings`) that can reach `use`."""
-    if len(bindings) < 2 or len(bindings) > _MAX_BINDINGS or not isinstance(use.ctx, ast.Load):
+    if len(bindings) < 2 or len(bindings) > _MAX_BINDINGS or not isinstance(use.ctx, Load):
         return list(bindings)
     uses = _memo(index, "reaching_uses")
     known = uses.get(id(use))
@@ -83,7 +91,7 @@ def reaching_bindings(index: ModuleIndex, scope: Scope, use: ast.Name, bindings:
     return known
 
 
-def _reached(index: ModuleIndex, scope: Scope, use: ast.Name, events: list[Definition]) -> list[Definition] | None:
+def _reached(index: ModuleIndex, scope: Scope, use: Name, events: list[Definition]) -> list[Definition] | None:
     """The definitions among `events` (all of the name's, in order) that can reach `use`; None when
     none is placed before it (a loop's later one, or a closure's read)."""
     ancestors = _ancestors(index, use, scope.node)
@@ -162,7 +170,7 @@ def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Defin
                     )
         for walrus in _walruses(index).get(key, ()):
             holder = statement_of(index, walrus)
-            if holder is not None and isinstance(walrus.target, ast.Name):
+            if holder is not None and isinstance(walrus.target, Name):
                 point = (walrus.end_lineno or walrus.lineno, walrus.end_col_offset or 0)
                 definition = Definition(walrus.value, holder, point, False, walrus=walrus)
                 table.setdefault(walrus.target.id, []).append(definition)
@@ -170,10 +178,10 @@ def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Defin
     return table
 
 
-_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+_COMPREHENSIONS = (ListComp, SetComp, DictComp, GeneratorExp)
 
 
-def _comprehensions(index: ModuleIndex) -> dict[int, list[ast.AST]]:
+def _comprehensions(index: ModuleIndex) -> dict[int, list[AST]]:
     """The module's comprehensions by the scope their targets are bound in (the index binds them
     in the enclosing function's), in source order."""
     by_scope = index.flow.get("comprehensions")
@@ -184,13 +192,13 @@ def _comprehensions(index: ModuleIndex) -> dict[int, list[ast.AST]]:
     return by_scope
 
 
-def _walruses(index: ModuleIndex) -> dict[int, list[ast.NamedExpr]]:
+def _walruses(index: ModuleIndex) -> dict[int, list[NamedExpr]]:
     """The module's assignment expressions by the scope they bind in (the index's: a comprehension's
     `:=` binds in the enclosing function, PEP 572)."""
     by_scope = index.flow.get("walruses")
     if by_scope is None:
         by_scope = index.flow["walruses"] = {}
-        for walrus in index.nodes(ast.NamedExpr):
+        for walrus in index.nodes(NamedExpr):
             by_scope.setdefault(id(index.scope_of(walrus).node), []).append(walrus)
     return by_scope
 
@@ -198,20 +206,20 @@ def _walruses(index: ModuleIndex) -> dict[int, list[ast.NamedExpr]]:
 # where evaluation may skip an expression although its statement runs: the node's fields that
 # always run (none of a comprehension's: it may iterate no time)
 _MAYBE_SKIPPED: dict[type, tuple[str, ...]] = {
-    ast.IfExp: ("test",),
-    ast.ListComp: (), ast.SetComp: (), ast.DictComp: (), ast.GeneratorExp: (),
-    ast.ExceptHandler: (), ast.match_case: (), ast.Lambda: (),
-    ast.Assert: ("test",),
+    IfExp: ("test",),
+    ListComp: (), SetComp: (), DictComp: (), GeneratorExp: (),
+    ExceptHandler: (), ast.match_case: (), Lambda: (),
+    Assert: ("test",),
 }  # fmt: skip
 
 
-def _always_evaluated(index: ModuleIndex, walrus: ast.NamedExpr, statement: ast.stmt) -> bool:
+def _always_evaluated(index: ModuleIndex, walrus: NamedExpr, statement: ast.stmt) -> bool:
     """Whether `walrus` runs whenever `statement` does (no `and`/`or` tail, conditional branch,
     comprehension, handler or case guard between them)."""
-    child: ast.AST = walrus
+    child: AST = walrus
     current = index.parents.get(walrus)
     while current is not None:
-        if isinstance(current, ast.BoolOp) and child is not current.values[0]:
+        if isinstance(current, BoolOp) and child is not current.values[0]:
             return False
         kept = _MAYBE_SKIPPED.get(type(current))
         if kept is not None and not any(getattr(current, field, None) is child for field in kept):
@@ -222,11 +230,11 @@ def _always_evaluated(index: ModuleIndex, walrus: ast.NamedExpr, statement: ast.
     return False
 
 
-def _repeats_in(index: ModuleIndex, event: Definition, loop: ast.AST) -> bool:
+def _repeats_in(index: ModuleIndex, event: Definition, loop: AST) -> bool:
     """Whether `event` binds anew on each iteration of `loop` (a `:=` in a `for`'s iterable runs once)."""
     if event.walrus is None:
         return _inside(index, event.statement, loop)
-    if isinstance(loop, (ast.For, ast.AsyncFor)) and _inside(index, event.walrus, loop.iter):
+    if isinstance(loop, (For, AsyncFor)) and _inside(index, event.walrus, loop.iter):
         return False
     return _inside(index, event.walrus, loop)
 
@@ -274,55 +282,55 @@ def _statements(body: list[ast.stmt]) -> Iterator[ast.stmt]:
         if isinstance(statement, _NESTED_SCOPES):
             continue
         nested: list[ast.stmt] = []
-        for field in _BLOCK_FIELDS:
-            nested.extend(getattr(statement, field, None) or [])
-        for handler in getattr(statement, "handlers", None) or []:
-            nested.extend(handler.body)
-        for case in getattr(statement, "cases", None) or []:
-            nested.extend(case.body)
+        for field in statement_list_fields(statement):
+            if field in _ARMS:
+                for arm in getattr(statement, field):
+                    nested.extend(arm.body)
+            else:
+                nested.extend(getattr(statement, field))
         stack.extend(reversed(nested))
 
 
 def _bound_by(index: ModuleIndex, statement: ast.stmt) -> Iterator[tuple[str, Definition]]:
     """The names `statement` itself binds (not its nested blocks), with their definitions."""
     end = (statement.end_lineno or statement.lineno, statement.end_col_offset or 0)
-    if isinstance(statement, ast.Assign):
+    if isinstance(statement, Assign):
         for target in statement.targets:
             yield from _target_events(target, statement.value, statement, end)
-    elif isinstance(statement, ast.AnnAssign):
-        if isinstance(statement.target, ast.Name):
+    elif isinstance(statement, AnnAssign):
+        if isinstance(statement.target, Name):
             value = statement.value if statement.value is not None else OpaqueBinding()
             yield statement.target.id, Definition(value, statement, end, False)
-    elif isinstance(statement, ast.AugAssign):
-        if isinstance(statement.target, ast.Name):
+    elif isinstance(statement, AugAssign):
+        if isinstance(statement.target, Name):
             yield statement.target.id, Definition(_augmented(index, statement), statement, end, False)
-    elif isinstance(statement, (ast.For, ast.AsyncFor)):
+    elif isinstance(statement, (For, AsyncFor)):
         iterable = statement.iter
         point = (iterable.end_lineno or iterable.lineno, iterable.end_col_offset or 0)
         yield from _loop_events(statement.target, iterable, statement, point)
-    elif isinstance(statement, (ast.With, ast.AsyncWith)):
+    elif isinstance(statement, (With, AsyncWith)):
         for item in statement.items:
             if item.optional_vars is not None:
                 for name in _names_in(item.optional_vars):
                     yield name, Definition(OpaqueBinding(), statement, (item.context_expr.lineno, item.context_expr.col_offset), False)
     elif isinstance(statement, _NESTED_SCOPES):
         yield statement.name, Definition(OpaqueBinding(), statement, end, False)
-    elif isinstance(statement, (ast.Import, ast.ImportFrom)):
+    elif isinstance(statement, (Import, ImportFrom)):
         for alias in statement.names:
             if alias.name != "*":
                 yield alias.asname or alias.name.split(".")[0], Definition(OpaqueBinding(), statement, end, False)
-    elif isinstance(statement, ast.Try) or type(statement).__name__ == "TryStar":
+    elif isinstance(statement, Try) or type(statement).__name__ == "TryStar":
         for handler in statement.handlers:  # type: ignore[attr-defined]
             if handler.name:
                 yield handler.name, Definition(OpaqueBinding(), handler.body[0], (handler.lineno, handler.col_offset), True)
 
 
-def _augmented(index: ModuleIndex, statement: ast.AugAssign) -> Augmented:
+def _augmented(index: ModuleIndex, statement: AugAssign) -> Augmented:
     """`x op= value` as `x op value`, its nodes placed under the statement (`statement_of`, `scope_of`)."""
     target = statement.target
-    assert isinstance(target, ast.Name)
-    current = ast.copy_location(ast.Name(id=target.id, ctx=ast.Load()), target)
-    value = ast.copy_location(ast.BinOp(left=current, op=statement.op, right=statement.value), statement)
+    assert isinstance(target, Name)
+    current = ast.copy_location(Name(id=target.id, ctx=Load()), target)
+    value = ast.copy_location(BinOp(left=current, op=statement.op, right=statement.value), statement)
     made = _memo(index, "made_parents")
     made[value] = statement
     made[current] = value
@@ -348,16 +356,16 @@ def _unpacked(
     point: tuple[int, int],
     only_inside: bool,
 ) -> Iterator[tuple[str, Definition]]:
-    if isinstance(target, ast.Name):
+    if isinstance(target, Name):
         yield target.id, Definition(whole, statement, point, only_inside)
     elif isinstance(target, (ast.Tuple, ast.List)):
         for position, item in enumerate(target.elts):
-            if isinstance(item, ast.Name):
+            if isinstance(item, Name):
                 yield item.id, Definition(element(position), statement, point, only_inside)
             else:
                 for name in _names_in(item):
                     yield name, Definition(OpaqueBinding(), statement, point, only_inside)
-    elif isinstance(target, ast.Starred):
+    elif isinstance(target, Starred):
         for name in _names_in(target.value):
             yield name, Definition(OpaqueBinding(), statement, point, only_inside)
 
@@ -369,22 +377,22 @@ def _names_in(target: ast.expr) -> list[str]:
     stack = [target]
     while stack:
         node = stack.pop()
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             names.append(node.id)
         elif isinstance(node, (ast.Tuple, ast.List)):
             stack.extend(reversed(node.elts))
-        elif isinstance(node, ast.Starred):
+        elif isinstance(node, Starred):
             stack.append(node.value)
     return list(dict.fromkeys(names))
 
 
-def _in_first_iterable(comprehension: ast.AST, use: ast.AST, ancestors: list[ast.AST]) -> bool:
+def _in_first_iterable(comprehension: AST, use: AST, ancestors: list[AST]) -> bool:
     """`[... for x in <here>]`: the first iterable is read in the enclosing scope, not the comprehension's."""
     first = comprehension.generators[0].iter  # type: ignore[attr-defined]
     return use is first or any(node is first for node in ancestors)
 
 
-def _ancestors(index: ModuleIndex, node: ast.AST, stop: ast.AST) -> list[ast.AST]:
+def _ancestors(index: ModuleIndex, node: AST, stop: AST) -> list[AST]:
     """The nodes enclosing `node`, innermost first, up to (not including) the scope node `stop`."""
     found = []
     current = _parent(index, node)
@@ -394,7 +402,7 @@ def _ancestors(index: ModuleIndex, node: ast.AST, stop: ast.AST) -> list[ast.AST
     return found
 
 
-def _always_runs_before(index: ModuleIndex, event: Definition, ancestors: list[ast.AST]) -> bool:
+def _always_runs_before(index: ModuleIndex, event: Definition, ancestors: list[AST]) -> bool:
     """Whether `event`'s binding runs on every path to the use whose enclosing nodes are `ancestors`."""
     if event.point == (0, 0):
         return True  # a parameter
@@ -413,11 +421,11 @@ def _always_runs_before(index: ModuleIndex, event: Definition, ancestors: list[a
             return _same_block(parent, statement, node)
         if node is statement:
             # the use sits inside the binding statement's own blocks (`with ... as x:` body)
-            return isinstance(statement, (ast.With, ast.AsyncWith))
+            return isinstance(statement, (With, AsyncWith))
     return False
 
 
-def _same_block(parent: ast.AST | None, first: ast.stmt, second: ast.AST) -> bool:
+def _same_block(parent: AST | None, first: ast.stmt, second: AST) -> bool:
     """Whether `first` and `second` are statements of one block of `parent` (then `first`, being
     earlier, always runs before `second`)."""
     if parent is None:
@@ -429,13 +437,13 @@ def _same_block(parent: ast.AST | None, first: ast.stmt, second: ast.AST) -> boo
     return False
 
 
-def _in_block(statement: ast.stmt, field: str, ancestors: list[ast.AST]) -> bool:
+def _in_block(statement: ast.stmt, field: str, ancestors: list[AST]) -> bool:
     block = getattr(statement, field, None) or []
     return any(item is node for node in ancestors for item in block)
 
 
-def _inside(index: ModuleIndex, node: ast.AST, container: ast.AST) -> bool:
-    current: ast.AST | None = node
+def _inside(index: ModuleIndex, node: AST, container: AST) -> bool:
+    current: AST | None = node
     while current is not None:
         if current is container:
             return True
@@ -443,7 +451,7 @@ def _inside(index: ModuleIndex, node: ast.AST, container: ast.AST) -> bool:
     return False
 
 
-def _parent(index: ModuleIndex, node: ast.AST) -> ast.AST | None:
+def _parent(index: ModuleIndex, node: AST) -> AST | None:
     """The node enclosing `node`, for the nodes an augmented assignment's value is made of too."""
     parent = index.parents.get(node)
     return parent if parent is not None else _memo(index, "made_parents").get(node)
@@ -460,7 +468,7 @@ def _memo(index: ModuleIndex, name: str) -> dict[Any, Any]:
 # --- the one definition that reaches a use -------------------------------------------------------
 
 
-def single_definition(index: ModuleIndex, use: ast.Name) -> Definition | None:
+def single_definition(index: ModuleIndex, use: Name) -> Definition | None:
     """The one definition of `use.id` in its own scope that reaches `use` (a parameter, or an
     assignment certainly run before it with no other reaching it); None when several can reach it,
     none is placed before it, or the name is not bound in its scope."""
@@ -471,7 +479,7 @@ def single_definition(index: ModuleIndex, use: ast.Name) -> Definition | None:
     found = None
     scope = scope_of(index, use)
     bindings = scope.bindings.get(use.id)
-    if bindings is not None and isinstance(scope.node, ast.Lambda):
+    if bindings is not None and isinstance(scope.node, Lambda):
         if len(bindings) == 1 and isinstance(bindings[0], ParamBinding):  # its body is one expression
             found = Definition(bindings[0], scope.node.body, (0, 0), False)  # type: ignore[arg-type]
     elif bindings is not None or use.id in scope.augmented:
@@ -483,7 +491,7 @@ def single_definition(index: ModuleIndex, use: ast.Name) -> Definition | None:
     return found
 
 
-def value_of(index: ModuleIndex, use: ast.Name) -> ast.expr | Unpacked | None:
+def value_of(index: ModuleIndex, use: Name) -> ast.expr | Unpacked | None:
     """The value `use` certainly holds: the one reaching definition's value (`x op value` for an
     augmented one, a literal's element or an `Unpacked` for a tuple target); None when unknown."""
     definition = single_definition(index, use)
@@ -494,29 +502,29 @@ def value_of(index: ModuleIndex, use: ast.Name) -> ast.expr | Unpacked | None:
         return binding.value
     if isinstance(binding, ast.expr):
         return binding
-    if isinstance(binding, UnpackBinding) and isinstance(definition.statement, ast.Assign):
+    if isinstance(binding, UnpackBinding) and isinstance(definition.statement, Assign):
         return _element(binding, definition.statement, use.id)
     return None
 
 
-def _element(binding: UnpackBinding, statement: ast.Assign, name: str) -> ast.expr | Unpacked | None:
+def _element(binding: UnpackBinding, statement: Assign, name: str) -> ast.expr | Unpacked | None:
     for target in statement.targets:
         if not isinstance(target, (ast.Tuple, ast.List)) or binding.position >= len(target.elts):
             continue
         element = target.elts[binding.position]
-        if not (isinstance(element, ast.Name) and element.id == name):
+        if not (isinstance(element, Name) and element.id == name):
             continue
         value = binding.value
         if isinstance(value, (ast.Tuple, ast.List)) and len(value.elts) == len(target.elts):
             return value.elts[binding.position]
-        names = tuple(item.id if isinstance(item, ast.Name) else "" for item in target.elts)
+        names = tuple(item.id if isinstance(item, Name) else "" for item in target.elts)
         return Unpacked(value, binding.position, names, statement)
     return None
 
 
 def resolve(index: ModuleIndex, node: ast.expr, depth: int = 8) -> ast.expr | Unpacked:
     """Follow local names to the value they certainly hold (the last name reached when unknown)."""
-    while isinstance(node, ast.Name) and depth > 0:
+    while isinstance(node, Name) and depth > 0:
         value = value_of(index, node)
         if value is None:
             return node
@@ -527,7 +535,7 @@ def resolve(index: ModuleIndex, node: ast.expr, depth: int = 8) -> ast.expr | Un
     return node
 
 
-def binding_of(index: ModuleIndex, use: ast.Name) -> object:
+def binding_of(index: ModuleIndex, use: Name) -> object:
     """Which definition `use` reads, as a comparable token (a rebound name reads another); a name
     its scope does not bind reads the enclosing one's, `("free", name)`; None when several reach."""
     scope = scope_of(index, use)
@@ -541,13 +549,13 @@ def binding_of(index: ModuleIndex, use: ast.Name) -> object:
     return id(definition.walrus or definition.statement)
 
 
-def parameter_of(index: ModuleIndex, use: ast.Name) -> ast.arg | None:
+def parameter_of(index: ModuleIndex, use: Name) -> ast.arg | None:
     """The parameter `use` reads, when nothing assigned in its function can reach it instead."""
     definition = single_definition(index, use)
     return definition.binding.arg if definition is not None and isinstance(definition.binding, ParamBinding) else None
 
 
-def assigned_values(index: ModuleIndex, use: ast.Name) -> list[ast.expr | Unpacked | None]:
+def assigned_values(index: ModuleIndex, use: Name) -> list[ast.expr | Unpacked | None]:
     """Every value `use.id` is given in its scope, in order (None for a parameter, a loop target or
     anything else whose value is unknown), whichever of them reaches `use`."""
     scope = scope_of(index, use)
@@ -562,14 +570,14 @@ def assigned_values(index: ModuleIndex, use: ast.Name) -> list[ast.expr | Unpack
             values.append(binding.value)
         elif isinstance(binding, ast.expr):
             values.append(binding)
-        elif isinstance(binding, UnpackBinding) and isinstance(event.statement, ast.Assign):
+        elif isinstance(binding, UnpackBinding) and isinstance(event.statement, Assign):
             values.append(_element(binding, event.statement, use.id))
         else:
             values.append(None)
     return values
 
 
-def scope_of(index: ModuleIndex, node: ast.AST) -> Scope:
+def scope_of(index: ModuleIndex, node: AST) -> Scope:
     """The scope whose names `node` reads (an augmented assignment's made nodes: its statement's)."""
     scope = index.scope_of_node.get(node)
     if scope is not None:
@@ -578,15 +586,15 @@ def scope_of(index: ModuleIndex, node: ast.AST) -> Scope:
     return scope_of(index, parent) if parent is not None else index.scope_of(node)
 
 
-def statement_of(index: ModuleIndex, node: ast.AST) -> ast.stmt | None:
+def statement_of(index: ModuleIndex, node: AST) -> ast.stmt | None:
     """The statement `node` is part of."""
-    current: ast.AST | None = node
+    current: AST | None = node
     while current is not None and not isinstance(current, ast.stmt):
         current = _parent(index, current)
     return current
 
 
-def runs_before(index: ModuleIndex, statement: ast.stmt, node: ast.AST) -> bool:
+def runs_before(index: ModuleIndex, statement: ast.stmt, node: AST) -> bool:
     """`statement` runs, earlier, on every path to `node`: it sits in a block that encloses `node`."""
     scope = scope_of(index, statement)
     event = Definition(OpaqueBinding(), statement, (statement.end_lineno or statement.lineno, statement.end_col_offset or 0), False)

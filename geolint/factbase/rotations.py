@@ -5,6 +5,19 @@ from __future__ import annotations
 
 import ast
 import re
+from ast import (
+    AST,
+    Attribute,
+    Call,
+    Constant,
+    If,
+    Import,
+    ImportFrom,
+    ListComp,
+    Name,
+    Starred,
+    Subscript,
+)
 
 from geolint.factbase.model import FactBase, keyword, last_name, number
 
@@ -16,20 +29,20 @@ TRIG_FUNCTIONS = frozenset({"sin", "cos", "tan"})
 _SCIPY_ROTATION_ALIASES = frozenset({"Rotation", "R", "Rot", "ScipyRotation", "SciRotation"})
 
 
-def is_scipy_rotation_method(facts: FactBase, func: ast.AST, *methods: str) -> bool:
+def is_scipy_rotation_method(facts: FactBase, func: AST, *methods: str) -> bool:
     """Whether `func` is `scipy.spatial.transform.Rotation.<method>` (through imports or the usual aliases)."""
-    if not isinstance(func, ast.Attribute) or func.attr not in methods:
+    if not isinstance(func, Attribute) or func.attr not in methods:
         return False
     qualified = facts.qualified_name(func.value) or ""
     if qualified.startswith("scipy.spatial.transform"):
         return qualified.endswith("Rotation")
-    return isinstance(func.value, ast.Name) and func.value.id in _SCIPY_ROTATION_ALIASES and func.value.id not in facts.index.imports
+    return isinstance(func.value, Name) and func.value.id in _SCIPY_ROTATION_ALIASES and func.value.id not in facts.index.imports
 
 
 _CONSUMED, _PRODUCED = 0, 1  # the two tables of each simulator module
 
 
-def _simulator_order(facts: FactBase, call: ast.Call, side: int) -> str | None:
+def _simulator_order(facts: FactBase, call: Call, side: int) -> str | None:
     """The order a simulator API (Isaac Gym, Isaac Sim, Isaac Lab) reads (`_CONSUMED`) or returns
     (`_PRODUCED`); `convert_quat` says both in its arguments."""
     found = simulator_function(facts, call.func)
@@ -41,7 +54,7 @@ def _simulator_order(facts: FactBase, call: ast.Call, side: int) -> str | None:
     return _SIMULATOR_TABLES[module][side].get(name)
 
 
-def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
+def quaternion_order(facts: FactBase, call: Call) -> str | None:
     """The component order the called API expects for its quaternion argument, or None if unknown."""
     func = call.func
     called = facts.called_name(func) or ""
@@ -58,9 +71,9 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
         scalar_first = keyword(call, "scalar_first")
         if scalar_first is not None:
             value = scalar_first.value
-            if isinstance(value, ast.Constant) and value.value is True:
+            if isinstance(value, Constant) and value.value is True:
                 return SCALAR_FIRST
-            if not (isinstance(value, ast.Constant) and value.value is False):
+            if not (isinstance(value, Constant) and value.value is False):
                 return None  # decided at run time
         return SCALAR_LAST
     qualified = branch_qualified_name(facts, func) or ""
@@ -82,7 +95,7 @@ def quaternion_order(facts: FactBase, call: ast.Call) -> str | None:
     if name in _PYBULLET_CONSUMERS:  # on the module or on a BulletClient
         return SCALAR_LAST
     if qualified in _EIGEN_QUATERNIONS:
-        if any(isinstance(arg, ast.Starred) for arg in call.args):
+        if any(isinstance(arg, Starred) for arg in call.args):
             return SCALAR_FIRST  # `pin.Quaternion(*q)`: four coefficients
         return SCALAR_FIRST if len(call.args) == 4 else SCALAR_LAST if len(call.args) == 1 and not call.keywords else None
     if qualified.startswith(("mujoco.", "mujoco_py.")) and name in _MUJOCO_QUATERNION_POSITIONS:
@@ -108,11 +121,11 @@ def _operation_order(facts: FactBase, func: ast.expr) -> str | None:
     return None
 
 
-def quaternion_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
+def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
     """The one argument of a quaternion consumer that holds the whole quaternion (a 4-vector or a
     stack of them), or None: the call spells components out, or the API takes no quaternion first."""
     func = call.func
-    positional = [arg for arg in call.args if not isinstance(arg, ast.Starred)]
+    positional = [arg for arg in call.args if not isinstance(arg, Starred)]
     if len(positional) != len(call.args):
         return None
     if is_scipy_rotation_method(facts, func, "from_quat"):
@@ -157,10 +170,10 @@ def is_numpy_quaternion_constructor(facts: FactBase, qualified: str) -> bool:
     return qualified == "numpy.quaternion" and "quaternion" in imported
 
 
-def spread_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
+def spread_argument(facts: FactBase, call: Call) -> ast.expr | None:
     """`Quaternion(*q)`: the one starred argument spread into an API that takes the four
     components one by one (pyquaternion, numpy-quaternion, ROS messages), or None."""
-    if len(call.args) != 1 or not isinstance(call.args[0], ast.Starred) or call.keywords:
+    if len(call.args) != 1 or not isinstance(call.args[0], Starred) or call.keywords:
         return None
     qualified = facts.qualified_name(call.func) or ""
     if (
@@ -172,13 +185,13 @@ def spread_argument(facts: FactBase, call: ast.Call) -> ast.expr | None:
     return None
 
 
-def pybullet_orientation_arguments(call: ast.Call) -> list[ast.expr]:
+def pybullet_orientation_arguments(call: Call) -> list[ast.expr]:
     """The (x, y, z, w) orientation arguments of a pybullet call that takes them beside positions
     (`resetBasePositionAndOrientation(body, pos, orn)`, `loadURDF(path, pos, orn)`,
     `multiplyTransforms(p1, o1, p2, o2)`...), positional or by keyword."""
     name = last_name(call.func) or ""
     spec = _PYBULLET_ORIENTATION_ARGUMENTS.get(name)
-    if spec is None or any(isinstance(arg, ast.Starred) for arg in call.args):
+    if spec is None or any(isinstance(arg, Starred) for arg in call.args):
         return []
     positions, keywords = spec
     found = [call.args[position] for position in positions if position < len(call.args)]
@@ -186,7 +199,7 @@ def pybullet_orientation_arguments(call: ast.Call) -> list[ast.expr]:
     return found
 
 
-def pybullet_quaternion_values(call: ast.Call) -> list[tuple[str, ast.expr]]:
+def pybullet_quaternion_values(call: Call) -> list[tuple[str, ast.expr]]:
     """(parameter, value) for each value a pybullet call reads as one (x, y, z, w) quaternion: its
     orientation arguments, a shape's or a body's inertial frame orientation, and each quaternion written
     out in a list of them (a list literal's items, a list comprehension's element)."""
@@ -198,19 +211,19 @@ def pybullet_quaternion_values(call: ast.Call) -> list[tuple[str, ast.expr]]:
             found.append((given.arg, given.value))
         elif given.arg in lists:
             value = given.value
-            items = [value.elt] if isinstance(value, ast.ListComp) else value.elts if isinstance(value, (ast.List, ast.Tuple)) else []
+            items = [value.elt] if isinstance(value, ListComp) else value.elts if isinstance(value, (ast.List, ast.Tuple)) else []
             found.extend((given.arg, item) for item in items)
     return found
 
 
-def quaternion_producer(facts: FactBase, call: ast.Call) -> str | None:
+def quaternion_producer(facts: FactBase, call: Call) -> str | None:
     """The component order of the quaternion a library call returns, or None if unknown."""
     func = call.func
-    if isinstance(func, ast.Attribute) and func.attr == "as_quat":
+    if isinstance(func, Attribute) and func.attr == "as_quat":
         scalar_first = keyword(call, "scalar_first")
         if scalar_first is not None:
             value = scalar_first.value
-            if isinstance(value, ast.Constant) and value.value in (True, False):
+            if isinstance(value, Constant) and value.value in (True, False):
                 return SCALAR_FIRST if value.value else SCALAR_LAST
             return None
         return SCALAR_LAST if is_scipy_rotation_value(facts, func.value) else None
@@ -236,18 +249,18 @@ def quaternion_producer(facts: FactBase, call: ast.Call) -> str | None:
     return _DATA_PRODUCERS.get(_library_key(qualified, name))
 
 
-def is_scipy_rotation_value(facts: FactBase, node: ast.AST) -> bool:
+def is_scipy_rotation_value(facts: FactBase, node: AST) -> bool:
     """Whether `node` is a scipy `Rotation` object: `Rotation.from_*(...)` (possibly `.inv()`-ed),
     or a name bound only to one. The method name alone (`r.as_quat()`) is no evidence."""
     for _ in range(8):
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+        if isinstance(node, Call) and isinstance(node.func, Attribute):
             if is_scipy_rotation_method(facts, node.func, *_SCIPY_CONSTRUCTORS):
                 return True
             if node.func.attr in ("inv", "__mul__") or node.func.attr == "reduce":
                 node = node.func.value
                 continue
             return False
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             bound = facts.bindings(node) or []
             values = [binding for binding in bound if isinstance(binding, ast.expr)]
             if not values or len(values) != len(bound):
@@ -330,7 +343,7 @@ _DATA_PRODUCERS = {
 }
 
 
-def simulator_function(facts: FactBase, func: ast.AST) -> tuple[str, str] | None:
+def simulator_function(facts: FactBase, func: AST) -> tuple[str, str] | None:
     """(module, name) of an Isaac Gym / Isaac Sim / Isaac Lab quaternion function in `_SIMULATOR_TABLES`,
     through imports or through the one star import of such a module (`from isaacgym.torch_utils import *`,
     as most Isaac Gym tasks write it) when the module binds no name of its own that shadows it."""
@@ -339,7 +352,7 @@ def simulator_function(facts: FactBase, func: ast.AST) -> tuple[str, str] | None
     module = _SIMULATOR_ALIASES.get(module, module)
     if module in _SIMULATOR_TABLES:
         return module, name
-    if not isinstance(func, ast.Name) or func.id in facts.index.imports:
+    if not isinstance(func, Name) or func.id in facts.index.imports:
         return None
     starred = _star_imported_tables(facts)
     if len(starred) != 1 or facts.index.lookup(func.id, facts.index.scope_of(func)):
@@ -355,18 +368,18 @@ def _star_imported_tables(facts: FactBase) -> frozenset[str]:
     )
 
 
-def _convert_quat_orders(call: ast.Call) -> tuple[str | None, str | None]:
+def _convert_quat_orders(call: Call) -> tuple[str | None, str | None]:
     """Isaac Lab's `convert_quat(q, to="xyzw")`: (the order it reads, the order it returns). The same in
     every Isaac Lab version, whatever the library's own convention."""
     given = keyword(call, "to")
     target = given.value if given is not None else call.args[1] if len(call.args) > 1 else None
-    to = SCALAR_LAST if target is None else target.value if isinstance(target, ast.Constant) else None
+    to = SCALAR_LAST if target is None else target.value if isinstance(target, Constant) else None
     if to not in (SCALAR_LAST, SCALAR_FIRST):
         return None, None
     return (SCALAR_FIRST if to == SCALAR_LAST else SCALAR_LAST), to  # type: ignore[return-value]
 
 
-def isaac_orientation_arguments(facts: FactBase, call: ast.Call) -> list[ast.expr]:
+def isaac_orientation_arguments(facts: FactBase, call: Call) -> list[ast.expr]:
     """The (w, x, y, z) orientation arguments of an Isaac Sim core call: `orientation=` / `orientations=`
     of a prim, object or view constructor (`XFormPrim(path, orientation=q)`, `DynamicCuboid(...)`,
     `RigidPrimView(...)`) or of `create_prim`, and the orientation of `set_world_pose(position, orientation)`,
@@ -375,8 +388,8 @@ def isaac_orientation_arguments(facts: FactBase, call: ast.Call) -> list[ast.exp
     if not mentions_isaac_core(facts):
         return []  # every call below is Isaac Sim's, which only an import of its core can bring in
     func = call.func
-    if isinstance(func, ast.Attribute) and func.attr in _ISAAC_POSE_SETTERS:
-        if not _imports_isaac_core(facts) or any(isinstance(arg, ast.Starred) for arg in call.args):
+    if isinstance(func, Attribute) and func.attr in _ISAAC_POSE_SETTERS:
+        if not _imports_isaac_core(facts) or any(isinstance(arg, Starred) for arg in call.args):
             return []
         found = [call.args[1]] if len(call.args) > 1 else []
         return found + [given.value for given in call.keywords if given.arg in ("orientation", "orientations")]
@@ -391,8 +404,8 @@ def _imported_modules(facts: FactBase) -> list[str]:
     """Every module and name the module imports, dotted in full (`import omni.isaac.core.prims` too)."""
     return [
         *facts.index.imports.values(),
-        *(node.module for node in facts.index.nodes(ast.ImportFrom) if node.module),  # type: ignore[attr-defined]
-        *(alias.name for node in facts.index.nodes(ast.Import) for alias in node.names),  # type: ignore[attr-defined]
+        *(node.module for node in facts.index.nodes(ImportFrom) if node.module),  # type: ignore[attr-defined]
+        *(alias.name for node in facts.index.nodes(Import) for alias in node.names),  # type: ignore[attr-defined]
     ]
 
 
@@ -411,7 +424,7 @@ def _imports_isaac_core(facts: FactBase) -> bool:
     return facts.module_fact("imports isaac core", compute)
 
 
-def accepts_stacks(facts: FactBase, call: ast.Call) -> bool:
+def accepts_stacks(facts: FactBase, call: Call) -> bool:
     """Isaac Gym / Isaac Sim quaternion functions and prim views take (N, 4) stacks as well as one quaternion."""
     return simulator_function(facts, call.func) is not None or bool(isaac_orientation_arguments(facts, call))
 
@@ -511,19 +524,19 @@ _FIELD_LETTERS = frozenset("wxyz")
 IDENTITY_NAME = re.compile(r"(?i)(?:^|_)(?:identity|ident|no_rot(?:ation)?|zero_rot(?:ation)?|unit_quat(?:ernion)?)(?:$|_)")
 
 
-def component_writes_of_parameter(facts: FactBase, stores: list[tuple[ast.Attribute, ast.expr]], plain: set[str]) -> list[tuple[str, str, str]]:
+def component_writes_of_parameter(facts: FactBase, stores: list[tuple[Attribute, ast.expr]], plain: set[str]) -> list[tuple[str, str, str]]:
     """A function that fills one object's `x`, `y`, `z` and `w` from the four indices of one of its
     parameters (`msg.x = q[0]` ... `msg.w = q[3]`), unconditionally: the parameter is read in that order.
     Returns (parameter, order, where) for each such object; only the two standard orders count (x, y, z
     permuted among themselves is an axis change, not a convention)."""
     from geolint.rules.rotation.angle_units import _unconditional
 
-    groups: dict[str, dict[str, tuple[ast.Attribute, ast.Subscript]]] = {}
+    groups: dict[str, dict[str, tuple[Attribute, Subscript]]] = {}
     for target, value in stores:
-        if target.attr not in _FIELD_LETTERS or not isinstance(value, ast.Subscript):
+        if target.attr not in _FIELD_LETTERS or not isinstance(value, Subscript):
             continue
         base = value.value
-        if not isinstance(base, ast.Name) or base.id not in plain:
+        if not isinstance(base, Name) or base.id not in plain:
             continue
         groups.setdefault(ast.dump(target.value), {})[target.attr] = (target, value)
     found: list[tuple[str, str, str]] = []
@@ -560,36 +573,36 @@ class ImportBranches:
     def __init__(self, facts: FactBase) -> None:
         found: dict[str, list[tuple[str, str, bool]]] = {}
         for statement in facts.index.tree.body:
-            if isinstance(statement, ast.If):
+            if isinstance(statement, If):
                 _collect_branch_imports(statement, found)
         self.alternatives = {name: arms for name, arms in found.items() if len({qualified for qualified, _, _ in arms}) > 1}
 
 
-def _collect_branch_imports(node: ast.If, found: dict[str, list[tuple[str, str, bool]]]) -> None:
+def _collect_branch_imports(node: If, found: dict[str, list[tuple[str, str, bool]]]) -> None:
     test = ast.dump(node.test)
     for arm, body in ((True, node.body), (False, node.orelse)):
         for statement in body:
-            if isinstance(statement, ast.ImportFrom) and statement.module and not statement.level:
+            if isinstance(statement, ImportFrom) and statement.module and not statement.level:
                 for alias in statement.names:
                     if alias.name != "*":
                         found.setdefault(alias.asname or alias.name, []).append((f"{statement.module}.{alias.name}", test, arm))
-            elif isinstance(statement, ast.If) and not arm and len(body) == 1:
+            elif isinstance(statement, If) and not arm and len(body) == 1:
                 _collect_branch_imports(statement, found)  # `elif`
 
 
-def branch_qualified_name(facts: FactBase, func: ast.AST) -> str | None:
+def branch_qualified_name(facts: FactBase, func: AST) -> str | None:
     """`facts.qualified_name(func)`, except for a name imported in several arms of a module-level `if`
     and called inside a branch on the same test: that arm's import."""
     qualified = facts.qualified_name(func)
-    if not isinstance(func, ast.Name) or not facts.index.imports.get(func.id):
+    if not isinstance(func, Name) or not facts.index.imports.get(func.id):
         return qualified
     arms = facts.shared(ImportBranches).alternatives.get(func.id)
     if not arms:
         return qualified
-    child: ast.AST = func
+    child: AST = func
     current = facts.parent(func)
     while current is not None:
-        if isinstance(current, ast.If):
+        if isinstance(current, If):
             test = ast.dump(current.test)
             in_body = any(statement is child for statement in current.body)
             for candidate, guard, arm in arms:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import ast
+from ast import AST, BinOp, Call, Module, Mult
 from typing import Callable, ClassVar, NamedTuple, Sequence
 
 from geolint.factbase.bosdyn import frame_comparison
@@ -42,13 +42,14 @@ class FactRule(AstRule):
 
     needs_facts = True
     triggers: ClassVar[RuleTrigger | None] = GATE_TRIGGER
+    # The module's fact base, set by `check` before `run`: an attribute, not a property reading
+    # `self.context.facts`, since rules ask for it hundreds of thousands of times a run.
+    facts: FactBase
 
-    @property
-    def facts(self) -> FactBase:
-        return self.context.facts  # type: ignore[no-any-return]
-
-    def check(self, tree: ast.Module) -> None:
-        if self.context.facts is not None:
+    def check(self, tree: Module) -> None:
+        facts = self.context.facts
+        if facts is not None:
+            self.facts = facts
             self.run()
 
     def run(self) -> None:
@@ -56,7 +57,7 @@ class FactRule(AstRule):
 
     def report(
         self,
-        node: ast.AST,
+        node: AST,
         message: str,
         *,
         replacement: str | None = None,
@@ -78,17 +79,17 @@ class FactRule(AstRule):
             frames=frames,
         )
 
-    def code_of(self, node: ast.AST) -> str:
+    def code_of(self, node: AST) -> str:
         return self.facts.code_of(node)
 
 
-def product_operands(facts: FactBase, node: ast.AST, order: str) -> MatMul | None:
+def product_operands(facts: FactBase, node: AST, order: str) -> MatMul | None:
     """A matrix product in any spelling, plus `A * B` when the left operand is a transform
     (spatialmath `SE3 * SE3`, PyKDL `Frame * Vector`, autolab_core `RigidTransform * x`)."""
     product = facts.matmul(node)
     if product is not None:
         return product
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+    if isinstance(node, BinOp) and isinstance(node.op, Mult):
         left = facts.frames_of(node.left, order)
         if left is not None and left.is_operator and left.operator == "transform":
             return MatMul(node, node.left, node.right)
@@ -113,7 +114,7 @@ class ProductRule(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        for node in facts.index.nodes(ast.BinOp, ast.Call):
+        for node in facts.index.nodes(BinOp, Call):
             found: list[tuple[Mismatch, tuple[str, ...]]] = []
             for order in facts.readings():
                 product = product_operands(facts, node, order)
@@ -144,7 +145,7 @@ class ProductRule(FactRule):
         """Whether what the operands' frames rest on is too weak for this rule to judge them."""
         return False
 
-    def _inconsistent(self, node: ast.AST, order: str, depth: int = 0) -> bool:
+    def _inconsistent(self, node: AST, order: str, depth: int = 0) -> bool:
         """Whether a product inside `node` composes operators whose inner frames disagree in `order`."""
         facts = self.facts
         product = product_operands(facts, node, order)

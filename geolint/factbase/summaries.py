@@ -18,6 +18,7 @@ it: editing a helper re-lints every module that may read its summary.
 from __future__ import annotations
 
 import ast
+from ast import AST, Add, AsyncFunctionDef, Attribute, BinOp, Call, FunctionDef, Name
 import hashlib
 import os
 import re
@@ -91,7 +92,7 @@ def bound(summary: FunctionSummary) -> FunctionSummary:
     )
 
 
-def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary:
+def summarize(facts: FactBase, function: FunctionDef | AsyncFunctionDef) -> FunctionSummary:
     """The summary of a function of `facts`' module (helpers it calls answer through their summaries)."""
     from geolint.factbase.model import positional_args, transposed_value, walk_within
 
@@ -109,31 +110,31 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
         summary.returns = kinds.pop()
     for value in returns:
         homogeneous = facts.homogeneous(value)
-        if homogeneous is not None and isinstance(homogeneous.inner, ast.Name) and homogeneous.inner.id in params:
+        if homogeneous is not None and isinstance(homogeneous.inner, Name) and homogeneous.inner.id in params:
             summary.homogenizes[params.index(homogeneous.inner.id)] = homogeneous.w
-        elif isinstance(value, ast.Call) and facts.may_have_summary(value):
+        elif isinstance(value, Call) and facts.may_have_summary(value):
             # `return to_homogeneous(x)`: the callee's w, on our parameter
             callee = facts.function_summary(value)
             arguments = positional_args(value)
             for index, w in (callee.homogenizes.items() if callee is not None else ()):
                 argument = arguments[index] if index < len(arguments) else None
-                if isinstance(argument, ast.Name) and argument.id in plain:
+                if isinstance(argument, Name) and argument.id in plain:
                     summary.homogenizes.setdefault(params.index(argument.id), w)
     if returns:
         summary.angle_unit = _returned_unit(facts, returns)
         summary.quaternion_order = _returned_order(facts, returns)
         summary.quaternion_elements = _returned_element_orders(facts, returns)
     for node in walk_within(function):
-        if isinstance(node, ast.Call) and node.args:
+        if isinstance(node, Call) and node.args:
             _record_call(facts, node, positional_args(node), params, plain, summary)
-        if isinstance(node, ast.Call) and node.keywords:
+        if isinstance(node, Call) and node.keywords:
             _record_keyword_quaternions(facts, node, params, plain, summary)
-        if isinstance(node, (ast.BinOp, ast.Call)):
+        if isinstance(node, (BinOp, Call)):
             _record_homogeneous_product(facts, node, plain, summary)
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             continue
         # `R @ x + t` (or row form `x @ R.T + t`) on a parameter x
-        if not isinstance(node, ast.BinOp) or not isinstance(node.op, ast.Add):
+        if not isinstance(node, BinOp) or not isinstance(node.op, Add):
             continue
         for rotated, other in ((node.left, node.right), (node.right, node.left)):
             inner = transposed_value(rotated) or rotated
@@ -142,7 +143,7 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
                 continue
             for operand in (product.left, product.right):
                 operand = transposed_value(operand) or operand
-                if isinstance(operand, ast.Name) and operand.id in params and facts.kind_of(operand) not in FREE:
+                if isinstance(operand, Name) and operand.id in params and facts.kind_of(operand) not in FREE:
                     operator = product.right if operand is product.left else product.left
                     if facts.kind_of(operator) not in (Kind.POINT, Kind.VECTOR, Kind.DIRECTION):
                         summary.translates.add(params.index(operand.id))
@@ -153,7 +154,7 @@ def summarize(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef)
     return summary
 
 
-def _record_component_writes(facts: FactBase, stores: list[tuple[ast.Attribute, ast.expr]], plain: set[str], summary: FunctionSummary) -> None:
+def _record_component_writes(facts: FactBase, stores: list[tuple[Attribute, ast.expr]], plain: set[str], summary: FunctionSummary) -> None:
     """`msg.x = q[0]` ... `msg.w = q[3]` on a parameter `q`: read in that order, as if handed to an API."""
     from geolint.factbase.rotations import component_writes_of_parameter
 
@@ -161,7 +162,7 @@ def _record_component_writes(facts: FactBase, stores: list[tuple[ast.Attribute, 
         _add_quaternion_read(summary, summary.parameters.index(name), order, where)
 
 
-def _record_formula_reads(facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef, plain: set[str], summary: FunctionSummary) -> None:
+def _record_formula_reads(facts: FactBase, function: FunctionDef | AsyncFunctionDef, plain: set[str], summary: FunctionSummary) -> None:
     """A parameter whose components an unconditional textbook formula reads (`atan2(2 * (q[3] * q[2] + ...`)
     is read in that formula's order, as if handed to an API."""
     from geolint.rules.rotation.angle_units import _unconditional
@@ -169,13 +170,13 @@ def _record_formula_reads(facts: FactBase, function: ast.FunctionDef | ast.Async
 
     for read in formula_reads_within(facts, function):
         base = read.base
-        if not (isinstance(base, ast.Name) and base.id in plain) or facts.index.scope_of(base).node is not function:
+        if not (isinstance(base, Name) and base.id in plain) or facts.index.scope_of(base).node is not function:
             continue
         if _unconditional(facts, read.node):
             _add_quaternion_read(summary, summary.parameters.index(base.id), read.order, read.evidence(facts))
 
 
-def _record_homogeneous_product(facts: FactBase, node: ast.AST, plain: set[str], summary: FunctionSummary) -> None:
+def _record_homogeneous_product(facts: FactBase, node: AST, plain: set[str], summary: FunctionSummary) -> None:
     """`T @ to_homogeneous(x).T`, `np.hstack([x, ones]) @ T.T`: a parameter given w = 1 and
     multiplied by an operator is translated along with the rotation."""
     product = facts.matmul(node)
@@ -185,7 +186,7 @@ def _record_homogeneous_product(facts: FactBase, node: ast.AST, plain: set[str],
 
     for operand, operator in ((product.left, product.right), (product.right, product.left)):
         homogeneous = facts.homogeneous(transposed_value(operand) or operand)
-        if homogeneous is None or homogeneous.w != 1 or not isinstance(homogeneous.inner, ast.Name):
+        if homogeneous is None or homogeneous.w != 1 or not isinstance(homogeneous.inner, Name):
             continue
         name = homogeneous.inner.id
         if name in plain and facts.kind_of(homogeneous.inner) not in FREE and facts.kind_of(operator) not in GEOMETRIC:
@@ -193,7 +194,7 @@ def _record_homogeneous_product(facts: FactBase, node: ast.AST, plain: set[str],
 
 
 def _pending(facts: FactBase, value: ast.expr) -> bool:
-    if not isinstance(value, ast.Call) or not facts.may_have_summary(value):
+    if not isinstance(value, Call) or not facts.may_have_summary(value):
         return False
     summary = facts.function_summary(value)
     return summary is not None and summary.pending
@@ -206,13 +207,13 @@ def only_bound_as_parameter(scope, name: str) -> bool:  # type: ignore[no-untype
 
 
 def _record_call(
-    facts: FactBase, call: ast.Call, arguments: list[ast.expr], params: tuple[str, ...], plain: set[str], summary: FunctionSummary
+    facts: FactBase, call: Call, arguments: list[ast.expr], params: tuple[str, ...], plain: set[str], summary: FunctionSummary
 ) -> None:
     """What a call inside the function does to the function's own parameters (its `positional_args`):
     a project helper that translates one (`apply_pose(T, x)`), an API that reads an angle unit (`np.cos(theta)`)."""
-    passed = {index: params.index(arg.id) for index, arg in enumerate(arguments) if isinstance(arg, ast.Name) and arg.id in plain}
+    passed = {index: params.index(arg.id) for index, arg in enumerate(arguments) if isinstance(arg, Name) and arg.id in plain}
     if not passed:
-        if arguments and isinstance(arguments[0], ast.BinOp):
+        if arguments and isinstance(arguments[0], BinOp):
             _record_rotation_vector(facts, call, plain, summary)
         return
     if facts.may_have_summary(call):
@@ -251,30 +252,30 @@ def _record_call(
             _add_quaternion_read(summary, own, read_order, f"`{facts.code_of(call.func)}`")
 
 
-def _record_rotation_vector(facts: FactBase, call: ast.Call, plain: set[str], summary: FunctionSummary) -> None:
+def _record_rotation_vector(facts: FactBase, call: Call, plain: set[str], summary: FunctionSummary) -> None:
     """`from_rotation_vector(theta * axis)`: a parameter that scales a rotation vector is its angle, read in radians."""
     from geolint.rules.rotation.angle_units import rotation_vector_factors, unit_read_by
 
     for factor in rotation_vector_factors(facts, call):
-        if isinstance(factor, ast.Name) and factor.id in plain:
+        if isinstance(factor, Name) and factor.id in plain:
             read = unit_read_by(facts, call, factor)
             if read is not None:
                 where = f"`{facts.code_of(call.func)}` (as the angle of the rotation vector `{facts.code_of(facts.parent(factor) or factor)}`)"
                 _add_unit_read(summary, summary.parameters.index(factor.id), read, where)
 
 
-def _record_keyword_quaternions(facts: FactBase, call: ast.Call, params: tuple[str, ...], plain: set[str], summary: FunctionSummary) -> None:
+def _record_keyword_quaternions(facts: FactBase, call: Call, params: tuple[str, ...], plain: set[str], summary: FunctionSummary) -> None:
     """`XFormPrim(path, orientation=q)`, `loadURDF(path, baseOrientation=q)`: a parameter passed by keyword
     as an API's quaternion."""
     for given in call.keywords:
         value = given.value
-        if isinstance(value, ast.Name) and value.id in plain:
+        if isinstance(value, Name) and value.id in plain:
             order = quaternion_read_by(facts, call, value)
             if order is not None:
                 _add_quaternion_read(summary, params.index(value.id), order, f"`{facts.code_of(call.func)}`")
 
 
-def quaternion_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:
+def quaternion_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str | None:
     """The component order `call` reads `argument` in, when it is the call's whole quaternion (scipy
     `from_quat(q)`, pybullet's orientation arguments...) and the call runs whenever its function does."""
     from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, isaac_orientation_arguments, pybullet_orientation_arguments, quaternion_argument, quaternion_order
@@ -421,7 +422,7 @@ class ProjectSummaries:
             self._modules[key] = None if index is None else FactBase(index, self.config, key, project=self)
         return self._modules[key]
 
-    def summary(self, facts: FactBase, function: ast.FunctionDef | ast.AsyncFunctionDef) -> FunctionSummary | None:
+    def summary(self, facts: FactBase, function: FunctionDef | AsyncFunctionDef) -> FunctionSummary | None:
         key = (id(facts.index), id(function))
         if key in self._final:
             return self._final[key]

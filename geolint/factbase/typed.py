@@ -11,6 +11,7 @@ The frames graph reads transforms the same way.
 from __future__ import annotations
 
 import ast
+from ast import AST, Attribute, ClassDef, Constant, Module, Name, Subscript
 
 from geolint.factbase.model import last_name
 from geolint.semantic.names import NameFrames, Operator
@@ -29,16 +30,16 @@ VALUE_TYPES = frozenset(
 )  # fmt: skip
 
 
-def frame_classes(module: ast.Module) -> dict[str, str]:
+def frame_classes(module: Module) -> dict[str, str]:
     """The module's `Frame` subclasses: class name -> the frame it names."""
     classes = {}
     for node in ast.walk(module):
-        if isinstance(node, ast.ClassDef) and any(last_name(base) == "Frame" for base in node.bases):
+        if isinstance(node, ClassDef) and any(last_name(base) == "Frame" for base in node.bases):
             declared = next(
                 (
                     keyword.value.value
                     for keyword in node.keywords
-                    if keyword.arg == "name" and isinstance(keyword.value, ast.Constant) and isinstance(keyword.value.value, str)
+                    if keyword.arg == "name" and isinstance(keyword.value, Constant) and isinstance(keyword.value.value, str)
                 ),
                 None,
             )
@@ -48,21 +49,21 @@ def frame_classes(module: ast.Module) -> dict[str, str]:
 
 def type_frame(node: ast.expr, classes: dict[str, str]) -> str | None:
     """The frame one type argument names: `"cam"`, `Literal["cam"]`, `Camera`, `frames.Camera`."""
-    if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value:
+    if isinstance(node, Constant) and isinstance(node.value, str) and node.value:
         return node.value.lower()
-    if isinstance(node, (ast.Name, ast.Attribute)):
+    if isinstance(node, (Name, Attribute)):
         name = last_name(node)
         assert name is not None
         return classes.get(name, name).lower()
-    if isinstance(node, ast.Subscript) and last_name(node.value) == "Literal":
+    if isinstance(node, Subscript) and last_name(node.value) == "Literal":
         return type_frame(node.slice, classes)
     return None
 
 
-def typed_frames(annotation: ast.AST | None, classes: dict[str, str]) -> NameFrames | None:
+def typed_frames(annotation: AST | None, classes: dict[str, str]) -> NameFrames | None:
     """What a geolint type states (`Transform[A, B]`: maps B into A; `Point[F]`: in F), else None.
     The caller decides the subscripted name is geolint's (this reads the text of the type only)."""
-    if not isinstance(annotation, ast.Subscript):
+    if not isinstance(annotation, Subscript):
         return None
     head = last_name(annotation.value)
     arguments = annotation.slice.elts if isinstance(annotation.slice, ast.Tuple) else [annotation.slice]

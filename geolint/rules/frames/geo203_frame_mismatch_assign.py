@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import AnnAssign, Assign, Attribute, Call, Name, Subscript
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.bosdyn import frame_comparison, in_tform_words
@@ -115,15 +116,15 @@ class FrameMismatchAssign(FactRule):
     ]
 
     def run(self) -> None:
-        for node in self.facts.index.nodes(ast.Assign, ast.AnnAssign):
-            if isinstance(node, ast.Assign):
+        for node in self.facts.index.nodes(Assign, AnnAssign):
+            if isinstance(node, Assign):
                 for target in node.targets:
                     self._check(target, node.value)
-            elif isinstance(node, ast.AnnAssign) and node.value is not None:
+            elif isinstance(node, AnnAssign) and node.value is not None:
                 self._check(node.target, node.value)
 
     def _check(self, target: ast.expr, value: ast.expr) -> None:
-        if not isinstance(target, ast.Name):
+        if not isinstance(target, Name):
             return
         facts = self.facts
         if any(facts.name_frames(target.id, order) is None for order in facts.readings()):
@@ -179,7 +180,7 @@ class FrameMismatchAssign(FactRule):
 
 
 def _mentions_name(value: ast.expr, name: str) -> bool:
-    return any(isinstance(node, ast.Name) and node.id == name for node in walk_within(value))
+    return any(isinstance(node, Name) and node.id == name for node in walk_within(value))
 
 
 def _reversed(stated: NameFrames, declared: NameFrames) -> bool:
@@ -193,27 +194,27 @@ def _swaps_frames(stated: NameFrames, actual: NameFrames) -> bool:
 
 def _is_relabel(value: ast.expr) -> bool:
     """A name, or a part of one (`verts_cam[mask]`, `meta["lidar2img"]`, `self.T_world_cam`): nothing computed."""
-    while isinstance(value, (ast.Subscript, ast.Attribute)):
+    while isinstance(value, (Subscript, Attribute)):
         value = value.value
-    return isinstance(value, ast.Name)
+    return isinstance(value, Name)
 
 
 def _is_copy(facts: FactBase, value: ast.expr) -> bool:
     """`T.copy()`, `np.copy(T)`, `copy.deepcopy(T)`, `T.clone()`."""
-    if not isinstance(value, ast.Call):
+    if not isinstance(value, Call):
         return False
     name = last_name(value.func)
     return name in ("copy", "deepcopy", "clone") or facts.is_array_call(value.func, "array", "copy") and bool(value.args)
 
 
-def _edited_in_place(facts: FactBase, target: ast.Name) -> bool:
+def _edited_in_place(facts: FactBase, target: Name) -> bool:
     """Whether the scope writes into the target after binding it (`T[:3, 3] = t`, `T.translation -= d`,
     `T += D`, or a later `T = f(T)`)."""
     scope = facts.index.scope_of(target)
     name = target.id
     if name in scope.subscript_stores or name in scope.augmented:
         return True
-    if any(isinstance(stored.value, ast.Name) and stored.value.id == name for stored, _ in scope.attribute_stores):
+    if any(isinstance(stored.value, Name) and stored.value.id == name for stored, _ in scope.attribute_stores):
         return True
     # `p_base = p_cam.T` then `p_base = np.dot(p_base, R.T)`: a later binding updates the name from itself
     return any(

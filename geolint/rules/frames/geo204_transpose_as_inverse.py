@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 import ast
+from ast import AST, Attribute, BinOp, Call, MatMult, Subscript
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import last_name, number
@@ -90,7 +91,7 @@ class TransposeAsInverse(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        for node in facts.index.nodes(ast.Attribute):
+        for node in facts.index.nodes(Attribute):
             if node.attr != "T":  # type: ignore[attr-defined]
                 continue
             fact = facts.frame_fact(node.value, facts.readings()[0])  # type: ignore[attr-defined]
@@ -109,28 +110,28 @@ class TransposeAsInverse(FactRule):
                 evidence=fact.evidence,
             )
 
-    def _is_row_form_or_rotation_block(self, node: ast.Attribute) -> bool:
+    def _is_row_form_or_rotation_block(self, node: Attribute) -> bool:
         facts = self.facts
         parent = facts.parent(node)
         if self._is_memory_layout(node, parent):
             return True
-        if isinstance(parent, ast.Subscript) and parent.value is node:
+        if isinstance(parent, Subscript) and parent.value is node:
             return facts.rotation_block_of(parent) is not None
-        if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.MatMult):
+        if isinstance(parent, BinOp) and isinstance(parent.op, MatMult):
             return parent.right is node
-        if isinstance(parent, ast.Call) and any(arg is node for arg in parent.args):
+        if isinstance(parent, Call) and any(arg is node for arg in parent.args):
             if facts.matmul(parent) is not None:
                 return parent.args[-1] is node
         return False
 
-    def _is_memory_layout(self, node: ast.Attribute, parent: ast.AST | None) -> bool:
+    def _is_memory_layout(self, node: Attribute, parent: AST | None) -> bool:
         """`T.T.flatten()`, `T.T.reshape(-1)`, `np.ravel(T.T)`, `glLoadMatrixf(T.T)`: a column-major buffer."""
-        if isinstance(parent, ast.Attribute) and parent.value is node:
+        if isinstance(parent, Attribute) and parent.value is node:
             if parent.attr == "reshape":
                 call = self.facts.parent(parent)
-                return isinstance(call, ast.Call) and _is_flat_shape(call.args)
+                return isinstance(call, Call) and _is_flat_shape(call.args)
             return parent.attr in _FLATTENING or parent.attr in _LAYOUT_COPIES
-        if isinstance(parent, ast.Call) and any(arg is node for arg in parent.args):
+        if isinstance(parent, Call) and any(arg is node for arg in parent.args):
             name = last_name(parent.func) or ""
             if name == "reshape":
                 return _is_flat_shape(parent.args[1:])

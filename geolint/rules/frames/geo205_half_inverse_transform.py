@@ -3,6 +3,22 @@
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST,
+    Add,
+    Assign,
+    Attribute,
+    AugAssign,
+    BinOp,
+    Call,
+    Constant,
+    Module,
+    Name,
+    Sub,
+    Subscript,
+    UnaryOp,
+    USub,
+)
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.pose_parts import (
@@ -182,34 +198,34 @@ class HalfInverseTransform(AstRule):
         ),
     ]
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         index = index_of(tree)
-        settled: set[ast.AST] = set()  # products already judged as part of a sum
-        for node in index.nodes(ast.BinOp):
-            if isinstance(node.op, (ast.Add, ast.Sub)):  # type: ignore[attr-defined]
+        settled: set[AST] = set()  # products already judged as part of a sum
+        for node in index.nodes(BinOp):
+            if isinstance(node.op, (Add, Sub)):  # type: ignore[attr-defined]
                 self._check_sum(node, index, settled)  # type: ignore[arg-type]
-        for node in index.nodes(ast.BinOp, ast.Call):
+        for node in index.nodes(BinOp, Call):
             if node not in settled and matmul_operands(node) is not None:
                 applied = application(node, index)  # type: ignore[arg-type]
                 if applied is not None and applied.product is node:
                     self._check_forward_of_difference(applied, index)
-        for node in index.nodes(ast.Assign, ast.AugAssign):
-            if isinstance(node, ast.Assign):
+        for node in index.nodes(Assign, AugAssign):
+            if isinstance(node, Assign):
                 self._check_block_write(node, index)
-            elif isinstance(node, ast.AugAssign) and isinstance(node.op, (ast.Add, ast.Sub)):
+            elif isinstance(node, AugAssign) and isinstance(node.op, (Add, Sub)):
                 self._check_in_place_row_form(node, index)
 
-    def _check_block_write(self, node: ast.Assign, index: ModuleIndex) -> None:
+    def _check_block_write(self, node: Assign, index: ModuleIndex) -> None:
         """`M[:3, 3] = -t` (or `t`) after `M[:3, :3] = R.T`, with R and t one pose's parts."""
         if len(node.targets) != 1:
             return
         target = node.targets[0]
-        if not isinstance(target, ast.Subscript):
+        if not isinstance(target, Subscript):
             return
         written = pose_part(target, index)
         if written is None or written.kind != "translation":
             return
-        value = node.value.operand if isinstance(node.value, ast.UnaryOp) and isinstance(node.value.op, ast.USub) else node.value
+        value = node.value.operand if isinstance(node.value, UnaryOp) and isinstance(node.value.op, USub) else node.value
         translation = pose_part(value, index)
         if translation is None or translation.kind != "translation" or translation.pose == written.pose:
             return
@@ -226,22 +242,22 @@ class HalfInverseTransform(AstRule):
             "The inverse's translation is -Rᵀ t",
         )
 
-    def _earlier_rotation_write(self, node: ast.Assign, target: ast.Subscript, index: ModuleIndex) -> ast.Assign | None:
+    def _earlier_rotation_write(self, node: Assign, target: Subscript, index: ModuleIndex) -> Assign | None:
         """The last `M[:3, :3] = ...` before this statement in the same block, for the same M."""
         block = self._block_of(node, index)
         found = None
         for statement in block:
             if statement is node:
                 return found
-            if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+            if isinstance(statement, Assign) and len(statement.targets) == 1:
                 other = statement.targets[0]
-                if isinstance(other, ast.Subscript) and same_code(other.value, target.value):
+                if isinstance(other, Subscript) and same_code(other.value, target.value):
                     part = pose_part(other, index)
                     if part is not None and part.kind == "rotation":
                         found = statement
         return None
 
-    def _check_in_place_row_form(self, node: ast.AugAssign, index: ModuleIndex) -> None:
+    def _check_in_place_row_form(self, node: AugAssign, index: ModuleIndex) -> None:
         """`x[:, :3] = x[:, :3] @ R` then `x[:, :3] -= t`: Rᵀ p - t, over two statements."""
         translation = pose_part(node.value, index)
         if translation is None or translation.kind != "translation" or translation.transposed:
@@ -251,7 +267,7 @@ class HalfInverseTransform(AstRule):
         if position == 0:
             return
         previous = block[position - 1]
-        if not (isinstance(previous, ast.Assign) and len(previous.targets) == 1 and same_code(previous.targets[0], node.target)):
+        if not (isinstance(previous, Assign) and len(previous.targets) == 1 and same_code(previous.targets[0], node.target)):
             return
         applied = application(previous.value, index)
         if applied is None or not applied.inverse or applied.rotation.pose != translation.pose:
@@ -262,7 +278,7 @@ class HalfInverseTransform(AstRule):
             return  # `info["rot"] = R` with R composed for `points @ R`: the module chose the layout
         if self._layout_unknown(applied, index):
             return
-        sign = "+" if isinstance(node.op, ast.Add) else "-"
+        sign = "+" if isinstance(node.op, Add) else "-"
         self.report(
             node,
             f"`{ast.unparse(node.target)}` was given the inverse rotation of a pose on line {previous.lineno} "
@@ -284,29 +300,29 @@ class HalfInverseTransform(AstRule):
             if inner is not node:
                 node = inner
                 continue
-            if isinstance(node, ast.Name):
+            if isinstance(node, Name):
                 value = resolve(index, node)
                 if isinstance(value, Unpacked):
-                    return isinstance(value.value, ast.Call) and self._project_callee(value.value, index)
+                    return isinstance(value.value, Call) and self._project_callee(value.value, index)
                 if value is node:
                     return False
                 node = value
                 continue
             break
-        if not (isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Constant) and isinstance(node.slice.value, str)):
+        if not (isinstance(node, Subscript) and isinstance(node.slice, Constant) and isinstance(node.slice.value, str)):
             return False
-        container = resolve(index, node.value) if isinstance(node.value, ast.Name) else node.value
+        container = resolve(index, node.value) if isinstance(node.value, Name) else node.value
         if isinstance(container, Unpacked):
             container = container.value
-        return isinstance(container, ast.Call) and self._project_callee(container, index)
+        return isinstance(container, Call) and self._project_callee(container, index)
 
-    def _project_callee(self, call: ast.Call, index: ModuleIndex) -> bool:
+    def _project_callee(self, call: Call, index: ModuleIndex) -> bool:
         """Whether the called function may be one of the project's (this module's, or an imported
         module the project's folders hold), not a library's."""
         root = call.func
-        while isinstance(root, ast.Attribute):
+        while isinstance(root, Attribute):
             root = root.value
-        if not isinstance(root, ast.Name):
+        if not isinstance(root, Name):
             return False
         if root is call.func and root.id in index.functions:
             return True
@@ -321,14 +337,14 @@ class HalfInverseTransform(AstRule):
         keys = set()
         for operand in matmul_operands(product) or ():
             read = transposed_operand(operand) or operand
-            if isinstance(read, ast.Subscript) and isinstance(read.slice, ast.Constant) and isinstance(read.slice.value, str):
+            if isinstance(read, Subscript) and isinstance(read.slice, Constant) and isinstance(read.slice.value, str):
                 keys.add(read.slice.value)
         if not keys:
             return False
-        for node in index.nodes(ast.Assign):
-            if isinstance(node, ast.Assign) and len(node.targets) == 1:
+        for node in index.nodes(Assign):
+            if isinstance(node, Assign) and len(node.targets) == 1:
                 target = node.targets[0]
-                if isinstance(target, ast.Subscript) and isinstance(target.slice, ast.Constant) and target.slice.value in keys:
+                if isinstance(target, Subscript) and isinstance(target.slice, Constant) and target.slice.value in keys:
                     stored = pose_part(node.value, index)
                     if stored is None or stored.transposed:
                         return True
@@ -344,9 +360,9 @@ class HalfInverseTransform(AstRule):
                 return block
         return [node]
 
-    def _check_sum(self, node: ast.BinOp, index: ModuleIndex, settled: set[ast.AST]) -> None:
+    def _check_sum(self, node: BinOp, index: ModuleIndex, settled: set[AST]) -> None:
         sides = [(node.left, node.right)]
-        if isinstance(node.op, ast.Add):
+        if isinstance(node.op, Add):
             sides.append((node.right, node.left))
         for applied_side, other in sides:
             applied = application(applied_side, index)
@@ -366,7 +382,7 @@ class HalfInverseTransform(AstRule):
             operand_part = pose_part(applied.operand, index)
             if operand_part is not None and operand_part.kind == "translation":
                 return  # R.T @ t: a camera centre being computed, not a point mapped
-            sign = "+" if isinstance(node.op, ast.Add) else "-"
+            sign = "+" if isinstance(node.op, Add) else "-"
             self.report(
                 node,
                 f"`{ast.unparse(node)}` applies the inverse rotation of a pose with its forward "
@@ -395,12 +411,12 @@ class HalfInverseTransform(AstRule):
         scope = scope_of(index, applied.product).node
         start = (applied.product.lineno, applied.product.col_offset)  # type: ignore[attr-defined]
         for node in ast.walk(scope):
-            if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add) and (node.lineno, node.col_offset) >= start:
+            if isinstance(node, BinOp) and isinstance(node.op, Add) and (node.lineno, node.col_offset) >= start:
                 for side in (node.left, node.right):
                     part = pose_part(side, index)
                     if part is not None and part.kind == "translation" and part.pose == applied.rotation.pose:
                         return True
-            if isinstance(node, ast.AugAssign) and isinstance(node.op, ast.Add) and (node.lineno, node.col_offset) >= start:
+            if isinstance(node, AugAssign) and isinstance(node.op, Add) and (node.lineno, node.col_offset) >= start:
                 part = pose_part(node.value, index)
                 if part is not None and part.kind == "translation" and part.pose == applied.rotation.pose:
                     return True

@@ -4,6 +4,19 @@ from __future__ import annotations
 
 import ast
 import re
+from ast import (
+    AST,
+    Assign,
+    AsyncFunctionDef,
+    Attribute,
+    AugAssign,
+    Constant,
+    FunctionDef,
+    Module,
+    Name,
+    Return,
+    Subscript,
+)
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.model import is_slice_upto, statements_under
@@ -100,18 +113,18 @@ class CallerTransformMutated(AstRule):
         ),
     ]
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         index = index_of(tree)
         # from the writes to a transform's part, few in any module, to the function each is in
         # (not every statement of every function)
-        for statement in index.nodes(ast.Assign, ast.AugAssign):
-            targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]  # type: ignore[attr-defined]
+        for statement in index.nodes(Assign, AugAssign):
+            targets = statement.targets if isinstance(statement, Assign) else [statement.target]  # type: ignore[attr-defined]
             for target in targets:
                 root = _transform_part_root(target)
                 if root is None:
                     continue
                 function = index.scope_of(statement).node
-                if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                if not isinstance(function, (FunctionDef, AsyncFunctionDef)):
                     continue  # module or class level: no caller's argument
                 if _MUTATOR_NAME.search(function.name) or not _returns_value(function):
                     continue
@@ -128,44 +141,44 @@ class CallerTransformMutated(AstRule):
                 )
 
 
-def _returns_value(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+def _returns_value(function: FunctionDef | AsyncFunctionDef) -> bool:
     return any(
-        isinstance(node, ast.Return) and node.value is not None and not (isinstance(node.value, ast.Constant) and node.value.value is None)
+        isinstance(node, Return) and node.value is not None and not (isinstance(node.value, Constant) and node.value.value is None)
         for node in _own_statements(function)
     )
 
 
-def _returns_name(function: ast.FunctionDef | ast.AsyncFunctionDef, names: set[str]) -> bool:
+def _returns_name(function: FunctionDef | AsyncFunctionDef, names: set[str]) -> bool:
     """Some `return` hands back one of `names` (alone or in a tuple)."""
     for statement in _own_statements(function):
-        if isinstance(statement, ast.Return) and statement.value is not None:
+        if isinstance(statement, Return) and statement.value is not None:
             returned = statement.value.elts if isinstance(statement.value, (ast.Tuple, ast.List)) else [statement.value]
-            if any(isinstance(value, ast.Name) and value.id in names for value in returned):
+            if any(isinstance(value, Name) and value.id in names for value in returned):
                 return True
     return False
 
 
-def _parameters_written_in_place(function: ast.FunctionDef | ast.AsyncFunctionDef, index: ModuleIndex) -> set[str]:
+def _parameters_written_in_place(function: FunctionDef | AsyncFunctionDef, index: ModuleIndex) -> set[str]:
     """The parameters whose elements the function stores into (`uv[i] = ...`, `out[:, 0] += d`)."""
     written = set()
     for statement in _own_statements(function):
-        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target] if isinstance(statement, ast.AugAssign) else []
+        targets = statement.targets if isinstance(statement, Assign) else [statement.target] if isinstance(statement, AugAssign) else []
         for target in targets:
-            if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
+            if isinstance(target, Subscript) and isinstance(target.value, Name):
                 parameter = _parameter_read_by(target.value, index)
                 if parameter is not None:
                     written.add(parameter)
     return written
 
 
-def _own_statements(function: ast.AST) -> list[ast.AST]:
+def _own_statements(function: AST) -> list[AST]:
     """The statements of a function, not of the functions and classes defined inside it."""
     return statements_under(function, into_definitions=False)
 
 
-def _transform_part_root(target: ast.expr) -> ast.Name | None:
+def _transform_part_root(target: ast.expr) -> Name | None:
     """The name whose translation or rotation `target` writes: `T[:3, 3]`, `tf.transform.translation.x`."""
-    if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
+    if isinstance(target, Subscript) and isinstance(target.value, Name):
         indices = matrix_indices(target)
         if indices is None:
             return None
@@ -177,24 +190,24 @@ def _transform_part_root(target: ast.expr) -> ast.Name | None:
             return target.value
         return None
     # A component of a message field: `tf.transform.translation.x`, `pose.orientation.w`.
-    if not (isinstance(target, ast.Attribute) and target.attr in ("x", "y", "z", "w")):
+    if not (isinstance(target, Attribute) and target.attr in ("x", "y", "z", "w")):
         return None
     part = target.value
-    if not (isinstance(part, ast.Attribute) and part.attr in _PART_ATTRIBUTES):
+    if not (isinstance(part, Attribute) and part.attr in _PART_ATTRIBUTES):
         return None
     node = part.value
-    while isinstance(node, ast.Attribute):
+    while isinstance(node, Attribute):
         node = node.value
-    return node if isinstance(node, ast.Name) else None
+    return node if isinstance(node, Name) else None
 
 
-def _parameter_read_by(name: ast.Name, index: ModuleIndex) -> str | None:
+def _parameter_read_by(name: Name, index: ModuleIndex) -> str | None:
     """The parameter `name` still is where it is written (through plain aliases `out = T`)."""
     for _ in range(6):
         if parameter_of(index, name) is not None:
             return name.id
         value = value_of(index, name)
-        if not isinstance(value, ast.Name):
+        if not isinstance(value, Name):
             return None
         name = value
     return None

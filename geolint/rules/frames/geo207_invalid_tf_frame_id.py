@@ -3,10 +3,14 @@
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, Add, Assign, AsyncFunctionDef, Attribute, BinOp, Call, ClassDef, Constant, FunctionDef, Import, ImportFrom,
+    JoinedStr, Module, Name,
+)
 import re
 
 from geolint.factbase import index_of, ros_packages
-from geolint.factbase.index import ModuleIndex
+from geolint.factbase.index import ModuleIndex, statement_list_fields
 from geolint.factbase.frame_ids import frame_string
 from geolint.factbase.pose_parts import call_name
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -153,7 +157,7 @@ class InvalidTfFrameId(AstRule):
         ),
     ]
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         dialect = self._dialect(tree)
         if dialect is None:
             return
@@ -161,13 +165,13 @@ class InvalidTfFrameId(AstRule):
         parents = index.parents
         static = "StaticTransformBroadcaster" in self.context.source or "static_transform" in self.context.source
         transforms = _TransformMessages(tree, parents)
-        for node in index.nodes(ast.Assign, ast.Call):
+        for node in index.nodes(Assign, Call):
             for site, value, role, slash_checked in _frame_sites(node, dialect, transforms, parents):
                 text = frame_string(value, index)
                 if not (slash_checked and text is not None and text.startswith("/")):
                     self._check_characters(site, value, text, index)
                     continue
-                literal = isinstance(value, ast.Constant)
+                literal = isinstance(value, Constant)
                 shown = repr(text) if literal else f"{ast.unparse(value)} (= {text!r})"
                 if role == "lookup":
                     problem = f"`{site}` raises InvalidArgumentException for {shown} (can_transform returns False)"
@@ -183,7 +187,7 @@ class InvalidTfFrameId(AstRule):
                     applicability="unsafe",
                     fix_description="drop the leading slash" if literal else "",
                 )
-        for scope in (tree, *index.nodes(ast.FunctionDef, ast.AsyncFunctionDef)):
+        for scope in (tree, *index.nodes(FunctionDef, AsyncFunctionDef)):
             self._check_transforms_of(scope, parents, static)
 
     def _check_characters(self, site: str, value: ast.expr, text: str | None, index: ModuleIndex) -> None:
@@ -197,7 +201,7 @@ class InvalidTfFrameId(AstRule):
             if text is None:
                 shown = f"`{ast.unparse(value)}` (literal part {part!r})"
             else:
-                shown = repr(text) if isinstance(value, ast.Constant) else f"`{ast.unparse(value)}` (= {text!r})"
+                shown = repr(text) if isinstance(value, Constant) else f"`{ast.unparse(value)}` (= {text!r})"
             self.report(
                 value,
                 f"frame id {shown} in `{site}` contains {what}: frame ids are names such as 'base_link', "
@@ -205,7 +209,7 @@ class InvalidTfFrameId(AstRule):
             )
             return
 
-    def _dialect(self, tree: ast.Module) -> str | None:
+    def _dialect(self, tree: Module) -> str | None:
         """TF2 for a tf2 or ROS 2 module, ROS1_TF2 for a ROS 1 module whose package targets tf2, else None."""
         if _TF2_TEXT.search(self.context.source):
             return TF2
@@ -217,19 +221,19 @@ class InvalidTfFrameId(AstRule):
             return None  # `tf` code: Noetic's tf strips the slash itself (tf.cpp strip_leading_slash)
         return ROS1_TF2 if ros_packages.package_targets_tf2(self.context.path) else None
 
-    def _check_transforms_of(self, scope: ast.AST, parents: dict[ast.AST, ast.AST], static: bool) -> None:
+    def _check_transforms_of(self, scope: AST, parents: dict[AST, AST], static: bool) -> None:
         """Self-transforms, and a child given two parents, among the literal frames set in one scope."""
-        frames: dict[str, dict[str, ast.Assign]] = {}  # message text -> {"parent"/"child": assignment}
+        frames: dict[str, dict[str, Assign]] = {}  # message text -> {"parent"/"child": assignment}
         for statement in _own_statements(scope):
-            if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
+            if not isinstance(statement, Assign) or len(statement.targets) != 1:
                 continue
             role_and_message = _frame_field(statement.targets[0])
             value = statement.value
-            if role_and_message is None or not (isinstance(value, ast.Constant) and isinstance(value.value, str)):
+            if role_and_message is None or not (isinstance(value, Constant) and isinstance(value.value, str)):
                 continue
             role, message = role_and_message
             frames.setdefault(message, {})[role] = statement
-        parents_of_child: dict[str, list[tuple[str, ast.Assign]]] = {}
+        parents_of_child: dict[str, list[tuple[str, Assign]]] = {}
         for fields in frames.values():
             parent, child = fields.get("parent"), fields.get("child")
             if parent is None or child is None:
@@ -258,12 +262,12 @@ class InvalidTfFrameId(AstRule):
 
 
 def _frame_sites(
-    node: ast.AST, dialect: str, transforms: _TransformMessages, parents: dict[ast.AST, ast.AST]
+    node: AST, dialect: str, transforms: _TransformMessages, parents: dict[AST, AST]
 ) -> list[tuple[str, ast.expr, str, bool]]:
     """(where, value, "lookup" or "stamp", whether a leading slash breaks it) for each frame id this node (an
     assignment, a call) sets or asks for."""
     found: list[tuple[str, ast.expr, str, bool]] = []
-    if isinstance(node, ast.Assign):
+    if isinstance(node, Assign):
         for target in node.targets:
             field = _frame_field(target)
             if field is None:
@@ -272,12 +276,12 @@ def _frame_sites(
             # read by tf2's setTransform (stripped) or by odometry consumers
             stripped = transforms.holds(field[1], node) or field[0] == "child" and dialect == ROS1_TF2
             found.append((ast.unparse(target), node.value, "stamp", not stripped))
-    elif isinstance(node, ast.Call):
+    elif isinstance(node, Call):
         name = call_name(node) or ""
         positions = _FRAME_ARGUMENTS.get(name, ())
-        if name in _BUFFER_ONLY and not _BUFFER_NAME.search(ast.unparse(node.func.value) if isinstance(node.func, ast.Attribute) else ""):
+        if name in _BUFFER_ONLY and not _BUFFER_NAME.search(ast.unparse(node.func.value) if isinstance(node.func, Attribute) else ""):
             positions = ()  # `transform` is a common name: only on a receiver named like a tf buffer
-        if isinstance(node.func, ast.Attribute):
+        if isinstance(node.func, Attribute):
             found.extend((name, node.args[position], "lookup", True) for position in positions if position < len(node.args))
         inside_transform = transforms.built_by(node, parents)
         if name == "Header" and len(node.args) >= 3:  # ROS 1 Header(seq, stamp, frame_id)
@@ -294,14 +298,14 @@ def _frame_sites(
 def _literal_parts(value: ast.expr, index: ModuleIndex) -> list[str]:
     """The literal text of a frame id built at run time: the known operands of a `+` chain and the
     literal pieces of an f-string (`prefix + '"vision'`: '"vision')."""
-    if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Add):
+    if isinstance(value, BinOp) and isinstance(value.op, Add):
         parts = []
         for operand in (value.left, value.right):
             text = frame_string(operand, index)
             parts.extend([text] if text is not None else _literal_parts(operand, index))
         return parts
-    if isinstance(value, ast.JoinedStr):
-        return [piece.value for piece in value.values if isinstance(piece, ast.Constant) and isinstance(piece.value, str)]
+    if isinstance(value, JoinedStr):
+        return [piece.value for piece in value.values if isinstance(piece, Constant) and isinstance(piece.value, str)]
     return []
 
 
@@ -310,50 +314,50 @@ class _TransformMessages:
     which strips a leading slash (geometry2 noetic-devel tf2/src/buffer_core.cpp:214-216; ROS 2
     rolling :208-209), so a slash there breaks nothing."""
 
-    def __init__(self, tree: ast.Module, parents: dict[ast.AST, ast.AST]) -> None:
+    def __init__(self, tree: Module, parents: dict[AST, AST]) -> None:
         self._parents = parents
-        self._by_scope: dict[ast.AST, set[str]] = {}
+        self._by_scope: dict[AST, set[str]] = {}
         self._tree = tree
 
-    def holds(self, message: str, node: ast.AST) -> bool:
+    def holds(self, message: str, node: AST) -> bool:
         if ".transforms[" in message or message.endswith(".transform"):
             return True
-        scope = _enclosing(node, self._parents, (ast.FunctionDef, ast.AsyncFunctionDef))
+        scope = _enclosing(node, self._parents, (FunctionDef, AsyncFunctionDef))
         if message in self._of(scope or self._tree):
             return True
         if message.startswith("self."):  # stored on the object by another method
-            owner = _enclosing(node, self._parents, (ast.ClassDef,))
+            owner = _enclosing(node, self._parents, (ClassDef,))
             return owner is not None and message in self._of(owner)
         return False
 
-    def built_by(self, call: ast.Call, parents: dict[ast.AST, ast.AST]) -> bool:
+    def built_by(self, call: Call, parents: dict[AST, AST]) -> bool:
         """`call` is an argument (`header=Header(...)`) of a `TransformStamped(...)`."""
         parent = parents.get(call)
         if isinstance(parent, ast.keyword):
             parent = parents.get(parent)
-        return isinstance(parent, ast.Call) and call_name(parent) == "TransformStamped"
+        return isinstance(parent, Call) and call_name(parent) == "TransformStamped"
 
-    def _of(self, scope: ast.AST) -> set[str]:
+    def _of(self, scope: AST) -> set[str]:
         known = self._by_scope.get(scope)
         if known is None:
             known = self._by_scope[scope] = _transform_names(scope)
         return known
 
 
-def _transform_names(scope: ast.AST) -> set[str]:
+def _transform_names(scope: AST) -> set[str]:
     """Texts of the messages a scope builds as `TransformStamped()` or hands to a broadcaster."""
     names: set[str] = set()
     for node in ast.walk(scope):
-        if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call) and call_name(node.value) == "TransformStamped":
+        if isinstance(node, Assign) and isinstance(node.value, Call) and call_name(node.value) == "TransformStamped":
             names.update(ast.unparse(target) for target in node.targets)
-        elif isinstance(node, ast.Call) and call_name(node) in _SETS_TRANSFORMS:
+        elif isinstance(node, Call) and call_name(node) in _SETS_TRANSFORMS:
             for argument in node.args[:1]:
                 items = argument.elts if isinstance(argument, (ast.List, ast.Tuple)) else [argument]
                 names.update(ast.unparse(item) for item in items)
     return names
 
 
-def _enclosing(node: ast.AST, parents: dict[ast.AST, ast.AST], kinds: tuple[type, ...]) -> ast.AST | None:
+def _enclosing(node: AST, parents: dict[AST, AST], kinds: tuple[type, ...]) -> AST | None:
     current = parents.get(node)
     while current is not None and not isinstance(current, kinds):
         current = parents.get(current)
@@ -362,10 +366,10 @@ def _enclosing(node: ast.AST, parents: dict[ast.AST, ast.AST], kinds: tuple[type
 
 def _imported_modules(index: ModuleIndex) -> list[str]:
     found: list[str] = []
-    for node in index.nodes(ast.Import, ast.ImportFrom):
-        if isinstance(node, ast.Import):
+    for node in index.nodes(Import, ImportFrom):
+        if isinstance(node, Import):
             found.extend(alias.name for alias in node.names)
-        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+        elif isinstance(node, ImportFrom) and node.module and not node.level:
             found.append(node.module)
     return found
 
@@ -376,23 +380,23 @@ def _uses_old_tf(index: ModuleIndex, imported: list[str]) -> bool:
     if not any(name == "tf" or name.startswith("tf.") for name in imported):
         return False
     aliases: set[str] = set()
-    for node in index.nodes(ast.Import, ast.ImportFrom):
-        if isinstance(node, ast.ImportFrom) and node.module and not node.level:
+    for node in index.nodes(Import, ImportFrom):
+        if isinstance(node, ImportFrom) and node.module and not node.level:
             if node.module == "tf" and any(alias.name != "transformations" for alias in node.names):
                 return True
             if node.module.startswith("tf.") and node.module != "tf.transformations":
                 return True
-        elif isinstance(node, ast.Import):
+        elif isinstance(node, Import):
             aliases.update(alias.asname or alias.name for alias in node.names if alias.name == "tf")
             if any(alias.name.startswith("tf.") and alias.name != "tf.transformations" for alias in node.names):
                 return True
     return any(
-        isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in aliases and node.attr != "transformations"
-        for node in index.nodes(ast.Attribute)
+        isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id in aliases and node.attr != "transformations"
+        for node in index.nodes(Attribute)
     )
 
 
-def _is_frame_call(call: ast.Call, keyword: str | None) -> bool:
+def _is_frame_call(call: Call, keyword: str | None) -> bool:
     """`target=`/`source=` are frame ids only for tf2 calls; `frame_id=` everywhere."""
     return keyword in ("frame_id", "child_frame_id") or call_name(call) in _FRAME_ARGUMENTS
 
@@ -400,34 +404,36 @@ def _is_frame_call(call: ast.Call, keyword: str | None) -> bool:
 def _frame_field(target: ast.expr) -> tuple[str, str] | None:
     """("parent" or "child", the message's text) for `m.header.frame_id` / `m.child_frame_id`, and
     ("parent", "header") for a `header.frame_id` of its own (`header = Header()`)."""
-    if not isinstance(target, ast.Attribute):
+    if not isinstance(target, Attribute):
         return None
     if target.attr == "child_frame_id":
         return "child", ast.unparse(target.value)
-    if target.attr == "frame_id" and isinstance(target.value, ast.Attribute) and target.value.attr == "header":
+    if target.attr == "frame_id" and isinstance(target.value, Attribute) and target.value.attr == "header":
         return "parent", ast.unparse(target.value.value)
-    if target.attr == "frame_id" and isinstance(target.value, ast.Name) and target.value.id.lower().endswith("header"):
+    if target.attr == "frame_id" and isinstance(target.value, Name) and target.value.id.lower().endswith("header"):
         return "parent", target.value.id
     return None
 
 
-def _own_statements(scope: ast.AST) -> list[ast.stmt]:
+def _own_statements(scope: AST) -> list[ast.stmt]:
     found: list[ast.stmt] = []
     stack = list(reversed(getattr(scope, "body", [])))
     while stack:
         statement = stack.pop()
         found.append(statement)
-        if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+        if isinstance(statement, (FunctionDef, AsyncFunctionDef, ClassDef)):
             continue
+        fields = statement_list_fields(statement)
         for field in ("finalbody", "orelse", "handlers", "body"):
-            stack.extend(reversed(getattr(statement, field, [])))
+            if field in fields:
+                stack.extend(reversed(getattr(statement, field)))
     return found
 
 
-def _exclusive(first: ast.AST, second: ast.AST, parents: dict[ast.AST, ast.AST]) -> bool:
+def _exclusive(first: AST, second: AST, parents: dict[AST, AST]) -> bool:
     """The two statements sit in different arms of one `if`/`try`/`match` (never both run)."""
-    chain: dict[ast.AST, ast.AST] = {}
-    node: ast.AST | None = first
+    chain: dict[AST, AST] = {}
+    node: AST | None = first
     while node is not None:
         parent = parents.get(node)
         if parent is not None:
@@ -442,7 +448,7 @@ def _exclusive(first: ast.AST, second: ast.AST, parents: dict[ast.AST, ast.AST])
     return False
 
 
-def _arm_of(owner: ast.AST, child: ast.AST) -> str:
+def _arm_of(owner: AST, child: AST) -> str:
     for field in ("body", "orelse", "handlers", "finalbody", "cases"):
         if child in getattr(owner, field, []):
             return field if field != "handlers" and field != "cases" else f"{field}{id(child)}"

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import Assign, Attribute, Call, Constant, Module, Name
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.index import module_constant
@@ -94,16 +95,16 @@ class TfLookupSourceMismatch(AstRule):
         ),
     ]
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         index = index_of(tree)
-        for node in index.nodes(ast.Call):
-            if not (isinstance(node, ast.Call) and (call_name(node) or "").startswith("do_transform_") and len(node.args) >= 2):
+        for node in index.nodes(Call):
+            if not (isinstance(node, Call) and (call_name(node) or "").startswith("do_transform_") and len(node.args) >= 2):
                 continue
             message, transform = node.args[0], node.args[1]
-            if not isinstance(message, ast.Name) or not isinstance(transform, ast.Name):
+            if not isinstance(message, Name) or not isinstance(transform, Name):
                 continue
             lookup = resolve(index, transform)
-            if isinstance(lookup, ast.Call) and call_name(lookup) == "lookup_transform" and len(lookup.args) >= 2:
+            if isinstance(lookup, Call) and call_name(lookup) == "lookup_transform" and len(lookup.args) >= 2:
                 source = _literal(lookup.args[1], index)
                 target = _literal(lookup.args[0], index)
                 stated = f"lookup_transform({target!r}, {source!r})"
@@ -122,7 +123,7 @@ class TfLookupSourceMismatch(AstRule):
                 frames=(source.lstrip("/"), stamped.lstrip("/")),
             )
 
-    def _frame_set_before(self, owner: ast.Name, call: ast.Call, index: ModuleIndex, path: tuple[str, ...]) -> str | None:
+    def _frame_set_before(self, owner: Name, call: Call, index: ModuleIndex, path: tuple[str, ...]) -> str | None:
         """The literal of the last `owner.<path> = ...` (`msg.header.frame_id`, `t.child_frame_id`) before
         the call, in its function."""
         scope = scope_of(index, call)
@@ -135,7 +136,7 @@ class TfLookupSourceMismatch(AstRule):
         since = definition.point
         found: tuple[tuple[int, int], ast.expr] | None = None
         for node in ast.walk(scope.node):
-            if not isinstance(node, ast.Assign) or len(node.targets) != 1:
+            if not isinstance(node, Assign) or len(node.targets) != 1:
                 continue
             target = node.targets[0]
             if (
@@ -157,19 +158,19 @@ class TfLookupSourceMismatch(AstRule):
 def _attribute_path(node: ast.expr, owner: str) -> tuple[str, ...] | None:
     """`("header", "frame_id")` for `owner.header.frame_id`; None when the chain is not rooted at `owner`."""
     parts: list[str] = []
-    while isinstance(node, ast.Attribute):
+    while isinstance(node, Attribute):
         parts.append(node.attr)
         node = node.value
-    return tuple(reversed(parts)) if isinstance(node, ast.Name) and node.id == owner else None
+    return tuple(reversed(parts)) if isinstance(node, Name) and node.id == owner else None
 
 
 def _literal(node: ast.expr, index: ModuleIndex) -> str | None:
     """A string literal, or a name that certainly holds one (a module constant)."""
-    if isinstance(node, ast.Name):
+    if isinstance(node, Name):
         resolved = resolve(index, node)
-        constant = module_constant(index, node.id) if isinstance(resolved, ast.Name) else resolved
+        constant = module_constant(index, node.id) if isinstance(resolved, Name) else resolved
         node = constant if isinstance(constant, ast.expr) else node
-    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+    if isinstance(node, Constant) and isinstance(node.value, str):
         return node.value
     return None
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import AnnAssign, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Name, Starred, Subscript
 
 from geolint.factbase.extrinsics import (
     C2W,
@@ -185,11 +186,11 @@ class ExtrinsicsDirectionMismatch(FactRule):
     def run(self) -> None:
         facts = self.facts
         self.evidence = ExtrinsicsEvidence(facts)
-        for node in facts.index.nodes(ast.Assign, ast.AnnAssign, ast.Call, ast.Dict):
-            if isinstance(node, ast.Assign):
+        for node in facts.index.nodes(Assign, AnnAssign, Call, ast.Dict):
+            if isinstance(node, Assign):
                 for target in node.targets:
                     self._stored(node, target, node.value)
-            elif isinstance(node, ast.AnnAssign):
+            elif isinstance(node, AnnAssign):
                 if node.value is not None:
                     self._stored(node, node.target, node.value)
             elif isinstance(node, ast.Dict):
@@ -201,30 +202,30 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 self._call(node)  # type: ignore[arg-type]
 
     # -- sinks -------------------------------------------------------------------------------------
-    def _stored(self, statement: ast.Assign | ast.AnnAssign, target: ast.expr, value: ast.expr) -> None:
-        if isinstance(target, ast.Subscript):
+    def _stored(self, statement: Assign | AnnAssign, target: ast.expr, value: ast.expr) -> None:
+        if isinstance(target, Subscript):
             key = string(target.slice)
             stated = key_extrinsic(key) if key is not None else None
             if stated is not None and not _mentions(value, target):
                 self._compare(value, stated, f"key {key!r}")
             return
-        name = target.id if isinstance(target, ast.Name) else target.attr if isinstance(target, ast.Attribute) else None
+        name = target.id if isinstance(target, Name) else target.attr if isinstance(target, Attribute) else None
         if name is None:
             return
         stated = name_extrinsic(self.facts, name)
         if stated is None or _mentions(value, target):
             return  # `c2w = np.linalg.inv(c2w)`: a name updated from itself holds both directions
-        if isinstance(target, ast.Name) and is_blank_matrix(value):
+        if isinstance(target, Name) and is_blank_matrix(value):
             self._blocks(statement, target, stated)
             return
-        if isinstance(target, ast.Name):
+        if isinstance(target, Name):
             if self.evidence.block_stores(target, binding=id(statement)):
                 return  # a start value edited in place: the name describes the value after the edits
             if any(self.facts.frame_fact(value, order) is not None for order in self.facts.readings()):
                 return  # frames GEO203 sees and compares
         self._compare(value, stated, f"`{self.code_of(target)}`")
 
-    def _blocks(self, statement: ast.stmt, target: ast.Name, stated: Extrinsic) -> None:
+    def _blocks(self, statement: ast.stmt, target: Name, stated: Extrinsic) -> None:
         """`T = np.eye(4); T[:3, :3] = R; T[:3, 3] = t`: the blocks' direction against T's name."""
         parts = self.evidence.block_parts(self.evidence.block_stores(target, binding=id(statement)))
         if not parts or len({part.direction for _, part in parts}) != 1:
@@ -243,7 +244,7 @@ class ExtrinsicsDirectionMismatch(FactRule):
             evidence=(*stated.evidence, *evidence),
         )
 
-    def _call(self, call: ast.Call) -> None:
+    def _call(self, call: Call) -> None:
         for keyword in call.keywords:
             if keyword.arg is not None:
                 stated = name_extrinsic(self.facts, keyword.arg)
@@ -252,7 +253,7 @@ class ExtrinsicsDirectionMismatch(FactRule):
         function, parameters = self._callee(call)
         if function is not None:
             for argument, parameter in zip(call.args, parameters):
-                if isinstance(argument, ast.Starred):
+                if isinstance(argument, Starred):
                     break
                 stated = name_extrinsic(self.facts, parameter.arg)
                 if stated is not None:
@@ -266,7 +267,7 @@ class ExtrinsicsDirectionMismatch(FactRule):
             stated = Extrinsic(C2W, POSE, ("pyrender: a node's pose maps it into the scene",))
             self._compare(camera_pose, stated, "the pose of a pyrender camera node", names_both_sides=True)
         func = call.func
-        if isinstance(func, ast.Attribute) and func.attr == "transform" and len(call.args) == 1 and not call.keywords:
+        if isinstance(func, Attribute) and func.attr == "transform" and len(call.args) == 1 and not call.keywords:
             why = camera_frame_cloud(self.evidence, func.value, call)
             if why is None:
                 return
@@ -279,17 +280,17 @@ class ExtrinsicsDirectionMismatch(FactRule):
                     evidence=(why, *moved.evidence),
                 )
 
-    def _callee(self, call: ast.Call) -> tuple[ast.FunctionDef | ast.AsyncFunctionDef | None, list[ast.arg]]:
+    def _callee(self, call: Call) -> tuple[FunctionDef | AsyncFunctionDef | None, list[ast.arg]]:
         """The project function a call runs (`render(...)` of this module or of a project module it
         imports, or `self.render(...)` when one method of the module has that name) and the
         parameters its positional arguments fill."""
         index = self.facts.index
         func = call.func
-        found = self.facts.called_function(call) if isinstance(func, (ast.Name, ast.Attribute)) else None
+        found = self.facts.called_function(call) if isinstance(func, (Name, Attribute)) else None
         if found is not None:
             function = found[1]
             return function, [*function.args.posonlyargs, *function.args.args]
-        if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "self":
+        if isinstance(func, Attribute) and isinstance(func.value, Name) and func.value.id == "self":
             methods = index.methods.get(func.attr, [])
             if len(methods) == 1:
                 function = methods[0]
@@ -314,8 +315,8 @@ def _mentions(value: ast.expr, target: ast.expr) -> bool:
     """Whether the value reads the target (`c2w = c2w[[1, 0, 2, 3]]`, `f["m"] = inv(f["m"])`)."""
     text = ast.unparse(target)
     for node in walk_within(value):
-        if isinstance(node, ast.Name) and isinstance(target, ast.Name) and node.id == target.id:
+        if isinstance(node, Name) and isinstance(target, Name) and node.id == target.id:
             return True
-        if isinstance(node, type(target)) and not isinstance(target, ast.Name) and ast.unparse(node) == text:
+        if isinstance(node, type(target)) and not isinstance(target, Name) and ast.unparse(node) == text:
             return True
     return False

@@ -3,9 +3,36 @@
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST,
+    AnnAssign,
+    Assign,
+    AsyncFunctionDef,
+    Attribute,
+    AugAssign,
+    BinOp,
+    Call,
+    ClassDef,
+    Compare,
+    Constant,
+    FunctionDef,
+    Lambda,
+    Name,
+    Return,
+    Starred,
+    Store,
+    Subscript,
+)
 from typing import TYPE_CHECKING
 
-from geolint.factbase.extrinsics import DATA, EXTRINSIC_ATTRIBUTES, TRANSLATION, W2C, Extrinsic, ExtrinsicsEvidence
+from geolint.factbase.extrinsics import (
+    DATA,
+    EXTRINSIC_ATTRIBUTES,
+    TRANSLATION,
+    W2C,
+    Extrinsic,
+    ExtrinsicsEvidence,
+)
 from geolint.factbase.pose_parts import call_name, int_value
 from geolint.factbase.reaching import value_of
 
@@ -116,28 +143,28 @@ class CameraCenterFromTranslation(FactRule):
     def run(self) -> None:
         facts = self.facts
         evidence = ExtrinsicsEvidence(facts)
-        for node in facts.index.nodes(ast.Assign, ast.AnnAssign, ast.Dict, ast.Call):
+        for node in facts.index.nodes(Assign, AnnAssign, ast.Dict, Call):
             if isinstance(node, ast.Dict):
                 for key, item in zip(node.keys, node.values):
-                    if isinstance(key, ast.Constant) and isinstance(key.value, str) and _is_position_key(key.value):
+                    if isinstance(key, Constant) and isinstance(key.value, str) and _is_position_key(key.value):
                         self._check(evidence, key, item, is_camera_centre_name(key.value))
                 continue
-            if isinstance(node, ast.Call):
+            if isinstance(node, Call):
                 for keyword in node.keywords:
                     if keyword.arg is not None and _is_position_key(keyword.arg):
                         self._check(evidence, keyword, keyword.value, is_camera_centre_name(keyword.arg))
                 continue
-            targets = node.targets if isinstance(node, ast.Assign) else [node.target]  # type: ignore[attr-defined]
+            targets = node.targets if isinstance(node, Assign) else [node.target]  # type: ignore[attr-defined]
             value = node.value  # type: ignore[attr-defined]
             if value is None:
                 continue
             for target in targets:
-                name = target.id if isinstance(target, ast.Name) else target.attr if isinstance(target, ast.Attribute) else None
+                name = target.id if isinstance(target, Name) else target.attr if isinstance(target, Attribute) else None
                 if name is None or not is_camera_centre_name(name):
                     continue
                 self._check(evidence, target, value, True)
 
-    def _check(self, evidence: ExtrinsicsEvidence, destination: ast.AST, value: ast.expr, says_camera: bool) -> None:
+    def _check(self, evidence: ExtrinsicsEvidence, destination: AST, value: ast.expr, says_camera: bool) -> None:
         """`says_camera`: the destination names a camera position (`cam_center`); a plain `location` /
         `position` key or keyword does not, so then only data evidence counts (BOP keys, COLMAP's
         `tvec`), never a name alone (`W2C = np.linalg.inv(Rt)` in code whose names are not to be trusted)."""
@@ -146,7 +173,7 @@ class CameraCenterFromTranslation(FactRule):
             return
         if not says_camera and (found.strength != DATA or any(_AMBIGUOUS_SOURCE in e for e in found.evidence)):
             return  # `{"position": marker.tvec}`: OpenCV's tvec is an object's position in the camera
-        if isinstance(destination, ast.Constant):
+        if isinstance(destination, Constant):
             where = f"the key {destination.value!r}"
         elif isinstance(destination, ast.keyword):
             where = f"`{destination.arg}=`"
@@ -170,10 +197,10 @@ class CameraCenterFromTranslation(FactRule):
         found = evidence.of(value)
         if found is not None or depth <= 0:
             return found
-        if isinstance(value, ast.Name):
+        if isinstance(value, Name):
             held = value_of(self.facts.index, value)
             return self._translation(evidence, held, depth - 1) if isinstance(held, ast.expr) else None
-        if not isinstance(value, ast.Call) or not value.args or isinstance(value.args[0], ast.Starred):
+        if not isinstance(value, Call) or not value.args or isinstance(value.args[0], Starred):
             return None
         if call_name(value) in ("list", "tuple", "Vector") and len(value.args) == 1:
             return self._translation(evidence, value.args[0], depth - 1)
@@ -185,11 +212,11 @@ class CameraCenterFromTranslation(FactRule):
             return None
         return Extrinsic(inner.direction, inner.part, (*inner.evidence, f"axes relabelled by `{call_name(value)}`"), inner.strength)
 
-    def _static_method(self, call: ast.Call) -> tuple[FactBase, ast.FunctionDef | ast.AsyncFunctionDef] | None:
+    def _static_method(self, call: Call) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
         """`Utility.to_blender_axes(p)` with `Utility` a class of this module or imported from a project
         module: its static method (`called_function` resolves module functions only)."""
         func = call.func
-        if not (isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name)):
+        if not (isinstance(func, Attribute) and isinstance(func.value, Name)):
             return None
         qualified = self.facts.index.imports.get(func.value.id)
         found = self.facts._defining_module(qualified, self.facts.path) if qualified else (self.facts, func.value.id)
@@ -197,12 +224,12 @@ class CameraCenterFromTranslation(FactRule):
             return None
         other, class_name = found
         for statement in other.index.tree.body:
-            if isinstance(statement, ast.ClassDef) and statement.name == class_name:
+            if isinstance(statement, ClassDef) and statement.name == class_name:
                 for method in statement.body:
                     if (
-                        isinstance(method, (ast.FunctionDef, ast.AsyncFunctionDef))
+                        isinstance(method, (FunctionDef, AsyncFunctionDef))
                         and method.name == func.attr
-                        and any(isinstance(d, ast.Name) and d.id == "staticmethod" for d in method.decorator_list)
+                        and any(isinstance(d, Name) and d.id == "staticmethod" for d in method.decorator_list)
                     ):
                         return other, method
         return None
@@ -218,7 +245,7 @@ def _is_position_key(key: str) -> bool:
     return key in _POSITION_KEYS or is_camera_centre_name(key)
 
 
-def relabels_axes(parents: dict[ast.AST, ast.AST], function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+def relabels_axes(parents: dict[AST, AST], function: FunctionDef | AsyncFunctionDef) -> bool:
     """The function returns its first argument with axes reordered or negated, nothing else: it reads
     the argument only as `p[0]`, `p[1]`, `p[2]`, `p[i]` (or passes it to `isinstance` / `len`), never in
     arithmetic other than a negation, and returns something that is not a constant."""
@@ -231,24 +258,24 @@ def relabels_axes(parents: dict[ast.AST, ast.AST], function: ast.FunctionDef | a
     indexed = False
     returns = False
     for node in ast.walk(function):
-        if isinstance(node, ast.Return):
-            if node.value is None or isinstance(node.value, ast.Constant):
+        if isinstance(node, Return):
+            if node.value is None or isinstance(node.value, Constant):
                 return False
             returns = True
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)) and node is not function:
+        if isinstance(node, (FunctionDef, AsyncFunctionDef, Lambda)) and node is not function:
             return False
-        if not (isinstance(node, ast.Name) and node.id == name):
+        if not (isinstance(node, Name) and node.id == name):
             continue
-        if isinstance(node.ctx, ast.Store):
+        if isinstance(node.ctx, Store):
             return False  # rebound
         parent = parents.get(node)
-        if isinstance(parent, ast.Subscript) and parent.value is node and (int_value(parent.slice) in (0, 1, 2) or isinstance(parent.slice, ast.Name)):
+        if isinstance(parent, Subscript) and parent.value is node and (int_value(parent.slice) in (0, 1, 2) or isinstance(parent.slice, Name)):
             indexed = True
             grand = parents.get(parent)
-            if isinstance(grand, (ast.BinOp, ast.AugAssign, ast.Compare)):
+            if isinstance(grand, (BinOp, AugAssign, Compare)):
                 return False  # arithmetic on a component: more than a relabelling
             continue
-        if isinstance(parent, ast.Call) and call_name(parent) in ("isinstance", "len", "type") and node in parent.args:
+        if isinstance(parent, Call) and call_name(parent) in ("isinstance", "len", "type") and node in parent.args:
             continue
         if isinstance(parent, ast.arg):
             continue

@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, Add, Assign, AsyncFunctionDef, Attribute, BinOp, Call, FunctionDef, Load, MatMult, Mult, Name, Slice,
+    Starred, Subscript,
+)
 
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE
@@ -156,16 +160,16 @@ class DirectionTranslated(FactRule):
     # homogeneous w = 1 -----------------------------------------------------------------
     def run(self) -> None:
         facts = self.facts
-        for node in facts.index.nodes(ast.Call, ast.Subscript, ast.BinOp):
-            if isinstance(node, ast.BinOp):
+        for node in facts.index.nodes(Call, Subscript, BinOp):
+            if isinstance(node, BinOp):
                 self._check_binary(node)
                 continue
             self._check_homogeneous(node)  # type: ignore[arg-type]
-            if isinstance(node, ast.Call):
+            if isinstance(node, Call):
                 self._check_library_call(node)
                 self._check_helper_call(node)
 
-    def _check_helper_call(self, node: ast.Call) -> None:
+    def _check_helper_call(self, node: Call) -> None:
         """`apply_pose(T, normals)` where the helper (here or in an imported project module) does `R @ x + t`."""
         facts = self.facts
         if not facts.may_have_summary(node):
@@ -218,12 +222,12 @@ class DirectionTranslated(FactRule):
         partner = self._partner_in_product(node, parent)
         if partner is not None:
             return [partner]
-        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+        if not (isinstance(parent, Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], Name)):
             return []
         name, scope = parent.targets[0].id, facts.index.scope_of(parent)
         partners = []
         for use in ast.walk(scope.node):
-            if not (isinstance(use, ast.Name) and use.id == name and isinstance(use.ctx, ast.Load)) or facts.index.scope_of(use) is not scope:
+            if not (isinstance(use, Name) and use.id == name and isinstance(use.ctx, Load)) or facts.index.scope_of(use) is not scope:
                 continue
             partner = self._partner_in_product(*self._above_transposes(use))
             if partner is None:
@@ -231,14 +235,14 @@ class DirectionTranslated(FactRule):
             partners.append(partner)
         return partners
 
-    def _above_transposes(self, node: ast.AST) -> tuple[ast.AST, ast.AST | None]:
+    def _above_transposes(self, node: AST) -> tuple[AST, AST | None]:
         """`node` or the outermost transpose of it (`x.T`, `x.transpose(-1, -2)`), and its parent."""
         parent = self.facts.parent(node)
         while parent is not None and is_transpose(parent):
             node, parent = parent, self.facts.parent(parent)
         return node, parent
 
-    def _partner_in_product(self, operand: ast.AST, parent: ast.AST | None) -> ast.expr | None:
+    def _partner_in_product(self, operand: AST, parent: AST | None) -> ast.expr | None:
         """The other operand of `parent` when it is a matrix product of `operand`, else None."""
         product = self.facts.matmul(parent) if parent is not None else None
         if product is None or operand not in (product.left, product.right):
@@ -257,20 +261,20 @@ class DirectionTranslated(FactRule):
             inner = transposed_value(matrix)
             if inner is not None:
                 matrix = inner
-            elif isinstance(matrix, ast.Subscript) and all(isinstance(part, ast.Slice) for part in subscript_parts(matrix)):
+            elif isinstance(matrix, Subscript) and all(isinstance(part, Slice) for part in subscript_parts(matrix)):
                 matrix = matrix.value  # a block of a matrix without translation has none
-            elif isinstance(matrix, ast.Call) and isinstance(matrix.func, ast.Attribute) and matrix.func.attr in vocab.PASSTHROUGH_METHODS:
+            elif isinstance(matrix, Call) and isinstance(matrix.func, Attribute) and matrix.func.attr in vocab.PASSTHROUGH_METHODS:
                 matrix = matrix.func.value  # `.to(device)`, `.float()`
             else:
                 break
-        if isinstance(matrix, ast.Call):
+        if isinstance(matrix, Call):
             if facts.is_array_call(matrix.func, "eye", "identity"):
                 return False
             return _untranslated_element(facts, matrix, None) is not True
-        if isinstance(matrix, ast.Subscript):
+        if isinstance(matrix, Subscript):
             index = number(matrix.slice)
-            return not (isinstance(matrix.value, ast.Call) and index is not None and _untranslated_element(facts, matrix.value, int(index)))
-        if not isinstance(matrix, ast.Name) or depth >= 8:
+            return not (isinstance(matrix.value, Call) and index is not None and _untranslated_element(facts, matrix.value, int(index)))
+        if not isinstance(matrix, Name) or depth >= 8:
             return True
         scope = facts.index.scope_of(matrix)
         if matrix.id in scope.subscript_stores or matrix.id in scope.augmented:
@@ -283,7 +287,7 @@ class DirectionTranslated(FactRule):
                 if self._may_translate(binding, depth + 1):
                     return True
             elif isinstance(binding, UnpackBinding):
-                if not (isinstance(binding.value, ast.Call) and _untranslated_element(facts, binding.value, binding.position)):
+                if not (isinstance(binding.value, Call) and _untranslated_element(facts, binding.value, binding.position)):
                     return True
             elif not isinstance(binding, ParamBinding) or self._argument_may_translate(binding, depth + 1):
                 return True
@@ -295,22 +299,22 @@ class DirectionTranslated(FactRule):
         otherwise (passed as a callback, called on another object) may be given anything."""
         facts = self.facts
         function = parameter.function
-        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)) or not function.name.startswith("_") or function.name.startswith("__"):
+        if not isinstance(function, (FunctionDef, AsyncFunctionDef)) or not function.name.startswith("_") or function.name.startswith("__"):
             return True
         params = [arg.arg for arg in (*function.args.posonlyargs, *function.args.args)]
         name = parameter.arg.arg
-        calls = [call for call in facts.index.nodes(ast.Call) if last_name(call.func) == function.name]  # type: ignore[attr-defined]
+        calls = [call for call in facts.index.nodes(Call) if last_name(call.func) == function.name]  # type: ignore[attr-defined]
         if facts.index.source.count(function.name) != len(calls) + 1:
             return True  # named elsewhere than its definition and its calls
         for call in calls:
-            assert isinstance(call, ast.Call)
+            assert isinstance(call, Call)
             if facts.own_method(call) is function:
                 position = params.index(name) - 1 if name in params else None
             elif facts.called_function(call) == (facts, function):
                 position = params.index(name) if name in params else None
             else:
                 return True  # a call of another object's method of that name
-            if any(isinstance(arg, ast.Starred) for arg in call.args) or any(given.arg is None for given in call.keywords):
+            if any(isinstance(arg, Starred) for arg in call.args) or any(given.arg is None for given in call.keywords):
                 return True
             given = keyword(call, name)
             if given is not None:
@@ -323,9 +327,9 @@ class DirectionTranslated(FactRule):
                 return True
         return False
 
-    def _check_binary(self, node: ast.BinOp) -> None:
+    def _check_binary(self, node: BinOp) -> None:
         facts = self.facts
-        if isinstance(node.op, ast.Add):
+        if isinstance(node.op, Add):
             for rotated, other in ((node.left, node.right), (node.right, node.left)):
                 direction = self._rotated_direction(rotated)
                 if direction is not None and facts.is_translation_like(other) and not self._stored_as_point(node):
@@ -337,7 +341,7 @@ class DirectionTranslated(FactRule):
                         fix_description="drop the translation",
                     )
                     return
-        if isinstance(node.op, ast.Mult) and facts.is_free(node.right):
+        if isinstance(node.op, Mult) and facts.is_free(node.right):
             library = facts.translating_library_object(node.left)
             if library is not None:
                 self.report(
@@ -346,7 +350,7 @@ class DirectionTranslated(FactRule):
                     f"`{self.code_of(node.right)}` is a direction; apply only its rotation",
                 )
                 return
-        if isinstance(node.op, ast.MatMult) and isinstance(node.left, ast.Attribute):
+        if isinstance(node.op, MatMult) and isinstance(node.left, Attribute):
             if node.left.attr == "matrix_world" and facts.is_free(node.right):
                 self.report(
                     node,
@@ -354,12 +358,12 @@ class DirectionTranslated(FactRule):
                     "rotate it with `matrix_world.to_3x3()`",
                 )
 
-    def _stored_as_point(self, node: ast.AST) -> bool:
+    def _stored_as_point(self, node: AST) -> bool:
         """`tip_point = R @ offset_dir + t` builds a point from a direction on purpose."""
         parent = self.facts.parent(node)
-        if isinstance(parent, ast.Assign):
+        if isinstance(parent, Assign):
             return any(
-                isinstance(target, ast.Name) and kind_of_name(target.id, self.context.config) == NameKind.POINT
+                isinstance(target, Name) and kind_of_name(target.id, self.context.config) == NameKind.POINT
                 for target in parent.targets
             )
         return False
@@ -380,7 +384,7 @@ class DirectionTranslated(FactRule):
             return product.left
         return None
 
-    def _check_library_call(self, node: ast.Call) -> None:
+    def _check_library_call(self, node: Call) -> None:
         facts = self.facts
         name = last_name(node.func)
         if name == "multiplyTransforms":
@@ -414,7 +418,7 @@ class DirectionTranslated(FactRule):
                     fix_description="use vector_to_direction",
                 )
 
-    def _check_pybullet_multiply(self, node: ast.Call) -> None:
+    def _check_pybullet_multiply(self, node: Call) -> None:
         """pybullet's `multiplyTransforms(posA, ornA, posB, ornB)` moves posB as a point: posA is added.
         A direction goes through it only with a zero position (`multiplyTransforms([0, 0, 0], orn, v, ...)`)."""
         positional = positional_args(node)
@@ -430,7 +434,7 @@ class DirectionTranslated(FactRule):
         )
 
 
-def _untranslated_element(facts: FactBase, call: ast.Call, position: int | None) -> bool:
+def _untranslated_element(facts: FactBase, call: Call, position: int | None) -> bool:
     """Whether element `position` of what `call` returns (None: the value itself) is a library transform
     made without translation (`vocabulary.UNTRANSLATED_WITH`)."""
     known = vocab.UNTRANSLATED_WITH.get(facts.qualified_name(call.func) or "")

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 import ast
+from ast import AST, Add, AnnAssign, Assign, BinOp, Call, Constant, Module, Name, Return, Sub, Subscript
 
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import Kind
@@ -95,10 +96,10 @@ class PointNotTranslated(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        for node in facts.index.nodes(ast.Call, ast.Subscript, ast.BinOp):
-            if isinstance(node, ast.Subscript):
+        for node in facts.index.nodes(Call, Subscript, BinOp):
+            if isinstance(node, Subscript):
                 self._check_homogeneous(node)
-            elif isinstance(node, ast.BinOp):
+            elif isinstance(node, BinOp):
                 self._check_product(node)
             else:
                 self._check_homogeneous(node)  # type: ignore[arg-type]
@@ -126,15 +127,15 @@ class PointNotTranslated(FactRule):
         pure quaternion of the sandwich product q v q*, which rotates the point on purpose."""
         facts = self.facts
         parent = facts.parent(construction)
-        if isinstance(parent, ast.Call) and construction in parent.args:
+        if isinstance(parent, Call) and construction in parent.args:
             return _is_quaternion_call(parent)
-        if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name)):
+        if not (isinstance(parent, Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], Name)):
             return False
         name, scope = parent.targets[0].id, facts.index.scope_of(parent).node
         return any(
             _is_quaternion_call(call) and facts.index.scope_of(call).node is scope
-            and any(isinstance(argument, ast.Name) and argument.id == name for argument in call.args)  # type: ignore[attr-defined]
-            for call in facts.index.nodes(ast.Call)
+            and any(isinstance(argument, Name) and argument.id == name for argument in call.args)  # type: ignore[attr-defined]
+            for call in facts.index.nodes(Call)
         )
 
     def _check_product(self, node: ast.expr) -> None:
@@ -157,7 +158,7 @@ class PointNotTranslated(FactRule):
             )
             return
 
-    def _translated_later(self, node: ast.AST, matrix: ast.expr) -> bool:
+    def _translated_later(self, node: AST, matrix: ast.expr) -> bool:
         """Whether the product is part of a sum, its target is added to afterwards (`q += t`),
         or the same scope reads the matrix's translation column (added after a reduction)."""
         facts = self.facts
@@ -167,16 +168,16 @@ class PointNotTranslated(FactRule):
         parent = facts.parent(node)
         while parent is not None and transposed_value(parent) is node:
             node, parent = parent, facts.parent(parent)
-        if isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Add, ast.Sub)):
+        if isinstance(parent, BinOp) and isinstance(parent.op, (Add, Sub)):
             return True
-        if isinstance(parent, ast.Assign):
+        if isinstance(parent, Assign):
             scope = facts.index.scope_of(parent)
             for target in parent.targets:
-                if isinstance(target, ast.Name) and target.id in scope.augmented:
+                if isinstance(target, Name) and target.id in scope.augmented:
                     return True
-        return not isinstance(parent, (ast.Assign, ast.Return, ast.Call, ast.AnnAssign, ast.List, ast.Tuple))
+        return not isinstance(parent, (Assign, Return, Call, AnnAssign, ast.List, ast.Tuple))
 
-    def _reads_translation_column(self, scope_node: ast.AST, matrix: str) -> bool:
+    def _reads_translation_column(self, scope_node: AST, matrix: str) -> bool:
         """Whether the scope's text reads `matrix[:3, 3]` (one scan per scope, remembered)."""
         cache = self.__dict__.setdefault("_columns", {})
         read = cache.get(id(scope_node))
@@ -192,7 +193,7 @@ class PointNotTranslated(FactRule):
             cache[key] = re.search(column, _scope_text(self.facts, scope_node)) is not None
         return cache[key]  # type: ignore[no-any-return]
 
-    def _check_library_call(self, node: ast.Call) -> None:
+    def _check_library_call(self, node: Call) -> None:
         facts = self.facts
         name = last_name(node.func)
         if name not in ("transform_points", "vector_to_direction"):
@@ -202,7 +203,7 @@ class PointNotTranslated(FactRule):
             return
         if name == "transform_points":
             translate = keyword(node, "translate")
-            if translate is not None and isinstance(translate.value, ast.Constant) and translate.value.value is False:
+            if translate is not None and isinstance(translate.value, Constant) and translate.value.value is False:
                 self.report(
                     node,
                     f"`{self.code_of(positional[0])}` holds points, but `translate=False` drops the translation",
@@ -220,11 +221,11 @@ class PointNotTranslated(FactRule):
 _TRANSLATION_COLUMN = re.compile(r"([\w.]+)\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]")
 
 
-def _scope_text(facts, scope_node: ast.AST) -> str:  # type: ignore[no-untyped-def]
-    return facts.index.source if isinstance(scope_node, ast.Module) else facts.index.segment(scope_node)
+def _scope_text(facts, scope_node: AST) -> str:  # type: ignore[no-untyped-def]
+    return facts.index.source if isinstance(scope_node, Module) else facts.index.segment(scope_node)
 
 
-def _is_quaternion_call(call: ast.AST) -> bool:
+def _is_quaternion_call(call: AST) -> bool:
     """`quaternion_multiply`, `quat_mul`, `qmult`, `Quaternion(...)`: quaternion algebra."""
     name = (last_name(call.func) or "").lower()  # type: ignore[attr-defined]
     return "quat" in name or name in ("qmult", "qmul")

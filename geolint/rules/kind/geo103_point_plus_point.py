@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import AST, Add, BinOp, Call, Constant, Div, FloorDiv, Mult, Name, Slice, Sub, Subscript, USub, UnaryOp
 
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE, Kind
@@ -21,27 +22,27 @@ _MOTION_WORDS = _DISPLACEMENT_WORDS | {"action", "actions", "act"}
 _JOINT_SPACE_WORDS = frozenset({"joint", "joints", "motor", "motors", "qpos", "arm", "actuator", "servo", "gripper_pos"})
 
 
-def _name_tokens(node: ast.AST) -> set[str]:
-    while isinstance(node, ast.Call) and last_name(node.func) in _ARRAY_WRAPPERS and len(node.args) == 1:
+def _name_tokens(node: AST) -> set[str]:
+    while isinstance(node, Call) and last_name(node.func) in _ARRAY_WRAPPERS and len(node.args) == 1:
         node = node.args[0]  # `np.array(clipped_delta_pos)` is named by what it wraps
-    name = last_name(node.value if isinstance(node, ast.Subscript) else node)
+    name = last_name(node.value if isinstance(node, Subscript) else node)
     return set(name.lower().split("_")) if name else set()
 
 
 _ARRAY_WRAPPERS = frozenset({"array", "asarray", "tensor", "as_tensor"})
 
 
-def _is_collection(node: ast.AST) -> bool:
+def _is_collection(node: AST) -> bool:
     """`points`, `mesh.vertices`, `pts_world`: many positions, not one. `grid_points[0]` is one of
     them (an anchor such as a grid's corner: `local + grid_points[0]` moves local coordinates)."""
-    if isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Constant) and isinstance(node.slice.value, int):
+    if isinstance(node, Subscript) and isinstance(node.slice, Constant) and isinstance(node.slice.value, int):
         return False
     return bool(_COLLECTION_WORDS & _name_tokens(node))
 
 
-def _is_sequence_slice(node: ast.AST) -> bool:
+def _is_sequence_slice(node: AST) -> bool:
     """`points[i:]`: a sub-sequence (adding two of them concatenates lists)."""
-    return isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Slice)
+    return isinstance(node, Subscript) and isinstance(node.slice, Slice)
 
 
 # Reductions that turn a sum of points into an affine combination.
@@ -146,11 +147,11 @@ class PointPlusPoint(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        for node in facts.index.nodes(ast.BinOp):
-            if isinstance(node.op, ast.Add):  # type: ignore[attr-defined]
+        for node in facts.index.nodes(BinOp):
+            if isinstance(node.op, Add):  # type: ignore[attr-defined]
                 self._check(node)  # type: ignore[arg-type]
 
-    def _check(self, node: ast.BinOp) -> None:
+    def _check(self, node: BinOp) -> None:
         facts = self.facts
         if facts.kind_of(node.left) != Kind.POINT or facts.kind_of(node.right) != Kind.POINT:
             return
@@ -177,11 +178,11 @@ class PointPlusPoint(FactRule):
     def _is_scaled_quantity(self, side: ast.expr) -> bool:
         """A name bound only to a product none of whose factors is a point (`dist * cos(theta)`,
         `radius * (2 * rand - 1)`): scaling gives a vector relative to some centre, not a location."""
-        if not isinstance(side, ast.Name):
+        if not isinstance(side, Name):
             return False
         bindings = self.facts.bindings(side) or []
         return bool(bindings) and all(
-            isinstance(value, ast.BinOp) and isinstance(value.op, ast.Mult)
+            isinstance(value, BinOp) and isinstance(value.op, Mult)
             and all(self.facts.kind_of(factor) != Kind.POINT for factor in (value.left, value.right))
             for value in bindings
         )
@@ -189,9 +190,9 @@ class PointPlusPoint(FactRule):
     def _is_rotated_displacement(self, side: ast.expr) -> bool:
         """A name (or one of its components, `position[0]`) bound only to a product that rotates an
         action or a delta (`rot.dot(action[:3])`, `R @ delta_pos`): a displacement, not a location."""
-        while isinstance(side, ast.Subscript):
+        while isinstance(side, Subscript):
             side = side.value
-        if not isinstance(side, ast.Name):
+        if not isinstance(side, Name):
             return False
         bindings = self.facts.bindings(side) or []
         products = [self.facts.matmul(value) if isinstance(value, ast.expr) else None for value in bindings]
@@ -200,45 +201,45 @@ class PointPlusPoint(FactRule):
             for product in products
         )
 
-    def _is_affine(self, node: ast.AST) -> bool:
+    def _is_affine(self, node: AST) -> bool:
         """Whether this sum is divided, scaled, averaged, or part of a combination whose point
         weights sum to 0 or 1 (`a + b - c` reflects a point): `algebra.affine_combination`."""
         facts = self.facts
         current = node
         parent = facts.parent(current)
-        while isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Add, ast.Sub)):
+        while isinstance(parent, BinOp) and isinstance(parent.op, (Add, Sub)):
             current, parent = parent, facts.parent(parent)
         weight = self._point_weight(current)
         if weight is None or weight in (0, 1):
             return True
-        if isinstance(parent, ast.BinOp):
-            if isinstance(parent.op, (ast.Div, ast.FloorDiv)) and parent.left is current:
+        if isinstance(parent, BinOp):
+            if isinstance(parent.op, (Div, FloorDiv)) and parent.left is current:
                 return True
-            if isinstance(parent.op, ast.Mult):
+            if isinstance(parent.op, Mult):
                 other = parent.right if parent.left is current else parent.left
                 scale = number(other)
                 return scale is None or abs(scale) < 1
         # Inside a list/argument of a reduction: `np.mean([a + b, ...])`, `sum(...)`.
         while parent is not None and not isinstance(parent, ast.stmt):
-            if isinstance(parent, ast.Call) and last_name(parent.func) in _AVERAGING_CALLS:
+            if isinstance(parent, Call) and last_name(parent.func) in _AVERAGING_CALLS:
                 return True
             parent = facts.parent(parent)
         return False
 
-    def _point_weight(self, root: ast.AST) -> int | None:
+    def _point_weight(self, root: AST) -> int | None:
         """The sum of the weights of the point terms of an additive expression, or None when a
         term of unknown kind is subtracted or scaled (it may be a point that balances the sum).
         Iterative, so a chain of thousands of terms costs linear time."""
         facts = self.facts
         total = 0
-        stack: list[tuple[ast.AST, int]] = [(root, 1)]
+        stack: list[tuple[AST, int]] = [(root, 1)]
         while stack:
             node, sign = stack.pop()
-            if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+            if isinstance(node, BinOp) and isinstance(node.op, (Add, Sub)):
                 stack.append((node.left, sign))
-                stack.append((node.right, -sign if isinstance(node.op, ast.Sub) else sign))
+                stack.append((node.right, -sign if isinstance(node.op, Sub) else sign))
                 continue
-            if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            if isinstance(node, UnaryOp) and isinstance(node.op, USub):
                 stack.append((node.operand, -sign))
                 continue
             kind = facts.kind_of(node)
@@ -246,6 +247,6 @@ class PointPlusPoint(FactRule):
                 total += sign
             elif kind in FREE:
                 continue
-            elif sign < 0 or isinstance(node, ast.BinOp):
+            elif sign < 0 or isinstance(node, BinOp):
                 return None  # `- last_control`, `s * b`: could be a point
         return total

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 import ast
+from ast import AST, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Module, Name, Return
 
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import Kind
@@ -98,15 +99,15 @@ class NormalsLeftBehind(FactRule):
 
     def run(self) -> None:
         facts = self.facts
-        for node in facts.index.nodes(ast.Call):
+        for node in facts.index.nodes(Call):
             self._check_cloud_call(node)  # type: ignore[arg-type]
-        for node in facts.index.nodes(ast.Assign):
+        for node in facts.index.nodes(Assign):
             self._check_points_store(node)  # type: ignore[arg-type]
-        for node in facts.index.nodes(ast.FunctionDef, ast.AsyncFunctionDef):
+        for node in facts.index.nodes(FunctionDef, AsyncFunctionDef):
             self._check_function(node)
 
     # do_transform_cloud -----------------------------------------------------------------
-    def _check_cloud_call(self, node: ast.Call) -> None:
+    def _check_cloud_call(self, node: Call) -> None:
         if last_name(node.func) != "do_transform_cloud" or not node.args:
             return
         cloud = node.args[0]
@@ -121,10 +122,10 @@ class NormalsLeftBehind(FactRule):
             )
 
     # obj.points = <transformed>, obj.normals untouched -------------------------------------
-    def _check_points_store(self, node: ast.Assign) -> None:
+    def _check_points_store(self, node: Assign) -> None:
         facts = self.facts
         for store in node.targets:
-            if not isinstance(store, ast.Attribute) or store.attr != "points":
+            if not isinstance(store, Attribute) or store.attr != "points":
                 continue
             if _TransformFinder(self).first(node.value) is None:
                 continue
@@ -147,12 +148,12 @@ class NormalsLeftBehind(FactRule):
     def _module_reads_normals_of(self, base: str) -> bool:
         return re.search(rf"{re.escape(base)}\s*\.\s*normals\b", self.facts.index.source) is not None
 
-    def _scope_calls_method(self, scope_node: ast.AST, base: str, method: str) -> bool:
-        code = self.facts.index.source if isinstance(scope_node, ast.Module) else self.facts.index.segment(scope_node)
+    def _scope_calls_method(self, scope_node: AST, base: str, method: str) -> bool:
+        code = self.facts.index.source if isinstance(scope_node, Module) else self.facts.index.segment(scope_node)
         return re.search(rf"{re.escape(base)}\s*\.\s*{method}\s*\(", code) is not None
 
     # def f(points, normals, T): ... return moved_points, normals ---------------------------
-    def _check_function(self, node: ast.AST) -> None:
+    def _check_function(self, node: AST) -> None:
         scope = self.facts.index.scopes.get(node)
         if scope is None:
             return
@@ -187,27 +188,27 @@ class _TransformFinder:
         self.rule = rule
         self.params_only = params_only
 
-    def _point(self, node: ast.AST) -> str | None:
+    def _point(self, node: AST) -> str | None:
         facts = self.rule.facts
-        while isinstance(node, (ast.Attribute, ast.Call)):
+        while isinstance(node, (Attribute, Call)):
             inner = transposed_value(node)
             if inner is not None:
                 node = inner
-            elif isinstance(node, ast.Call) and last_name(node.func) in ("asarray", "array") and node.args:
+            elif isinstance(node, Call) and last_name(node.func) in ("asarray", "array") and node.args:
                 node = node.args[0]
             else:
                 break
         if facts.kind_of(node) != Kind.POINT:
             return None
         if self.params_only is not None:
-            if not isinstance(node, ast.Name):
+            if not isinstance(node, Name):
                 return None
             bindings = self.params_only.get(node.id, [])
             if not bindings or not all(isinstance(binding, ParamBinding) for binding in bindings):
                 return None
         return self.rule.code_of(node)
 
-    def first(self, root: ast.AST, body_only: bool = False) -> tuple[ast.AST, str] | None:
+    def first(self, root: AST, body_only: bool = False) -> tuple[AST, str] | None:
         """The first (in source order) product or `transform_points` call on a point inside `root`."""
         facts = self.rule.facts
         nodes = [root] if not body_only else []
@@ -219,7 +220,7 @@ class _TransformFinder:
                     points = self._point(value)
                     if points is not None and facts.kind_of(matrix) not in GEOMETRIC:
                         return node, points
-            if isinstance(node, ast.Call) and last_name(node.func) == "transform_points" and node.args:
+            if isinstance(node, Call) and last_name(node.func) == "transform_points" and node.args:
                 points = self._point(node.args[0])
                 if points is not None:
                     return node, points
@@ -231,19 +232,19 @@ def _returned_names(returns: list[ast.expr]) -> set[str]:
     for value in returns:
         elements = value.elts if isinstance(value, (ast.Tuple, ast.List)) else [value]
         for element in elements:
-            if isinstance(element, ast.Name):
+            if isinstance(element, Name):
                 names.add(element.id)
     return names
 
 
-def _uses_outside_returns(function: ast.AST, name: str) -> bool:
+def _uses_outside_returns(function: AST, name: str) -> bool:
     """Whether `name` is read anywhere in the function's body other than directly in a `return`."""
     stack = list(getattr(function, "body", []))
     while stack:
         node = stack.pop()
-        if isinstance(node, ast.Return):
+        if isinstance(node, Return):
             continue
-        if isinstance(node, ast.Name) and node.id == name:
+        if isinstance(node, Name) and node.id == name:
             return True
         stack.extend(ast.iter_child_nodes(node))
     return False

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import Assign, Attribute, Call, Module, Name, Slice, Subscript
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.model import subscript_parts
@@ -76,15 +77,15 @@ class RotationIndexedAsPose(AstRule):
         Invalid("import cv2\ndef f(rvec):\n    R = cv2.Rodrigues(rvec)[0]\n    return R[3, 3]\n"),
     ]
 
-    def check(self, tree: ast.Module) -> None:
-        candidates: list[tuple[ast.Subscript, ast.Name]] = []
+    def check(self, tree: Module) -> None:
+        candidates: list[tuple[Subscript, Name]] = []
         square_names: set[str] = set()  # names some assignment may make 3x3 (a cheap first cut)
         index = index_of(tree)
-        for assign in index.nodes(ast.Assign):
+        for assign in index.nodes(Assign):
             if _may_make_square(assign.value):  # type: ignore[attr-defined]
-                square_names.update(target.id for target in assign.targets if isinstance(target, ast.Name))  # type: ignore[attr-defined]
-        for node in index.nodes(ast.Subscript):
-            if not isinstance(node, ast.Subscript) or not isinstance(node.value, ast.Name):
+                square_names.update(target.id for target in assign.targets if isinstance(target, Name))  # type: ignore[attr-defined]
+        for node in index.nodes(Subscript):
+            if not isinstance(node, Subscript) or not isinstance(node.value, Name):
                 continue
             indices = subscript_parts(node)
             if len(indices) <= 2 and any(_past_third(part) for part in indices[:2]):
@@ -106,15 +107,15 @@ _SQUARE_CALLS = frozenset({"eye", "identity", "zeros", "empty", "array", "asarra
 
 def _may_make_square(value: ast.expr) -> bool:
     """A cheap first cut of `matrix_shape`: a 3x3 maker, a copy or transpose of one, a slice, a literal, an alias."""
-    while isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute) and call_name(value) not in _SQUARE_CALLS:
+    while isinstance(value, Call) and isinstance(value.func, Attribute) and call_name(value) not in _SQUARE_CALLS:
         value = value.func.value  # R.copy(), R.T.astype(...)
-    while isinstance(value, ast.Attribute) and value.attr in ("T", "mT"):
+    while isinstance(value, Attribute) and value.attr in ("T", "mT"):
         value = value.value
-    if isinstance(value, ast.Call):
+    if isinstance(value, Call):
         return call_name(value) in _SQUARE_CALLS
-    if isinstance(value, ast.Attribute):
+    if isinstance(value, Attribute):
         return value.attr == "rotation_matrix"
-    return isinstance(value, (ast.Subscript, ast.List, ast.Name))
+    return isinstance(value, (Subscript, ast.List, Name))
 
 
 def _past_third(index: ast.expr) -> bool:
@@ -122,16 +123,16 @@ def _past_third(index: ast.expr) -> bool:
     value = int_value(index)
     if value is not None:
         return value >= 3
-    return isinstance(index, ast.Slice) and (int_value(index.lower) or 0) >= 3
+    return isinstance(index, Slice) and (int_value(index.lower) or 0) >= 3
 
 
-def _resized_in_place(name: ast.Name, index: ModuleIndex) -> bool:
+def _resized_in_place(name: Name, index: ModuleIndex) -> bool:
     scope = scope_of(index, name).node
     return any(
-        isinstance(node, ast.Call)
-        and isinstance(node.func, ast.Attribute)
+        isinstance(node, Call)
+        and isinstance(node.func, Attribute)
         and node.func.attr in ("resize", "resize_")
-        and isinstance(node.func.value, ast.Name)
+        and isinstance(node.func.value, Name)
         and node.func.value.id == name.id
         for node in ast.walk(scope)
     )

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import Assign, Attribute, Call, Module, Name
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.pose_parts import call_name
@@ -70,13 +71,13 @@ class VectorTransformedAsPoint(AstRule):
         ),
     ]
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         index = index_of(tree)
-        for node in index.nodes(ast.Call):
-            if not (isinstance(node, ast.Call) and call_name(node) == "do_transform_point" and node.args):
+        for node in index.nodes(Call):
+            if not (isinstance(node, Call) and call_name(node) == "do_transform_point" and node.args):
                 continue
             message = node.args[0]
-            if not isinstance(message, ast.Name):
+            if not isinstance(message, Name):
                 continue
             why = _free_vector_evidence(message, index)
             if why is None:
@@ -93,17 +94,17 @@ class VectorTransformedAsPoint(AstRule):
             )
 
 
-def _free_vector_evidence(message: ast.Name, index: ModuleIndex) -> str | None:
+def _free_vector_evidence(message: Name, index: ModuleIndex) -> str | None:
     value = resolve(index, message)
-    if isinstance(value, ast.Call) and call_name(value) == "Vector3Stamped":
+    if isinstance(value, Call) and call_name(value) == "Vector3Stamped":
         return "made by Vector3Stamped()"
     argument = parameter_of(index, message)
     annotation = argument.annotation if argument is not None else None
     if annotation is not None and ast.unparse(annotation).split(".")[-1] == "Vector3Stamped":
         return "annotated Vector3Stamped"
-    if isinstance(value, ast.Call) and call_name(value) == "PointStamped":
+    if isinstance(value, Call) and call_name(value) == "PointStamped":
         for node in ast.walk(scope_of(index, message).node):
-            if isinstance(node, ast.Assign) and len(node.targets) == 1 and _fills_point_of(node.targets[0], message.id):
+            if isinstance(node, Assign) and len(node.targets) == 1 and _fills_point_of(node.targets[0], message.id):
                 field = _free_vector_field(node.value)
                 if field is not None:
                     return f"its point is filled from `.{field}`"
@@ -112,14 +113,14 @@ def _free_vector_evidence(message: ast.Name, index: ModuleIndex) -> str | None:
 
 def _fills_point_of(target: ast.expr, name: str) -> bool:
     """`name.point = ...` or `name.point.x = ...`."""
-    if isinstance(target, ast.Attribute) and target.attr in ("x", "y", "z"):
+    if isinstance(target, Attribute) and target.attr in ("x", "y", "z"):
         target = target.value
-    return isinstance(target, ast.Attribute) and target.attr == "point" and isinstance(target.value, ast.Name) and target.value.id == name
+    return isinstance(target, Attribute) and target.attr == "point" and isinstance(target.value, Name) and target.value.id == name
 
 
 def _free_vector_field(value: ast.expr) -> str | None:
     node = value
-    while isinstance(node, ast.Attribute):
+    while isinstance(node, Attribute):
         if node.attr in _FREE_VECTOR_FIELDS:
             return node.attr
         node = node.value

@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, AnnAssign, Assign, AsyncFunctionDef, Attribute, AugAssign, BinOp, Call, ClassDef, Constant, FunctionDef,
+    IfExp, MatMult, Name, Slice, Starred, Subscript, USub, UnaryOp,
+)
 import re
 from dataclasses import dataclass
 from typing import AbstractSet
@@ -210,10 +214,10 @@ class FreeVectorsLeftBehind(FactRule):
         layouts = _Layouts(facts.index.source)
         # the statements and expressions the checks read, grouped by the function they run in
         # (from the module index: no second walk of every function)
-        bodies: dict[ast.AST, list[ast.AST]] = {}
-        for node in facts.index.nodes(ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Call, ast.BinOp):
+        bodies: dict[AST, list[AST]] = {}
+        for node in facts.index.nodes(Assign, AugAssign, AnnAssign, Call, BinOp):
             owner = facts.index.scope_of(node).node
-            if isinstance(owner, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            if isinstance(owner, (FunctionDef, AsyncFunctionDef)):
                 bodies.setdefault(owner, []).append(node)
         for function, body in bodies.items():
             scope = facts.index.scopes.get(function)
@@ -223,20 +227,20 @@ class FreeVectorsLeftBehind(FactRule):
             self._check_returned_together(function, body, scope)
 
     # -- rotations -----------------------------------------------------------------------------
-    def _is_operator(self, node: ast.AST, depth: int = 0) -> bool:
+    def _is_operator(self, node: AST, depth: int = 0) -> bool:
         """Whether a product with `node` rotates what it multiplies (a rotation or a pose, maybe inverted)."""
         facts = self.facts
         node = _peel(node)
-        if isinstance(node, ast.Call) and last_name(node.func) in ("inv", "inverse", "pinv") and node.args:
+        if isinstance(node, Call) and last_name(node.func) in ("inv", "inverse", "pinv") and node.args:
             node = _peel(node.args[0])
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in ("inv", "inverse", "inverted"):
+        if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in ("inv", "inverse", "inverted"):
             node = _peel(node.func.value)
-        qualified = facts.qualified_name(node.func) if isinstance(node, ast.Call) else None
+        qualified = facts.qualified_name(node.func) if isinstance(node, Call) else None
         if qualified and qualified.endswith("translation_matrix"):
             return False
         if facts.rotation_block_of(node) is not None:
             return True
-        word = string(node.slice) if isinstance(node, ast.Subscript) else last_name(node)
+        word = string(node.slice) if isinstance(node, Subscript) else last_name(node)
         if word is not None:
             parts = set(tokens(word))
             if parts & _NOT_OPERATOR_TOKENS:
@@ -245,50 +249,50 @@ class FreeVectorsLeftBehind(FactRule):
                 return True
             if facts.kind_of(node) in OPERATORS:
                 return True
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             if _ROTATION_MAKER.search(last_name(node.func) or ""):
                 return True
             if last_name(node.func) in ("array", "tensor", "stack") and _mentions_cos_and_sin(node):
                 return True
             product = facts.matmul(node)
             return product is not None and depth < 3 and self._is_operator(product.left, depth + 1) and self._is_operator(product.right, depth + 1)
-        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult) and depth < 3:
+        if isinstance(node, BinOp) and isinstance(node.op, MatMult) and depth < 3:
             return self._is_operator(node.left, depth + 1) and self._is_operator(node.right, depth + 1)
-        if isinstance(node, ast.Name) and depth < 3:
+        if isinstance(node, Name) and depth < 3:
             bindings = facts.bindings(node) or []
             values = [binding for binding in bindings if isinstance(binding, ast.expr)]
             return bool(values) and len(values) == len(bindings) and all(self._is_operator(value, depth + 1) for value in values)
         return False
 
-    def _rotation_in(self, value: ast.AST, depth: int = 0) -> ast.AST | None:
+    def _rotation_in(self, value: AST, depth: int = 0) -> AST | None:
         """The product with an operator, or the rotating call, inside `value` (through one name), else None."""
         facts = self.facts
         for node in (value, *walk_within(value)):
             product = facts.matmul(node)
             if product is not None and (self._is_operator(product.left) or self._is_operator(product.right)):
                 return node
-            if isinstance(node, ast.Call) and node.args and self._rotating_call(node):
+            if isinstance(node, Call) and node.args and self._rotating_call(node):
                 return node
-        if isinstance(value, ast.Name) and depth < 2:
+        if isinstance(value, Name) and depth < 2:
             bindings = facts.bindings(value) or []
             values = [binding for binding in bindings if isinstance(binding, ast.expr)]
             if len(values) == 1 and len(bindings) == 1:
                 return self._rotation_in(values[0], depth + 1)
         return None
 
-    def _rotating_call(self, node: ast.Call) -> bool:
+    def _rotating_call(self, node: Call) -> bool:
         """`rotate_points_along_z(x, a)`, `transform_points(x, T)`, scipy `rot.apply(x)`."""
         name = last_name(node.func) or ""
         if _ROTATING_CALL.search(name):
             return True
-        return name == "apply" and isinstance(node.func, ast.Attribute) and self._is_operator(node.func.value)
+        return name == "apply" and isinstance(node.func, Attribute) and self._is_operator(node.func.value)
 
     # -- members of one object -----------------------------------------------------------------
-    def _member(self, node: ast.AST) -> _Member | None:
+    def _member(self, node: AST) -> _Member | None:
         facts = self.facts
-        if isinstance(node, ast.Attribute) and not facts.is_module_like(node.value) and node.attr not in ("T", "mT"):
+        if isinstance(node, Attribute) and not facts.is_module_like(node.value) and node.attr not in ("T", "mT"):
             return _Member(self.code_of(node.value), node.attr, None, node)
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             key = string(node.slice)
             if key is not None:
                 return _Member(self.code_of(node.value), key, None, node)
@@ -297,16 +301,16 @@ class FreeVectorsLeftBehind(FactRule):
                 return _Member(self.code_of(node.value), None, columns, node)
         return None
 
-    def _written_member(self, target: ast.AST) -> _Member | None:
+    def _written_member(self, target: AST) -> _Member | None:
         """The member an assignment writes, also through element indices: `self.future_orientations[m][h] = q * ...`
         writes `self.future_orientations` (element by element, in a loop)."""
         member = self._member(target)
-        while member is None and isinstance(target, ast.Subscript):
+        while member is None and isinstance(target, Subscript):
             target = target.value
             member = self._member(target)
         return member
 
-    def _check_members(self, function: ast.AST, body: list[ast.AST], layouts: _Layouts) -> None:
+    def _check_members(self, function: AST, body: list[AST], layouts: _Layouts) -> None:
         stores = _stores(body)
         moves: list[tuple[_Member, ast.expr, str]] = []
         for target, value in stores:
@@ -336,7 +340,7 @@ class FreeVectorsLeftBehind(FactRule):
                 self.report(target, f"`{self.code_of(target)}` is {verb} here, but not the same object's {what}; {fix} those too")
 
     def _left_behind(
-        self, moved: _Member, how: str, function: ast.AST, body: list[ast.AST], stores: list[tuple[ast.expr, ast.expr]], layouts: _Layouts
+        self, moved: _Member, how: str, function: AST, body: list[AST], stores: list[tuple[ast.expr, ast.expr]], layouts: _Layouts
     ) -> list[str]:
         written = [m for m in (self._written_member(target) for target, _ in stores) if m is not None and m.owner == moved.owner]
         touched = self._touched(body)
@@ -351,7 +355,7 @@ class FreeVectorsLeftBehind(FactRule):
                     continue
                 if moved.name in ("points",) and name in ("normals", "vertex_normals"):
                     continue  # GEO104's case
-                spelled = f"{moved.owner}[{name!r}]" if isinstance(moved.node, ast.Subscript) else f"{moved.owner}.{name}"
+                spelled = f"{moved.owner}[{name!r}]" if isinstance(moved.node, Subscript) else f"{moved.owner}.{name}"
                 found.append(f"`{spelled}` ({'free vector' if role == 'free' else 'orientation'})")
             return found
         layout = layouts.of(moved.owner, self.facts, function)
@@ -375,7 +379,7 @@ class FreeVectorsLeftBehind(FactRule):
             found.append(f"heading column {heading} ({source})")
         return found
 
-    def _named_members(self, moved: _Member, function: ast.AST, body: list[ast.AST]) -> list[tuple[str, str]]:
+    def _named_members(self, moved: _Member, function: AST, body: list[AST]) -> list[tuple[str, str]]:
         """Free-vector and orientation members of the moved object that the code shows exist as data.
 
         A dict key read in the function counts. An attribute must also be stored somewhere (in the
@@ -383,21 +387,21 @@ class FreeVectorsLeftBehind(FactRule):
         module: a property such as trimesh's `vertex_normals` is recomputed from the moved vertices.
         """
         facts = self.facts
-        nodes: list[ast.AST] = list(walk_within(function))
+        nodes: list[AST] = list(walk_within(function))
         if moved.owner == "self":
             cls = facts.parent(function)
-            if not isinstance(cls, ast.ClassDef):
+            if not isinstance(cls, ClassDef):
                 return []
             nodes = list(walk_within(cls, stop_at_functions=False))
-        defined = {node.name for node in facts.index.nodes(ast.FunctionDef, ast.AsyncFunctionDef)}  # type: ignore[attr-defined]
+        defined = {node.name for node in facts.index.nodes(FunctionDef, AsyncFunctionDef)}  # type: ignore[attr-defined]
         stored = {target.attr for scope in facts.index.scopes.values() for target, _ in scope.attribute_stores}
         seen: dict[str, str] = {}
-        style_key = isinstance(moved.node, ast.Subscript)
+        style_key = isinstance(moved.node, Subscript)
         for node in nodes:
             member = self._member(node)
             if member is None or member.owner != moved.owner or member.name is None or member.name == moved.name:
                 continue
-            if isinstance(member.node, ast.Subscript) != style_key:
+            if isinstance(member.node, Subscript) != style_key:
                 continue
             if not style_key and (member.name in defined or member.name not in stored):
                 continue
@@ -407,24 +411,24 @@ class FreeVectorsLeftBehind(FactRule):
         derived = self._derived_from(moved, nodes)
         return sorted((name, role) for name, role in seen.items() if name not in derived and not (role == "free" and self._stored_as_scalar(moved, name, nodes)))
 
-    def _stored_as_scalar(self, moved: _Member, name: str, nodes: list[ast.AST]) -> bool:
+    def _stored_as_scalar(self, moved: _Member, name: str, nodes: list[AST]) -> bool:
         """Whether the code stores the attribute as a number (`self.angular_velocity = float(w)`, an
         annotation `float`, a parameter annotated `float`): a yaw rate has no direction to rotate
         (asked of free vectors only: a heading stored as a float does turn with the positions)."""
-        if isinstance(moved.node, ast.Subscript):
+        if isinstance(moved.node, Subscript):
             return False
         if moved.owner != "self":
             stores = [value for scope in self.facts.index.scopes.values() for target, value in scope.attribute_stores if target.attr == name]
             return any(self._scalar_value(value) for value in stores)
         for node in nodes:
-            if isinstance(node, ast.AnnAssign):
+            if isinstance(node, AnnAssign):
                 target, values = node.target, [node.value]
-                is_field = isinstance(target, ast.Name) and target.id == name  # a dataclass field
+                is_field = isinstance(target, Name) and target.id == name  # a dataclass field
                 if (is_field or _is_self_attribute(target, name)) and is_scalar_annotation(node.annotation):
                     return True
                 if not _is_self_attribute(target, name):
                     continue
-            elif isinstance(node, ast.Assign) and any(_is_self_attribute(target, name) for target in node.targets):
+            elif isinstance(node, Assign) and any(_is_self_attribute(target, name) for target in node.targets):
                 values = [node.value]
             else:
                 continue
@@ -434,11 +438,11 @@ class FreeVectorsLeftBehind(FactRule):
 
     def _scalar_value(self, value: ast.expr) -> bool:
         """`float(w)`, `int(n)`, `float(w) if ... else w`, or a parameter annotated `float`."""
-        if isinstance(value, ast.IfExp):
+        if isinstance(value, IfExp):
             return self._scalar_value(value.body) or self._scalar_value(value.orelse)
-        if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id in ("float", "int"):
+        if isinstance(value, Call) and isinstance(value.func, Name) and value.func.id in ("float", "int"):
             return True
-        if isinstance(value, ast.Name):
+        if isinstance(value, Name):
             bindings = self.facts.bindings(value) or []
             return bool(bindings) and all(
                 isinstance(binding, ParamBinding) and binding.arg.annotation is not None and is_scalar_annotation(binding.arg.annotation)
@@ -446,12 +450,12 @@ class FreeVectorsLeftBehind(FactRule):
             )
         return False
 
-    def _derived_from(self, moved: _Member, nodes: list[ast.AST]) -> set[str]:
+    def _derived_from(self, moved: _Member, nodes: list[AST]) -> set[str]:
         """Members the code computes from the moved position (`self.direction = normalize(self.target -
         self.position)` in an orbit camera): they follow the position by themselves."""
         derived: set[str] = set()
         for node in nodes:
-            if not isinstance(node, ast.Assign):
+            if not isinstance(node, Assign):
                 continue
             reads = [self._member(inner) for inner in walk_within(node.value)]
             if not any(m is not None and m.owner == moved.owner and m.name == moved.name for m in reads):
@@ -462,29 +466,29 @@ class FreeVectorsLeftBehind(FactRule):
                     derived.add(member.name)
         return derived
 
-    def _unwrapped(self, value: ast.expr) -> tuple[ast.expr, ast.Call | None]:
+    def _unwrapped(self, value: ast.expr) -> tuple[ast.expr, Call | None]:
         """`Vector3dVector(x)`, `np.asarray(x)`, `torch.from_numpy(x).float()` -> x and the wrapping call
         (a call of one argument that neither rotates nor multiplies); anything else as it is."""
         inner = _peel(value)
-        if isinstance(inner, ast.Name):
-            return inner, value if isinstance(value, ast.Call) else None
-        if isinstance(value, ast.Call) and len(value.args) == 1 and not value.keywords and not self._rotating_call(value):
+        if isinstance(inner, Name):
+            return inner, value if isinstance(value, Call) else None
+        if isinstance(value, Call) and len(value.args) == 1 and not value.keywords and not self._rotating_call(value):
             argument = _peel(value.args[0])
-            if isinstance(argument, ast.Name) and self.facts.matmul(value) is None:
+            if isinstance(argument, Name) and self.facts.matmul(value) is None:
                 return argument, value
         return value, None
 
-    def _touched(self, body: list[ast.AST], skip_stackers: bool = False, skip_calls: AbstractSet[int] = frozenset()) -> set[tuple[str, str | int | None]]:
+    def _touched(self, body: list[AST], skip_stackers: bool = False, skip_calls: AbstractSet[int] = frozenset()) -> set[tuple[str, str | int | None]]:
         """(owner, member) pairs handed to a call or a product in the function (maybe rotated there):
         a member by name or column number, a whole value with None."""
         facts = self.facts
         found: set[tuple[str, str | int | None]] = set()
         for node in body:
-            operands: list[ast.AST] = []
-            if isinstance(node, ast.Call) and last_name(node.func) not in _READERS and id(node) not in skip_calls:
+            operands: list[AST] = []
+            if isinstance(node, Call) and last_name(node.func) not in _READERS and id(node) not in skip_calls:
                 if not (skip_stackers and facts.is_array_call(node.func, *_STACKERS)):
                     operands = [*node.args, *(keyword.value for keyword in node.keywords)]
-                    if isinstance(node.func, ast.Attribute):
+                    if isinstance(node.func, Attribute):
                         operands.append(node.func.value)
             product = facts.matmul(node)
             if product is not None:
@@ -499,12 +503,12 @@ class FreeVectorsLeftBehind(FactRule):
                     else:
                         found.add((member.owner, member.name))
                     continue
-                if isinstance(inner, (ast.Name, ast.Attribute, ast.Subscript)):
+                if isinstance(inner, (Name, Attribute, Subscript)):
                     found.add((self.code_of(inner), None))
                 stack.extend(ast.iter_child_nodes(inner))
         return found
 
-    def _escapes(self, owner: str, function: ast.AST) -> bool:
+    def _escapes(self, owner: str, function: AST) -> bool:
         """Whether changes to `owner` reach the caller: `self`, a parameter (changed in place), or returned."""
         root = owner.split(".")[0].split("[")[0]
         scope = self.facts.index.scopes.get(function)
@@ -520,24 +524,24 @@ class FreeVectorsLeftBehind(FactRule):
                 return True
         return False
 
-    def _owner_passed_on(self, owner: str, body: list[ast.AST]) -> bool:
+    def _owner_passed_on(self, owner: str, body: list[AST]) -> bool:
         """Whether the whole object goes to another call (which may move its vectors), or is moved as a
         whole by a method (`pcd.transform(T)`, `mesh.apply_transform(T)`, `box.rotate(q)`, `self.update()`)."""
         for node in body:
-            if not isinstance(node, ast.Call) or last_name(node.func) in _READERS:
+            if not isinstance(node, Call) or last_name(node.func) in _READERS:
                 continue
-            if isinstance(node.func, ast.Attribute) and self.code_of(node.func.value) == owner:
+            if isinstance(node.func, Attribute) and self.code_of(node.func.value) == owner:
                 if owner == "self" or _ROTATING_CALL.search(node.func.attr) or node.func.attr in ("transform", "apply_transform", "rotate"):
                     return True
             for argument in [*node.args, *(keyword.value for keyword in node.keywords)]:
-                if isinstance(argument, ast.Starred):
+                if isinstance(argument, Starred):
                     argument = argument.value
                 if self.code_of(argument) == owner:
                     return True
         return False
 
     # -- returned (or stacked) together ----------------------------------------------------------
-    def _check_returned_together(self, function: ast.AST, body: list[ast.AST], scope) -> None:  # type: ignore[no-untyped-def]
+    def _check_returned_together(self, function: AST, body: list[AST], scope) -> None:  # type: ignore[no-untyped-def]
         groups: list[list[ast.expr]] = []
         for value in scope.returns:
             if isinstance(value, (ast.Tuple, ast.List)):
@@ -545,7 +549,7 @@ class FreeVectorsLeftBehind(FactRule):
             elif isinstance(value, ast.Dict):
                 groups.append([v for v in value.values if v is not None])
         for node in body:
-            if isinstance(node, ast.Call) and last_name(node.func) in _STACKERS and self.facts.is_array_call(node.func, *_STACKERS):
+            if isinstance(node, Call) and last_name(node.func) in _STACKERS and self.facts.is_array_call(node.func, *_STACKERS):
                 arguments = positional_args(node)
                 if arguments and isinstance(arguments[0], (ast.List, ast.Tuple)):
                     groups.append(list(arguments[0].elts))
@@ -553,8 +557,8 @@ class FreeVectorsLeftBehind(FactRule):
         wrappers: set[int] = set()
         by_owner: dict[str, list[ast.expr]] = {}
         for node in body:
-            if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], (ast.Attribute, ast.Subscript)):
-                word = node.targets[0].attr if isinstance(node.targets[0], ast.Attribute) else string(node.targets[0].slice)
+            if isinstance(node, Assign) and len(node.targets) == 1 and isinstance(node.targets[0], (Attribute, Subscript)):
+                word = node.targets[0].attr if isinstance(node.targets[0], Attribute) else string(node.targets[0].slice)
                 if word is None or _role(word) not in ("position", "free"):
                     continue
                 member = self._member(node.targets[0])
@@ -567,7 +571,7 @@ class FreeVectorsLeftBehind(FactRule):
         groups += [values for values in by_owner.values() if len(values) > 1]
         touched: set | None = None  # type: ignore[type-arg]
         for group in groups:
-            names = [element for element in group if isinstance(element, ast.Name)]
+            names = [element for element in group if isinstance(element, Name)]
             if len(names) < 2 or not any(_role(name.id) == "free" for name in names):
                 continue
             moved = [(name, site) for name in names for site in [self._moved_position(name, scope)] if site is not None]
@@ -586,7 +590,7 @@ class FreeVectorsLeftBehind(FactRule):
                 )
                 return
 
-    def _moved_position(self, name: ast.Name, scope) -> ast.AST | None:  # type: ignore[no-untyped-def]
+    def _moved_position(self, name: Name, scope) -> AST | None:  # type: ignore[no-untyped-def]
         """Where a local name is bound to a rotated position (`pts = (T @ pts_h.T).T[:, :3]`)."""
         for binding in scope.bindings.get(name.id, []):
             if not isinstance(binding, ast.expr):
@@ -597,12 +601,12 @@ class FreeVectorsLeftBehind(FactRule):
                     for value, operator in ((product.left, product.right), (product.right, product.left)):
                         if self._is_position(value) and self._is_operator(operator):
                             return binding
-                if isinstance(node, ast.Call) and node.args and self._rotating_call(node):
+                if isinstance(node, Call) and node.args and self._rotating_call(node):
                     if self._is_position(node.args[0]):
                         return binding
         return None
 
-    def _is_position(self, node: ast.AST) -> bool:
+    def _is_position(self, node: AST) -> bool:
         facts = self.facts
         node = _peel(node)
         homogeneous = facts.homogeneous(node)
@@ -610,10 +614,10 @@ class FreeVectorsLeftBehind(FactRule):
             node = _peel(homogeneous.inner)
         if facts.kind_of(node) == Kind.POINT:
             return True
-        word = last_name(node) if not isinstance(node, ast.Subscript) else string(node.slice)
+        word = last_name(node) if not isinstance(node, Subscript) else string(node.slice)
         return word is not None and _role(word) == "position"
 
-    def _free_left_behind(self, vector: ast.Name, scope, touched, function: ast.AST, moved: list[str]) -> bool:  # type: ignore[no-untyped-def]
+    def _free_left_behind(self, vector: Name, scope, touched, function: AST, moved: list[str]) -> bool:  # type: ignore[no-untyped-def]
         if vector.id in moved or _role(vector.id) != "free" or frames_of_name(vector.id, self.facts.config):
             return False
         if self.facts.kind_of(vector) not in FREE:
@@ -627,7 +631,7 @@ class FreeVectorsLeftBehind(FactRule):
             if isinstance(binding, ast.expr):
                 if self._rotation_in(binding) is not None:
                     return False
-                if any(isinstance(n, ast.Name) and n.id in moved for n in (binding, *walk_within(binding))):
+                if any(isinstance(n, Name) and n.id in moved for n in (binding, *walk_within(binding))):
                     return False  # computed from the moved positions
             elif not isinstance(binding, ParamBinding):
                 return False
@@ -660,15 +664,15 @@ def _role(word: str) -> str | None:
     return None
 
 
-def _is_self_attribute(target: ast.AST, name: str) -> bool:
-    return isinstance(target, ast.Attribute) and target.attr == name and isinstance(target.value, ast.Name) and target.value.id == "self"
+def _is_self_attribute(target: AST, name: str) -> bool:
+    return isinstance(target, Attribute) and target.attr == name and isinstance(target.value, Name) and target.value.id == "self"
 
 
-def _may_hold_positions(target: ast.AST) -> bool:
+def _may_hold_positions(target: AST) -> bool:
     """A cheap test before the owner's text is looked up: `x.center`, `x["points"]`, `x[:, :3]`, `x[:, 1]`."""
-    if isinstance(target, ast.Attribute):
+    if isinstance(target, Attribute):
         return _role(target.attr) == "position"
-    if isinstance(target, ast.Subscript):
+    if isinstance(target, Subscript):
         key = string(target.slice)
         if key is not None:
             return _role(key) == "position"
@@ -677,16 +681,16 @@ def _may_hold_positions(target: ast.AST) -> bool:
     return False
 
 
-def _peel(node: ast.AST) -> ast.AST:
+def _peel(node: AST) -> AST:
     """Through transposes, copies and dtype moves (`x.T`, `np.asarray(x)`, `x.float()`)."""
     for _ in range(8):
         inner = transposed_value(node)
         if inner is not None:
             node = inner
             continue
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             name = last_name(node.func)
-            if isinstance(node.func, ast.Attribute) and name in ("copy", "clone", "float", "double", "astype", "to", "detach", "cpu", "numpy", "contiguous"):
+            if isinstance(node.func, Attribute) and name in ("copy", "clone", "float", "double", "astype", "to", "detach", "cpu", "numpy", "contiguous"):
                 node = node.func.value
                 continue
             if name in ("asarray", "array", "as_tensor", "tensor", "from_numpy", "ascontiguousarray") and node.args:
@@ -696,34 +700,34 @@ def _peel(node: ast.AST) -> ast.AST:
     return node
 
 
-def _mentions_cos_and_sin(node: ast.AST) -> bool:
-    called = {last_name(inner.func) for inner in ast.walk(node) if isinstance(inner, ast.Call)}
-    named = {inner.id for inner in ast.walk(node) if isinstance(inner, ast.Name)}
+def _mentions_cos_and_sin(node: AST) -> bool:
+    called = {last_name(inner.func) for inner in ast.walk(node) if isinstance(inner, Call)}
+    named = {inner.id for inner in ast.walk(node) if isinstance(inner, Name)}
     return bool({"cos", "sin"} <= called or {"rot_cos", "rot_sin"} <= named or {"cos", "sin"} <= named or {"c", "s"} <= named)
 
 
-def _int(node: ast.AST | None) -> int | None:
-    if isinstance(node, ast.Constant) and type(node.value) is int:
+def _int(node: AST | None) -> int | None:
+    if isinstance(node, Constant) and type(node.value) is int:
         return node.value
     return None
 
 
-def _is_batch(node: ast.AST) -> bool:
-    if isinstance(node, ast.Slice):
+def _is_batch(node: AST) -> bool:
+    if isinstance(node, Slice):
         return node.lower is None and node.upper is None and node.step is None
-    if isinstance(node, ast.Constant):
+    if isinstance(node, Constant):
         return node.value is None or node.value is Ellipsis
-    return isinstance(node, ast.Attribute) and node.attr == "newaxis"
+    return isinstance(node, Attribute) and node.attr == "newaxis"
 
 
-def _columns(node: ast.Subscript) -> frozenset[int] | None:
+def _columns(node: Subscript) -> frozenset[int] | None:
     """`x[:, 0:3]` -> {0, 1, 2}, `x[..., 7]` -> {7}, `x[None, :, :3]` -> {0, 1, 2}; rows are not columns."""
     index = node.slice
     parts = list(index.elts) if isinstance(index, ast.Tuple) else [index]
     if len(parts) < 2 or not all(_is_batch(part) for part in parts[:-1]):
         return None
     last = parts[-1]
-    if isinstance(last, ast.Slice):
+    if isinstance(last, Slice):
         if last.step is not None:
             return None
         lower = 0 if last.lower is None else _int(last.lower)
@@ -735,20 +739,20 @@ def _columns(node: ast.Subscript) -> frozenset[int] | None:
     return None if value is None or value < 0 else frozenset({value})
 
 
-def _mirrors(value: ast.AST, target: ast.AST) -> bool:
+def _mirrors(value: AST, target: AST) -> bool:
     """`x[:, 1] = -x[:, 1]`: a mirror of one position column."""
-    return isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub) and ast.unparse(value.operand) == ast.unparse(target)
+    return isinstance(value, UnaryOp) and isinstance(value.op, USub) and ast.unparse(value.operand) == ast.unparse(target)
 
 
-def _stores(body: list[ast.AST]) -> list[tuple[ast.expr, ast.expr]]:
+def _stores(body: list[AST]) -> list[tuple[ast.expr, ast.expr]]:
     """(target, value) of every assignment in the function; tuple targets give each element."""
     found: list[tuple[ast.expr, ast.expr]] = []
     for node in body:
-        if isinstance(node, ast.Assign):
+        if isinstance(node, Assign):
             for target in node.targets:
                 elements = target.elts if isinstance(target, (ast.Tuple, ast.List)) else [target]
                 found.extend((element, node.value) for element in elements)
-        elif isinstance(node, (ast.AugAssign, ast.AnnAssign)) and node.value is not None:
+        elif isinstance(node, (AugAssign, AnnAssign)) and node.value is not None:
             found.append((node.target, node.value))
     return found
 
@@ -771,7 +775,7 @@ class _Layouts:
         self.source = source
         self._cache: dict[str, tuple[dict[int, int], int | None, str] | None] = {}
 
-    def of(self, owner: str, facts, function: ast.AST) -> tuple[dict[int, int], int | None, str] | None:  # type: ignore[no-untyped-def]
+    def of(self, owner: str, facts, function: AST) -> tuple[dict[int, int], int | None, str] | None:  # type: ignore[no-untyped-def]
         """(velocity column -> axis, heading column, where it was read) for the array `owner`: a layout
         written in the function itself first, else one elsewhere in the module."""
         lines = self.source.splitlines()
@@ -800,8 +804,8 @@ class _Layouts:
             if velocity or heading is not None:
                 return velocity, heading, f"layout on line {number}"
         # `vel = boxes[:, 7:9]`: a velocity-named slice of the same array
-        for node in facts.index.nodes(ast.Assign) if slices else []:
-            if len(node.targets) != 1 or not isinstance(node.targets[0], ast.Name) or not isinstance(node.value, ast.Subscript):
+        for node in facts.index.nodes(Assign) if slices else []:
+            if len(node.targets) != 1 or not isinstance(node.targets[0], Name) or not isinstance(node.value, Subscript):
                 continue
             name = node.targets[0].id
             if _role(name) != "free" or not set(tokens(name)) & {"vel", "vels", "velo", "velocity", "velocities"}:

@@ -23,6 +23,46 @@ from __future__ import annotations
 import ast
 import math
 import re
+from ast import (
+    AST,
+    Add,
+    AnnAssign,
+    Assign,
+    AsyncFor,
+    AsyncFunctionDef,
+    AsyncWith,
+    Attribute,
+    AugAssign,
+    BinOp,
+    BoolOp,
+    Call,
+    ClassDef,
+    Constant,
+    Div,
+    Expr,
+    For,
+    FunctionDef,
+    Global,
+    If,
+    IfExp,
+    Lambda,
+    Load,
+    Match,
+    Module,
+    Mult,
+    Name,
+    Raise,
+    Return,
+    Starred,
+    Sub,
+    Subscript,
+    Try,
+    UAdd,
+    UnaryOp,
+    USub,
+    While,
+    With,
+)
 from collections import Counter
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -128,7 +168,7 @@ class AngleUnits:
         self.facts = facts
         self._units: NodeMemo[Unit] = NodeMemo(_MAX_DEPTH)
 
-    def converts(self, call: ast.Call) -> str | None:
+    def converts(self, call: Call) -> str | None:
         """For `np.radians(x)` / `np.deg2rad(x)`, RADIANS (the unit it returns); DEGREES for
         `np.degrees` / `np.rad2deg`; None for anything else."""
         qualified = self.facts.qualified_name(call.func) or ""
@@ -142,33 +182,33 @@ class AngleUnits:
 
     def _unit(self, node: ast.expr) -> Unit | None:
         facts = self.facts
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        if isinstance(node, UnaryOp) and isinstance(node.op, (USub, UAdd)):
             return self.unit_of(node.operand)
-        if isinstance(node, ast.BinOp):
+        if isinstance(node, BinOp):
             return self._unit_of_arithmetic(node)
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             return self._unit_of_call(node)
         if self._is_pi(node):
             return Unit(RADIANS, f"`{facts.code_of(node)}` is an angle in radians", False)
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             return self._unit_of_name(node)
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             stated = name_unit(node.attr)
             by_name = Unit(stated, f"the name `{node.attr}` says {_word(stated)}", True) if stated else None
             literal = self.bound_literal(node)
             if literal is not None:
                 return self._agree(by_name, [literal])
-            if isinstance(node.value, ast.Name) and node.value.id == "self":
+            if isinstance(node.value, Name) and node.value.id == "self":
                 stores = facts.index.self_attribute_stores.get(node.attr, [])
                 return self._agree(by_name, [self.unit_of(store) for store in stores] if stores else [])
             return by_name
-        if isinstance(node, ast.Subscript) and isinstance(node.value, (ast.Name, ast.Attribute)):
+        if isinstance(node, Subscript) and isinstance(node.value, (Name, Attribute)):
             return self.unit_of(node.value)  # `angles_deg[0]`: an element of an array of angles has its unit
-        if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Call):
+        if isinstance(node, Subscript) and isinstance(node.value, Call):
             return self._unit_of_library_call(node.value)  # `euler_from_quaternion(q)[2]`
         return None
 
-    def converts_by_hand(self, node: ast.BinOp) -> tuple[str, ast.expr] | None:
+    def converts_by_hand(self, node: BinOp) -> tuple[str, ast.expr] | None:
         """`x * np.pi / 180`, `x / 180 * math.pi`, `x * (np.pi / 180)`, `x * 0.0174533`: (RADIANS, x);
         `x * 180 / np.pi`, `x * 57.2958`: (DEGREES, x); None for any other product."""
         numerator: list[ast.expr] = []
@@ -188,18 +228,18 @@ class AngleUnits:
             return DEGREES, values[0]
         return None
 
-    def _unit_of_arithmetic(self, node: ast.BinOp) -> Unit | None:
-        if isinstance(node.op, (ast.Mult, ast.Div)):
+    def _unit_of_arithmetic(self, node: BinOp) -> Unit | None:
+        if isinstance(node.op, (Mult, Div)):
             converted = self.converts_by_hand(node)
             if converted is not None:
                 return Unit(converted[0], f"`{self.facts.code_of(node)}` converts to {_word(converted[0])}", False)
             # halving or scaling by a plain number keeps the unit; anything else may convert it
             if number(node.right) is not None and not _is_conversion_factor(number(node.right)):
                 return self.unit_of(node.left)
-            if isinstance(node.op, ast.Mult) and number(node.left) is not None and not _is_conversion_factor(number(node.left)):
+            if isinstance(node.op, Mult) and number(node.left) is not None and not _is_conversion_factor(number(node.left)):
                 return self.unit_of(node.right)
             return None
-        if isinstance(node.op, (ast.Add, ast.Sub)):
+        if isinstance(node.op, (Add, Sub)):
             left = None if number(node.left) is not None else self.unit_of(node.left)
             right = None if number(node.right) is not None else self.unit_of(node.right)
             if number(node.left) is not None:
@@ -210,7 +250,7 @@ class AngleUnits:
                 return left
         return None
 
-    def _unit_of_call(self, call: ast.Call) -> Unit | None:
+    def _unit_of_call(self, call: Call) -> Unit | None:
         facts = self.facts
         converted = self.converts(call)
         if converted is not None:
@@ -222,7 +262,7 @@ class AngleUnits:
                 return Unit(unit, f"`{facts.code_of(call.func)}` returns {_word(unit)}: {evidence}", by_name)
         return self._unit_of_library_call(call)
 
-    def _unit_of_library_call(self, call: ast.Call) -> Unit | None:
+    def _unit_of_library_call(self, call: Call) -> Unit | None:
         """The unit a library call returns its angles in (not asking project helpers' summaries)."""
         facts = self.facts
         converted = self.converts(call)
@@ -235,22 +275,22 @@ class AngleUnits:
         returned = RETURNED_ANGLES.get(qualified)
         if returned is not None:
             return Unit(returned, f"`{qualified}` returns its angles in {_word(returned)}", False)
-        method = EULER_METHOD_NAMES.get(call.func.attr) if isinstance(call.func, ast.Attribute) and not call.args else None
+        method = EULER_METHOD_NAMES.get(call.func.attr) if isinstance(call.func, Attribute) and not call.args else None
         if method is not None:  # `imu.getRollPitchYaw()`: matched by its camelCase name on any receiver
             returned = RETURNED_EULER_METHODS[method][0]
             return Unit(returned, f"`{method}` returns its angles in {_word(returned)}", False)
-        if isinstance(call.func, ast.Attribute) and call.func.attr in ("as_euler", "magnitude") and not call.keywords:
+        if isinstance(call.func, Attribute) and call.func.attr in ("as_euler", "magnitude") and not call.keywords:
             from geolint.factbase.rotations import is_scipy_rotation_value
 
             if is_scipy_rotation_value(facts, call.func.value):
                 return Unit(RADIANS, f"scipy's `{call.func.attr}` returns radians", False)
-        if isinstance(call.func, ast.Attribute) and call.func.attr == "as_euler":
+        if isinstance(call.func, Attribute) and call.func.attr == "as_euler":
             degrees = keyword(call, "degrees")
-            if degrees is not None and isinstance(degrees.value, ast.Constant) and degrees.value.value is True:
+            if degrees is not None and isinstance(degrees.value, Constant) and degrees.value.value is True:
                 return Unit(DEGREES, "`as_euler(..., degrees=True)` returns degrees", False)
         return None
 
-    def _unit_of_name(self, node: ast.Name) -> Unit | None:
+    def _unit_of_name(self, node: Name) -> Unit | None:
         facts = self.facts
         stated = name_unit(node.id)
         by_name = Unit(stated, f"the name `{node.id}` says {_word(stated)}", True) if stated else None
@@ -277,9 +317,9 @@ class AngleUnits:
         value = binding.value
         if isinstance(value, (ast.Tuple, ast.List)):
             return self.unit_of(value.elts[binding.position]) if binding.position < len(value.elts) else None
-        return self._unit_of_library_call(value) if isinstance(value, ast.Call) else None
+        return self._unit_of_library_call(value) if isinstance(value, Call) else None
 
-    def bound_literal(self, node: ast.Name | ast.Attribute) -> Unit | None:
+    def bound_literal(self, node: Name | Attribute) -> Unit | None:
         """DEGREES when `node` is a constant bound once, in the whole module it lives in, to a literal
         angle that is no plausible radian value (above 2 pi) but a plausible degree value
         (`PHI = 73.17`, `self.tilt = 30`); None otherwise (any other store, `+=`, `global`)."""
@@ -293,7 +333,7 @@ class AngleUnits:
 
     def _literal_binding(self, node: ast.expr) -> tuple[float, str] | None:
         facts = self.facts
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             bound = facts.bindings(node) or []
             if node.id in facts.index.scope_of(node).augmented or node.id in _declared_global(facts):
                 return None
@@ -303,14 +343,14 @@ class AngleUnits:
             if imported is not None and facts.cross_module and len(bound) == 1:
                 return _module_constant(facts, imported)  # `from config import TILT`
             return None
-        if not isinstance(node, ast.Attribute):
+        if not isinstance(node, Attribute):
             return None
         owner = node.value
-        if isinstance(owner, ast.Name) and owner.id == "self":
+        if isinstance(owner, Name) and owner.id == "self":
             return _instance_or_class_literal(facts, enclosing_class(facts, node), node.attr, "")
         located = _class_of(facts, owner)
         if located is None:
-            if isinstance(owner, ast.Name) and facts.cross_module and owner.id in facts.index.imports and not _attribute_stores(facts)[node.attr]:
+            if isinstance(owner, Name) and facts.cross_module and owner.id in facts.index.imports and not _attribute_stores(facts)[node.attr]:
                 return _module_constant(facts, f"{facts.index.imports[owner.id]}.{node.attr}")  # `config.TILT`
             return None
         other, cls, instance = located
@@ -332,7 +372,7 @@ class AngleUnits:
             return known[0]
         return None
 
-    def _is_pi(self, node: ast.AST) -> bool:
+    def _is_pi(self, node: AST) -> bool:
         qualified = self.facts.qualified_name(node) or ""
         return qualified in ("numpy.pi", "math.pi", "torch.pi")
 
@@ -341,10 +381,10 @@ class _LibraryUnits(AngleUnits):
     """`unit_of` from this module's code and libraries only: no project helper's summary, no constant of
     another module (a cheap first look that reads no other module)."""
 
-    def _unit_of_call(self, call: ast.Call) -> Unit | None:
+    def _unit_of_call(self, call: Call) -> Unit | None:
         return self._unit_of_library_call(call)
 
-    def bound_literal(self, node: ast.Name | ast.Attribute) -> Unit | None:
+    def bound_literal(self, node: Name | Attribute) -> Unit | None:
         return None
 
 
@@ -370,7 +410,7 @@ def _literal_at(value: ast.expr, where: str) -> tuple[float, str] | None:
 
 def _declared_global(facts: FactBase) -> frozenset[str]:
     """Names some function of the module declares `global` (it may rebind them)."""
-    return facts.module_fact("global names", lambda: frozenset(name for node in facts.index.nodes(ast.Global) for name in node.names))  # type: ignore[attr-defined]
+    return facts.module_fact("global names", lambda: frozenset(name for node in facts.index.nodes(Global) for name in node.names))  # type: ignore[attr-defined]
 
 
 def _attribute_stores(facts: FactBase) -> Counter[str]:
@@ -378,11 +418,11 @@ def _attribute_stores(facts: FactBase) -> Counter[str]:
 
     def count() -> Counter[str]:
         found: Counter[str] = Counter()
-        for node in facts.index.nodes(ast.Attribute):
-            if not isinstance(node.ctx, ast.Load):  # type: ignore[attr-defined]
+        for node in facts.index.nodes(Attribute):
+            if not isinstance(node.ctx, Load):  # type: ignore[attr-defined]
                 found[node.attr] += 1  # type: ignore[attr-defined]
-        for node in facts.index.nodes(ast.Call):  # `setattr(self, "tilt", ...)`
-            if isinstance(node.func, ast.Name) and node.func.id == "setattr" and len(node.args) > 1:  # type: ignore[attr-defined]
+        for node in facts.index.nodes(Call):  # `setattr(self, "tilt", ...)`
+            if isinstance(node.func, Name) and node.func.id == "setattr" and len(node.args) > 1:  # type: ignore[attr-defined]
                 name = string(node.args[1])  # type: ignore[attr-defined]
                 found[name if name is not None else "*"] += 1 << 20 if name is None else 1
         return found
@@ -391,21 +431,21 @@ def _attribute_stores(facts: FactBase) -> Counter[str]:
     return counted if not counted["*"] else Counter({name: 1 << 20 for name in counted})  # a computed `setattr`: anything
 
 
-def enclosing_class(facts: FactBase, node: ast.AST) -> ast.ClassDef | None:
+def enclosing_class(facts: FactBase, node: AST) -> ClassDef | None:
     current = facts.parent(node)
-    while current is not None and not isinstance(current, ast.ClassDef):
+    while current is not None and not isinstance(current, ClassDef):
         current = facts.parent(current)
     return current
 
 
-def _top_level_class(facts: FactBase, name: str) -> ast.ClassDef | None:
+def _top_level_class(facts: FactBase, name: str) -> ClassDef | None:
     """The module's one top-level class of that name (None when there is none, or two)."""
     return _top_level_classes(facts).get(name)
 
 
-def _instance_or_class_literal(facts: FactBase, cls: ast.ClassDef | None, attr: str, where: str) -> tuple[float, str] | None:
+def _instance_or_class_literal(facts: FactBase, cls: ClassDef | None, attr: str, where: str) -> tuple[float, str] | None:
     """`self.<attr> = <literal>`, the module's only store of `.attr`, inside `cls`; else `cls`'s class attribute."""
-    if cls is None or cls.bases and not all(isinstance(base, ast.Name) and base.id == "object" for base in cls.bases):
+    if cls is None or cls.bases and not all(isinstance(base, Name) and base.id == "object" for base in cls.bases):
         return None  # a base class (here or in a library) may set it too
     stores = facts.index.self_attribute_stores.get(attr, [])
     if stores:
@@ -415,9 +455,9 @@ def _instance_or_class_literal(facts: FactBase, cls: ast.ClassDef | None, attr: 
     return _class_literal(facts, cls, attr, where)
 
 
-def _class_literal(facts: FactBase, cls: ast.ClassDef, attr: str, where: str) -> tuple[float, str] | None:
+def _class_literal(facts: FactBase, cls: ClassDef, attr: str, where: str) -> tuple[float, str] | None:
     """`class Config: TILT = 30`, bound once in the class body and stored nowhere in the module."""
-    if _attribute_stores(facts)[attr] or (cls.bases and not all(isinstance(base, ast.Name) and base.id == "object" for base in cls.bases)):
+    if _attribute_stores(facts)[attr] or (cls.bases and not all(isinstance(base, Name) and base.id == "object" for base in cls.bases)):
         return None
     scope: Scope | None = facts.index.scopes.get(cls)
     bound = [] if scope is None else scope.bindings.get(attr, [])
@@ -436,23 +476,23 @@ def _module_constant(facts: FactBase, qualified: str) -> tuple[float, str] | Non
     return None if value is None else _literal_at(value, f"in {_short_path(other.path)}")
 
 
-def _class_of(facts: FactBase, owner: ast.expr) -> tuple[FactBase, ast.ClassDef, bool] | None:
+def _class_of(facts: FactBase, owner: ast.expr) -> tuple[FactBase, ClassDef, bool] | None:
     """For `Config.TILT` the class (instance False); for `cfg.tilt` where `cfg` (a name or `self`
     attribute) is only ever `Config(...)`, or a parameter annotated `Config`, the class (instance True). The class is a top-level class
     of this module or of the project module it is imported from."""
     instance = False
-    if isinstance(owner, ast.Name):
+    if isinstance(owner, Name):
         bound = facts.bindings(owner) or []
-        if len(bound) == 1 and isinstance(bound[0], ast.Call):
+        if len(bound) == 1 and isinstance(bound[0], Call):
             owner, instance = bound[0].func, True
-        elif len(bound) == 1 and isinstance(bound[0], ParamBinding) and isinstance(bound[0].arg.annotation, ast.Name):
+        elif len(bound) == 1 and isinstance(bound[0], ParamBinding) and isinstance(bound[0].arg.annotation, Name):
             owner, instance = bound[0].arg.annotation, True  # `def lean(config: Configuration)`
-    elif isinstance(owner, ast.Attribute) and isinstance(owner.value, ast.Name) and owner.value.id == "self":
+    elif isinstance(owner, Attribute) and isinstance(owner.value, Name) and owner.value.id == "self":
         stores = facts.index.self_attribute_stores.get(owner.attr, [])
-        if len(stores) != 1 or not isinstance(stores[0], ast.Call):
+        if len(stores) != 1 or not isinstance(stores[0], Call):
             return None
         owner, instance = stores[0].func, True
-    if not isinstance(owner, ast.Name):
+    if not isinstance(owner, Name):
         return None
     found = project_class(facts, owner)
     return None if found is None else (*found, instance)
@@ -464,9 +504,9 @@ def _short_path(path: str) -> str:
 
 def _factors(node: ast.expr, numerator: list[ast.expr], denominator: list[ast.expr], inverted: bool = False) -> None:
     """The factors of a chain of `*` and `/` (`a * b / c` -> [a, b] over [c])."""
-    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.Div)):
+    if isinstance(node, BinOp) and isinstance(node.op, (Mult, Div)):
         _factors(node.left, numerator, denominator, inverted)
-        _factors(node.right, numerator, denominator, inverted != isinstance(node.op, ast.Div))
+        _factors(node.right, numerator, denominator, inverted != isinstance(node.op, Div))
         return
     (denominator if inverted else numerator).append(node)
 
@@ -486,10 +526,10 @@ def _is_degrees_per_radian(value: float) -> bool:
     return abs(abs(value) - 57.29578) < 1e-2
 
 
-def report_hand_conversion_of_converted(rule, node: ast.BinOp, into: str, units: AngleUnits) -> None:  # type: ignore[no-untyped-def]
+def report_hand_conversion_of_converted(rule, node: BinOp, into: str, units: AngleUnits) -> None:  # type: ignore[no-untyped-def]
     """`yaw * 180 / np.pi` (into degrees) or `yaw * np.pi / 180` (into radians) written by hand, of a
     value already in that unit: the twin of `np.degrees(yaw_deg)` / `np.radians(yaw)`."""
-    if not isinstance(node.op, (ast.Mult, ast.Div)):
+    if not isinstance(node.op, (Mult, Div)):
         return
     converted = units.converts_by_hand(node)
     if converted is not None and converted[0] == into:
@@ -524,7 +564,7 @@ def may_read_radians(called: str) -> bool:
     return called in _RADIAN_API_NAMES or called.startswith(("euler2", "axangle2")) or called.endswith(("_from_euler", "_from_angle"))
 
 
-def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
+def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
     """The angle arguments of a call to a radian API, or None when the call is not one (or opted into degrees)."""
     func = node.func
     if not may_read_radians(facts.called_name(func) or ""):
@@ -533,7 +573,7 @@ def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
     name = last_name(func) or ""
     if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
         degrees = keyword(node, "degrees")
-        if degrees is not None and not (isinstance(degrees.value, ast.Constant) and degrees.value.value is False):
+        if degrees is not None and not (isinstance(degrees.value, Constant) and degrees.value.value is False):
             return None
         if name == "from_euler":
             angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
@@ -560,7 +600,7 @@ def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
         return positional[:3]
     if qualified in ROTATION_VECTOR_READERS:
         return positional[:1]
-    if name == "getQuaternionFromEuler" and (qualified.startswith("pybullet") or isinstance(func, ast.Attribute)):
+    if name == "getQuaternionFromEuler" and (qualified.startswith("pybullet") or isinstance(func, Attribute)):
         # pybullet, on the module or on a BulletClient: one (roll, pitch, yaw) sequence in radians
         return positional[:1] or [given.value for given in node.keywords if given.arg == "eulerAngles"]
     if is_trig_or_conversion(facts, node):
@@ -568,7 +608,7 @@ def radian_arguments(facts: FactBase, node: ast.Call) -> list[ast.expr] | None:
     return None
 
 
-def is_trig_or_conversion(facts: FactBase, node: ast.Call) -> bool:
+def is_trig_or_conversion(facts: FactBase, node: Call) -> bool:
     """`np.sin(x)`, `math.cos(x)`, and `np.degrees(x)` / `np.rad2deg(x)` (which read radians too)."""
     func = node.func
     called = facts.called_name(func)
@@ -583,7 +623,7 @@ def is_trig_or_conversion(facts: FactBase, node: ast.Call) -> bool:
     return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
 
 
-def degree_arguments(facts: FactBase, call: ast.Call) -> list[ast.expr]:
+def degree_arguments(facts: FactBase, call: Call) -> list[ast.expr]:
     """The angle arguments of a library call that reads degrees (`DEGREE_CONSUMERS`), else [].
     `glRotatef` also counts under a star import of OpenGL or pyglet (the name is OpenGL's own)."""
     if facts.called_name(call.func) not in DEGREE_CONSUMER_NAMES:
@@ -610,7 +650,7 @@ def degree_arguments(facts: FactBase, call: ast.Call) -> list[ast.expr]:
     return arguments
 
 
-def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | None:
+def unit_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str | None:
     """The unit `call` reads its argument `argument` in, when the call always runs with it (not under
     a condition of its function): RADIANS for a radian API (`np.cos(theta)`, `from_euler` without
     `degrees=True`), DEGREES for a conversion from degrees (`np.radians(a)`) or `from_euler(...,
@@ -628,21 +668,21 @@ def unit_read_by(facts: FactBase, call: ast.Call, argument: ast.expr) -> str | N
         return DEGREES
     if is_scipy_rotation_method(facts, call.func, "from_euler"):
         degrees = keyword(call, "degrees")
-        if degrees is not None and isinstance(degrees.value, ast.Constant) and degrees.value.value is True:
+        if degrees is not None and isinstance(degrees.value, Constant) and degrees.value.value is True:
             angles = positional[1] if len(positional) > 1 else getattr(keyword(call, "angles"), "value", None)
             if angles is not None and any(element is argument for element in _angle_elements(angles)):
                 return DEGREES
     return None
 
 
-def rotation_vector_factors(facts: FactBase, call: ast.Call) -> list[ast.expr]:
+def rotation_vector_factors(facts: FactBase, call: Call) -> list[ast.expr]:
     """For a call reading a rotation vector in radians written as a product (`from_rotvec(theta * axis)`,
     numpy-quaternion's `from_rotation_vector(angle * axis)`): the product's factors that are no number
     literal (the angle among them); [] for any other call."""
     if facts.called_name(call.func) not in _ROTATION_VECTOR_NAMES:
         return []
     arguments = radian_arguments(facts, call)
-    if not arguments or not isinstance(arguments[0], ast.BinOp) or not isinstance(arguments[0].op, ast.Mult):
+    if not arguments or not isinstance(arguments[0], BinOp) or not isinstance(arguments[0].op, Mult):
         return []
     product = arguments[0]
     return [factor for factor in (product.left, product.right) if number(factor) is None]
@@ -654,36 +694,36 @@ def _angle_elements(node: ast.expr) -> list[ast.expr]:
     return [node]
 
 
-_Block = ast.FunctionDef | ast.AsyncFunctionDef | ast.With | ast.AsyncWith  # a body that may be left early
+_Block = FunctionDef | AsyncFunctionDef | With | AsyncWith  # a body that may be left early
 
 # a loop's body may run no time at all, like a branch's
 _BRANCHES = (
-    ast.If, ast.IfExp, ast.Try, getattr(ast, "TryStar", ast.Try), ast.While, ast.For, ast.AsyncFor, ast.BoolOp,
-    ast.comprehension, ast.Match, ast.Lambda,
+    If, IfExp, Try, getattr(ast, "TryStar", Try), While, For, AsyncFor, BoolOp,
+    ast.comprehension, Match, Lambda,
 )  # fmt: skip
 
 
-def _unconditional(facts: FactBase, node: ast.AST) -> bool:
+def _unconditional(facts: FactBase, node: AST) -> bool:
     """No branch between `node` and its function, and no statement before it, in the function's body
     or in the body of a `with` around it, that may leave early (`if degrees: return ...`): it runs
     whenever the function does."""
     current = facts.parent(node)
     statement = node
-    blocks: list[tuple[_Block, ast.AST]] = []  # each block around `node` with its statement that holds `node`
-    while current is not None and not isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Module)):
+    blocks: list[tuple[_Block, AST]] = []  # each block around `node` with its statement that holds `node`
+    while current is not None and not isinstance(current, (FunctionDef, AsyncFunctionDef, Module)):
         if isinstance(current, _BRANCHES):
             return False
-        if isinstance(current, (ast.With, ast.AsyncWith)) and statement in current.body:
+        if isinstance(current, (With, AsyncWith)) and statement in current.body:
             blocks.append((current, statement))  # (not in its items, which run before any exit of its body)
         statement = current
         current = facts.parent(current)
-    if not isinstance(current, (ast.FunctionDef, ast.AsyncFunctionDef)):
+    if not isinstance(current, (FunctionDef, AsyncFunctionDef)):
         return True
     blocks.append((current, statement))
     return all(getattr(held, "lineno", 0) <= _first_early_exit(facts, block) for block, held in blocks)
 
 
-_DEFINITIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+_DEFINITIONS = (FunctionDef, AsyncFunctionDef, ClassDef)
 
 
 def _first_early_exit(facts: FactBase, block: _Block) -> int:
@@ -695,27 +735,27 @@ def _first_early_exit(facts: FactBase, block: _Block) -> int:
 
 def _early_exit_line(body: list[ast.stmt]) -> int:
     for statement in body:
-        if isinstance(statement, (ast.Return, ast.Raise, ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign, *_DEFINITIONS)):
+        if isinstance(statement, (Return, Raise, Expr, Assign, AugAssign, AnnAssign, *_DEFINITIONS)):
             continue  # straight-line statements (a `return` of the block itself ends it for every path alike)
         for inner in walk_within(statement):
-            if isinstance(inner, (ast.Return, ast.Raise)):
+            if isinstance(inner, (Return, Raise)):
                 return statement.end_lineno or statement.lineno
     return 1 << 30
 
 
 # the expressions `AngleUnits.unit_of` can know a unit of; for any other (a constant, a list, a
 # comparison...) it is None, found without following anything
-_MAY_HAVE_UNIT = frozenset({ast.UnaryOp, ast.BinOp, ast.Call, ast.Name, ast.Attribute, ast.Subscript})
+_MAY_HAVE_UNIT = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript})
 
 
-def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:
+def helper_reads(facts: FactBase, call: Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:
     """The arguments of a call to a project helper that passes them, unchanged and unconditionally,
     to an API reading `unit` (directly or through further helpers), or names its parameter in that
     unit, each with how it gets there and whether only a name says so; and the arguments of a
     project class's constructor that stores them for a method to read in `unit` (`constructor_reads`)."""
     args = call.args
     if args and facts.may_have_summary(call):
-        if any(isinstance(arg, ast.Starred) for arg in args):
+        if any(isinstance(arg, Starred) for arg in args):
             return []
         units = facts.shared(AngleUnits) if units is None else units
         other = RADIANS if unit == DEGREES else DEGREES
@@ -727,9 +767,9 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
     if not args and not call.keywords:
         return []
     func = call.func
-    if type(func) is ast.Name and func.id in _top_level_classes(facts):  # type: ignore[attr-defined]
+    if type(func) is Name and func.id in _top_level_classes(facts):  # type: ignore[attr-defined]
         local = _top_level_class(facts, func.id)  # type: ignore[attr-defined]
-        if local is None or not constructor_reads(facts, local)[1] or any(isinstance(arg, ast.Starred) for arg in args):
+        if local is None or not constructor_reads(facts, local)[1] or any(isinstance(arg, Starred) for arg in args):
             return []  # a class of this module whose constructor reads no unit
         return _class_reads(facts, call, unit, local)
     if not args and facts.may_have_summary(call):
@@ -737,7 +777,7 @@ def helper_reads(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits |
     return []
 
 
-def _class_reads(facts: FactBase, call: ast.Call, unit: str, local: ast.ClassDef | None) -> list[tuple[ast.expr, str, bool]]:
+def _class_reads(facts: FactBase, call: Call, unit: str, local: ClassDef | None) -> list[tuple[ast.expr, str, bool]]:
     """`_constructor_reads_of` for a call of a class of this module (`local`) or, named in CapWords, of
     a project module, when an argument is in the other unit by this module's own evidence or a
     library's (asked before the class is looked up: not through a project helper's summary or another
@@ -746,7 +786,7 @@ def _class_reads(facts: FactBase, call: ast.Call, unit: str, local: ast.ClassDef
         if unit == RADIANS:
             return []  # a class of another module is asked for its degrees only (GEO305's files, which its trigger narrows)
         func = call.func
-        name = func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else ""
+        name = func.id if isinstance(func, Name) else func.attr if isinstance(func, Attribute) else ""
         if not name[:1].isupper():
             return []  # a class is named in CapWords
     other = RADIANS if unit == DEGREES else DEGREES
@@ -757,7 +797,7 @@ def _class_reads(facts: FactBase, call: ast.Call, unit: str, local: ast.ClassDef
     return _constructor_reads_of(facts, call, unit, cheap)
 
 
-def _summary_reads(facts: FactBase, call: ast.Call, unit: str, summary: FunctionSummary) -> list[tuple[ast.expr, str, bool]]:
+def _summary_reads(facts: FactBase, call: Call, unit: str, summary: FunctionSummary) -> list[tuple[ast.expr, str, bool]]:
     helper = facts.code_of(call.func)
     found = []
     for index, (read, where, by_name) in sorted(summary.reads_unit.items()):
@@ -771,18 +811,18 @@ def _summary_reads(facts: FactBase, call: ast.Call, unit: str, summary: Function
     return found
 
 
-def _top_level_classes(facts: FactBase) -> dict[str, ast.ClassDef | None]:
+def _top_level_classes(facts: FactBase) -> dict[str, ClassDef | None]:
     """The module's top-level classes by name; None for a name defined twice (read once per module)."""
 
-    def find() -> dict[str, ast.ClassDef | None]:
-        classes = [node for node in facts.index.tree.body if isinstance(node, ast.ClassDef)]
+    def find() -> dict[str, ClassDef | None]:
+        classes = [node for node in facts.index.tree.body if isinstance(node, ClassDef)]
         counts = Counter(node.name for node in classes)
         return {node.name: node if counts[node.name] == 1 else None for node in classes}
 
     return facts.module_fact("top-level classes", find)
 
 
-def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str, units: AngleUnits) -> list[tuple[ast.expr, str, bool]]:
+def _constructor_reads_of(facts: FactBase, call: Call, unit: str, units: AngleUnits) -> list[tuple[ast.expr, str, bool]]:
     """The arguments of a project class's constructor call that it reads in `unit` (`constructor_reads`),
     when one of them is in the other unit: the class first (its module is one the call's kind already
     asked for), the arguments' units only for the parameters it reads."""
@@ -810,19 +850,19 @@ def _constructor_reads_of(facts: FactBase, call: ast.Call, unit: str, units: Ang
     return found
 
 
-def _project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ast.ClassDef] | None:
+def _project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ClassDef] | None:
     return facts.memoised("project class", func, lambda: project_class(facts, func))
 
 
-def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ast.ClassDef] | None:
+def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ClassDef] | None:
     """The top-level class a called name is: of this module, or of the project module it is imported from."""
-    if isinstance(func, ast.Name):
+    if isinstance(func, Name):
         local = _top_level_class(facts, func.id)
         if local is not None:
             return facts, local
         if func.id not in facts.index.imports:
             return None
-    elif not isinstance(func, ast.Attribute):
+    elif not isinstance(func, Attribute):
         return None
     if not facts.cross_module:
         return None
@@ -834,7 +874,7 @@ def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ast.ClassD
     return None if cls is None else (other, cls)
 
 
-def constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
+def constructor_reads(facts: FactBase, cls: ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
     """What a class's constructor reads its parameters in: `__init__`'s parameters (without `self`) and,
     by index, the unit and where, for a parameter stored as it is (`self.yaw = yaw`, the class's only
     store of `self.yaw`, unconditionally in `__init__`) that a method of the class hands unconditionally
@@ -843,8 +883,8 @@ def constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, ..
     return facts.memoised("constructor reads", cls, lambda: _constructor_reads(facts, cls))
 
 
-def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
-    init = next((node for node in cls.body if isinstance(node, ast.FunctionDef) and node.name == "__init__"), None)
+def _constructor_reads(facts: FactBase, cls: ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
+    init = next((node for node in cls.body if isinstance(node, FunctionDef) and node.name == "__init__"), None)
     if init is None or init.decorator_list:
         return (), {}
     every = (*init.args.posonlyargs, *init.args.args)
@@ -857,15 +897,15 @@ def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, .
     plain = {name for name in parameters if only_bound_as_parameter(scope, name)}
     loads, stores = _self_attributes(facts)
     held: dict[str, int] = {}  # `self.<attr> = <parameter>`, the class's one store of `self.attr` -> the parameter's index
-    direct: list[tuple[ast.Call, ast.Name]] = []  # `np.radians(yaw)` in `__init__` itself
+    direct: list[tuple[Call, Name]] = []  # `np.radians(yaw)` in `__init__` itself
     for node in walk_within(init):
-        if isinstance(node, ast.Call):
-            direct.extend((node, arg) for arg in node.args if isinstance(arg, ast.Name) and arg.id in plain)
+        if isinstance(node, Call):
+            direct.extend((node, arg) for arg in node.args if isinstance(arg, Name) and arg.id in plain)
             continue
-        if not (isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.value, ast.Name) and node.value.id in plain):
+        if not (isinstance(node, Assign) and len(node.targets) == 1 and isinstance(node.value, Name) and node.value.id in plain):
             continue
         target = node.targets[0]
-        if not (isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name) and target.value.id == "self"):
+        if not (isinstance(target, Attribute) and isinstance(target.value, Name) and target.value.id == "self"):
             continue
         if [store for store in stores.get(target.attr, ()) if enclosing_class(facts, store) is cls] == [target] and _unconditional(facts, node.value):
             held[target.attr] = parameters.index(node.value.id)
@@ -884,7 +924,7 @@ def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, .
             call = facts.parent(node)
             if isinstance(call, (ast.List, ast.Tuple, ast.keyword)):
                 call = facts.parent(call)  # `from_euler("xyz", [self.roll, ...], degrees=True)`, `Rotation(yaw=self.yaw)`
-            if not isinstance(call, ast.Call) or enclosing_class(facts, node) is not cls:
+            if not isinstance(call, Call) or enclosing_class(facts, node) is not cls:
                 continue
             read = unit_read_by(facts, call, node)
             if read is not None:
@@ -897,16 +937,16 @@ def _constructor_reads(facts: FactBase, cls: ast.ClassDef) -> tuple[tuple[str, .
     return parameters, {index: value for index, value in found.items() if index not in conflicting}
 
 
-def _self_attributes(facts: FactBase) -> tuple[dict[str, list[ast.Attribute]], dict[str, list[ast.Attribute]]]:
+def _self_attributes(facts: FactBase) -> tuple[dict[str, list[Attribute]], dict[str, list[Attribute]]]:
     """The module's reads and its stores (or deletions) of `self.<attr>`, by attribute name; with a
     `setattr` of a computed name anywhere, every attribute counts as stored once more."""
 
-    def collect() -> tuple[dict[str, list[ast.Attribute]], dict[str, list[ast.Attribute]]]:
-        loads: dict[str, list[ast.Attribute]] = {}
-        stores: dict[str, list[ast.Attribute]] = {}
-        for node in facts.index.nodes(ast.Attribute):
-            if isinstance(node.value, ast.Name) and node.value.id == "self":  # type: ignore[attr-defined]
-                (loads if isinstance(node.ctx, ast.Load) else stores).setdefault(node.attr, []).append(node)  # type: ignore[attr-defined,arg-type]
+    def collect() -> tuple[dict[str, list[Attribute]], dict[str, list[Attribute]]]:
+        loads: dict[str, list[Attribute]] = {}
+        stores: dict[str, list[Attribute]] = {}
+        for node in facts.index.nodes(Attribute):
+            if isinstance(node.value, Name) and node.value.id == "self":  # type: ignore[attr-defined]
+                (loads if isinstance(node.ctx, Load) else stores).setdefault(node.attr, []).append(node)  # type: ignore[attr-defined,arg-type]
         if "setattr" in facts.index.source and (_attribute_stores(facts)["*"] or any(count >= 1 << 20 for count in _attribute_stores(facts).values())):
             stores = {attr: [*found, *found] for attr, found in stores.items()}  # `setattr(self, key, value)`: anything
         return loads, stores
@@ -915,7 +955,7 @@ def _self_attributes(facts: FactBase) -> tuple[dict[str, list[ast.Attribute]], d
 
 
 def wrong_unit_passed(
-    facts: FactBase, call: ast.Call, read: str, units: AngleUnits
+    facts: FactBase, call: Call, read: str, units: AngleUnits
 ) -> tuple[ast.expr, str, tuple[str, str]] | None:
     """The first argument of a call to a project helper that reads `read` (`helper_reads`) whose
     value is in the other unit: (argument, message, evidence). A name against a name is too weak."""

@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, Assign, AsyncFunctionDef, Attribute, BinOp, Call, Constant, FunctionDef, If, IfExp, Load, Match, Name,
+    Slice, Starred, Subscript, UnaryOp, While,
+)
 import re
 from dataclasses import dataclass
 
@@ -51,7 +55,7 @@ _COMPONENTS = "wxyz"
 class _Helper:
     """`yaw_from_quat(q)`: a project helper that hands its parameter to a quaternion API."""
 
-    call: ast.Call
+    call: Call
     parameter: str
     where: str
 
@@ -60,7 +64,7 @@ class _Helper:
 class _Keyword:
     """`PoseTrajectory3D(orientations_quat_wxyz=q)`: a keyword whose name states the order its callee reads."""
 
-    call: ast.Call
+    call: Call
     name: str
 
 
@@ -68,7 +72,7 @@ class _Keyword:
 class _MessageField:
     """`msg.q_d = value`: a quaternion field of a message whose class fixes the order."""
 
-    target: ast.Attribute
+    target: Attribute
     cls: str
 
 
@@ -95,7 +99,7 @@ class _GateOrOrderName:
 _GATE_OR_ORDER_NAME = _GateOrOrderName()
 # the expressions `QuaternionFlow.order_of` / `reorder_of` can know something of; for any other (a
 # constant, an f-string, a comparison...) both are None, found without following anything
-_MAY_HAVE_ORDER = frozenset({ast.UnaryOp, ast.BinOp, ast.Call, ast.Name, ast.Attribute, ast.Subscript, ast.List, ast.Tuple})
+_MAY_HAVE_ORDER = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript, ast.List, ast.Tuple})
 _LETTERS = frozenset(_COMPONENTS)
 
 
@@ -446,14 +450,14 @@ class QuaternionOrder(FactRule):
         facts = self.facts
         flow = facts.shared(QuaternionFlow)
         isaac = mentions_isaac_core(facts)  # else no call has Isaac Sim orientation arguments
-        for node in facts.index.nodes(ast.Call):
+        for node in facts.index.nodes(Call):
             self._check(node, flow, isaac)  # type: ignore[arg-type]
         self._check_component_writes(flow)
         self._check_formula_reads(flow)
         if _mentions_order_flag(facts.index.source):
             self._check_order_flag_slices()
-        named_reads: dict[tuple[int, str, str], dict[str, tuple[ast.Name, ast.Subscript]]] = {}
-        for node in facts.index.nodes(ast.Assign):
+        named_reads: dict[tuple[int, str, str], dict[str, tuple[Name, Subscript]]] = {}
+        for node in facts.index.nodes(Assign):
             self._check_named_target(node, flow)  # type: ignore[arg-type]
             self._check_message_field(node, flow)  # type: ignore[arg-type]
             _collect_named_read(facts, node, named_reads)  # type: ignore[arg-type]
@@ -461,7 +465,7 @@ class QuaternionOrder(FactRule):
             if len(group) == 4:
                 self._check_named_reads(group, flow)
         if "roll" in facts.index.source:  # no `roll` in the text, no roll call (an alias is imported by name)
-            for node in facts.index.nodes(ast.Call):
+            for node in facts.index.nodes(Call):
                 self._check_flat_roll(node, flow)  # type: ignore[arg-type]
 
     def _check_order_flag_slices(self) -> None:
@@ -469,13 +473,13 @@ class QuaternionOrder(FactRule):
         so a fixed component slice of it (`mul[:, 1:]`) outside any branch on the flag is right for
         one value of the flag only."""
         facts = self.facts
-        for function in facts.index.nodes(ast.FunctionDef, ast.AsyncFunctionDef):
+        for function in facts.index.nodes(FunctionDef, AsyncFunctionDef):
             flags = {arg.arg for arg in (*function.args.posonlyargs, *function.args.args, *function.args.kwonlyargs)} & _ORDER_FLAGS  # type: ignore[attr-defined]
             if len(flags) != 1:
                 continue
             (flag,) = flags
             for node in ast.walk(function):
-                if not isinstance(node, ast.Subscript) or not isinstance(node.ctx, ast.Load):
+                if not isinstance(node, Subscript) or not isinstance(node.ctx, Load):
                     continue
                 if facts.index.scope_of(node).node is not function:
                     continue
@@ -502,7 +506,7 @@ class QuaternionOrder(FactRule):
                 continue
             if order.batch and not read.sliced:
                 continue  # `quats[3]` is a row of the stack, not a component
-            if isinstance(read.base, ast.Name) and self._name_contradicted(read.base, flow):
+            if isinstance(read.base, Name) and self._name_contradicted(read.base, flow):
                 continue  # reported once, where the name is bound
             self.report(
                 read.node,
@@ -511,7 +515,7 @@ class QuaternionOrder(FactRule):
                 evidence=(order.evidence,),
             )
 
-    def _check_flat_roll(self, node: ast.Call, flow: QuaternionFlow) -> None:
+    def _check_flat_roll(self, node: Call, flow: QuaternionFlow) -> None:
         """`np.roll(quats, -1)` without an axis on a stack of quaternions rolls the flattened array."""
         reorder = flow.reorder_of(node, through_names=False)
         if reorder is None or reorder.spelling != "roll" or len(node.args) > 2 or any(
@@ -529,18 +533,18 @@ class QuaternionOrder(FactRule):
             fix_description="pass axis=-1",
         )
 
-    def _check_named_target(self, node: ast.Assign, flow: QuaternionFlow) -> None:
+    def _check_named_target(self, node: Assign, flow: QuaternionFlow) -> None:
         """`quat_xyzw = mat2quat(R)`: a name that states an order, bound to data in the other one."""
-        if len(node.targets) != 1 or not isinstance(node.targets[0], (ast.Name, ast.Attribute)):
+        if len(node.targets) != 1 or not isinstance(node.targets[0], (Name, Attribute)):
             return
         target = node.targets[0]
-        stated = name_order(target.id if isinstance(target, ast.Name) else target.attr)
+        stated = name_order(target.id if isinstance(target, Name) else target.attr)
         if stated is None:
             return
         order = flow.order_of(node.value)
         if order is None or order.order.index("w") == stated.index("w"):
             return
-        if isinstance(target, ast.Name) and _rebound_from_itself(self.facts, target):
+        if isinstance(target, Name) and _rebound_from_itself(self.facts, target):
             return  # `q_wxyz = r.as_quat()` then `q_wxyz = q_wxyz[:, [3, 0, 1, 2]]`: named for its final value
         self.report(
             node.value,
@@ -549,10 +553,10 @@ class QuaternionOrder(FactRule):
             evidence=(order.evidence,),
         )
 
-    def _check_message_field(self, node: ast.Assign, flow: QuaternionFlow) -> None:
+    def _check_message_field(self, node: Assign, flow: QuaternionFlow) -> None:
         """`setpoint.q_d = Rotation.from_euler(...).as_quat()`: a quaternion written into a message field
         whose order the message class fixes (px4_msgs: w, x, y, z)."""
-        if len(node.targets) != 1 or not isinstance(node.targets[0], ast.Attribute) or node.targets[0].attr not in QUATERNION_FIELD_NAMES:
+        if len(node.targets) != 1 or not isinstance(node.targets[0], Attribute) or node.targets[0].attr not in QUATERNION_FIELD_NAMES:
             return
         target = node.targets[0]
         cls = flow.messages.class_of(target.value)
@@ -569,7 +573,7 @@ class QuaternionOrder(FactRule):
                 return
         self._check_value(field, node.value, expected, flow)
 
-    def _name_contradicted(self, name: ast.Name, flow: QuaternionFlow) -> bool:
+    def _name_contradicted(self, name: Name, flow: QuaternionFlow) -> bool:
         stated = name_order(name.id)
         if stated is None:
             return False
@@ -580,7 +584,7 @@ class QuaternionOrder(FactRule):
                     return True
         return False
 
-    def _check(self, node: ast.Call, flow: QuaternionFlow, isaac: bool) -> None:
+    def _check(self, node: Call, flow: QuaternionFlow, isaac: bool) -> None:
         facts = self.facts
         self._check_helper(node, flow)
         if last_name(node.func) in PYBULLET_ORIENTATION_CALLS:
@@ -610,7 +614,7 @@ class QuaternionOrder(FactRule):
             return
         if positional and isinstance(positional[0], (ast.List, ast.Tuple)):
             elements = list(positional[0].elts)
-            if len(elements) == 4 and not any(isinstance(element, ast.Starred) for element in elements):
+            if len(elements) == 4 and not any(isinstance(element, Starred) for element in elements):
                 order = _order(facts, elements)
                 if order is not None:
                     if _names_mislabel_unpacked(facts, flow, elements):
@@ -622,7 +626,7 @@ class QuaternionOrder(FactRule):
         if argument is not None:
             self._check_value(node, argument, expected, flow)
 
-    def _report(self, reported: ast.expr, call: ast.Call | _MessageField | _Helper, items: list[ast.expr], order: str, expected: str) -> None:
+    def _report(self, reported: ast.expr, call: Call | _MessageField | _Helper, items: list[ast.expr], order: str, expected: str) -> None:
         by_component = {component: item for component, item in zip(order, items)}
         edits = [(item, self.facts.index.segment(by_component[component])) for item, component in zip(items, expected)]
         self.report(
@@ -634,7 +638,7 @@ class QuaternionOrder(FactRule):
         )
 
     # -- through data: reorders and producers ----------------------------------------------
-    def _consumer(self, consumer: ast.Call | _MessageField | _Helper | _Keyword) -> str:
+    def _consumer(self, consumer: Call | _MessageField | _Helper | _Keyword) -> str:
         if isinstance(consumer, _Keyword):
             return f"`{consumer.name}=` of `{self.code_of(consumer.call.func)}`"
         if isinstance(consumer, _MessageField):
@@ -642,16 +646,16 @@ class QuaternionOrder(FactRule):
         if isinstance(consumer, _Helper):
             return f"`{self.code_of(consumer.call.func)}` (which passes its parameter `{consumer.parameter}` to {consumer.where})"
         func = consumer.func
-        if isinstance(func, ast.Name) and func.id in self.facts.shared(ImportBranches).alternatives:
+        if isinstance(func, Name) and func.id in self.facts.shared(ImportBranches).alternatives:
             # `quaternion_multiply` imported from tf under ROS 1 and as transforms3d's qmult under ROS 2
             return f"`{func.id}` (here `{branch_qualified_name(self.facts, func)}`, one of its imports in the arms of an `if`)"
         return f"`{self.code_of(func)}`"
 
-    def _check_helper(self, node: ast.Call, flow: QuaternionFlow) -> None:
+    def _check_helper(self, node: Call, flow: QuaternionFlow) -> None:
         """A quaternion whose order is known passed to a project helper that hands the parameter,
         unchanged and unconditionally, to an API reading the other order (`yaw_from_quat(msg.q)`)."""
         facts = self.facts
-        if not node.args or any(isinstance(arg, ast.Starred) for arg in node.args) or not facts.may_have_summary(node):
+        if not node.args or any(isinstance(arg, Starred) for arg in node.args) or not facts.may_have_summary(node):
             return
         if not any(type(arg) in _MAY_HAVE_ORDER and (flow.reorder_of(arg) is not None or flow.order_of(arg) is not None) for arg in node.args):
             return  # nothing with a known order or a reorder: the helper's summary cannot matter
@@ -662,8 +666,8 @@ class QuaternionOrder(FactRule):
             if order and index < len(node.args):
                 self._check_value(_Helper(node, summary.parameters[index], where), node.args[index], order, flow)
 
-    def _check_value(self, call: ast.Call | _MessageField | _Helper | _Keyword, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
-        if isinstance(argument, ast.Name) and self._name_contradicted(argument, flow):
+    def _check_value(self, call: Call | _MessageField | _Helper | _Keyword, argument: ast.expr, expected: str, flow: QuaternionFlow) -> None:
+        if isinstance(argument, Name) and self._name_contradicted(argument, flow):
             return  # reported once, where the name is bound
         reorder = flow.reorder_of(argument)
         if reorder is not None:
@@ -682,12 +686,12 @@ class QuaternionOrder(FactRule):
             evidence=(order.evidence,),
         )
 
-    def _check_named_identity(self, call: ast.Call | _MessageField | _Helper | _Keyword, argument: ast.expr, expected: str) -> None:
+    def _check_named_identity(self, call: Call | _MessageField | _Helper | _Keyword, argument: ast.expr, expected: str) -> None:
         """`IDENTITY_QUAT = [0, 0, 0, 1]` or `orientation=[0, 0, 0, 1],  # identity` handed to a (w, x, y, z)
         API: the name or the comment says the value is the identity, which it is only in the other order
         (read as w, x, y, z it is a half turn about z). A literal alone says nothing: a deliberate half
         turn about z is written the same way."""
-        if isinstance(argument, ast.Name):
+        if isinstance(argument, Name):
             bound = self.facts.bindings(argument) or []
             if IDENTITY_NAME.search(argument.id) is None or len(bound) != 1 or not isinstance(bound[0], ast.expr):
                 return
@@ -707,7 +711,7 @@ class QuaternionOrder(FactRule):
             f"{'z' if written == SCALAR_LAST else 'x'}",
         )
 
-    def _check_reorder(self, call: ast.Call | _MessageField | _Helper | _Keyword, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
+    def _check_reorder(self, call: Call | _MessageField | _Helper | _Keyword, reported: ast.expr, reorder: Reorder, expected: str, flow: QuaternionFlow) -> None:
         facts = self.facts
         other = SCALAR_FIRST if expected == SCALAR_LAST else SCALAR_LAST
         base = flow.order_of(reorder.base)
@@ -766,7 +770,7 @@ class QuaternionOrder(FactRule):
             return text[:position] + repr(list(right)) + text[position + len(old) :] if old and position > 0 else None
         if reorder.spelling == "roll" and right in ((3, 0, 1, 2), (1, 2, 3, 0)):
             call = reorder.node
-            shift = call.args[1] if isinstance(call, ast.Call) and len(call.args) > 1 else None
+            shift = call.args[1] if isinstance(call, Call) and len(call.args) > 1 else None
             if shift is None:
                 return None
             text = index.segment(call)
@@ -784,7 +788,7 @@ class QuaternionOrder(FactRule):
             return replace_span(index, reorder.node, edits)  # type: ignore[arg-type]
         return None
 
-    def _check_named_reads(self, group: dict[str, tuple[ast.Name, ast.Subscript]], flow: QuaternionFlow) -> None:
+    def _check_named_reads(self, group: dict[str, tuple[Name, Subscript]], flow: QuaternionFlow) -> None:
         """`ori_x = q[0]` ... `ori_w = q[3]`: four local names that say which component they hold, read by
         index from one quaternion of known order with w taken from another index than the order puts it at."""
         first = min((target for target, _ in group.values()), key=lambda t: (t.lineno, t.col_offset))
@@ -802,16 +806,16 @@ class QuaternionOrder(FactRule):
             mapping = {string(key): value for key, value in zip(node.keys, node.values) if string(key) in _LETTERS}  # type: ignore[attr-defined]
             if len(mapping) == 4:
                 self._check_components(node, mapping, flow, '`"{letter}": {value}`')  # type: ignore[arg-type]
-        for node in facts.index.nodes(ast.Call):
+        for node in facts.index.nodes(Call):
             if len(node.keywords) < 4:  # type: ignore[attr-defined]
                 continue
             mapping = {given.arg: given.value for given in node.keywords if given.arg in _LETTERS}  # type: ignore[attr-defined]
             if len(mapping) == 4:
                 self._check_components(node, mapping, flow, "`{letter}={value}`")  # type: ignore[arg-type]
         for scope in facts.index.scopes.values():
-            groups: dict[str, dict[str, tuple[ast.Attribute, ast.expr]]] = {}
+            groups: dict[str, dict[str, tuple[Attribute, ast.expr]]] = {}
             for target, value in scope.attribute_stores:
-                if target.attr in _LETTERS and isinstance(facts.parent(target), ast.Assign):
+                if target.attr in _LETTERS and isinstance(facts.parent(target), Assign):
                     groups.setdefault(ast.dump(target.value), {})[target.attr] = (target, value)
             for group in groups.values():
                 if len(group) == 4:
@@ -821,7 +825,7 @@ class QuaternionOrder(FactRule):
                     self._check_components(first, values, flow, f"`{owner}.{{letter}} = {{value}}`", fixable=False)
 
     def _check_components(
-        self, reported: ast.AST, mapping: dict[str, ast.expr], flow: QuaternionFlow, shape: str, fixable: bool = True
+        self, reported: AST, mapping: dict[str, ast.expr], flow: QuaternionFlow, shape: str, fixable: bool = True
     ) -> None:
         facts = self.facts
         named = {letter: _component(facts, value) for letter, value in mapping.items()}
@@ -850,7 +854,7 @@ class QuaternionOrder(FactRule):
         value = mapping[letter]
         written = shape.format(letter=letter, value=facts.code_of(value))
         right = order.order.index(letter)
-        edits: list[tuple[ast.AST, str]] = []
+        edits: list[tuple[AST, str]] = []
         for component in COMPONENTS:
             element = mapping[component]
             text = facts.index.segment(element)
@@ -888,13 +892,13 @@ _QUATERNION_RESULT = re.compile(
 )
 
 
-def _order_dependent_part(node: ast.Subscript) -> str | None:
+def _order_dependent_part(node: Subscript) -> str | None:
     """`x[:, 1:]` / `x[..., :3]`: 'vector' (the vector part of one order); `x[..., 0]` / `x[:, 3]`: 'scalar'."""
     parts = subscript_parts(node)
-    if len(parts) < 2 or not all(isinstance(part, ast.Slice) and part.lower is part.upper is part.step is None or (isinstance(part, ast.Constant) and part.value is Ellipsis) for part in parts[:-1]):
+    if len(parts) < 2 or not all(isinstance(part, Slice) and part.lower is part.upper is part.step is None or (isinstance(part, Constant) and part.value is Ellipsis) for part in parts[:-1]):
         return None  # a lone `q[0]` may be a row of a stack: only indexing after leading `:` / `...` is judged
     last = parts[-1]
-    if isinstance(last, ast.Slice) and last.step is None:
+    if isinstance(last, Slice) and last.step is None:
         bounds = (number(last.lower) if last.lower is not None else 0, number(last.upper) if last.upper is not None else 4)
         if bounds in ((1, 4), (0, 3), (0, -1)):
             return "vector"
@@ -905,39 +909,39 @@ def _order_dependent_part(node: ast.Subscript) -> str | None:
     return "scalar" if value in (0, 3, -1) and not isinstance(value, bool) else None
 
 
-def _flag_ordered_producer(facts: FactBase, node: ast.expr, flag: str) -> ast.Call | None:
+def _flag_ordered_producer(facts: FactBase, node: ast.expr, flag: str) -> Call | None:
     """The call `node` certainly holds when it is a quaternion operation handed the order flag."""
     for _ in range(4):
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             bound = value_of(facts.index, node)
             if not isinstance(bound, ast.expr):
                 return None
             node = bound
             continue
         break
-    if not isinstance(node, ast.Call) or not _QUATERNION_RESULT.match(last_name(node.func) or ""):
+    if not isinstance(node, Call) or not _QUATERNION_RESULT.match(last_name(node.func) or ""):
         return None
     passed = [*node.args, *(given.value for given in node.keywords)]
-    return node if any(isinstance(arg, ast.Name) and arg.id == flag for arg in passed) else None
+    return node if any(isinstance(arg, Name) and arg.id == flag for arg in passed) else None
 
 
-def _under_branch_on(facts: FactBase, node: ast.AST, function: ast.AST) -> bool:
+def _under_branch_on(facts: FactBase, node: AST, function: AST) -> bool:
     """Whether a branch encloses `node` (one on the flag picks the positions; any other, to be safe)."""
     current = facts.parent(node)
     while current is not None and current is not function:
-        if isinstance(current, (ast.If, ast.IfExp, ast.While, ast.Match)):
+        if isinstance(current, (If, IfExp, While, Match)):
             return True
         current = facts.parent(current)
     return False
 
 
-def _collect_named_read(facts: FactBase, node: ast.Assign, groups: dict[tuple[int, str, str], dict[str, tuple[ast.Name, ast.Subscript]]]) -> None:
+def _collect_named_read(facts: FactBase, node: Assign, groups: dict[tuple[int, str, str], dict[str, tuple[Name, Subscript]]]) -> None:
     """`ori_x = ee_quat[0]`: a name that says it holds one component (`_component`), bound to one index of
     a name; grouped by scope, indexed name and the names' common prefix."""
-    if len(node.targets) != 1 or not isinstance(node.targets[0], ast.Name) or not isinstance(node.value, ast.Subscript):
+    if len(node.targets) != 1 or not isinstance(node.targets[0], Name) or not isinstance(node.value, Subscript):
         return
     target, value = node.targets[0], node.value
-    if not isinstance(value.value, ast.Name) or type(number(value.slice)) is not int:
+    if not isinstance(value.value, Name) or type(number(value.slice)) is not int:
         return
     component = _component(facts, target)
     if component is None or component[1] == "":
@@ -967,7 +971,7 @@ def _names_mislabel_unpacked(facts: FactBase, flow: QuaternionFlow, values: list
     that holds another component: after `w, x, y, z = Rotation.as_quat()` (x, y, z, w), `w` holds x,
     and `[w, x, y, z]` is scipy's order again. The names then say nothing about the components."""
     for value in values:
-        if not isinstance(value, ast.Name):
+        if not isinstance(value, Name):
             continue
         bound = value_of(facts.index, value)
         if not isinstance(bound, Unpacked) or len(bound.names) != 4:
@@ -983,13 +987,13 @@ def _names_mislabel_unpacked(facts: FactBase, flow: QuaternionFlow, values: list
 
 def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
     """The quaternion component a value names, with what it belongs to."""
-    if isinstance(value, ast.Attribute) and value.attr in _COMPONENTS:
+    if isinstance(value, Attribute) and value.attr in _COMPONENTS:
         return value.attr, ast.dump(value.value)
-    if isinstance(value, ast.Subscript):
+    if isinstance(value, Subscript):
         key = string(value.slice)
         if key is not None and key in _COMPONENTS and len(key) == 1:
             return key, ast.dump(value.value)
-    if not isinstance(value, ast.Name):
+    if not isinstance(value, Name):
         return None
     lowered = value.id.lower()
     if lowered in _COMPONENTS and len(lowered) == 1:
@@ -1001,7 +1005,7 @@ def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
     return None
 
 
-def _takes_stacks(facts: FactBase, call: ast.Call | _MessageField | _Helper | _Keyword) -> bool:
+def _takes_stacks(facts: FactBase, call: Call | _MessageField | _Helper | _Keyword) -> bool:
     """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion,
     Isaac Gym and Isaac Sim)."""
     if isinstance(call, _Keyword):
@@ -1037,12 +1041,12 @@ def _numbers(facts: FactBase, node: ast.expr) -> list[float] | None:
     return None if any(value is None or isinstance(value, bool) for value in values) else values  # type: ignore[return-value]
 
 
-def _last_index(node: ast.AST) -> ast.expr:
+def _last_index(node: AST) -> ast.expr:
     parts = subscript_parts(unwrapped_scalar(node))  # type: ignore[arg-type]
     return parts[-1]
 
 
-def _offset_in(outer: ast.AST, inner: ast.AST, index: object) -> int | None:
+def _offset_in(outer: AST, inner: AST, index: object) -> int | None:
     """Where `inner` starts within the text of `outer` (both on one line only)."""
     if getattr(outer, "lineno", None) != getattr(inner, "end_lineno", None) or outer.lineno != inner.lineno:  # type: ignore[attr-defined]
         return None
@@ -1050,11 +1054,11 @@ def _offset_in(outer: ast.AST, inner: ast.AST, index: object) -> int | None:
     return len(line[outer.col_offset : inner.col_offset].decode(errors="replace"))  # type: ignore[attr-defined]
 
 
-def _rebound_from_itself(facts: FactBase, target: ast.Name) -> bool:
+def _rebound_from_itself(facts: FactBase, target: Name) -> bool:
     """Whether a later binding of the target's name is computed from the name itself."""
     later = facts.index.scope_of(target).bindings.get(target.id, [])
     return any(
         isinstance(value, ast.expr) and value.lineno > target.lineno
-        and any(isinstance(node, ast.Name) and node.id == target.id for node in ast.walk(value))
+        and any(isinstance(node, Name) and node.id == target.id for node in ast.walk(value))
         for value in later
     )

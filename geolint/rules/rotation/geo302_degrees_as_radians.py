@@ -5,6 +5,27 @@ from __future__ import annotations
 import ast
 import math
 import re
+from ast import (
+    AST,
+    Add,
+    Assign,
+    AsyncFunctionDef,
+    Attribute,
+    AugAssign,
+    BinOp,
+    Call,
+    Constant,
+    Div,
+    FunctionDef,
+    Lambda,
+    Load,
+    Mod,
+    Mult,
+    Name,
+    Starred,
+    Sub,
+    Subscript,
+)
 
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
@@ -269,11 +290,11 @@ class DegreesAsRadians(FactRule):
         facts = self.facts
         units = facts.shared(AngleUnits)
         # the call being checked and its `radian_arguments` (asked by several checks of one call)
-        self._arguments: tuple[ast.Call | None, list[ast.expr] | None] = (None, None)
+        self._arguments: tuple[Call | None, list[ast.expr] | None] = (None, None)
         consumers = bool(self._degree_consumers())
-        for node in facts.index.nodes(ast.Call):
+        for node in facts.index.nodes(Call):
             self._check(node, units, consumers)  # type: ignore[arg-type]
-        for node in self.facts.index.nodes(ast.BinOp):
+        for node in self.facts.index.nodes(BinOp):
             report_hand_conversion_of_converted(self, node, DEGREES, units)  # type: ignore[arg-type]
         for node in self.facts.index.nodes(ast.Dict):
             self._check_field_table(node)  # type: ignore[arg-type]
@@ -283,13 +304,13 @@ class DegreesAsRadians(FactRule):
         safe_float, 1)]}`: groups of `(field, converter, ...)` rows) that converts a field to radians in
         one row and parses the same field as a plain number in another: readers of that field get
         radians from one row and degrees from the other."""
-        rows: dict[str, list[tuple[ast.Tuple, ast.Name, str]]] = {}
+        rows: dict[str, list[tuple[ast.Tuple, Name, str]]] = {}
         for key, group in zip(table.keys, table.values):
             if not isinstance(group, (ast.List, ast.Tuple)):
                 continue
             group_label = (string(key) or self.code_of(key)) if key is not None else ""
             for row in group.elts:
-                if isinstance(row, ast.Tuple) and len(row.elts) >= 2 and isinstance(row.elts[1], ast.Name):
+                if isinstance(row, ast.Tuple) and len(row.elts) >= 2 and isinstance(row.elts[1], Name):
                     field = string(row.elts[0])
                     if field is not None:
                         rows.setdefault(field, []).append((row, row.elts[1], group_label))
@@ -310,7 +331,7 @@ class DegreesAsRadians(FactRule):
                         evidence=(f"`{converter_used.id}` returns radians", f"`{converter.id}` returns its text as a number"),
                     )
 
-    def _converts_to_radians(self, converter: ast.Name) -> bool:
+    def _converts_to_radians(self, converter: Name) -> bool:
         """`math.radians` / `np.deg2rad` themselves, or a project function of this module whose every
         `return` is in radians (not by a name alone)."""
         if (self.facts.qualified_name(converter) or "") in _RADIAN_CONVERTERS:
@@ -334,14 +355,14 @@ class DegreesAsRadians(FactRule):
         if not returns:
             return False
         for value in returns:
-            if number(value) is not None or (isinstance(value, ast.Constant) and value.value is None):
+            if number(value) is not None or (isinstance(value, Constant) and value.value is None):
                 continue
-            if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and self._passes_number_through(value.func.id, depth + 1):
+            if isinstance(value, Call) and isinstance(value.func, Name) and self._passes_number_through(value.func.id, depth + 1):
                 continue
             return False
         return True
 
-    def _radian_arguments(self, node: ast.Call) -> list[ast.expr] | None:
+    def _radian_arguments(self, node: Call) -> list[ast.expr] | None:
         """`radian_arguments`, worked out once per call (three of the checks below ask)."""
         checked, arguments = self._arguments
         if checked is not node:
@@ -349,7 +370,7 @@ class DegreesAsRadians(FactRule):
             self._arguments = (node, arguments)
         return arguments
 
-    def _check(self, node: ast.Call, units: AngleUnits, consumers: bool) -> None:
+    def _check(self, node: Call, units: AngleUnits, consumers: bool) -> None:
         # one cheap name test first: a call named like no radian API (most calls) has no radian
         # arguments, so only the helper and shared-value checks can say anything about it
         if may_read_radians(self.facts.called_name(node.func) or "") and self._check_radian_api(node, units):
@@ -359,7 +380,7 @@ class DegreesAsRadians(FactRule):
         if consumers:
             self._check_shared_value(node)
 
-    def _check_radian_api(self, node: ast.Call, units: AngleUnits) -> bool:
+    def _check_radian_api(self, node: Call, units: AngleUnits) -> bool:
         """The checks of a call that may be a radian API; True once one reports."""
         trig = is_trig_or_conversion(self.facts, node)
         angles = self._radian_angles(node, trig)
@@ -380,7 +401,7 @@ class DegreesAsRadians(FactRule):
                 return True
         return self._check_bound_literals(node, trig) or self._check_units(node, units)
 
-    def _check_bound_literals(self, node: ast.Call, trig: bool) -> bool:
+    def _check_bound_literals(self, node: Call, trig: bool) -> bool:
         """`ORN = [90, 0, 0]` then `p.getQuaternionFromEuler(ORN)`: a name (or `self` attribute) whose
         every binding is a literal list of angles, passed whole to a radian API. Judged like literals
         in the call, and only when every large angle is a whole multiple of 15 (FP20)."""
@@ -412,9 +433,9 @@ class DegreesAsRadians(FactRule):
         """The literal angle lists a name or `self` attribute holds, when it holds nothing else and no
         element is rewritten (`ORN[0] = ...`, `ORN += ...`); else []."""
         facts = self.facts
-        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+        if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
             values: list[object] = list(facts.index.self_attribute_stores.get(node.attr, []))
-        elif isinstance(node, ast.Name):
+        elif isinstance(node, Name):
             scope = facts.index.scope_of(node)
             if node.id in scope.subscript_stores or node.id in scope.augmented:
                 return []
@@ -425,13 +446,13 @@ class DegreesAsRadians(FactRule):
             return []
         return values  # type: ignore[return-value]
 
-    def _degrees_keyword_fix(self, node: ast.Call) -> str | None:
+    def _degrees_keyword_fix(self, node: Call) -> str | None:
         """The call with `degrees=True` added: for scipy's `from_euler` / `from_rotvec` that do not say."""
         if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
             return with_keyword(self.facts.index.segment(node), "degrees=True")
         return None
 
-    def _check_helper(self, node: ast.Call, units: AngleUnits) -> bool:
+    def _check_helper(self, node: Call, units: AngleUnits) -> bool:
         """A value in degrees passed to a project helper that hands it to a radian API (`rot_z(yaw_deg)`
         where `rot_z(theta)` computes `np.cos(theta)`)."""
         found = wrong_unit_passed(self.facts, node, RADIANS, units)
@@ -440,7 +461,7 @@ class DegreesAsRadians(FactRule):
             self.report(argument, message, evidence=evidence)
         return found is not None
 
-    def _check_shared_value(self, node: ast.Call) -> None:
+    def _check_shared_value(self, node: Call) -> None:
         """`glRotatef(y_rot, 0, 1, 0)` and `np.cos(y_rot)` (or a project helper that hands it to one)
         of the same value, with no conversion between: one library reads it in degrees, the other in
         radians, so one of the two uses is wrong."""
@@ -469,12 +490,12 @@ class DegreesAsRadians(FactRule):
 
     def _field_read(self, node: ast.expr) -> str | None:
         """For `obj["y_rot"]`, or a name bound only to it (`y_rot = obj["y_rot"]`): the key."""
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             bound = self.facts.bindings(node) or []
-            if len(bound) != 1 or not isinstance(bound[0], ast.Subscript) or node.id in self.facts.index.scope_of(node).augmented:
+            if len(bound) != 1 or not isinstance(bound[0], Subscript) or node.id in self.facts.index.scope_of(node).augmented:
                 return None
             node = bound[0]
-        if isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load):
+        if isinstance(node, Subscript) and isinstance(node.ctx, Load):
             return string(node.slice)
         return None
 
@@ -484,28 +505,28 @@ class DegreesAsRadians(FactRule):
         found = set()
         for table in self._dict_literals():
             for label, value in zip(table.keys, table.values):
-                if isinstance(value, (ast.Name, ast.Attribute)) and string(label) is not None and self._value_key(value) == key:
+                if isinstance(value, (Name, Attribute)) and string(label) is not None and self._value_key(value) == key:
                     found.add(string(label))  # type: ignore[arg-type]
         return found  # type: ignore[return-value]
 
     def _dict_literals(self) -> list[ast.Dict]:
         return self.facts.module_fact("dict literals", lambda: self.facts.index.nodes(ast.Dict))  # type: ignore[arg-type,return-value]
 
-    def _degree_consumers(self) -> list[tuple[ast.expr, ast.Call]]:
+    def _degree_consumers(self) -> list[tuple[ast.expr, Call]]:
         """The module's calls to a library reading degrees (`DEGREE_CONSUMERS`), with their angle argument."""
 
-        def collect() -> list[tuple[ast.expr, ast.Call]]:
-            found: list[tuple[ast.expr, ast.Call]] = []
+        def collect() -> list[tuple[ast.expr, Call]]:
+            found: list[tuple[ast.expr, Call]] = []
             facts = self.facts
-            for call in facts.index.nodes(ast.Call):
-                assert isinstance(call, ast.Call)
+            for call in facts.index.nodes(Call):
+                assert isinstance(call, Call)
                 if facts.called_name(call.func) in DEGREE_CONSUMER_NAMES:  # `degree_arguments`' own first test
                     found.extend((argument, call) for argument in degree_arguments(facts, call))
             return found
 
         return self.facts.module_fact("degree consumers", collect)
 
-    def _radian_reads(self, node: ast.Call) -> list[tuple[ast.expr, str]]:
+    def _radian_reads(self, node: Call) -> list[tuple[ast.expr, str]]:
         """The arguments `node` reads in radians, each with how: a radian API's angles, or a project
         helper's parameter it hands unchanged to one (not a parameter only named in radians)."""
         facts = self.facts
@@ -513,7 +534,7 @@ class DegreesAsRadians(FactRule):
         summary = facts.function_summary(node) if node.args and facts.may_have_summary(node) else None
         if summary is not None:
             for index, (unit, where, by_name) in sorted(summary.reads_unit.items()):
-                if unit == RADIANS and where and not by_name and index < len(node.args) and not isinstance(node.args[index], ast.Starred):
+                if unit == RADIANS and where and not by_name and index < len(node.args) and not isinstance(node.args[index], Starred):
                     found.append((node.args[index], f"`{self.code_of(node.func)}` (through {where})"))
         return found
 
@@ -521,7 +542,7 @@ class DegreesAsRadians(FactRule):
         """What makes two reads the same value: a name with the same reaching bindings in the same
         scope, or `self.<attr>` in the same class never stored from itself (`self.a = np.radians(self.a)`)."""
         facts = self.facts
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             scope = facts.index.scope_of(node)
             if node.id in scope.augmented:
                 return None
@@ -529,21 +550,21 @@ class DegreesAsRadians(FactRule):
             if not bound:
                 return None
             return ("name", id(scope), node.id, tuple(id(binding) for binding in bound))
-        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+        if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
             stores = facts.index.self_attribute_stores.get(node.attr, [])
-            if any(isinstance(inner, ast.Attribute) and inner.attr == node.attr for store in stores for inner in ast.walk(store)):
+            if any(isinstance(inner, Attribute) and inner.attr == node.attr for store in stores for inner in ast.walk(store)):
                 return None  # converted in place
-            if any(isinstance(target, ast.Attribute) and target.attr == node.attr for target in self._augmented_targets()):
+            if any(isinstance(target, Attribute) and target.attr == node.attr for target in self._augmented_targets()):
                 return None
             return ("self", id(enclosing_class(facts, node)), node.attr)
         return None
 
     def _augmented_targets(self) -> list[ast.expr]:
         return self.facts.module_fact(
-            "augmented targets", lambda: [node.target for node in self.facts.index.nodes(ast.AugAssign)]  # type: ignore[attr-defined]
+            "augmented targets", lambda: [node.target for node in self.facts.index.nodes(AugAssign)]  # type: ignore[attr-defined]
         )
 
-    def _check_units(self, node: ast.Call, units: AngleUnits) -> bool:
+    def _check_units(self, node: Call, units: AngleUnits) -> bool:
         """A value the code itself puts in degrees (`yaw_deg`, `np.degrees(...)`) passed as radians."""
         arguments = self._radian_arguments(node)
         if not arguments:
@@ -573,47 +594,47 @@ class DegreesAsRadians(FactRule):
     def _named_only(self, node: ast.expr, units: AngleUnits, depth: int = 4) -> bool:
         """Whether only a name says `node` is in degrees: a name bound to parameters (no literal default),
         to names bound so, or to values of no known unit (`start_degree = start_phase`)."""
-        if not isinstance(node, ast.Name) or depth <= 0 or units.bound_literal(node) is not None:
+        if not isinstance(node, Name) or depth <= 0 or units.bound_literal(node) is not None:
             return False
         for binding in self.facts.bindings(node) or []:
             if isinstance(binding, ParamBinding):
                 continue
             if not isinstance(binding, ast.expr):
                 return False
-            if isinstance(binding, ast.Name):
+            if isinstance(binding, Name):
                 if not self._named_only(binding, units, depth - 1) and units.unit_of(binding) is not None:
                     return False
             elif units.unit_of(binding) is not None:
                 return False
         return True
 
-    def _wraps_degree_names_in_pi(self, node: ast.Call, units: AngleUnits) -> bool:
+    def _wraps_degree_names_in_pi(self, node: Call, units: AngleUnits) -> bool:
         """Whether the function holding `node` adds pi to, or wraps with pi, a value whose name says
         degrees (`degree = (degree + np.pi) % (2 * np.pi) - np.pi`, `arc_degree = (x + np.pi) % ...`):
         radian arithmetic, so its degree names say nothing."""
         scope = self.facts.index.scope_of(node).node
-        if not isinstance(scope, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+        if not isinstance(scope, (FunctionDef, AsyncFunctionDef, Lambda)):
             return False
         for statement in ast.walk(scope):
-            if isinstance(statement, (ast.Assign, ast.AugAssign)):
-                targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
-                named = any(isinstance(name, ast.Name) and name_unit(name.id) == DEGREES for target in targets for name in ast.walk(target))
+            if isinstance(statement, (Assign, AugAssign)):
+                targets = statement.targets if isinstance(statement, Assign) else [statement.target]
+                named = any(isinstance(name, Name) and name_unit(name.id) == DEGREES for target in targets for name in ast.walk(target))
                 if named and self._pi_arithmetic(statement.value, units):
                     return True
-            elif isinstance(statement, ast.BinOp) and self._pi_arithmetic(statement, units, degree_operand=True):
+            elif isinstance(statement, BinOp) and self._pi_arithmetic(statement, units, degree_operand=True):
                 return True
         return False
 
     def _pi_arithmetic(self, node: ast.expr, units: AngleUnits, degree_operand: bool = False) -> bool:
         """`x + np.pi`, `x - np.pi`, `x % (2 * np.pi)` somewhere in `node` (with `degree_operand`: `node`
         itself, with a name that says degrees in `x`)."""
-        candidates = [node] if degree_operand else [found for found in ast.walk(node) if isinstance(found, ast.BinOp)]
+        candidates = [node] if degree_operand else [found for found in ast.walk(node) if isinstance(found, BinOp)]
         for binop in candidates:
-            if not isinstance(binop, ast.BinOp) or not isinstance(binop.op, (ast.Add, ast.Sub, ast.Mod)):
+            if not isinstance(binop, BinOp) or not isinstance(binop.op, (Add, Sub, Mod)):
                 continue
             for side, other in ((binop.left, binop.right), (binop.right, binop.left)):
                 if self._is_pi_multiple(side, units) and (
-                    not degree_operand or any(isinstance(name, ast.Name) and name_unit(name.id) == DEGREES for name in ast.walk(other))
+                    not degree_operand or any(isinstance(name, Name) and name_unit(name.id) == DEGREES for name in ast.walk(other))
                 ):
                     return True
         return False
@@ -621,11 +642,11 @@ class DegreesAsRadians(FactRule):
     @staticmethod
     def _is_pi_multiple(node: ast.expr, units: AngleUnits) -> bool:
         """`np.pi`, `2 * np.pi`, `np.pi * 2`."""
-        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
+        if isinstance(node, BinOp) and isinstance(node.op, Mult):
             return (number(node.left) is not None and units._is_pi(node.right)) or (number(node.right) is not None and units._is_pi(node.left))
         return units._is_pi(node)
 
-    def _radian_angles(self, node: ast.Call, trig: bool) -> list[float] | None:
+    def _radian_angles(self, node: Call, trig: bool) -> list[float] | None:
         """The literal angles of a call to a radian API, or None when the call is not one (or opted into
         degrees). `trig`: `is_trig_or_conversion` of the call."""
         facts = self.facts
@@ -647,9 +668,9 @@ class DegreesAsRadians(FactRule):
     def _angle_through_data(self, node: ast.expr) -> float | None:
         """`np.tan(self.fovy / 2)` where `fovy` only ever holds a literal (a default `fovy=30`): that
         literal, when the name reads as an angle. Halving or doubling keeps the unit."""
-        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Div, ast.Mult)) and number(node.right) is not None:
+        if isinstance(node, BinOp) and isinstance(node.op, (Div, Mult)) and number(node.right) is not None:
             node = node.left
-        name = node.attr if isinstance(node, ast.Attribute) else node.id if isinstance(node, ast.Name) else None
+        name = node.attr if isinstance(node, Attribute) else node.id if isinstance(node, Name) else None
         if name is None or not _ANGLE_NAME.search(name) or _RADIAN_NAME.search(name):
             return None
         values = {value for value in self._literal_sources(node, depth=0)}
@@ -662,10 +683,10 @@ class DegreesAsRadians(FactRule):
         literal = number(node)
         if literal is not None:
             return [float(literal)]
-        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "self":
+        if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
             stores = facts.index.self_attribute_stores.get(node.attr, [])
             return [found for value in stores for found in self._literal_sources(value, depth + 1)] or [None]
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             found: list[float | None] = []
             for binding in facts.bindings(node) or []:
                 if isinstance(binding, ParamBinding):
@@ -678,21 +699,21 @@ class DegreesAsRadians(FactRule):
         return [None]
 
 
-def _literals(node: ast.AST) -> list[float]:
+def _literals(node: AST) -> list[float]:
     """The numeric literals of an angle expression: a number, or a (nested) list/tuple of them."""
     value = number(node)
     if value is not None:
         return [float(value)]
     if isinstance(node, (ast.List, ast.Tuple)):
         return [found for element in node.elts for found in _literals(element)]
-    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and node.args:
+    if isinstance(node, Call) and last_name(node.func) in ("array", "asarray", "tensor") and node.args:
         return _literals(node.args[0])
     return []
 
 
 def _is_literal_list(node: ast.expr) -> bool:
     """`[90, 0, 0]`, `(0, 0, -90.0)`, `np.array([90, 0, 0])`: a flat list of numeric literals."""
-    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and len(node.args) == 1 and not node.keywords:
+    if isinstance(node, Call) and last_name(node.func) in ("array", "asarray", "tensor") and len(node.args) == 1 and not node.keywords:
         node = node.args[0]
     return isinstance(node, (ast.List, ast.Tuple)) and bool(node.elts) and all(number(element) is not None for element in node.elts)
 
@@ -708,7 +729,7 @@ def _literals_of(nodes: list[ast.expr]) -> list[float]:
 
 def _elements(node: ast.expr) -> list[ast.expr]:
     """The angles of an angle argument: the elements of a literal list, else the argument itself."""
-    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor") and len(node.args) == 1:
+    if isinstance(node, Call) and last_name(node.func) in ("array", "asarray", "tensor") and len(node.args) == 1:
         node = node.args[0]
     if isinstance(node, (ast.List, ast.Tuple)):
         return [found for element in node.elts for found in _elements(element)]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import AST, Assign, Attribute, AugAssign, Call, Constant, Module, Name, Starred, Subscript, USub, UnaryOp
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.model import is_full_slice, is_slice_upto, is_zero
@@ -153,15 +154,15 @@ class MisplacedTranslation(AstRule):
         ),
     ]
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         index = index_of(tree)
-        for node in index.nodes(ast.Call, ast.Assign, ast.AugAssign, ast.Dict):
+        for node in index.nodes(Call, Assign, AugAssign, ast.Dict):
             if isinstance(node, ast.Dict):
                 for key, item in zip(node.keys, node.values):
-                    if isinstance(key, ast.Constant) and key.value in _TRANSLATION_KEYS:
+                    if isinstance(key, Constant) and key.value in _TRANSLATION_KEYS:
                         self._check_bottom_row_read(item, index)
                 continue
-            if isinstance(node, ast.Call):
+            if isinstance(node, Call):
                 for keyword in node.keywords:
                     if keyword.arg in _TRANSLATION_KEYS:
                         self._check_bottom_row_read(keyword.value, index)
@@ -170,16 +171,16 @@ class MisplacedTranslation(AstRule):
                         self._check_bottom_row_read(node.args[0], index)
                     self._check_translation_argument(node)
                 continue
-            if isinstance(node, ast.Assign):
+            if isinstance(node, Assign):
                 targets, value = node.targets, node.value
-            elif isinstance(node, ast.AugAssign):
+            elif isinstance(node, AugAssign):
                 targets, value = [node.target], node.value
             else:
                 continue
             for target in targets:
-                if isinstance(node, ast.Assign) and _names_a_translation(target):
+                if isinstance(node, Assign) and _names_a_translation(target):
                     self._check_bottom_row_read(value, index)
-                if not isinstance(target, ast.Subscript) or not isinstance(target.value, ast.Name):
+                if not isinstance(target, Subscript) or not isinstance(target.value, Name):
                     continue
                 indices = matrix_indices(target)
                 if indices is None or is_zero(value):
@@ -203,12 +204,12 @@ class MisplacedTranslation(AstRule):
                         fix_description="write into the translation column",
                     )
 
-    def _check_translation_argument(self, call: ast.Call) -> None:
+    def _check_translation_argument(self, call: Call) -> None:
         """`box.translate(-T[:3, :3])`: a 3x3 rotation block where a 3-vector translation goes."""
         arguments = call.args[:1] + [k.value for k in call.keywords if k.arg in ("translation", "t", "x", "vector")]
         for argument in arguments:
-            block = argument.operand if isinstance(argument, ast.UnaryOp) and isinstance(argument.op, ast.USub) else argument
-            if not isinstance(block, ast.Subscript):
+            block = argument.operand if isinstance(argument, UnaryOp) and isinstance(argument.op, USub) else argument
+            if not isinstance(block, Subscript):
                 continue
             indices = matrix_indices(block)
             if indices is None or not (is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)):
@@ -225,11 +226,11 @@ class MisplacedTranslation(AstRule):
     def _check_bottom_row_read(self, value: ast.expr, index: ModuleIndex) -> None:
         """`{"location": list(T[3, :])}`: the bottom row of a column-convention 4x4 stored as a translation."""
         read = _peel_vector(value)
-        if isinstance(read, ast.Name):
+        if isinstance(read, Name):
             resolved = resolve(index, read)
             if isinstance(resolved, ast.expr):
                 read = _peel_vector(resolved)
-        if not isinstance(read, ast.Subscript) or not isinstance(read.value, ast.Name):
+        if not isinstance(read, Subscript) or not isinstance(read.value, Name):
             return
         indices = matrix_indices(read)
         if indices is None or int_value(indices[1]) not in (3, -1):
@@ -248,7 +249,7 @@ class MisplacedTranslation(AstRule):
         )
 
     def _comes_from_own_translation(
-        self, target: ast.Subscript, batch: list[ast.expr], value: ast.expr, index: ModuleIndex
+        self, target: Subscript, batch: list[ast.expr], value: ast.expr, index: ModuleIndex
     ) -> bool:
         """The value is (a mean, negation or scaling of) the same array's translation column `X[..., :3, 3]`."""
         key = pose_key(target.value, index)
@@ -259,7 +260,7 @@ class MisplacedTranslation(AstRule):
 
     def _is_column_convention_pose(
         self,
-        target: ast.Subscript,
+        target: Subscript,
         stacked: bool,
         index: ModuleIndex,
         computed_translation: bool = False,
@@ -277,11 +278,11 @@ class MisplacedTranslation(AstRule):
         row_layout = False
         divide_corners: set[tuple[int, int]] = set()
         for node in ast.walk(scope):
-            if isinstance(node, ast.Subscript) and same_code(node.value, base):
+            if isinstance(node, Subscript) and same_code(node.value, base):
                 divide_corners |= _perspective_divide_corner(node, index)
                 if len(divide_corners) == 2:
                     return False  # M[2, 3] = M[3, 2] = 1: a camera projection dividing by z, not a pose
-            if isinstance(node, ast.Subscript) and node is not target and same_code(node.value, base):
+            if isinstance(node, Subscript) and node is not target and same_code(node.value, base):
                 part = pose_part(node, index)
                 states_pose = states_pose or part is not None
                 reads_translation_column = reads_translation_column or (part is not None and part.kind == "translation")
@@ -301,7 +302,7 @@ class MisplacedTranslation(AstRule):
             return reads_translation_column and not row_layout
         return states_pose and (reads_translation_column or not row_layout)
 
-    def _report_bottom_row(self, target: ast.Subscript, column: ast.expr) -> None:
+    def _report_bottom_row(self, target: Subscript, column: ast.expr) -> None:
         replacement = None
         if is_slice_upto(column, 3):
             indices = subscript_indices_text(target)
@@ -322,13 +323,13 @@ _TRANSLATION_KEYS = frozenset({"location", "position", "translation", "trans", "
 _TRANSLATION_WORDS = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
 
 
-def _inverts(node: ast.AST) -> bool:
+def _inverts(node: AST) -> bool:
     """`np.linalg.inv(T)`, `T.inverse()`: an inverse, which keeps the layout (unlike a transpose)."""
-    return isinstance(node, ast.Call) and call_name(node) in ("inv", "pinv", "inverse", "inverted")
+    return isinstance(node, Call) and call_name(node) in ("inv", "pinv", "inverse", "inverted")
 
 
 def _names_a_translation(target: ast.expr) -> bool:
-    name = target.id if isinstance(target, ast.Name) else target.attr if isinstance(target, ast.Attribute) else ""
+    name = target.id if isinstance(target, Name) else target.attr if isinstance(target, Attribute) else ""
     return not _TRANSLATION_WORDS.isdisjoint(name.lower().split("_"))
 
 
@@ -336,12 +337,12 @@ def _peel_vector(node: ast.expr) -> ast.expr:
     """`list(x)`, `tuple(x)`, `Vector(x)`, `x.tolist()`, `np.array(x)`, `x.copy()`: the same values."""
     for _ in range(4):
         inner = peel_same_value(node)
-        if inner is node and isinstance(node, ast.Call):
+        if inner is node and isinstance(node, Call):
             if call_name(node) in ("list", "tuple", "Vector") and len(node.args) == 1 and not node.keywords:
                 inner = node.args[0]
-            elif isinstance(node.func, ast.Attribute) and node.func.attr == "tolist" and not node.args:
+            elif isinstance(node.func, Attribute) and node.func.attr == "tolist" and not node.args:
                 inner = node.func.value
-        if inner is node or isinstance(inner, ast.Starred):
+        if inner is node or isinstance(inner, Starred):
             return node
         node = inner
     return node
@@ -351,7 +352,7 @@ def _peel_vector(node: ast.expr) -> ast.expr:
 _TRANSLATING_CALLS = frozenset({"translate", "translation_matrix", "set_translation", "from_translation"})
 
 
-def subscript_indices_text(target: ast.Subscript) -> str:
+def subscript_indices_text(target: Subscript) -> str:
     """The batch indices of a stacked pose subscript, as text with a trailing comma (`:, `)."""
     indices = target.slice.elts if isinstance(target.slice, ast.Tuple) else [target.slice]
     return "".join(f"{ast.unparse(index)}, " for index in indices[:-2])
@@ -363,25 +364,25 @@ def _is_bottom_row_translation(row: ast.expr, column: ast.expr) -> bool:
     return is_slice_upto(column, 3) or int_value(column) in (0, 1, 2)
 
 
-def _writes_projective_corner(node: ast.Subscript, index: ModuleIndex) -> bool:
+def _writes_projective_corner(node: Subscript, index: ModuleIndex) -> bool:
     """`M[3, 3] = value` with anything but 1: the matrix is projective, not a rigid pose."""
     indices = matrix_indices(node)
     if indices is None or int_value(indices[1]) not in (3, -1) or int_value(indices[2]) not in (3, -1):
         return False
     statement = index.parents.get(node)
-    if isinstance(statement, ast.Assign) and node in statement.targets:
-        return not (isinstance(statement.value, ast.Constant) and statement.value.value == 1)
-    return isinstance(statement, ast.AugAssign) and statement.target is node
+    if isinstance(statement, Assign) and node in statement.targets:
+        return not (isinstance(statement.value, Constant) and statement.value.value == 1)
+    return isinstance(statement, AugAssign) and statement.target is node
 
 
-def _perspective_divide_corner(node: ast.Subscript, index: ModuleIndex) -> set[tuple[int, int]]:
+def _perspective_divide_corner(node: Subscript, index: ModuleIndex) -> set[tuple[int, int]]:
     """{(2, 3)} or {(3, 2)} when `node` is `M[2, 3] = 1` or `M[3, 2] = 1` (`-1` for 3 too): together they
     are the signature of a screen-space camera matrix (PyTorch3D's `K` with `in_ndc=False`: w = z)."""
     indices = matrix_indices(node)
     statement = index.parents.get(node)
-    if indices is None or not (isinstance(statement, ast.Assign) and node in statement.targets):
+    if indices is None or not (isinstance(statement, Assign) and node in statement.targets):
         return set()
-    if not (isinstance(statement.value, ast.Constant) and statement.value.value == 1):
+    if not (isinstance(statement.value, Constant) and statement.value.value == 1):
         return set()
     corner = tuple(3 if value == -1 else value for value in (int_value(indices[1]), int_value(indices[2])))
     return {corner} if corner in ((2, 3), (3, 2)) else set()  # type: ignore[return-value]
@@ -392,13 +393,13 @@ def _has_product(value: ast.expr) -> bool:
     return any(matmul_operands(node) is not None for node in ast.walk(value))
 
 
-def _writes_transposed_rotation(node: ast.AST, base: ast.expr, index: ModuleIndex) -> bool:
+def _writes_transposed_rotation(node: AST, base: ast.expr, index: ModuleIndex) -> bool:
     """`M[..., :3, :3] = R.T` (or a name bound to `R.permute(0, 2, 1)`): the rotation block of `base`
     is written transposed, so a translation in its bottom row is the same layout, not a slip."""
-    if not isinstance(node, ast.Assign) or len(node.targets) != 1:
+    if not isinstance(node, Assign) or len(node.targets) != 1:
         return False
     target = node.targets[0]
-    if not isinstance(target, ast.Subscript) or not same_code(target.value, base):
+    if not isinstance(target, Subscript) or not same_code(target.value, base):
         return False
     indices = matrix_indices(target)
     if indices is None or not (is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3)):
@@ -406,22 +407,22 @@ def _writes_transposed_rotation(node: ast.AST, base: ast.expr, index: ModuleInde
     value = resolve(index, node.value)
     if not isinstance(value, ast.expr) or transposed_operand(value) is None:
         return False
-    return not (isinstance(value, ast.Call) and call_name(value) in ("inverse", "inv", "pinv"))
+    return not (isinstance(value, Call) and call_name(value) in ("inverse", "inv", "pinv"))
 
 
 # Library classes that apply a 4x4 to row vectors (`coords @ M`): VisPy's transforms.
 _ROW_VECTOR_CONSUMERS = frozenset({"vispy.visuals.transforms.MatrixTransform", "vispy.visuals.transforms.linear.MatrixTransform"})
 
 
-def _row_vector_consumer(node: ast.AST, base: ast.expr, index: ModuleIndex) -> bool:
+def _row_vector_consumer(node: AST, base: ast.expr, index: ModuleIndex) -> bool:
     """`transforms.MatrixTransform(T)` with `transforms` imported from vispy: the matrix is laid out
     for row vectors, so its translation belongs in the bottom row."""
-    if not isinstance(node, ast.Call) or not node.args or not same_code(node.args[0], base):
+    if not isinstance(node, Call) or not node.args or not same_code(node.args[0], base):
         return False
     func = node.func
-    if isinstance(func, ast.Name):
+    if isinstance(func, Name):
         qualified = index.imports.get(func.id, "")
-    elif isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id in index.imports:
+    elif isinstance(func, Attribute) and isinstance(func.value, Name) and func.value.id in index.imports:
         qualified = f"{index.imports[func.value.id]}.{func.attr}"
     else:
         return False

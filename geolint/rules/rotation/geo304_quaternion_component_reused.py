@@ -4,6 +4,10 @@ pyquaternion object written into an array slice (its w in every slot)."""
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, AnnAssign, Assign, AsyncFunctionDef, Attribute, BinOp, Call, FunctionDef, ListComp, Mult, Name, Slice,
+    Starred, Subscript,
+)
 import re
 import string
 
@@ -131,18 +135,18 @@ class QuaternionComponentReused(FactRule):
         facts = self.facts
         for node in facts.index.nodes(ast.List, ast.Tuple):
             elements = list(node.elts)  # type: ignore[attr-defined]
-            if len(elements) != 4 or any(isinstance(element, ast.Starred) for element in elements):
+            if len(elements) != 4 or any(isinstance(element, Starred) for element in elements):
                 continue
             self._check(node, elements)  # type: ignore[arg-type]
         if any(name in PYQUATERNION_CLASSES or name == "pyquaternion" for name in facts.index.imports.values()):
-            for assign in facts.index.nodes(ast.Assign):
-                if isinstance(assign, ast.Assign):
+            for assign in facts.index.nodes(Assign):
+                if isinstance(assign, Assign):
                     self._check_slice_broadcast(assign)
 
-    def _check_slice_broadcast(self, assign: ast.Assign) -> None:
+    def _check_slice_broadcast(self, assign: Assign) -> None:
         """`array[3:7] = Quaternion(...)`: numpy fills the slice with the Quaternion's `float()`, its w."""
         target = assign.targets[0]
-        if len(assign.targets) != 1 or not isinstance(target, ast.Subscript) or not _has_slice(target.slice):
+        if len(assign.targets) != 1 or not isinstance(target, Subscript) or not _has_slice(target.slice):
             return
         if not self._is_pyquaternion(assign.value, 0) or self._is_list(target.value):
             return
@@ -159,25 +163,25 @@ class QuaternionComponentReused(FactRule):
         facts = self.facts
         if depth > 4:
             return False
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             return facts.qualified_name(node.func) in PYQUATERNION_CLASSES
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             return node.attr in PYQUATERNION_RETURNS_QUATERNION and self._is_pyquaternion(node.value, depth + 1)
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             bound = facts.bindings(node) or []
             return bool(bound) and all(isinstance(value, ast.expr) and self._is_pyquaternion(value, depth + 1) for value in bound)
         return False
 
     def _is_list(self, node: ast.expr) -> bool:
         """A name bound here to a Python list (a literal, `[...] * n`, a comprehension, `list(...)`)."""
-        if not isinstance(node, ast.Name):
+        if not isinstance(node, Name):
             return False
         for value in self.facts.bindings(node) or []:
-            if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Mult):
+            if isinstance(value, BinOp) and isinstance(value.op, Mult):
                 value = value.left if isinstance(value.left, ast.List) else value.right
-            if isinstance(value, (ast.List, ast.ListComp)):
+            if isinstance(value, (ast.List, ListComp)):
                 return True
-            if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id == "list":
+            if isinstance(value, Call) and isinstance(value.func, Name) and value.func.id == "list":
                 return True
         return False
 
@@ -189,7 +193,7 @@ class QuaternionComponentReused(FactRule):
             components = [str(position) for position in positions]
             universe = ["0", "1", "2", "3"]
         else:
-            attributes = [element for element in elements if isinstance(element, ast.Attribute) and element.attr in COMPONENTS]
+            attributes = [element for element in elements if isinstance(element, Attribute) and element.attr in COMPONENTS]
             if len(attributes) != 4 or len({ast.dump(attribute.value) for attribute in attributes}) != 1:
                 return
             base = attributes[0].value
@@ -235,18 +239,18 @@ class QuaternionComponentReused(FactRule):
     def _says_quaternion(self, node: ast.expr, base: ast.expr) -> bool:
         """Whether names around the 4-vector, or the API it goes to, make it a quaternion."""
         facts = self.facts
-        outer: ast.AST = node
+        outer: AST = node
         parent = facts.parent(node)
-        if isinstance(parent, ast.Call) and len(parent.args) == 1 and facts.is_array_call(parent.func, "array", "asarray", "tensor"):
+        if isinstance(parent, Call) and len(parent.args) == 1 and facts.is_array_call(parent.func, "array", "asarray", "tensor"):
             outer, parent = parent, facts.parent(parent)  # np.array([...])
-        if isinstance(parent, ast.Call) and quaternion_order(facts, parent) is not None and quaternion_argument(facts, parent) is outer:
+        if isinstance(parent, Call) and quaternion_order(facts, parent) is not None and quaternion_argument(facts, parent) is outer:
             return True
         witnesses = [_name_of(base)]
-        if isinstance(parent, (ast.Assign, ast.AnnAssign)):
-            targets = parent.targets if isinstance(parent, ast.Assign) else [parent.target]
+        if isinstance(parent, (Assign, AnnAssign)):
+            targets = parent.targets if isinstance(parent, Assign) else [parent.target]
             witnesses += [_name_of(target) for target in targets]
         function = parent
-        while function is not None and not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        while function is not None and not isinstance(function, (FunctionDef, AsyncFunctionDef)):
             function = facts.parent(function)
         if function is not None:
             witnesses.append(function.name)  # type: ignore[attr-defined]
@@ -258,13 +262,13 @@ class QuaternionComponentReused(FactRule):
 
 def _has_slice(index: ast.expr) -> bool:
     """`a[3:7]`, `a[i, 3:7]`: an index that selects several slots."""
-    return isinstance(index, ast.Slice) or isinstance(index, ast.Tuple) and any(isinstance(part, ast.Slice) for part in index.elts)
+    return isinstance(index, Slice) or isinstance(index, ast.Tuple) and any(isinstance(part, Slice) for part in index.elts)
 
 
-def _name_of(node: ast.AST) -> str | None:
-    if isinstance(node, ast.Name):
+def _name_of(node: AST) -> str | None:
+    if isinstance(node, Name):
         return node.id
-    if isinstance(node, ast.Attribute):
+    if isinstance(node, Attribute):
         return node.attr
     return None
 

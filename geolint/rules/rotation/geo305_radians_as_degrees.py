@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from ast import BinOp, Call, Constant
 import re
 
 from geolint.factbase.model import keyword, positional_args, string
@@ -157,12 +158,12 @@ class RadiansAsDegrees(FactRule):
 
     def run(self) -> None:
         units = self.facts.shared(AngleUnits)
-        for node in self.facts.index.nodes(ast.Call):
+        for node in self.facts.index.nodes(Call):
             self._check(node, units)  # type: ignore[arg-type]
-        for node in self.facts.index.nodes(ast.BinOp):
+        for node in self.facts.index.nodes(BinOp):
             report_hand_conversion_of_converted(self, node, RADIANS, units)  # type: ignore[arg-type]
 
-    def _check_unit_keyword(self, node: ast.Call, units: AngleUnits) -> bool:
+    def _check_unit_keyword(self, node: Call, units: AngleUnits) -> bool:
         """`Pose(roll=np.pi / 2, ..., angle_units="degrees")`, `SE3.Rx(np.pi / 2, unit="deg")`: the call
         says by a keyword that its angles are in degrees, and one of them is in radians by the code
         (not by a name)."""
@@ -185,7 +186,7 @@ class RadiansAsDegrees(FactRule):
                     return True
         return False
 
-    def _check(self, node: ast.Call, units: AngleUnits) -> None:
+    def _check(self, node: Call, units: AngleUnits) -> None:
         facts = self.facts
         found = wrong_unit_passed(facts, node, DEGREES, units)
         if found is not None:
@@ -212,7 +213,7 @@ class RadiansAsDegrees(FactRule):
         if not is_scipy_rotation_method(facts, node.func, "from_euler"):
             return
         degrees = keyword(node, "degrees")
-        if degrees is None or not (isinstance(degrees.value, ast.Constant) and degrees.value.value is True):
+        if degrees is None or not (isinstance(degrees.value, Constant) and degrees.value.value is True):
             return
         positional = positional_args(node)
         given = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)

@@ -3,6 +3,18 @@
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST,
+    Assign,
+    Attribute,
+    Call,
+    Constant,
+    Load,
+    Name,
+    Starred,
+    Store,
+    Subscript,
+)
 
 from geolint.factbase.index import FUNCTION_NODES
 from geolint.factbase.messages import MessageTypes
@@ -149,7 +161,7 @@ class QuaternionComponentUnset(FactRule):
         for scope_node, scope in index.scopes.items():
             if not isinstance(scope_node, FUNCTION_NODES):
                 continue
-            copies: dict[str, list[ast.Attribute]] = {}  # the quaternion's path -> its component stores
+            copies: dict[str, list[Attribute]] = {}  # the quaternion's path -> its component stores
             for target, _ in scope.attribute_stores:
                 if target.attr in _COMPONENTS:
                     path = dotted_name(target.value)
@@ -161,20 +173,20 @@ class QuaternionComponentUnset(FactRule):
                 elif len(targets) == 1 and targets[0].attr != "w":
                     self._check_identity(scope_node, path, targets[0])
 
-    def _check_identity(self, function: ast.AST, path: str, target: ast.Attribute) -> None:
+    def _check_identity(self, function: AST, path: str, target: Attribute) -> None:
         """`no_rotation = Transform()` then `no_rotation.rotation.x = 1.0` and nothing else: the identity
         written w-first into x; w keeps its default, so the quaternion is a half turn about x (ROS 1) or
         not of unit length (ROS 2). Only when a name of the message or its path says identity."""
         facts = self.facts
         statement = facts.parent(target)
-        if not isinstance(statement, ast.Assign) or len(statement.targets) != 1 or number(statement.value) != 1:
+        if not isinstance(statement, Assign) or len(statement.targets) != 1 or number(statement.value) != 1:
             return
         if IDENTITY_NAME.search(path.replace(".", "_")) is None:
             return
         root = target.value
-        while isinstance(root, ast.Attribute):
+        while isinstance(root, Attribute):
             root = root.value
-        if not isinstance(root, ast.Name):
+        if not isinstance(root, Name):
             return
         built = self._built_here(root, target.value)
         if built is None or not self._untouched(function, root.id, path, "w", built, statement):
@@ -190,12 +202,12 @@ class QuaternionComponentUnset(FactRule):
             fix_description="set w to 1 instead",
         )
 
-    def _check(self, function: ast.AST, path: str, targets: list[ast.Attribute]) -> None:
+    def _check(self, function: AST, path: str, targets: list[Attribute]) -> None:
         facts = self.facts
         statements = [facts.parent(target) for target in targets]
-        if not all(isinstance(statement, ast.Assign) and len(statement.targets) == 1 for statement in statements):
+        if not all(isinstance(statement, Assign) and len(statement.targets) == 1 for statement in statements):
             return
-        assignments: list[ast.Assign] = statements  # type: ignore[assignment]
+        assignments: list[Assign] = statements  # type: ignore[assignment]
         block = facts.parent(assignments[0])
         if any(facts.parent(statement) is not block for statement in assignments) or not _one_block(block, assignments):
             return  # in different arms of an `if`: the fourth may be set in a third
@@ -213,9 +225,9 @@ class QuaternionComponentUnset(FactRule):
             if missing == "w" and not _ROTATION_WORDS & set(source.rsplit(".", 1)[-1].lower().split("_")):
                 return
         root = targets[0].value
-        while isinstance(root, ast.Attribute):
+        while isinstance(root, Attribute):
             root = root.value
-        assert isinstance(root, ast.Name)
+        assert isinstance(root, Name)
         built = self._built_here(root, targets[0].value)
         if built is None:
             return
@@ -242,60 +254,60 @@ class QuaternionComponentUnset(FactRule):
             fix_description=f"copy `{source}.{missing}` too",
         )
 
-    def _built_here(self, root: ast.Name, quaternion: ast.expr) -> str | None:
+    def _built_here(self, root: Name, quaternion: ast.expr) -> str | None:
         """`Cls()` when the message at `root` is built in this function with no arguments and `quaternion`
         (a path from it) is its Quaternion field (so the missing component's default is known)."""
         facts = self.facts
         bindings = facts.index.scope_of(root).bindings.get(root.id, [])
-        if len(bindings) != 1 or not isinstance(bindings[0], ast.Call):
+        if len(bindings) != 1 or not isinstance(bindings[0], Call):
             return None
         call = bindings[0]
-        if call.args or call.keywords or not isinstance(facts.parent(call), ast.Assign):
+        if call.args or call.keywords or not isinstance(facts.parent(call), Assign):
             return None
         if facts.shared(MessageTypes).class_of(quaternion) != _QUATERNION:
             return None  # the fact base's message classes, field by field from the constructor
         return f"{facts.code_of(call.func)}()"
 
-    def _untouched(self, function: ast.AST, root: str, path: str, missing: str, built: str, last: ast.Assign) -> bool:
+    def _untouched(self, function: AST, root: str, path: str, missing: str, built: str, last: Assign) -> bool:
         """Nothing else can have set the missing component: no store to it or to anything around it, no
         `setattr`, and the message not handed anywhere before the last copy (only written into)."""
         facts = self.facts
         prefixes = {".".join(path.split(".")[:depth]) for depth in range(2, path.count(".") + 2)}
         for node in walk_within(function):
             kind = type(node)
-            if kind is ast.Attribute:
+            if kind is Attribute:
                 context = type(node.ctx)  # type: ignore[attr-defined]
-                if context is ast.Store and (node.attr == missing or dotted_name(node) in prefixes):  # type: ignore[attr-defined]
+                if context is Store and (node.attr == missing or dotted_name(node) in prefixes):  # type: ignore[attr-defined]
                     return False  # `x.w = ...` anywhere (an alias of the quaternion), or a part replaced
-                if context is ast.Load and dotted_name(node) == path and not isinstance(facts.parent(node), ast.Attribute):
+                if context is Load and dotted_name(node) == path and not isinstance(facts.parent(node), Attribute):
                     return False  # the quaternion itself handed on (a helper may normalise or complete it)
-            elif kind is ast.Name:
+            elif kind is Name:
                 if node.id == root and _before(node, last) and not _writes_into(facts, node):  # type: ignore[attr-defined, arg-type]
                     return False  # the message handed on before the copy is complete
-            elif kind is ast.Call and isinstance(node.func, ast.Name) and node.func.id == "setattr":  # type: ignore[attr-defined]
+            elif kind is Call and isinstance(node.func, Name) and node.func.id == "setattr":  # type: ignore[attr-defined]
                 return False
         return True
 
 
-def _source(target: ast.Attribute, value: ast.expr) -> str | None:
+def _source(target: Attribute, value: ast.expr) -> str | None:
     """`s` for a store `o.x = s.x` (the same component of one source), else None."""
-    if isinstance(value, ast.Attribute) and value.attr == target.attr:
+    if isinstance(value, Attribute) and value.attr == target.attr:
         return dotted_name(value.value)
     return None
 
 
-def _elements(facts: FactBase, targets: list[ast.Attribute], assignments: list[ast.Assign]) -> str | None:
+def _elements(facts: FactBase, targets: list[Attribute], assignments: list[Assign]) -> str | None:
     """For `o.x = s[i]`, `o.y = s[i + 1]`, `o.z = s[i + 2]` (each maybe through one call `f(s[k], *rest)`
     with the same `f` and the same other arguments): how the finding names the three; else None."""
     shapes = set()
     for target, statement in zip(targets, assignments):
         value = statement.value
         wrapper = None
-        if isinstance(value, ast.Call) and value.args and not isinstance(value.args[0], ast.Starred):
+        if isinstance(value, Call) and value.args and not isinstance(value.args[0], Starred):
             rest = [facts.code_of(argument) for argument in value.args[1:]] + [facts.code_of(item) for item in value.keywords]
             wrapper = (facts.code_of(value.func), tuple(rest))
             value = value.args[0]
-        if not isinstance(value, ast.Subscript) or not isinstance(value.slice, ast.Constant) or type(value.slice.value) is not int:
+        if not isinstance(value, Subscript) or not isinstance(value.slice, Constant) or type(value.slice.value) is not int:
             return None
         sequence = dotted_name(value.value)
         if sequence is None:
@@ -310,7 +322,7 @@ def _elements(facts: FactBase, targets: list[ast.Attribute], assignments: list[a
     return elements if wrapper is None else f"`{wrapper[0]}` of {elements}"
 
 
-def _one_block(block: ast.AST | None, statements: list[ast.Assign]) -> bool:
+def _one_block(block: AST | None, statements: list[Assign]) -> bool:
     """The statements all sit in one statement list of `block` (not in its `if` and `else` arms)."""
     for field in ("body", "orelse", "finalbody"):
         body = getattr(block, field, None)
@@ -319,16 +331,16 @@ def _one_block(block: ast.AST | None, statements: list[ast.Assign]) -> bool:
     return False
 
 
-def _before(node: ast.AST, statement: ast.stmt) -> bool:
+def _before(node: AST, statement: ast.stmt) -> bool:
     return (node.lineno, node.col_offset) < (statement.lineno, statement.col_offset)  # type: ignore[attr-defined]
 
 
-def _writes_into(facts: object, name: ast.Name) -> bool:
+def _writes_into(facts: object, name: Name) -> bool:
     """`name` is the root of a store target (`msg.pose.position.x = ...`) or the binding itself."""
-    if isinstance(name.ctx, ast.Store):
+    if isinstance(name.ctx, Store):
         return True
-    node: ast.AST = name
+    node: AST = name
     parent = facts.parent(node)  # type: ignore[attr-defined]
-    while isinstance(parent, ast.Attribute):
+    while isinstance(parent, Attribute):
         node, parent = parent, facts.parent(parent)  # type: ignore[attr-defined]
-    return isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store)
+    return isinstance(node, Attribute) and isinstance(node.ctx, Store)

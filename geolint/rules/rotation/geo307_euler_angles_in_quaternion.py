@@ -4,6 +4,7 @@ or given whole where pybullet takes a quaternion."""
 from __future__ import annotations
 
 import ast
+from ast import AST, Add, Assign, Attribute, BinOp, Call, Load, Name, Sub, Subscript, UAdd, USub, UnaryOp
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -183,15 +184,15 @@ class EulerAnglesInQuaternion(FactRule):
         facts = self.facts
         if "_msgs" in self.context.source:
             self._check_messages()
-        for call in facts.index.nodes(ast.Call):
-            if isinstance(call, ast.Call) and (last_name(call.func) or "") in PYBULLET_QUATERNION_CALLS:
+        for call in facts.index.nodes(Call):
+            if isinstance(call, Call) and (last_name(call.func) or "") in PYBULLET_QUATERNION_CALLS:
                 self._check_pybullet(call)
 
     def _check_messages(self) -> None:
         facts = self.facts
         types = facts.shared(MessageTypes)
         for scope in facts.index.scopes.values():
-            stores: dict[str, list[tuple[str, ast.expr, ast.Attribute]]] = {}
+            stores: dict[str, list[tuple[str, ast.expr, Attribute]]] = {}
             for target, value in scope.attribute_stores:
                 if target.attr in _COMPONENTS:
                     path = dotted_name(target.value)
@@ -201,14 +202,14 @@ class EulerAnglesInQuaternion(FactRule):
                 quaternion = written[0][2].value
                 if self._is_quaternion(types, quaternion) and self._read_as_rotation(quaternion):
                     self._check(path, [(component, value) for component, value, _ in written], written[0][2])
-        for call in facts.index.nodes(ast.Call):
+        for call in facts.index.nodes(Call):
             if facts.called_name(call.func) == "Quaternion" and facts.qualified_name(call.func) == _QUATERNION:  # type: ignore[attr-defined]
                 given = [(component, value) for component, value in zip(_COMPONENTS, positional_args(call))]  # type: ignore[arg-type]
                 given += [(item.arg, item.value) for item in call.keywords if item.arg in _COMPONENTS]  # type: ignore[attr-defined]
                 if given and self._placed_as_rotation(call):  # type: ignore[arg-type]
                     self._check(f"{facts.code_of(call.func)}(...)", given, call)  # type: ignore[attr-defined,arg-type]
 
-    def _check_pybullet(self, call: ast.Call) -> None:
+    def _check_pybullet(self, call: Call) -> None:
         """An Euler triple where pybullet takes a quaternion: `visualFrameOrientations=[v.rpy for v in shapes]`."""
         for parameter, value in pybullet_quaternion_values(call):
             source = self._euler_source(value, 0)
@@ -226,15 +227,15 @@ class EulerAnglesInQuaternion(FactRule):
 
     def _names_a_quaternion(self, value: ast.expr) -> bool:
         """A name bound to a call that makes a quaternion (`euler_q = p.getQuaternionFromEuler(euler)`)."""
-        bound = self.facts.bindings(value) if isinstance(value, ast.Name) else None
+        bound = self.facts.bindings(value) if isinstance(value, Name) else None
         return any(
-            isinstance(part, ast.Call) and "quat" in (last_name(part.func) or "").lower()
+            isinstance(part, Call) and "quat" in (last_name(part.func) or "").lower()
             for binding in bound or []
             if isinstance(binding, ast.expr)
             for part in ast.walk(binding)
         )
 
-    def _check(self, quaternion: str, given: list[tuple[str, ast.expr]], anchor: ast.AST) -> None:
+    def _check(self, quaternion: str, given: list[tuple[str, ast.expr]], anchor: AST) -> None:
         angles = [(component, value, self._angle(value, 0)) for component, value in given]
         found = [(component, value, angle) for component, value, angle in angles if angle is not None]
         strong = [item for item in found if item[2].strong]
@@ -253,14 +254,14 @@ class EulerAnglesInQuaternion(FactRule):
     def _is_quaternion(self, types: MessageTypes, node: ast.expr) -> bool:
         """A Quaternion message: a field the fact base knows (`msg.orientation` of an `Imu()`), or a name
         bound only to `Quaternion()`."""
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             return types.class_of(node) == _QUATERNION
-        if not isinstance(node, ast.Name):
+        if not isinstance(node, Name):
             return False
         bound = self.facts.bindings(node) or []
         facts = self.facts
         return bool(bound) and all(
-            isinstance(binding, ast.Call) and facts.qualified_name(binding.func) == _QUATERNION for binding in bound
+            isinstance(binding, Call) and facts.qualified_name(binding.func) == _QUATERNION for binding in bound
         )
 
     # -- where the quaternion goes ------------------------------------------------------------------
@@ -268,9 +269,9 @@ class EulerAnglesInQuaternion(FactRule):
     def _read_as_rotation(self, quaternion: ast.expr) -> bool:
         """A field of a known message (`msg.orientation`), or a Quaternion message built alone and
         then put into an orientation (not a carrier of three numbers)."""
-        if isinstance(quaternion, ast.Attribute):
+        if isinstance(quaternion, Attribute):
             return True  # the class says Quaternion only through a known message's field or `self.q` built here
-        if not isinstance(quaternion, ast.Name):
+        if not isinstance(quaternion, Name):
             return False
         scope = self.facts.index.scope_of(quaternion)
         for node in self._uses(quaternion.id, scope):
@@ -279,16 +280,16 @@ class EulerAnglesInQuaternion(FactRule):
         return False
 
     @staticmethod
-    def _uses(name: str, scope: Scope) -> list[ast.Name]:
-        return [node for node in walk_within(scope.node) if isinstance(node, ast.Name) and node.id == name and isinstance(node.ctx, ast.Load)]
+    def _uses(name: str, scope: Scope) -> list[Name]:
+        return [node for node in walk_within(scope.node) if isinstance(node, Name) and node.id == name and isinstance(node.ctx, Load)]
 
     def _placed_as_rotation(self, node: ast.expr) -> bool:
         """`pose.orientation = node`, `Pose(orientation=node)`, `Transform(rotation=node)`."""
         parent = self.facts.parent(node)
         if isinstance(parent, ast.keyword):
             return parent.arg in _ORIENTATION_FIELDS
-        if isinstance(parent, ast.Assign) and parent.value is node:
-            return any(isinstance(target, ast.Attribute) and target.attr in _ORIENTATION_FIELDS for target in parent.targets)
+        if isinstance(parent, Assign) and parent.value is node:
+            return any(isinstance(target, Attribute) and target.attr in _ORIENTATION_FIELDS for target in parent.targets)
         return False
 
     # -- what the value is --------------------------------------------------------------------------
@@ -298,24 +299,24 @@ class EulerAnglesInQuaternion(FactRule):
         if depth > _MAX_DEPTH:
             return None
         facts = self.facts
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        if isinstance(node, UnaryOp) and isinstance(node.op, (USub, UAdd)):
             return self._angle(node.operand, depth + 1)
-        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+        if isinstance(node, BinOp) and isinstance(node.op, (Add, Sub)):
             if number(node.right) is not None:
                 return self._angle(node.left, depth + 1)  # `yaw + 0.1`, still an angle (not `yaw / 2`)
             return None
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             called = facts.called_name(node.func)
             arguments = positional_args(node)
             if len(arguments) == 1 and not node.keywords and (called == "float" or called in _UNIT_CALLS):
                 return self._angle(arguments[0], depth + 1)
             return None
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             position = number(node.slice)
             if position is None or position != int(position):
                 return None
             return self._element(node.value, int(position), depth + 1)
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             if node.id in facts.index.scope_of(node).augmented:
                 return None
             bound = facts.bindings(node) or []
@@ -323,8 +324,8 @@ class EulerAnglesInQuaternion(FactRule):
             if found and all(angle is not None and angle.strong for angle in found):
                 return found[0]
             return self._named(node.id, bound)
-        if isinstance(node, ast.Attribute):
-            if isinstance(node.value, ast.Name) and node.value.id == "self":
+        if isinstance(node, Attribute):
+            if isinstance(node.value, Name) and node.value.id == "self":
                 stores = facts.index.self_attribute_stores.get(node.attr, [])
                 found = [self._angle(store, depth + 1) for store in stores]
                 if found and all(angle is not None and angle.strong for angle in found):
@@ -336,10 +337,10 @@ class EulerAnglesInQuaternion(FactRule):
         return None
 
     @staticmethod
-    def _component_of_angles(node: ast.Attribute) -> _Angle | None:
+    def _component_of_angles(node: Attribute) -> _Angle | None:
         """Weak evidence: `rpy.x`, `self.euler.z`, a component of a 3-vector whose name says Euler angles."""
         owner = node.value
-        name = owner.attr if isinstance(owner, ast.Attribute) else owner.id if isinstance(owner, ast.Name) else None
+        name = owner.attr if isinstance(owner, Attribute) else owner.id if isinstance(owner, Name) else None
         words = _words(name or "")
         if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE:
             return _Angle(f"`{name}.{node.attr}`", f"the name `{name}` says Euler angles", False)
@@ -364,12 +365,12 @@ class EulerAnglesInQuaternion(FactRule):
         if depth > _MAX_DEPTH:
             return None
         facts = self.facts
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             qualified = facts.qualified_name(node.func) or ""
             if qualified in RETURNED_ANGLES:
                 return _Source((), f"`{qualified}` returns Euler angles", True)
             func = node.func
-            if isinstance(func, ast.Attribute):
+            if isinstance(func, Attribute):
                 method = EULER_METHOD_NAMES.get(func.attr)
                 if method is not None and not node.args:
                     _, names, twin = RETURNED_EULER_METHODS[method]
@@ -377,7 +378,7 @@ class EulerAnglesInQuaternion(FactRule):
                 if func.attr == "as_euler" and is_scipy_rotation_value(facts, func.value):
                     return _Source((), "scipy's `as_euler` returns Euler angles", True)
             return None
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             bound = facts.bindings(node) or []
             values = [binding for binding in bound if isinstance(binding, ast.expr)]
             found = [self._euler_source(value, depth + 1) for value in values]
@@ -387,8 +388,8 @@ class EulerAnglesInQuaternion(FactRule):
             if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(value) for value in values):
                 return _Source((), f"the name `{node.id}` says Euler angles", False)
             return None
-        if isinstance(node, ast.Attribute):
-            is_self = isinstance(node.value, ast.Name) and node.value.id == "self"
+        if isinstance(node, Attribute):
+            is_self = isinstance(node.value, Name) and node.value.id == "self"
             stores = facts.index.self_attribute_stores.get(node.attr, []) if is_self else []
             found = [self._euler_source(store, depth + 1) for store in stores]
             if found and all(source is not None and source.strong for source in found):
@@ -421,7 +422,7 @@ def _words(name: str) -> set[str]:
 def _trig(node: ast.expr) -> bool:
     """A formula with sin or cos in it (a quaternion component computed from angles)."""
     return any(
-        isinstance(part, ast.Call) and (getattr(part.func, "attr", None) or getattr(part.func, "id", None)) in TRIG_FUNCTIONS
+        isinstance(part, Call) and (getattr(part.func, "attr", None) or getattr(part.func, "id", None)) in TRIG_FUNCTIONS
         for part in ast.walk(node)
     )
 

@@ -14,6 +14,10 @@ GEO301 (quaternion order) and GEO304 (repeated component) ask two questions of a
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST, Assign, Attribute, BinOp, Call, ClassDef, Constant, Div, Mult, Name, Slice, Starred, Subscript, USub,
+    UnaryOp,
+)
 import re
 from dataclasses import dataclass
 
@@ -43,9 +47,9 @@ def _is_four_column_block(index: ast.expr) -> bool:
     if not (isinstance(index, ast.Tuple) and len(index.elts) == 2):
         return False
     rows, columns = index.elts
-    if not (isinstance(rows, ast.Slice) and rows.lower is None and rows.upper is None and rows.step is None):
+    if not (isinstance(rows, Slice) and rows.lower is None and rows.upper is None and rows.step is None):
         return False
-    if not isinstance(columns, ast.Slice) or columns.step is not None:
+    if not isinstance(columns, Slice) or columns.step is not None:
         return False
     lower = 0 if columns.lower is None else number(columns.lower)
     upper = number(columns.upper) if columns.upper is not None else None
@@ -104,7 +108,7 @@ def name_order(name: str) -> str | None:
 def component_index(node: ast.expr) -> tuple[ast.expr, int] | None:
     """`q[3]`, `q[:, 3]`, `q[..., 3]`, `float(q[3])`: (q, 3) for an integer last index after full slices only."""
     node = unwrapped_scalar(node)
-    if not isinstance(node, ast.Subscript):
+    if not isinstance(node, Subscript):
         return None
     parts = subscript_parts(node)
     if not parts:
@@ -120,10 +124,10 @@ def component_index(node: ast.expr) -> tuple[ast.expr, int] | None:
 
 def spelled_components(facts: FactBase, node: ast.expr) -> list[ast.expr] | None:
     """The four elements of `[a, b, c, d]`, `(a, b, c, d)` or `np.array([a, b, c, d])`."""
-    if isinstance(node, ast.Call) and last_name(node.func) in ("array", "asarray", "tensor", "as_tensor") and len(node.args) == 1:
+    if isinstance(node, Call) and last_name(node.func) in ("array", "asarray", "tensor", "as_tensor") and len(node.args) == 1:
         if facts.is_array_call(node.func, "array", "asarray", "tensor", "as_tensor"):
             node = node.args[0]
-    if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 4 and not any(isinstance(e, ast.Starred) for e in node.elts):
+    if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 4 and not any(isinstance(e, Starred) for e in node.elts):
         return list(node.elts)
     return None
 
@@ -131,7 +135,7 @@ def spelled_components(facts: FactBase, node: ast.expr) -> list[ast.expr] | None
 def unwrapped_scalar(node: ast.expr) -> ast.expr:
     """`float(q[3])` -> `q[3]`: the builtin conversion keeps the component's value."""
     if (
-        isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "float"
+        isinstance(node, Call) and isinstance(node.func, Name) and node.func.id == "float"
         and len(node.args) == 1 and not node.keywords
     ):
         return node.args[0]
@@ -149,8 +153,8 @@ def same_base(facts: FactBase, elements: list[ast.expr]) -> tuple[ast.expr, list
     return found[0][0], [item[1] for item in found]  # type: ignore[index]
 
 
-def _is_ellipsis(node: ast.AST) -> bool:
-    return isinstance(node, ast.Constant) and node.value is Ellipsis
+def _is_ellipsis(node: AST) -> bool:
+    return isinstance(node, Constant) and node.value is Ellipsis
 
 
 def _words(name: str) -> list[str]:
@@ -171,7 +175,7 @@ class QuaternionFlow:
     def reorder_of(self, node: ast.expr, through_names: bool = True) -> Reorder | None:
         facts = self.facts
         node = self._strip(node)
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             parts = subscript_parts(node)
             if not parts:
                 return None  # `x[()]`
@@ -181,7 +185,7 @@ class QuaternionFlow:
                 if permutation is not None:
                     return Reorder(node, node.value, permutation, "index")
             return None
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             rolled = self._roll(node)
             if rolled is not None:
                 return rolled
@@ -191,13 +195,13 @@ class QuaternionFlow:
             if spelled is not None and sorted(spelled[1]) == [0, 1, 2, 3] and spelled[1] != [0, 1, 2, 3]:
                 return Reorder(node, spelled[0], tuple(spelled[1]), "spelled")
             return None
-        if through_names and isinstance(node, ast.Name):
+        if through_names and isinstance(node, Name):
             bound = facts.bindings(node) or []
             if len(bound) == 1 and isinstance(bound[0], ast.expr) and not self._modified(node):
                 return self.reorder_of(bound[0], through_names=False)
         return None
 
-    def _roll(self, call: ast.Call) -> Reorder | None:
+    def _roll(self, call: Call) -> Reorder | None:
         facts = self.facts
         if not facts.is_array_call(call.func, "roll"):
             return None
@@ -218,9 +222,9 @@ class QuaternionFlow:
         """`orientations_quat_wxyz`, `quats`, `data.xquat`: a name in the plural of a quaternion word,
         a value known to be a stack (mujoco's per-body arrays), or a block of four columns of a table
         (`poses[:, 3:7]`, the quaternions of stacked (x, y, z, qw, qx, qy, qz) rows)."""
-        if isinstance(node, ast.Subscript) and _is_four_column_block(node.slice):
+        if isinstance(node, Subscript) and _is_four_column_block(node.slice):
             return True
-        name = node.id if isinstance(node, ast.Name) else node.attr if isinstance(node, ast.Attribute) else None
+        name = node.id if isinstance(node, Name) else node.attr if isinstance(node, Attribute) else None
         if name is not None and any(word in _STACK_WORDS for word in _words(name)):
             return True
         order = self.order_of(node)
@@ -232,18 +236,18 @@ class QuaternionFlow:
         travel to other code in that non-standard order."""
         if self._module_permutations is None:
             found: set[tuple[int, ...]] = set()
-            for node in self.facts.index.nodes(ast.Subscript, ast.Call, ast.List, ast.Tuple):
+            for node in self.facts.index.nodes(Subscript, Call, ast.List, ast.Tuple):
                 reorder = self.reorder_of(node, through_names=False)  # type: ignore[arg-type]
                 if reorder is not None and self._stored_in_container(reorder.node):
                     found.add(reorder.permutation)
             self._module_permutations = found
         return permutation in self._module_permutations
 
-    def scope_applies(self, node: ast.AST, permutation: tuple[int, ...]) -> bool:
+    def scope_applies(self, node: AST, permutation: tuple[int, ...]) -> bool:
         """Whether the function (or module body) holding `node` reorders some data by `permutation`
         (`q = q[:, :, [1, 2, 3, 0]]` before a smoothing that ignores component order)."""
         scope = self.facts.index.scope_of(node).node
-        for candidate in self.facts.index.nodes(ast.Subscript, ast.Call):
+        for candidate in self.facts.index.nodes(Subscript, Call):
             if self.facts.index.scope_of(candidate).node is not scope:
                 continue
             reorder = self.reorder_of(candidate, through_names=False)  # type: ignore[arg-type]
@@ -255,8 +259,8 @@ class QuaternionFlow:
         parent = self.facts.parent(node)
         if isinstance(parent, ast.Dict):
             return any(value is node for value in parent.values)
-        if isinstance(parent, ast.Assign) and parent.value is node:
-            return any(isinstance(target, (ast.Subscript, ast.Attribute)) for target in parent.targets)
+        if isinstance(parent, Assign) and parent.value is node:
+            return any(isinstance(target, (Subscript, Attribute)) for target in parent.targets)
         return False
 
     # -- orders --------------------------------------------------------------------------
@@ -266,9 +270,9 @@ class QuaternionFlow:
     def _order(self, node: ast.expr) -> Order | None:
         facts = self.facts
         node = self._strip(node)
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        if isinstance(node, UnaryOp) and isinstance(node.op, USub):
             return self.order_of(node.operand)
-        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Div, ast.Mult)):
+        if isinstance(node, BinOp) and isinstance(node.op, (Div, Mult)):
             # `q / np.linalg.norm(q)`, `q * sign`: scaling keeps the order
             if facts.is_norm_call(node.right) or number(node.right) is not None:
                 return self.order_of(node.left)
@@ -282,13 +286,13 @@ class QuaternionFlow:
             if len(shown) > 60:
                 shown = f"{list(reorder.permutation)}"
             return Order(permuted(base.order, reorder.permutation), f"{base.evidence}, reordered by `{shown}`", base.local)
-        if isinstance(node, ast.Call):
+        if isinstance(node, Call):
             return self._order_of_call(node)
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             return self._order_of_name(node)
-        if isinstance(node, ast.Attribute):
+        if isinstance(node, Attribute):
             return self._order_of_attribute(node)
-        if isinstance(node, ast.Subscript):
+        if isinstance(node, Subscript):
             return self._order_of_row(node)
         elements = spelled_components(facts, node)
         if elements is not None:
@@ -307,7 +311,7 @@ class QuaternionFlow:
                 return Order(base.order, base.evidence, base.local)
         return None
 
-    def _order_of_call(self, call: ast.Call) -> Order | None:
+    def _order_of_call(self, call: Call) -> Order | None:
         facts = self.facts
         produced = quaternion_producer(facts, call)
         if produced is not None:
@@ -325,7 +329,7 @@ class QuaternionFlow:
                 return Order(order, f"from `{facts.code_of(call.func)}`, which returns it {evidence}", local=False, batch=batch)
         return None
 
-    def _returned_element(self, call: ast.Call, position: int) -> Order | None:
+    def _returned_element(self, call: Call, position: int) -> Order | None:
         """Position `position` of the tuple a project helper returns (`pos, quat = get_pose()`, `get_pose()[1]`)."""
         facts = self.facts
         if not facts.may_have_summary(call):
@@ -336,29 +340,29 @@ class QuaternionFlow:
         order, evidence, batch = summary.quaternion_elements[position]
         return Order(order, f"from `{facts.code_of(call.func)}`, which returns it at position {position} {evidence}", local=False, batch=batch)
 
-    def _order_of_row(self, node: ast.Subscript) -> Order | None:
+    def _order_of_row(self, node: Subscript) -> Order | None:
         """`data.xquat[body_id]` (one row of a stack) and pybullet's `getBasePositionAndOrientation(i)[1]`."""
         index = node.slice
-        if isinstance(node.value, ast.Call) and last_name(node.value.func) in _PYBULLET_PAIRS and number(index) == 1:
+        if isinstance(node.value, Call) and last_name(node.value.func) in _PYBULLET_PAIRS and number(index) == 1:
             return Order(SCALAR_LAST, f"from pybullet's `{last_name(node.value.func)}`, line {node.lineno}")
         position = number(index)
         if isinstance(position, int) and not isinstance(position, bool) and position >= 0:
             returned = node.value
-            if isinstance(returned, ast.Name):
+            if isinstance(returned, Name):
                 bound = self.facts.bindings(returned) or []
-                returned = bound[0] if len(bound) == 1 and isinstance(bound[0], ast.Call) and not self._modified(returned) else returned  # type: ignore[assignment]
-            if isinstance(returned, ast.Call):
+                returned = bound[0] if len(bound) == 1 and isinstance(bound[0], Call) and not self._modified(returned) else returned  # type: ignore[assignment]
+            if isinstance(returned, Call):
                 element = self._returned_element(returned, position)
                 if element is not None:
                     return element
-        if isinstance(index, (ast.Slice, ast.Tuple, ast.List, ast.Starred)):
+        if isinstance(index, (Slice, ast.Tuple, ast.List, Starred)):
             return None
         base = self.order_of(node.value)
         if base is not None and base.batch:
             return Order(base.order, base.evidence, base.local)
         return None
 
-    def _order_of_name(self, node: ast.Name) -> Order | None:
+    def _order_of_name(self, node: Name) -> Order | None:
         facts = self.facts
         stated = name_order(node.id)
         by_name = Order(stated, f"from its name `{node.id}`", local=True) if stated else None
@@ -380,10 +384,10 @@ class QuaternionFlow:
     def _order_of_binding(self, binding: object) -> Order | None:
         if isinstance(binding, ast.expr):
             return self.order_of(binding)
-        if isinstance(binding, UnpackBinding) and binding.position == 1 and isinstance(binding.value, ast.Call):
+        if isinstance(binding, UnpackBinding) and binding.position == 1 and isinstance(binding.value, Call):
             if last_name(binding.value.func) in _PYBULLET_PAIRS:
                 return Order(SCALAR_LAST, f"from pybullet's `{last_name(binding.value.func)}`, line {binding.value.lineno}")
-        if isinstance(binding, UnpackBinding) and isinstance(binding.value, ast.Call):
+        if isinstance(binding, UnpackBinding) and isinstance(binding.value, Call):
             return self._returned_element(binding.value, binding.position)
         if isinstance(binding, LoopBinding) and binding.position is None:
             rows = self.order_of(binding.iterable)
@@ -391,7 +395,7 @@ class QuaternionFlow:
                 return Order(rows.order, rows.evidence, rows.local)
         return None
 
-    def _order_of_attribute(self, node: ast.Attribute) -> Order | None:
+    def _order_of_attribute(self, node: Attribute) -> Order | None:
         facts = self.facts
         attr = node.attr
         if attr in _MUJOCO_ATTRIBUTES and self._imports(*_MUJOCO_MODULES):
@@ -402,10 +406,10 @@ class QuaternionFlow:
             cls = self.messages.class_of(node.value)
             order = field_order(cls, attr)
             if cls is not None and order is not None:
-                return Order(order, f"from {field_label(cls, attr)}", local=isinstance(node.value, ast.Name))
+                return Order(order, f"from {field_label(cls, attr)}", local=isinstance(node.value, Name))
         stated = name_order(attr)
         by_name = Order(stated, f"from its name `{attr}`", local=False) if stated else None
-        if isinstance(node.value, ast.Name) and node.value.id == "self":
+        if isinstance(node.value, Name) and node.value.id == "self":
             stores: list[ast.expr | None] = list(facts.index.self_attribute_stores.get(attr, []))
             where = f"`self.{attr}`"
         else:
@@ -427,27 +431,27 @@ class QuaternionFlow:
         """The class of a name's value when every binding says it: a constructor call, a parameter
         annotated with one class (`label: Record`, `labels: List[Record]`), or a loop over such a parameter.
         `visiting`: the names being resolved (`for elem in elem:` loops over its own name)."""
-        if not isinstance(node, ast.Name) or node.id in visiting:
+        if not isinstance(node, Name) or node.id in visiting:
             return None
         bound = self.facts.bindings(node) or []
         found = {self._class_of_binding(binding, visiting | {node.id}) for binding in bound}
         return found.pop() if len(found) == 1 and None not in found else None
 
     def _class_of_binding(self, binding: object, visiting: frozenset[str]) -> str | None:
-        if isinstance(binding, ast.Call):
+        if isinstance(binding, Call):
             name = last_name(binding.func)
             return name if name and name[:1].isupper() else None
         if isinstance(binding, ParamBinding) and binding.arg.annotation is not None:
             classes = {
-                sub.id if isinstance(sub, ast.Name) else sub.attr
+                sub.id if isinstance(sub, Name) else sub.attr
                 for sub in ast.walk(binding.arg.annotation)
-                if isinstance(sub, (ast.Name, ast.Attribute)) and not (isinstance(sub, ast.Name) and sub.id in _TYPING_WORDS)
-                and not isinstance(self.facts.parent(sub), ast.Attribute)
+                if isinstance(sub, (Name, Attribute)) and not (isinstance(sub, Name) and sub.id in _TYPING_WORDS)
+                and not isinstance(self.facts.parent(sub), Attribute)
             }
             classes |= {value for sub in ast.walk(binding.arg.annotation) if (value := string(sub)) is not None}
             classes = {name for name in classes if name[:1].isupper() and name not in _TYPING_WORDS}
             return classes.pop() if len(classes) == 1 else None
-        if isinstance(binding, LoopBinding) and binding.position is None and isinstance(binding.iterable, ast.Name):
+        if isinstance(binding, LoopBinding) and binding.position is None and isinstance(binding.iterable, Name):
             return self._class_of(binding.iterable, visiting)
         return None
 
@@ -457,7 +461,7 @@ class QuaternionFlow:
         if self._keyword_stores is None:
             self._keyword_stores = {}
             facts = self.facts
-            for call in facts.index.nodes(ast.Call):
+            for call in facts.index.nodes(Call):
                 name = last_name(call.func)  # type: ignore[attr-defined]
                 if not name or not name[:1].isupper():
                     continue
@@ -469,13 +473,13 @@ class QuaternionFlow:
             for scope in facts.index.scopes.values():
                 for target, value in scope.attribute_stores:
                     owner = target.value
-                    if isinstance(owner, ast.Name) and owner.id == "self":
-                        enclosing: ast.AST | None = scope.node
-                        while enclosing is not None and not isinstance(enclosing, ast.ClassDef):
+                    if isinstance(owner, Name) and owner.id == "self":
+                        enclosing: AST | None = scope.node
+                        while enclosing is not None and not isinstance(enclosing, ClassDef):
                             enclosing = facts.parent(enclosing)
-                        owner_class: str | None = enclosing.name if isinstance(enclosing, ast.ClassDef) else None
+                        owner_class: str | None = enclosing.name if isinstance(enclosing, ClassDef) else None
                     else:
-                        owner_class = self._class_of(owner) if isinstance(owner, ast.Name) else None
+                        owner_class = self._class_of(owner) if isinstance(owner, Name) else None
                     self._keyword_stores.setdefault((owner_class or "?", target.attr), []).append(value if owner_class else None)
         stores = list(self._keyword_stores.get((cls, attr), []))
         if (cls, "*") in self._keyword_stores or ("?", attr) in self._keyword_stores:
@@ -487,20 +491,20 @@ class QuaternionFlow:
         """Look through calls that keep the values: `np.asarray(q)`, `q.copy()`, `list(q)`, `q.astype(float)`."""
         facts = self.facts
         for _ in range(8):
-            if not isinstance(node, ast.Call):
+            if not isinstance(node, Call):
                 return node
             func = node.func
             positional = positional_args(node)
-            if isinstance(func, ast.Name) and func.id in ("list", "tuple") and len(node.args) == 1 and func.id not in facts.index.imports:
+            if isinstance(func, Name) and func.id in ("list", "tuple") and len(node.args) == 1 and func.id not in facts.index.imports:
                 node = node.args[0]
             elif (
-                isinstance(func, ast.Attribute)
+                isinstance(func, Attribute)
                 and len(positional) == 1
                 and not isinstance(positional[0], (ast.List, ast.Tuple))
                 and facts.is_array_call(func, *PASSTHROUGH_FUNCTIONS)
             ):
                 node = positional[0]
-            elif isinstance(func, ast.Attribute) and (func.attr in PASSTHROUGH_METHODS or func.attr == "tolist") and not facts.is_module_like(func.value):
+            elif isinstance(func, Attribute) and (func.attr in PASSTHROUGH_METHODS or func.attr == "tolist") and not facts.is_module_like(func.value):
                 if func.attr in ("reshape", "view") and any(number(arg) not in (-1, 4, 1) for arg in node.args):
                     return node
                 node = func.value
@@ -508,7 +512,7 @@ class QuaternionFlow:
                 return node
         return node
 
-    def _modified(self, name: ast.Name) -> bool:
+    def _modified(self, name: Name) -> bool:
         """`q[0] = ...` / `q += ...` in the name's scope: its components may have been rewritten."""
         scope = self.facts.index.scope_of(name)
         return name.id in scope.subscript_stores or name.id in scope.augmented
@@ -516,16 +520,16 @@ class QuaternionFlow:
     def _is_pyquaternion(self, node: ast.expr) -> bool:
         facts = self.facts
         for _ in range(6):
-            if isinstance(node, ast.Call):
+            if isinstance(node, Call):
                 func = node.func
                 qualified = facts.qualified_name(func) or ""
                 if qualified in _PYQUATERNION or qualified.rsplit(".", 1)[0] in _PYQUATERNION:
                     return True
                 return False
-            if isinstance(node, ast.Name):
+            if isinstance(node, Name):
                 bound = facts.bindings(node) or []
                 return bool(bound) and all(isinstance(b, ast.expr) and self._is_pyquaternion(b) for b in bound)
-            if isinstance(node, ast.Attribute) and node.attr in ("normalised", "unit", "inverse", "conjugate"):
+            if isinstance(node, Attribute) and node.attr in ("normalised", "unit", "inverse", "conjugate"):
                 node = node.value
                 continue
             return False
@@ -536,9 +540,9 @@ class QuaternionFlow:
         return any(name.split(".")[0] in modules for name in imported)
 
 
-def _index_list(facts: FactBase, node: ast.AST) -> tuple[int, ...] | None:
+def _index_list(facts: FactBase, node: AST) -> tuple[int, ...] | None:
     """`[3, 0, 1, 2]` (or `np.array([...])`) as an index: a non-identity permutation of 0..3."""
-    if isinstance(node, ast.Call) and facts.is_array_call(node.func, "array", "asarray", "tensor") and len(node.args) == 1:
+    if isinstance(node, Call) and facts.is_array_call(node.func, "array", "asarray", "tensor") and len(node.args) == 1:
         node = node.args[0]
     if not isinstance(node, ast.List) or len(node.elts) != 4:
         return None
@@ -556,13 +560,13 @@ def _spelled_order(elements: list[ast.expr]) -> str | None:
     letters = []
     owners = set()
     for element in elements:
-        if isinstance(element, ast.Attribute) and element.attr in COMPONENTS:
+        if isinstance(element, Attribute) and element.attr in COMPONENTS:
             letters.append(element.attr)
             owners.add(ast.dump(element.value))
-        elif isinstance(element, ast.Subscript) and (key := string(element.slice)) is not None and key in tuple(COMPONENTS):
+        elif isinstance(element, Subscript) and (key := string(element.slice)) is not None and key in tuple(COMPONENTS):
             letters.append(key)
             owners.add(ast.dump(element.value))
-        elif isinstance(element, ast.Name):
+        elif isinstance(element, Name):
             lowered = element.id.lower()
             for prefix in ("q_", "quat_", "q", "quat", "rot_", "orientation_", "ori_", ""):
                 rest = lowered[len(prefix) :]

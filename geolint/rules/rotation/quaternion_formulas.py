@@ -14,6 +14,26 @@ result (`yaw = ...`, `def quat_get_yaw`) pick one reading; otherwise it says not
 from __future__ import annotations
 
 import ast
+from ast import (
+    AST,
+    Add,
+    Assign,
+    AsyncFunctionDef,
+    Attribute,
+    BinOp,
+    Call,
+    Div,
+    FunctionDef,
+    Mult,
+    Name,
+    Pow,
+    Return,
+    Sub,
+    Subscript,
+    UAdd,
+    UnaryOp,
+    USub,
+)
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -133,23 +153,23 @@ class _Expansion:
         value = number(node)
         if value is not None:
             return {(): Fraction(value).limit_denominator(10**6)} if value else {}
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        if isinstance(node, UnaryOp) and isinstance(node.op, (USub, UAdd)):
             inner = self.expand(node.operand, depth + 1)
-            return None if inner is None else {m: -c for m, c in inner.items()} if isinstance(node.op, ast.USub) else inner
-        if isinstance(node, ast.BinOp):
+            return None if inner is None else {m: -c for m, c in inner.items()} if isinstance(node.op, USub) else inner
+        if isinstance(node, BinOp):
             return self._binop(node, depth)
         found = component_index(node)
         if found is not None:
             return self._component(found[0], found[1], node)
-        if isinstance(node, ast.Name):
+        if isinstance(node, Name):
             return self._name(node, depth)
         return None
 
-    def _binop(self, node: ast.BinOp, depth: int) -> Polynomial | None:
+    def _binop(self, node: BinOp, depth: int) -> Polynomial | None:
         left = self.expand(node.left, depth + 1)
         if left is None:
             return None
-        if isinstance(node.op, ast.Pow):
+        if isinstance(node.op, Pow):
             exponent = number(node.right)
             if exponent not in (2, 3, 4) or isinstance(exponent, float):
                 return None
@@ -157,7 +177,7 @@ class _Expansion:
             for _ in range(int(exponent) - 1):  # type: ignore[arg-type]
                 result = _mul(result, left) if result is not None else None
             return result
-        if isinstance(node.op, ast.Div):
+        if isinstance(node.op, Div):
             divisor = number(node.right)
             if not divisor:
                 return None
@@ -165,11 +185,11 @@ class _Expansion:
         right = self.expand(node.right, depth + 1)
         if right is None:
             return None
-        if isinstance(node.op, ast.Add):
+        if isinstance(node.op, Add):
             return _add(left, right)
-        if isinstance(node.op, ast.Sub):
+        if isinstance(node.op, Sub):
             return _add(left, right, -1)
-        if isinstance(node.op, ast.Mult):
+        if isinstance(node.op, Mult):
             return _mul(left, right)
         return None
 
@@ -179,11 +199,11 @@ class _Expansion:
             self.base, self.base_key = base, key
         elif key != self.base_key:
             return None  # components of two values: not one quaternion's formula
-        if not (isinstance(read, ast.Subscript) and isinstance(read.slice, ast.Tuple)):
+        if not (isinstance(read, Subscript) and isinstance(read.slice, ast.Tuple)):
             self.sliced = False
         return {(index,): Fraction(1)}
 
-    def _name(self, node: ast.Name, depth: int) -> Polynomial | None:
+    def _name(self, node: Name, depth: int) -> Polynomial | None:
         value = value_of(self.facts.index, node)
         if value is None:
             return None
@@ -220,7 +240,7 @@ def formula_reads(facts: FactBase) -> list[FormulaRead]:
     return facts.module_fact("quaternion formulas", lambda: _find(facts))
 
 
-def formula_reads_within(facts: FactBase, function: ast.AST) -> list[FormulaRead]:
+def formula_reads_within(facts: FactBase, function: AST) -> list[FormulaRead]:
     """The formulas in one function's own body (not in functions nested in it)."""
     scope_of = facts.index.scope_of
     return [read for read in formula_reads(facts) if scope_of(read.node).node is function]
@@ -231,7 +251,7 @@ def _find(facts: FactBase) -> list[FormulaRead]:
     index = facts.index
     # the angle formulas only where the text calls one of their functions (most modules call none)
     if any(name in index.source for name in (*_ATAN2, *_ASIN)):
-        for node in index.nodes(ast.Call):
+        for node in index.nodes(Call):
             name = last_name(node.func)  # type: ignore[attr-defined]
             if name in _ATAN2 and len(node.args) == 2 and not node.keywords:  # type: ignore[attr-defined]
                 found.append(_angle(facts, node, node.args, (("yaw", _YAW), ("roll", _ROLL))))  # type: ignore[arg-type, attr-defined]
@@ -245,15 +265,15 @@ def _find(facts: FactBase) -> list[FormulaRead]:
 
 def _unclamped(node: ast.expr) -> ast.expr:
     """`np.clip(t, -1, 1)`, `torch.clamp(t, -1, 1)`, `t.clamp(-1, 1)`: t (clamping keeps the formula)."""
-    if isinstance(node, ast.Call) and last_name(node.func) in _CLAMPS:
-        if isinstance(node.func, ast.Attribute) and len(node.args) == 3 and isinstance(node.func.value, ast.Name):
+    if isinstance(node, Call) and last_name(node.func) in _CLAMPS:
+        if isinstance(node.func, Attribute) and len(node.args) == 3 and isinstance(node.func.value, Name):
             return node.args[0]  # np.clip(t, lo, hi)
-        if isinstance(node.func, ast.Attribute) and len(node.args) == 2:
+        if isinstance(node.func, Attribute) and len(node.args) == 2:
             return node.func.value  # t.clamp(lo, hi)
     return node
 
 
-def _angle(facts: FactBase, node: ast.Call, arguments: list[ast.expr], candidates: tuple) -> FormulaRead | None:  # type: ignore[type-arg]
+def _angle(facts: FactBase, node: Call, arguments: list[ast.expr], candidates: tuple) -> FormulaRead | None:  # type: ignore[type-arg]
     expansion = _Expansion(facts)
     polynomials = [expansion.expand(argument) for argument in arguments]
     if any(polynomial is None for polynomial in polynomials) or expansion.base is None or expansion.conflict:
@@ -290,7 +310,7 @@ def _matrix(facts: FactBase, node: ast.List | ast.Tuple) -> FormulaRead | None:
                 matches.add((order, "rotation-matrix"))
     matrix: ast.expr = node
     parent = facts.parent(node)
-    if isinstance(parent, ast.Call) and len(parent.args) == 1 and parent.args[0] is node:
+    if isinstance(parent, Call) and len(parent.args) == 1 and parent.args[0] is node:
         matrix = parent  # `np.array([[...], ...])`: the matrix is the call
     return _decided(facts, matrix, expansion, matches)
 
@@ -325,11 +345,11 @@ def _result_word(facts: FactBase, node: ast.expr) -> str | None:
     """`yaw = atan2(...)`, `return atan2(...)` in `def quat_get_yaw`: the angle the code names."""
     parent = facts.parent(node)
     names: list[str] = []
-    if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], ast.Name):
+    if isinstance(parent, Assign) and len(parent.targets) == 1 and isinstance(parent.targets[0], Name):
         names.append(parent.targets[0].id)
-    elif isinstance(parent, ast.Return):
-        function: ast.AST | None = parent
-        while function is not None and not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+    elif isinstance(parent, Return):
+        function: AST | None = parent
+        while function is not None and not isinstance(function, (FunctionDef, AsyncFunctionDef)):
             function = facts.parent(function)
         if function is not None:
             names.append(function.name)

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import ast
 import re
+from ast import Module
 
 from geolint.lint_types import Severity
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -49,5 +49,5 @@ class UnusedSuppressionRule(AstRule):
     VALID = (Valid("normal_world = R_world_cam @ normal_cam  # noqa: E501\n"),)
     INVALID = (Invalid("normal_world = R_world_cam @ normal_cam  # geolint: ignore[GEO999]\n"),)
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         """Nothing to visit: the engine itself reports this code."""

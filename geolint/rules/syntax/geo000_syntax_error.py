@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import ast
 import re
+from ast import Module
 
 from geolint.lint_types import Severity
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -48,5 +48,5 @@ class SyntaxErrorRule(AstRule):
     VALID = (Valid("normal = R @ normal\n"),)
     INVALID = (Invalid("def transform_normals(R, normals:\n    return normals @ R.T\n"),)
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         """Nothing to visit: the engine itself reports this code."""

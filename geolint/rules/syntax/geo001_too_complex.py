@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import ast
 import re
+from ast import Module
 
 from geolint.lint_types import Severity
 from geolint.rules.base import AstRule, Invalid, Valid
@@ -53,5 +53,5 @@ class TooComplexToAnalyse(AstRule):
     VALID = (Valid("total = sum([offset_0, offset_1, offset_2])\n"),)
     INVALID = (Invalid(_DEEP_SUM),)
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         """Nothing to visit: the engine itself reports this code."""
