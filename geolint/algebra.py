@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import Enum
-from typing import Iterable, Sequence
+from typing import Final, Iterable, Sequence
 
 
 class Kind(str, Enum):
@@ -70,11 +70,11 @@ class Outcome:
     problem: Problem | None = None
 
 
-FREE = frozenset({Kind.VECTOR, Kind.DIRECTION})
+FREE: Final = frozenset({Kind.VECTOR, Kind.DIRECTION})
 LOCATED = frozenset({Kind.POINT}) | FREE
-OPERATORS = frozenset({Kind.ROTATION, Kind.TRANSFORM})
-HOMOGENEOUS = frozenset({Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR})
-SPATIAL = frozenset({Kind.TWIST, Kind.WRENCH})
+OPERATORS: Final = frozenset({Kind.ROTATION, Kind.TRANSFORM})
+HOMOGENEOUS: Final = frozenset({Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR})
+SPATIAL: Final = frozenset({Kind.TWIST, Kind.WRENCH})
 
 
 def is_free(kind: Kind) -> bool:
@@ -87,7 +87,7 @@ def is_free(kind: Kind) -> bool:
 # `op @ x`: which kinds an operator applies to and what it makes of them. A rigid transform
 # applied to a runtime Point / Vector knows the kind and does the right thing; applied to a
 # homogeneous array the w decides. A 4x4 applied to a plain 3-vector is a shape error, not ours.
-_APPLY: dict[tuple[Kind, Kind], Kind] = {
+_APPLY: Final[dict[tuple[Kind, Kind], Kind]] = {
     (Kind.ROTATION, Kind.POINT): Kind.POINT,
     (Kind.ROTATION, Kind.VECTOR): Kind.VECTOR,
     (Kind.ROTATION, Kind.DIRECTION): Kind.DIRECTION,

@@ -6,10 +6,12 @@ Each entry names where its unit was checked (the library's documentation or sour
 
 from __future__ import annotations
 
+from typing import Final
+
 DEGREES, RADIANS = "deg", "rad"
 
 # Library calls whose every returned angle (a tuple or array of Euler angles) is in one unit.
-RETURNED_ANGLES: dict[str, str] = {
+RETURNED_ANGLES: Final[dict[str, str]] = {
     # tf's transformations.py (Gohlke's, also shipped as tf_transformations and tf_conversions.transformations):
     # euler_from_matrix computes each angle with math.atan2, and its doctest reads
     # euler_from_quaternion([0.06146124, 0, 0, 0.99810947]) back as [0.123, 0, 0]: radians
@@ -35,7 +37,7 @@ RETURNED_ANGLES: dict[str, str] = {
 # order, the method of the same object that returns the orientation as a quaternion instead, with its
 # component order). A device object's class is seldom known where it is read (`robot.getDevice(name)`),
 # so a call is matched by its method name on any receiver: the names are the API's own, camelCase.
-RETURNED_EULER_METHODS: dict[str, tuple[str, tuple[str, ...], str]] = {
+RETURNED_EULER_METHODS: Final[dict[str, tuple[str, tuple[str, ...], str]]] = {
     # Webots' Python controller API: "wb_inertial_unit_get_roll_pitch_yaw returns the current roll, pitch
     # and yaw angles ... indices 0, 1 and 2 return the roll, pitch and yaw angles respectively", in
     # [-pi, pi] (radians; the noise field's "pi/2 radians"); "wb_inertial_unit_get_quaternion ... indices
@@ -43,10 +45,10 @@ RETURNED_EULER_METHODS: dict[str, tuple[str, tuple[str, ...], str]] = {
     # controller/inertial_unit.py returns `wb_inertial_unit_get_roll_pitch_yaw(tag)[:3]`)
     "controller.InertialUnit.getRollPitchYaw": (RADIANS, ("roll", "pitch", "yaw"), "getQuaternion()` (x, y, z, w"),
 }
-EULER_METHOD_NAMES = {qualified.rpartition(".")[2]: qualified for qualified in RETURNED_EULER_METHODS}
+EULER_METHOD_NAMES: Final = {qualified.rpartition(".")[2]: qualified for qualified in RETURNED_EULER_METHODS}
 
 # Library calls that read a rotation vector (axis times angle) as their first argument, in radians:
 # numpy-quaternion's from_rotation_vector "Each vector represents the axis of the rotation, with norm
 # proportional to the angle of the rotation in radians" (moble/quaternion, quaternion/__init__.py).
 # (scipy's `Rotation.from_rotvec` is known through `is_scipy_rotation_method`.)
-ROTATION_VECTOR_READERS = frozenset({"quaternion.from_rotation_vector"})
+ROTATION_VECTOR_READERS: Final = frozenset({"quaternion.from_rotation_vector"})

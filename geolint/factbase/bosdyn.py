@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import ast
 from ast import Call
-from typing import TYPE_CHECKING, Callable
+from typing import Callable, Final, TYPE_CHECKING
 
 from geolint.factbase.model import FrameFact, keyword, positional_args, string
 from geolint.semantic.names import NameFrames, same_frame
@@ -23,18 +23,18 @@ if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
 
 # The evidence every statement in the SDK's words ends with (names and frame_helpers calls).
-TFORM_EVIDENCE = "(Boston Dynamics' a_tform_b)"
+TFORM_EVIDENCE: Final = "(Boston Dynamics' a_tform_b)"
 
-_HELPERS = "bosdyn.client.frame_helpers."
+_HELPERS: Final = "bosdyn.client.frame_helpers."
 # frame_helpers' functions with their frames in the name
-_NAMED_HELPERS = {
+_NAMED_HELPERS: Final = {
     _HELPERS + "get_odom_tform_body": NameFrames(dst="odom", src="body", operator="transform"),
     _HELPERS + "get_vision_tform_body": NameFrames(dst="vision", src="body", operator="transform"),
 }
 # frame_helpers' functions taking (snapshot, frame_a, frame_b, ...) and returning a_tform_b (SE3, or SE2)
-_GENERIC_HELPERS = frozenset({_HELPERS + "get_a_tform_b", _HELPERS + "get_se2_a_tform_b"})
+_GENERIC_HELPERS: Final = frozenset({_HELPERS + "get_a_tform_b", _HELPERS + "get_se2_a_tform_b"})
 # frame_helpers' frame-name constants (those a transform is commonly asked between)
-_FRAME_CONSTANTS = {
+_FRAME_CONSTANTS: Final = {
     _HELPERS + "VISION_FRAME_NAME": "vision",
     _HELPERS + "BODY_FRAME_NAME": "body",
     _HELPERS + "GRAV_ALIGNED_BODY_FRAME_NAME": "flat_body",
@@ -53,7 +53,7 @@ _FRAME_CONSTANTS = {
 # `ko`: GraphNav's kinematic odometry, the odom frame (`set_localization(..., ko_tform_body=odom_tform_body)`).
 # `world`: a frame fixed in the world (fiducial_follow: body_tform_world = get_a_tform_b(snapshot,
 # BODY_FRAME_NAME, VISION_FRAME_NAME)).
-_ROLE_FRAMES = {
+_ROLE_FRAMES: Final = {
     "robot": frozenset({"body", "flat_body"}),
     "ko": frozenset({"odom"}),
     "world": frozenset({"vision", "odom", "seed"}),

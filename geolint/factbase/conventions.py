@@ -36,7 +36,7 @@ import re
 import threading
 from dataclasses import astuple, dataclass, fields, replace
 from pathlib import Path
-from typing import Iterator, NamedTuple
+from typing import Final, Iterator, NamedTuple
 
 from geolint.factbase.index import parse_of_file
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames, statements_under
@@ -44,18 +44,18 @@ from geolint.factbase.summaries import project_root
 from geolint.lint_types import Config
 from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS, NameFrames, is_frame
 
-_ORDER_NAME = re.compile(r"^_*([TRXH])_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)$")
-_COMPOSITION = re.compile(
+_ORDER_NAME: Final = re.compile(r"^_*([TRXH])_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)$")
+_COMPOSITION: Final = re.compile(
     r"\b(?:self\.)?[TXH]_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)\b(?:\.inverse\(\))?\s*[@*]\s*"
     r"(?:self\.)?[TXH]_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)\b(?!\.inverse|\.inv|\.T\b)"
 )
 # What every composition above contains from its first operand on: the regex engine scans for its
 # leading letters, where `\b(?:self\.)?` makes it try every position (10x faster on files without one).
-_COMPOSED_OPERAND = re.compile(r"[TXH]_[A-Za-z][A-Za-z0-9]*_[A-Za-z][A-Za-z0-9]*\b(?:\.inverse\(\))?\s*[@*]")
-_DECLARING = ("from_frame", "as_frames", "lookup_transform", "lookupTransform")
-_TF2_IMPORT = re.compile(r"^[ \t]*(?:import|from)[ \t]+tf2_(?:ros|py|geometry_msgs|sensor_msgs|kdl)\b", re.MULTILINE)
-_MAX_FILES = 20000
-_MAX_BYTES = 2_000_000
+_COMPOSED_OPERAND: Final = re.compile(r"[TXH]_[A-Za-z][A-Za-z0-9]*_[A-Za-z][A-Za-z0-9]*\b(?:\.inverse\(\))?\s*[@*]")
+_DECLARING: Final = ("from_frame", "as_frames", "lookup_transform", "lookupTransform")
+_TF2_IMPORT: Final = re.compile(r"^[ \t]*(?:import|from)[ \t]+tf2_(?:ros|py|geometry_msgs|sensor_msgs|kdl)\b", re.MULTILINE)
+_MAX_FILES: Final = 20000
+_MAX_BYTES: Final = 2_000_000
 
 
 @dataclass(frozen=True)

@@ -29,7 +29,7 @@ import ast
 from ast import AST, Attribute, BinOp, Call, Div, MatMult, Mult, Name, Slice, Starred, Subscript, USub, UnaryOp
 import re
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Final, TYPE_CHECKING
 
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import is_full_slice, is_slice_upto, number, string
@@ -47,21 +47,21 @@ from geolint.factbase.reaching import Unpacked, binding_of, scope_of, statement_
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase, FrameFact
 
-W2C = "w2c"
-C2W = "c2w"
-POSE = "pose"
-ROTATION = "rotation"
-TRANSLATION = "translation"
+W2C: Final = "w2c"
+C2W: Final = "c2w"
+POSE: Final = "pose"
+ROTATION: Final = "rotation"
+TRANSLATION: Final = "translation"
 
 # How strong the evidence is: data conventions, an order-independent name, a `T_a_b` name.
-DATA = "data"
-NAME = "name"
-ORDERED_NAME = "ordered-name"
+DATA: Final = "data"
+NAME: Final = "name"
+ORDERED_NAME: Final = "ordered-name"
 
-DIRECTION_WORDS = {W2C: "world-to-camera", C2W: "camera-to-world"}
+DIRECTION_WORDS: Final = {W2C: "world-to-camera", C2W: "camera-to-world"}
 
 # String keys of datasets and file formats that state a convention: (direction, part, where from).
-EXTRINSIC_KEYS: dict[str, tuple[str, str, str]] = {
+EXTRINSIC_KEYS: Final[dict[str, tuple[str, str, str]]] = {
     "cam_R_w2c": (W2C, ROTATION, "BOP scene_camera.json"),
     "cam_t_w2c": (W2C, TRANSLATION, "BOP scene_camera.json"),
     "transform_matrix": (C2W, POSE, "NeRF transforms.json"),
@@ -75,31 +75,31 @@ EXTRINSIC_KEYS: dict[str, tuple[str, str, str]] = {
     "world_to_cam": (W2C, POSE, "key"),
 }
 # Attributes with a library's meaning (COLMAP's `Image` namedtuple, pycolmap's `Image`).
-EXTRINSIC_ATTRIBUTES: dict[str, tuple[str, str, str]] = {
+EXTRINSIC_ATTRIBUTES: Final[dict[str, tuple[str, str, str]]] = {
     "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world"),
     "qvec": (W2C, ROTATION, "COLMAP Image.qvec"),
     "tvec": (W2C, TRANSLATION, "COLMAP Image.tvec"),
 }
 # Methods called without arguments: (direction, part, where from).
-EXTRINSIC_METHODS: dict[str, tuple[str, str, str]] = {
+EXTRINSIC_METHODS: Final[dict[str, tuple[str, str, str]]] = {
     "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world()"),
     "qvec2rotmat": (W2C, ROTATION, "COLMAP Image.qvec2rotmat()"),
     "projection_center": (C2W, TRANSLATION, "pycolmap Image.projection_center()"),
 }
 # Direction words inside names (`pose_c2w`, `R_w2c`) and phrases (`world_to_camera`).
-_NAME_TOKENS = {
+_NAME_TOKENS: Final = {
     "c2w": C2W, "w2c": W2C, "cam2world": C2W, "world2cam": W2C, "camera2world": C2W, "world2camera": W2C,
     "cam2w": C2W, "w2cam": W2C,
 }  # fmt: skip
-_PHRASE = re.compile(r"(?:^|_)(cam|camera|world)s?_(to|from)_(cam|camera|world)s?(?:_|$)")
-_COMPACT = re.compile(r"^_*(?:self\.)?([TRt]|pose)_?(cw|wc)$")  # ORB-SLAM's Tcw (camera from world), Twc
-_CAMERA_FRAME = re.compile(r"(?:cam|camera)[0-9]*[a-z]?|c[0-9]*")
-_ROTATION_TOKENS = frozenset({"R", "rot", "rotation", "rotmat", "Rot"})
-_TRANSLATION_TOKENS = frozenset({"t", "trans", "translation", "tvec", "transl"})
-_BLOCK_MAKERS = frozenset({"eye", "identity", "zeros", "empty"})
-_INVERSES = frozenset({"inv", "inverse", "pinv", "Inverse", "inverted"})
-_JOINS = frozenset({"concatenate", "hstack", "vstack", "column_stack", "cat", "concat", "row_stack"})
-_PASS_ON = frozenset({"tolist", "matrix"})
+_PHRASE: Final = re.compile(r"(?:^|_)(cam|camera|world)s?_(to|from)_(cam|camera|world)s?(?:_|$)")
+_COMPACT: Final = re.compile(r"^_*(?:self\.)?([TRt]|pose)_?(cw|wc)$")  # ORB-SLAM's Tcw (camera from world), Twc
+_CAMERA_FRAME: Final = re.compile(r"(?:cam|camera)[0-9]*[a-z]?|c[0-9]*")
+_ROTATION_TOKENS: Final = frozenset({"R", "rot", "rotation", "rotmat", "Rot"})
+_TRANSLATION_TOKENS: Final = frozenset({"t", "trans", "translation", "tvec", "transl"})
+_BLOCK_MAKERS: Final = frozenset({"eye", "identity", "zeros", "empty"})
+_INVERSES: Final = frozenset({"inv", "inverse", "pinv", "Inverse", "inverted"})
+_JOINS: Final = frozenset({"concatenate", "hstack", "vstack", "column_stack", "cat", "concat", "row_stack"})
+_PASS_ON: Final = frozenset({"tolist", "matrix"})
 
 
 def flip(direction: str) -> str:
@@ -443,8 +443,8 @@ def is_blank_matrix(value: ast.expr) -> bool:
     return int_value(size) == 4
 
 
-_CAMERA_CLOUD_MAKERS = frozenset({"create_from_rgbd_image", "create_from_depth_image"})
-_CLOUD_MOVES = frozenset({"transform", "rotate", "translate", "scale"})
+_CAMERA_CLOUD_MAKERS: Final = frozenset({"create_from_rgbd_image", "create_from_depth_image"})
+_CLOUD_MOVES: Final = frozenset({"transform", "rotate", "translate", "scale"})
 
 
 def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: AST) -> str | None:
@@ -481,7 +481,7 @@ def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: AS
 
 # Open3D calls whose extrinsic argument is world-to-camera: (position, keyword) by the callee's last name;
 # the callee must resolve to Open3D (`PointCloud.create_from_*`) or be a TSDF volume's `integrate`.
-OPEN3D_W2C_ARGUMENTS: dict[str, tuple[int | None, str]] = {
+OPEN3D_W2C_ARGUMENTS: Final[dict[str, tuple[int | None, str]]] = {
     "create_from_rgbd_image": (2, "extrinsic"),
     "create_from_depth_image": (2, "extrinsic"),
     "create_camera_visualization": (None, "extrinsic"),
@@ -527,7 +527,7 @@ def _is_tsdf_volume(evidence: ExtrinsicsEvidence, receiver: ast.expr) -> bool:
     )
 
 
-_PYRENDER_CAMERAS = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "OrthographicCamera"})
+_PYRENDER_CAMERAS: Final = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "OrthographicCamera"})
 
 
 def pyrender_camera_pose(evidence: ExtrinsicsEvidence, call: Call) -> ast.expr | None:

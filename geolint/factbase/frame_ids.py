@@ -7,6 +7,8 @@ time (a parameter, `rospy.get_param`, an attribute) leaves the value unknown (No
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     Add,
@@ -23,8 +25,8 @@ from ast import (
 from geolint.factbase.index import ModuleIndex, module_constant
 from geolint.factbase.reaching import resolve, scope_of
 
-_MAX_DEPTH = 6
-_MAX_LENGTH = 256  # frame ids are short; nothing longer is built here
+_MAX_DEPTH: Final = 6
+_MAX_LENGTH: Final = 256  # frame ids are short; nothing longer is built here
 
 
 def frame_string(node: ast.expr, index: ModuleIndex, depth: int = _MAX_DEPTH) -> str | None:

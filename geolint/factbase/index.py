@@ -47,12 +47,12 @@ from ast import (
 )
 from collections import OrderedDict
 from dataclasses import dataclass, field
-from typing import Any, Callable, Union
+from typing import Any, Callable, Final, Union
 
 from geolint.lint_types import Config
 
 ScopeNode = Union[Module, FunctionDef, AsyncFunctionDef, ClassDef, Lambda]
-FUNCTION_NODES = (FunctionDef, AsyncFunctionDef)
+FUNCTION_NODES: Final = (FunctionDef, AsyncFunctionDef)
 
 
 @dataclass(frozen=True)
@@ -460,21 +460,23 @@ class ModuleIndex:
 
 
 # Nodes nothing asks about (`Load`, `Add`...): not indexed, not walked.
-_LEAVES = frozenset(
+_LEAVES: Final = frozenset(
     {Load, Store, Del, *ast.operator.__subclasses__(), *ast.unaryop.__subclasses__(),
      *ast.cmpop.__subclasses__(), *ast.boolop.__subclasses__()}
 )  # fmt: skip
 # Nodes without child nodes worth walking (`Name`'s only child is its `Load`).
-_NO_CHILDREN = frozenset({Name, Constant, ast.alias, Pass, Break, Continue})
+_NO_CHILDREN: Final = frozenset({Name, Constant, ast.alias, Pass, Break, Continue})
 # Fields that never hold a node (or hold only `_LEAVES`): skipped without a look.
-_NOT_CHILD_FIELDS = frozenset(
+_NOT_CHILD_FIELDS: Final = frozenset(
     {"ctx", "op", "id", "attr", "arg", "name", "kind", "type_comment", "level", "module", "asname", "is_async", "conversion", "simple"}
 )
-_CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
-_REVERSED_CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
+_CHILD_FIELDS: Final[dict[type, tuple[str, ...]]] = {}
+_REVERSED_CHILD_FIELDS: Final[dict[type, tuple[str, ...]]] = {}
 # What the walk does with a child of each node type: skip it (`_LEAVES`), record it without pushing
 # it (`_NO_CHILDREN`), or walk it; one dictionary look-up per child instead of three tests.
-_SKIPPED, _CHILDLESS, _WALKED = 0, 1, 2
+_SKIPPED: Final = 0
+_CHILDLESS: Final = 1
+_WALKED: Final = 2
 
 
 def module_constant(index: ModuleIndex, name: str) -> ast.expr | None:
@@ -497,15 +499,15 @@ def _node_types(base: type[AST] = AST) -> list[type[AST]]:
     return found
 
 
-_ROLE: dict[type, int] = {
+_ROLE: Final[dict[type, int]] = {
     type(None): _SKIPPED,
     **{kind: _SKIPPED if kind in _LEAVES else _CHILDLESS if kind in _NO_CHILDREN else _WALKED for kind in _node_types()},
 }
-_MATMUL_METHODS = ("dot", "matmul")
-_SCOPE_MAKERS = frozenset({FunctionDef, AsyncFunctionDef, Lambda, ClassDef})
+_MATMUL_METHODS: Final = ("dot", "matmul")
+_SCOPE_MAKERS: Final = frozenset({FunctionDef, AsyncFunctionDef, Lambda, ClassDef})
 # What the walk records for the nodes that bind names, make scopes, return or multiply matrices
 # (by exact type, as `ast` makes them: one dictionary look-up per node).
-_RECORDERS: dict[type, Callable[[ModuleIndex, Any, Scope], Scope]] = {
+_RECORDERS: Final[dict[type, Callable[[ModuleIndex, Any, Scope], Scope]]] = {
     FunctionDef: ModuleIndex._record_function, AsyncFunctionDef: ModuleIndex._record_function,
     Lambda: ModuleIndex._record_lambda, ClassDef: ModuleIndex._record_class,
     Assign: ModuleIndex._record_assign, AnnAssign: ModuleIndex._record_annotated,
@@ -543,7 +545,7 @@ def child_nodes(node: AST) -> list[AST]:
     return children
 
 
-_STATEMENT_LIST_FIELDS = ("body", "orelse", "finalbody", "handlers", "cases")
+_STATEMENT_LIST_FIELDS: Final = ("body", "orelse", "finalbody", "handlers", "cases")
 _statement_lists_of: dict[type, tuple[str, ...]] = {}
 
 
@@ -576,7 +578,7 @@ def _runs_in_inner_scope(node: AST, child: AST) -> bool:
     return True
 
 
-_LINE_AND_COLUMN = operator.attrgetter("lineno", "col_offset")
+_LINE_AND_COLUMN: Final = operator.attrgetter("lineno", "col_offset")
 
 
 def _position(node: AST) -> tuple[int, int]:
@@ -596,8 +598,8 @@ def _matmul_operands(scope: Scope, *operands: ast.expr) -> None:
 # `parse_of_file`) is kept here, and its lint takes the tree and index when it comes (the engine's
 # own trees are not kept: few are imported after they are linted). Kept least recently used first,
 # up to a total text size (a tree and its index take about 40 bytes per character).
-_SHARED_BUDGET = 1_000_000  # characters
-_DEFAULT_DEPTH_LIMIT = Config.max_nesting_depth
+_SHARED_BUDGET: Final = 1_000_000  # characters
+_DEFAULT_DEPTH_LIMIT: Final = Config.max_nesting_depth
 _shared: OrderedDict[str, _SharedModule] = OrderedDict()
 _shared_size = 0
 _shared_lock = threading.Lock()

@@ -10,6 +10,8 @@ resolved through the module's imports, so `q` alone, or an unimported `VehicleOd
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import Attribute, Call, ClassDef, Constant, Name
 
@@ -21,7 +23,7 @@ from geolint.factbase.rotations import SCALAR_FIRST
 
 # px4_msgs (PX4's uORB topics on the ROS 2 bridge): every quaternion is Hamilton (w, x, y, z), PX4's
 # matrix::Quatf layout ("the order is q(w, x, y, z)" in VehicleAttitude.msg).
-MESSAGE_QUATERNION_FIELDS: dict[str, dict[str, str]] = {
+MESSAGE_QUATERNION_FIELDS: Final[dict[str, dict[str, str]]] = {
     "px4_msgs.msg.VehicleOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
     "px4_msgs.msg.VehicleAttitude": {"q": SCALAR_FIRST, "delta_q_reset": SCALAR_FIRST},
     "px4_msgs.msg.VehicleAttitudeSetpoint": {"q_d": SCALAR_FIRST},
@@ -29,7 +31,7 @@ MESSAGE_QUATERNION_FIELDS: dict[str, dict[str, str]] = {
     "px4_msgs.msg.VehicleMocapOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
 }
 # The attribute names above: the one cheap test before any type is looked for.
-QUATERNION_FIELD_NAMES = frozenset(field for fields in MESSAGE_QUATERNION_FIELDS.values() for field in fields)
+QUATERNION_FIELD_NAMES: Final = frozenset(field for fields in MESSAGE_QUATERNION_FIELDS.values() for field in fields)
 
 
 def _ros(package: str, fields: dict[str, dict[str, tuple[str | None, Kind | None]]]) -> dict[str, dict[str, tuple[str | None, Kind | None]]]:
@@ -43,7 +45,7 @@ def _ros(package: str, fields: dict[str, dict[str, tuple[str | None, Kind | None
 # and the kind of the 3-vectors among them. A Point is a position; the parts of a Twist, an Accel and a
 # Wrench are free vectors (velocities, accelerations, forces, torques), and so are a Vector3Stamped's
 # `vector` and an Imu's rates; a Transform's `translation` is a translation.
-MESSAGE_FIELDS: dict[str, dict[str, tuple[str | None, Kind | None]]] = {
+MESSAGE_FIELDS: Final[dict[str, dict[str, tuple[str | None, Kind | None]]]] = {
     **_ros("geometry_msgs", {
         "PointStamped": {"point": ("Point", Kind.POINT)},
         "Vector3Stamped": {"vector": ("Vector3", Kind.VECTOR)},
@@ -72,9 +74,9 @@ MESSAGE_FIELDS: dict[str, dict[str, tuple[str | None, Kind | None]]] = {
     }),
 }  # fmt: skip
 # The fields above that hold a 3-vector of known kind: the cheap test before a message class is looked for.
-VECTOR_FIELD_NAMES = frozenset(field for fields in MESSAGE_FIELDS.values() for field, (_, kind) in fields.items() if kind is not None)
+VECTOR_FIELD_NAMES: Final = frozenset(field for fields in MESSAGE_FIELDS.values() for field, (_, kind) in fields.items() if kind is not None)
 _KNOWN_CLASSES = frozenset(MESSAGE_QUATERNION_FIELDS) | frozenset(MESSAGE_FIELDS)
-_MAX_DEPTH = 8
+_MAX_DEPTH: Final = 8
 
 
 def field_order(cls: str | None, field: str) -> str | None:
@@ -212,4 +214,4 @@ def _has_no_fields(node: ast.expr) -> bool:
     return isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in _NODE_HANDLES
 
 
-_NODE_HANDLES = frozenset({"create_subscription", "create_publisher", "create_timer", "create_client", "create_service"})
+_NODE_HANDLES: Final = frozenset({"create_subscription", "create_publisher", "create_timer", "create_client", "create_service"})

@@ -28,7 +28,7 @@ import builtins
 import sys
 import re
 from dataclasses import dataclass
-from typing import Callable, Iterator, Literal, TypeVar
+from typing import Callable, Final, Iterator, Literal, TypeVar
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase import summaries
@@ -58,23 +58,23 @@ from geolint.semantic.names import (
 _T = TypeVar("_T")
 _A = TypeVar("_A")  # an analysis built on one fact base
 
-DST_FIRST = "dst-first"
-SRC_FIRST = "src-first"
-GEOMETRIC = frozenset({Kind.POINT, Kind.VECTOR, Kind.DIRECTION})
+DST_FIRST: Final = "dst-first"
+SRC_FIRST: Final = "src-first"
+GEOMETRIC: Final = frozenset({Kind.POINT, Kind.VECTOR, Kind.DIRECTION})
 # Words that make an extrinsics-named pose a relative one: `init_rel_w2c = inv(c2w_new @ w2c_last)`
 # is a world-to-world correction that `w2c_ref @ rel_w2c` applies, named after the pose it corrects.
-EXTRINSICS_EVIDENCE = "states camera extrinsics"  # the evidence of a name read by its extrinsics word alone
-RELATIVE_WORDS = frozenset({"rel", "relative", "delta", "diff", "residual", "incr", "increment", "update", "correction", "corr"})
-OPERATORS = frozenset({Kind.TRANSFORM, Kind.ROTATION})
-_NAME_KIND = {
+EXTRINSICS_EVIDENCE: Final = "states camera extrinsics"  # the evidence of a name read by its extrinsics word alone
+RELATIVE_WORDS: Final = frozenset({"rel", "relative", "delta", "diff", "residual", "incr", "increment", "update", "correction", "corr"})
+OPERATORS: Final = frozenset({Kind.TRANSFORM, Kind.ROTATION})
+_NAME_KIND: Final = {
     NameKind.POINT: Kind.POINT,
     NameKind.DIRECTION: Kind.DIRECTION,
     NameKind.TRANSFORM: Kind.TRANSFORM,
     NameKind.ROTATION: Kind.ROTATION,
 }
-_MAX_DEPTH = 60
-_MAX_REEXPORTS = 3  # package `__init__` modules followed to the module that defines a helper
-_MISSING = object()
+_MAX_DEPTH: Final = 60
+_MAX_REEXPORTS: Final = 3  # package `__init__` modules followed to the module that defines a helper
+_MISSING: Final = object()
 
 
 @dataclass(frozen=True)
@@ -115,8 +115,8 @@ class FrameFact:
 # --- small ast helpers -----------------------------------------------------------------------
 
 
-_BUILTIN_NAMES = frozenset(dir(builtins))  # `len(x)` under a star import: the builtin, in all but odd code
-_MATMUL_CALL_NAMES = frozenset(("dot", "matmul", "bmm", "einsum"))  # what `FactBase.matmul` reads as a product
+_BUILTIN_NAMES: Final = frozenset(dir(builtins))  # `len(x)` under a star import: the builtin, in all but odd code
+_MATMUL_CALL_NAMES: Final = frozenset(("dot", "matmul", "bmm", "einsum"))  # what `FactBase.matmul` reads as a product
 
 
 def dotted_name(node: AST) -> str | None:
@@ -1341,7 +1341,7 @@ def _origin_and_axis_tips(node: ast.List | ast.Tuple) -> bool:
 
 
 # Calls that apply a transform to a homogeneous argument (`transform(v)`, `apply_pose`, `np.matmul`).
-_TRANSFORM_CALL = re.compile(r"transform|xform|apply|rotat|project|matmul|mul|dot", re.IGNORECASE)
+_TRANSFORM_CALL: Final = re.compile(r"transform|xform|apply|rotat|project|matmul|mul|dot", re.IGNORECASE)
 
 
 def _is_literal_four_vector(node: ast.expr) -> bool:
@@ -1356,10 +1356,10 @@ def _is_last_slot(target: Subscript) -> bool:
     return number(target.slice) in (3, -1)
 
 
-_ARRAY_BUILDERS = ("append", "hstack", "column_stack", "concatenate", "cat", "concat", "array", "asarray", "tensor", "as_tensor", "r_", "c_")
+_ARRAY_BUILDERS: Final = ("append", "hstack", "column_stack", "concatenate", "cat", "concat", "array", "asarray", "tensor", "as_tensor", "r_", "c_")
 # Array makers `_homogeneous_call` (append, joins, 4-element arrays) and `_filled_buffer` read.
-_HOMOGENEOUS_MAKERS = frozenset({"append", *vocab.STACKING_FUNCTIONS, "array", "asarray", "tensor", "as_tensor", "ones", "zeros"})
-_SWAP = {"ones": "zeros", "zeros": "ones", "ones_like": "zeros_like", "zeros_like": "ones_like"}
+_HOMOGENEOUS_MAKERS: Final = frozenset({"append", *vocab.STACKING_FUNCTIONS, "array", "asarray", "tensor", "as_tensor", "ones", "zeros"})
+_SWAP: Final = {"ones": "zeros", "zeros": "ones", "ones_like": "zeros_like", "zeros_like": "ones_like"}
 
 
 @dataclass(frozen=True)
@@ -1515,8 +1515,8 @@ def walk_within(node: AST, stop_at_functions: bool = True) -> Iterator[AST]:
         stack.extend(child_nodes(current))
 
 
-_SCOPE_NODES = frozenset({FunctionDef, AsyncFunctionDef, Lambda, ClassDef})
-_DEFINITIONS = (FunctionDef, AsyncFunctionDef, ClassDef)
+_SCOPE_NODES: Final = frozenset({FunctionDef, AsyncFunctionDef, Lambda, ClassDef})
+_DEFINITIONS: Final = (FunctionDef, AsyncFunctionDef, ClassDef)
 
 
 def statements_under(node: AST, into_definitions: bool = True) -> list[AST]:

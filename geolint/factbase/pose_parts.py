@@ -19,6 +19,8 @@ the fact base's flow analysis, on the module's index); when several can reach it
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST, Attribute, BinOp, Call, Constant, Div, IfExp, MatMult, Mult, Name, Slice, Starred, Sub, Subscript, UAdd,
@@ -31,16 +33,16 @@ from geolint.factbase.model import dotted_name, einsum_operands, is_full_slice, 
 from geolint.factbase.reaching import Unpacked, assigned_values, binding_of, resolve
 
 # Methods and functions that return the same values (copies, dtype/device moves, broadcasting views).
-_SAME_VALUE_METHODS = frozenset(
+_SAME_VALUE_METHODS: Final = frozenset(
     {"copy", "clone", "detach", "float", "double", "half", "to", "cpu", "cuda", "numpy", "astype",
      "contiguous", "type", "type_as", "reshape", "view", "unsqueeze", "squeeze", "flatten", "ravel",
      "expand", "expand_as", "view_as", "reshape_as"}
 )  # fmt: skip
-_SAME_VALUE_FUNCTIONS = frozenset(
+_SAME_VALUE_FUNCTIONS: Final = frozenset(
     {"asarray", "array", "as_tensor", "tensor", "from_numpy", "copy", "deepcopy", "expand_dims", "squeeze",
      "reshape", "float32", "float64", "ascontiguousarray", "atleast_2d", "Tensor", "FloatTensor"}
 )  # fmt: skip
-_INVERTING_FUNCTIONS = frozenset({"inv", "pinv", "inverse"})
+_INVERTING_FUNCTIONS: Final = frozenset({"inv", "pinv", "inverse"})
 
 
 def same_code(first: AST, second: AST) -> bool:
@@ -111,10 +113,10 @@ class PosePart:
         return PosePart(self.kind, self.pose, not self.transposed, self.batched)
 
 
-_ROTATION_WORDS = frozenset({"r", "rot", "rotation", "rotmat", "rmat", "rotation_matrix"})
-_TRANSLATION_WORDS = frozenset({"t", "trans", "translation", "tvec", "transl"})
-_ROTATION_ATTRIBUTES = frozenset({"rotation", "R", "rot", "rotation_matrix", "rotmat"})
-_TRANSLATION_ATTRIBUTES = frozenset({"translation", "t", "trans", "tvec"})
+_ROTATION_WORDS: Final = frozenset({"r", "rot", "rotation", "rotmat", "rmat", "rotation_matrix"})
+_TRANSLATION_WORDS: Final = frozenset({"t", "trans", "translation", "tvec", "transl"})
+_ROTATION_ATTRIBUTES: Final = frozenset({"rotation", "R", "rot", "rotation_matrix", "rotmat"})
+_TRANSLATION_ATTRIBUTES: Final = frozenset({"translation", "t", "trans", "tvec"})
 
 
 def pose_part(node: ast.expr, index: ModuleIndex, depth: int = 12) -> PosePart | None:
@@ -275,7 +277,7 @@ def pose_key(base: ast.expr, index: ModuleIndex) -> str:
     return ast.unparse(base)
 
 
-_AGGREGATES = frozenset({"mean", "median", "average", "nanmean"})
+_AGGREGATES: Final = frozenset({"mean", "median", "average", "nanmean"})
 
 
 def translation_source(node: ast.expr, index: ModuleIndex, depth: int = 8) -> PosePart | None:
@@ -408,8 +410,8 @@ class Application:
     inverse: bool
 
 
-_MATMUL_FUNCTIONS = frozenset({"dot", "matmul", "bmm", "mm"})
-_ARRAY_LIBRARIES = frozenset({"np", "numpy", "torch", "jnp", "tf", "cp"})
+_MATMUL_FUNCTIONS: Final = frozenset({"dot", "matmul", "bmm", "mm"})
+_ARRAY_LIBRARIES: Final = frozenset({"np", "numpy", "torch", "jnp", "tf", "cp"})
 
 
 def matmul_operands(node: AST) -> tuple[ast.expr, ast.expr] | None:
@@ -499,17 +501,17 @@ def difference_with(node: ast.expr, index: ModuleIndex, depth: int = 6) -> tuple
 # Matrix shapes
 
 
-ROTATION_MAKERS = frozenset(
+ROTATION_MAKERS: Final = frozenset(
     {"quat2mat", "euler2mat", "axangle2mat", "quaternion_to_matrix", "euler_angles_to_matrix",
      "axis_angle_to_matrix", "matrix_from_quaternion", "matrix_from_euler", "active_matrix_from_angle",
      "matrix_from_axis_angle"}
 )  # fmt: skip
-_POSE_MAKERS = frozenset(
+_POSE_MAKERS: Final = frozenset(
     {"quaternion_matrix", "euler_matrix", "translation_matrix", "rotation_matrix", "compose_matrix",
      "transform_from", "transform_from_pq", "homogeneous_matrix", "make_transform", "pose_to_matrix"}
 )  # fmt: skip
-_SIZE_MAKERS = frozenset({"eye", "identity"})
-_FILLED_MAKERS = frozenset({"zeros", "ones", "empty", "full"})
+_SIZE_MAKERS: Final = frozenset({"eye", "identity"})
+_FILLED_MAKERS: Final = frozenset({"zeros", "ones", "empty", "full"})
 
 
 def matrix_shape(node: ast.expr, index: ModuleIndex) -> int | None:
@@ -592,7 +594,7 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
 
 
 # Module names under which `eye`/`zeros`/... are array makers (as written, or as conventionally imported).
-_ARRAY_MODULE_ROOTS = frozenset({"np", "numpy", "torch", "jnp", "jax", "cp", "cupy", "onp"})
+_ARRAY_MODULE_ROOTS: Final = frozenset({"np", "numpy", "torch", "jnp", "jax", "cp", "cupy", "onp"})
 
 
 def _array_module_call(node: Call) -> bool:

@@ -33,17 +33,17 @@ from ast import (
     NamedExpr, SetComp, Starred, Try, While, With,
 )
 from dataclasses import dataclass
-from typing import Any, Callable, Iterator, Sequence
+from typing import Any, Callable, Final, Iterator, Sequence
 
 from geolint.factbase.index import (
     Binding, LoopBinding, ModuleIndex, OpaqueBinding, ParamBinding, Scope, UnpackBinding, statement_list_fields,
 )
 
-_MAX_BINDINGS = 64  # past this many rebindings of one name, order is not worth its cost: all count
-_LOOPS = (For, AsyncFor, While)
-_BLOCK_FIELDS = ("body", "orelse", "finalbody")
-_ARMS = frozenset({"handlers", "cases"})  # lists of `except` handlers and `match` cases, whose bodies hold statements
-_NESTED_SCOPES = (FunctionDef, AsyncFunctionDef, ClassDef)
+_MAX_BINDINGS: Final = 64  # past this many rebindings of one name, order is not worth its cost: all count
+_LOOPS: Final = (For, AsyncFor, While)
+_BLOCK_FIELDS: Final = ("body", "orelse", "finalbody")
+_ARMS: Final = frozenset({"handlers", "cases"})  # lists of `except` handlers and `match` cases, whose bodies hold statements
+_NESTED_SCOPES: Final = (FunctionDef, AsyncFunctionDef, ClassDef)
 
 
 @dataclass(frozen=True)
@@ -178,7 +178,7 @@ def _scope_definitions(index: ModuleIndex, scope: Scope) -> dict[str, list[Defin
     return table
 
 
-_COMPREHENSIONS = (ListComp, SetComp, DictComp, GeneratorExp)
+_COMPREHENSIONS: Final = (ListComp, SetComp, DictComp, GeneratorExp)
 
 
 def _comprehensions(index: ModuleIndex) -> dict[int, list[AST]]:
@@ -205,7 +205,7 @@ def _walruses(index: ModuleIndex) -> dict[int, list[NamedExpr]]:
 
 # where evaluation may skip an expression although its statement runs: the node's fields that
 # always run (none of a comprehension's: it may iterate no time)
-_MAYBE_SKIPPED: dict[type, tuple[str, ...]] = {
+_MAYBE_SKIPPED: Final[dict[type, tuple[str, ...]]] = {
     IfExp: ("test",),
     ListComp: (), SetComp: (), DictComp: (), GeneratorExp: (),
     ExceptHandler: (), ast.match_case: (), Lambda: (),

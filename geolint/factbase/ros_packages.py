@@ -20,6 +20,8 @@ tf2 import added to a sibling module): `package_key` is folded into each file's 
 
 from __future__ import annotations
 
+from typing import Final
+
 import os
 import re
 import threading
@@ -28,14 +30,14 @@ from geolint.factbase import conventions
 from geolint.factbase.summaries import PACKAGE_MANIFEST, package_of_folder
 
 # a `<depend>`, `<build_depend>`, `<exec_depend>`, `<run_depend>`... on a tf2 package
-_TF2_DEPENDENCY = re.compile(
+_TF2_DEPENDENCY: Final = re.compile(
     r"<(?:\w+_)?depend>\s*tf2(?:_ros|_py|_geometry_msgs|_sensor_msgs|_kdl|_eigen|_bullet|_tools)?\s*</", re.IGNORECASE
 )
-_OLD_TF_DEPENDENCY = re.compile(r"<(?:\w+_)?depend>\s*tf\s*</", re.IGNORECASE)
-_XML_COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
-_SKIPPED_FOLDERS = frozenset({"node_modules", "__pycache__", "build", "devel", "install", "log"})
-_MAX_FILES = 5000
-_MAX_MANIFEST_BYTES = 1_000_000
+_OLD_TF_DEPENDENCY: Final = re.compile(r"<(?:\w+_)?depend>\s*tf\s*</", re.IGNORECASE)
+_XML_COMMENT: Final = re.compile(r"<!--.*?-->", re.DOTALL)
+_SKIPPED_FOLDERS: Final = frozenset({"node_modules", "__pycache__", "build", "devel", "install", "log"})
+_MAX_FILES: Final = 5000
+_MAX_MANIFEST_BYTES: Final = 1_000_000
 
 _lock = threading.Lock()
 _package_evidence: dict[str, bool] = {}

@@ -3,6 +3,8 @@ qualified names resolved through the module's imports (one table per question)."
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 import re
 from ast import (
@@ -21,12 +23,12 @@ from ast import (
 
 from geolint.factbase.model import FactBase, keyword, last_name, number
 
-SCALAR_LAST = "xyzw"
-SCALAR_FIRST = "wxyz"
-TRIG_FUNCTIONS = frozenset({"sin", "cos", "tan"})
+SCALAR_LAST: Final = "xyzw"
+SCALAR_FIRST: Final = "wxyz"
+TRIG_FUNCTIONS: Final = frozenset({"sin", "cos", "tan"})
 
 # Unresolved names (no import seen) that still mean scipy's Rotation in practice.
-_SCIPY_ROTATION_ALIASES = frozenset({"Rotation", "R", "Rot", "ScipyRotation", "SciRotation"})
+_SCIPY_ROTATION_ALIASES: Final = frozenset({"Rotation", "R", "Rot", "ScipyRotation", "SciRotation"})
 
 
 def is_scipy_rotation_method(facts: FactBase, func: AST, *methods: str) -> bool:
@@ -107,8 +109,8 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
 
 # transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion) and the ROS
 # names they are imported under when a module supports ROS 1 (`tf.transformations`) and ROS 2
-_TRANSFORMS3D_OPERATIONS = frozenset({"qmult", "qconjugate", "qinverse"})
-_TF_OPERATIONS = frozenset({"quaternion_multiply", "quaternion_conjugate", "quaternion_inverse"})
+_TRANSFORMS3D_OPERATIONS: Final = frozenset({"qmult", "qconjugate", "qinverse"})
+_TF_OPERATIONS: Final = frozenset({"quaternion_multiply", "quaternion_conjugate", "quaternion_inverse"})
 
 
 def _operation_order(facts: FactBase, func: ast.expr) -> str | None:
@@ -154,11 +156,11 @@ def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
 
 # pyquaternion's Quaternion class, and a module that re-exports it: the nuScenes devkit's
 # eval/common/utils.py imports it, and BEVFormer-style dataset code imports it from there.
-PYQUATERNION_CLASSES = frozenset(
+PYQUATERNION_CLASSES: Final = frozenset(
     {"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", "nuscenes.eval.common.utils.Quaternion"}
 )
 # pyquaternion Quaternion properties and methods that return another Quaternion
-PYQUATERNION_RETURNS_QUATERNION = frozenset({"inverse", "conjugate", "normalised", "unit"})
+PYQUATERNION_RETURNS_QUATERNION: Final = frozenset({"inverse", "conjugate", "normalised", "unit"})
 
 
 def is_numpy_quaternion_constructor(facts: FactBase, qualified: str) -> bool:
@@ -275,26 +277,26 @@ def _library_key(qualified: str, name: str) -> str:
     return f"{qualified.split('.', 1)[0]}.{name}" if qualified else ""
 
 
-_SCIPY_CONSTRUCTORS = (
+_SCIPY_CONSTRUCTORS: Final = (
     "from_quat", "from_matrix", "from_euler", "from_rotvec", "from_mrp", "from_davenport", "from_dcm",
     "random", "identity", "concatenate",
 )  # fmt: skip
 # pybullet (x, y, z, w) quaternions, called on the module or on a BulletClient.
-_PYBULLET_QUATERNIONS = frozenset({"getQuaternionFromEuler", "getQuaternionFromAxisAngle", "getDifferenceQuaternion"})
+_PYBULLET_QUATERNIONS: Final = frozenset({"getQuaternionFromEuler", "getQuaternionFromAxisAngle", "getDifferenceQuaternion"})
 # Christoph Gohlke's transformations.py: (w, x, y, z) as trimesh ships it, (x, y, z, w) in ROS tf.
-_GOHLKE_PRODUCERS = frozenset(
+_GOHLKE_PRODUCERS: Final = frozenset(
     {"quaternion_from_matrix", "quaternion_from_euler", "quaternion_about_axis", "random_quaternion",
      "quaternion_multiply", "quaternion_conjugate", "quaternion_inverse", "quaternion_slerp"}
 )  # fmt: skip
-_TF_QUATERNION_INPUTS = frozenset(
+_TF_QUATERNION_INPUTS: Final = frozenset(
     {"quaternion_matrix", "euler_from_quaternion", "quaternion_multiply", "quaternion_conjugate",
      "quaternion_inverse", "quaternion_slerp", "quaternion_real", "quaternion_imag"}
 )  # fmt: skip
-_PYTORCH3D_QUATERNIONS = frozenset(
+_PYTORCH3D_QUATERNIONS: Final = frozenset(
     {"quaternion_multiply", "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion", "random_quaternions"}
 )
 # Consumers and producers keyed by `<top package>.<function>` (any submodule).
-_DATA_CONSUMERS = {
+_DATA_CONSUMERS: Final = {
     **{f"trimesh.{name}": SCALAR_FIRST for name in _TF_QUATERNION_INPUTS},
     **{f"pytorch3d.{name}": SCALAR_FIRST for name in (
         "quaternion_to_matrix", "quaternion_to_axis_angle", "quaternion_apply", "quaternion_multiply",
@@ -308,7 +310,7 @@ _DATA_CONSUMERS = {
         "unitquat_to_rotmat", "unitquat_to_rotvec", "unitquat_to_euler", "quat_product", "quat_action",
         "quat_conjugation", "quat_inverse", "unitquat_slerp")},
 }  # fmt: skip
-_PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]]] = {
+_PYBULLET_ORIENTATION_ARGUMENTS: Final[dict[str, tuple[tuple[int, ...], frozenset[str]]]] = {
     "resetBasePositionAndOrientation": ((2,), frozenset({"ornObj"})),
     "loadURDF": ((2,), frozenset({"baseOrientation"})),
     "createMultiBody": ((), frozenset({"baseOrientation"})),
@@ -317,13 +319,13 @@ _PYBULLET_ORIENTATION_ARGUMENTS: dict[str, tuple[tuple[int, ...], frozenset[str]
     "calculateInverseKinematics": ((3,), frozenset({"targetOrientation"})),
 }
 # the names `pybullet_orientation_arguments` reads (its cheap first test, by `last_name`)
-PYBULLET_ORIENTATION_CALLS = frozenset(_PYBULLET_ORIENTATION_ARGUMENTS)
+PYBULLET_ORIENTATION_CALLS: Final = frozenset(_PYBULLET_ORIENTATION_ARGUMENTS)
 # pybullet keywords that take (x, y, z, w) quaternions besides the orientation arguments above: (one
 # quaternion, a list of them, one per shape or link). pybullet.c reads each with
 # pybullet_internalSetVector4d and ignores its result, so a sequence that is not four long leaves the
 # default (0, 0, 0, 1) in place (createCollisionShape, createVisualShape, their Array forms, the base of
 # createMultiBody), or an uninitialised array for createMultiBody's links.
-_PYBULLET_FRAME_ORIENTATIONS: dict[str, tuple[frozenset[str], frozenset[str]]] = {
+_PYBULLET_FRAME_ORIENTATIONS: Final[dict[str, tuple[frozenset[str], frozenset[str]]]] = {
     "createVisualShape": (frozenset({"visualFrameOrientation"}), frozenset()),
     "createCollisionShape": (frozenset({"collisionFrameOrientation"}), frozenset()),
     "createVisualShapeArray": (frozenset(), frozenset({"visualFrameOrientations"})),
@@ -332,8 +334,8 @@ _PYBULLET_FRAME_ORIENTATIONS: dict[str, tuple[frozenset[str], frozenset[str]]] =
 }
 # the names `pybullet_quaternion_values` reads
 PYBULLET_QUATERNION_CALLS = PYBULLET_ORIENTATION_CALLS | frozenset(_PYBULLET_FRAME_ORIENTATIONS)
-_PYBULLET_CONSUMERS = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
-_DATA_PRODUCERS = {
+_PYBULLET_CONSUMERS: Final = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
+_DATA_PRODUCERS: Final = {
     **{f"roma.{name}": SCALAR_LAST for name in (
         "rotmat_to_unitquat", "rotvec_to_unitquat", "euler_to_unitquat", "quat_product", "quat_conjugation",
         "quat_inverse", "random_unitquat", "unitquat_slerp")},
@@ -443,10 +445,10 @@ def _quaternion_functions(order: str, *names: str) -> dict[str, str]:
 # - IsaacLab source/extensions/omni.isaac.lab/omni/isaac/lab/utils/math.py: every docstring "(w, x, y, z)".
 #   Its successor `isaaclab.utils.math` is left out: newer Isaac Lab releases switched it to (x, y, z, w)
 #   (same function names), so only its convention-free `convert_quat` is read.
-_ISAACGYM_QUATERNIONS = ("quat_mul", "quat_conjugate", "quat_unit")
-_OMNI_TORCH_QUATERNIONS = ("quat_mul", "quat_conjugate", "quat_unit")
-_OMNI_LAB_QUATERNIONS = ("quat_mul", "quat_conjugate", "quat_inv", "quat_unique", "yaw_quat")
-_SIMULATOR_TABLES: dict[str, tuple[dict[str, str], dict[str, str]]] = {
+_ISAACGYM_QUATERNIONS: Final = ("quat_mul", "quat_conjugate", "quat_unit")
+_OMNI_TORCH_QUATERNIONS: Final = ("quat_mul", "quat_conjugate", "quat_unit")
+_OMNI_LAB_QUATERNIONS: Final = ("quat_mul", "quat_conjugate", "quat_inv", "quat_unique", "yaw_quat")
+_SIMULATOR_TABLES: Final[dict[str, tuple[dict[str, str], dict[str, str]]]] = {
     "isaacgym.torch_utils": (
         _quaternion_functions(
             SCALAR_LAST, *_ISAACGYM_QUATERNIONS, "quat_apply", "quat_rotate", "quat_rotate_inverse", "get_euler_xyz",
@@ -486,42 +488,42 @@ _SIMULATOR_TABLES: dict[str, tuple[dict[str, str], dict[str, str]]] = {
     "isaaclab.utils.math": ({}, {}),  # `convert_quat` only (above)
 }  # fmt: skip
 # `from omni.isaac.core.utils.torch import *` re-exports the rotations module
-_SIMULATOR_ALIASES = {"omni.isaac.core.utils.torch": "omni.isaac.core.utils.torch.rotations"}
-_SIMULATOR_NAMES = frozenset(
+_SIMULATOR_ALIASES: Final = {"omni.isaac.core.utils.torch": "omni.isaac.core.utils.torch.rotations"}
+_SIMULATOR_NAMES: Final = frozenset(
     {name for consumers, producers in _SIMULATOR_TABLES.values() for name in (*consumers, *producers)} | {"convert_quat"}
 )
 # Eigen's quaternion as eigenpy binds it (pinocchio's `pin.Quaternion`): "Initialize from coefficients. The
 # order of coefficients is *w*, *x*, *y*, *z*" for four scalars, but "vec4: a 4D vector representing quaternion
 # coefficients in the order xyzw" for one vector (eigenpy's Quaternion.__init__ docstrings, as pinocchio's
 # stubs list them).
-_EIGEN_QUATERNIONS = ("pinocchio.Quaternion", "eigenpy.Quaternion")
+_EIGEN_QUATERNIONS: Final = ("pinocchio.Quaternion", "eigenpy.Quaternion")
 # GTSAM: `Rot3.Quaternion(w, x, y, z)` "Create from Quaternion coefficients" (gtsam/geometry/Rot3.h; C++
 # `Rot3::quaternion(double w, double x, double y, double z)` in older releases, `Quaternion` in the wrapper)
-_GTSAM_ROT3_QUATERNION = "gtsam.Rot3.Quaternion"
+_GTSAM_ROT3_QUATERNION: Final = "gtsam.Rot3.Quaternion"
 # constructors taking the four components one by one (geometry_msgs and numpy-quaternion are tested apart)
-_COMPONENT_CONSTRUCTORS = frozenset(
+_COMPONENT_CONSTRUCTORS: Final = frozenset(
     {"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", _GTSAM_ROT3_QUATERNION, *_EIGEN_QUATERNIONS}
 )
 # MuJoCo's quaternions are (w, x, y, z) (its own tests expect the identity `{1, 0, 0, 0}` from mju_mat2Rot);
 # the utility functions write into their first argument: `mju_quat2Mat(res, quat)`, `mju_quat2Vel(res, quat,
 # dt)`, `mju_quatIntegrate(quat, vel, scale)`. Name -> position of the quaternion read.
-_MUJOCO_QUATERNION_POSITIONS = {"mju_quat2Mat": 1, "mju_quat2Vel": 1, "mju_quatIntegrate": 0}
+_MUJOCO_QUATERNION_POSITIONS: Final = {"mju_quat2Mat": 1, "mju_quat2Vel": 1, "mju_quatIntegrate": 0}
 # Isaac Sim core (`omni.isaac.core` up to 4.2, `isaacsim.core.api` / `isaacsim.core.prims` from 4.5): prims,
 # objects and views take `orientation(s)` "quaternion is scalar-first (w, x, y, z)" (docstrings of
 # XFormPrim, XFormPrimView and DynamicCuboid in Isaac Sim 4.1; the isaacsim.core.api 4.8.0 API page).
-_ISAAC_CORE = ("omni.isaac.core.", "isaacsim.core.")
+_ISAAC_CORE: Final = ("omni.isaac.core.", "isaacsim.core.")
 # `create_prim(path, prim_type, position=..., orientation=...)` hands `orientation` to XFormPrim (its source, 4.1)
-_ISAAC_CREATE_PRIM = "omni.isaac.core.utils.prims.create_prim"
-_ISAAC_POSE_SETTERS = frozenset({"set_world_pose", "set_local_pose", "set_default_state", "set_world_poses", "set_local_poses"})
+_ISAAC_CREATE_PRIM: Final = "omni.isaac.core.utils.prims.create_prim"
+_ISAAC_POSE_SETTERS: Final = frozenset({"set_world_pose", "set_local_pose", "set_default_state", "set_world_poses", "set_local_poses"})
 
 
 def api_label(order: str) -> str:
     return "scalar-last (x, y, z, w)" if order == SCALAR_LAST else "scalar-first (w, x, y, z)"
 
 
-_FIELD_LETTERS = frozenset("wxyz")
+_FIELD_LETTERS: Final = frozenset("wxyz")
 # names that say a quaternion is the identity (`IDENTITY_QUAT`, `no_rotation`)
-IDENTITY_NAME = re.compile(r"(?i)(?:^|_)(?:identity|ident|no_rot(?:ation)?|zero_rot(?:ation)?|unit_quat(?:ernion)?)(?:$|_)")
+IDENTITY_NAME: Final = re.compile(r"(?i)(?:^|_)(?:identity|ident|no_rot(?:ation)?|zero_rot(?:ation)?|unit_quat(?:ernion)?)(?:$|_)")
 
 
 def component_writes_of_parameter(facts: FactBase, stores: list[tuple[Attribute, ast.expr]], plain: set[str]) -> list[tuple[str, str, str]]:

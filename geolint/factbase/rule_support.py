@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ast import AST, BinOp, Call, Module, Mult
-from typing import Callable, ClassVar, NamedTuple, Sequence
+from typing import Callable, ClassVar, Final, NamedTuple, Sequence
 
 from geolint.factbase.bosdyn import frame_comparison
 from geolint.factbase.model import FactBase, FrameFact, MatMul
@@ -18,10 +18,10 @@ SameFrame = Callable[[str | None, str | None], bool | None]
 
 # The `[tool.geolint]` table of examples whose frames rest on names alone: names are frame evidence
 # only where the convention is stated (see geolint.factbase.conventions).
-STATED = {"naming": "dst-first"}
+STATED: Final = {"naming": "dst-first"}
 
 # The `## Options` section of every rule that reads frames from names (`documents_naming = True`; one text).
-NAMING_OPTIONS = """\
+NAMING_OPTIONS: Final = """\
 ## Options
 `naming = "auto" | "dst-first" | "src-first"` says how `T_a_b` / `R_a_b` read: dst-first maps b
 into a, src-first (autolab_core's `T_obj_world`) maps a into b. With `"auto"` (the default) the

@@ -26,7 +26,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Sequence
+from typing import Any, Final, Iterable, Iterator, Mapping, Sequence, TYPE_CHECKING
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase.index import ParamBinding, index_of_file  # no cycle: the index imports no fact base module
@@ -36,11 +36,11 @@ if TYPE_CHECKING:
     from geolint.factbase.index import ModuleIndex
     from geolint.factbase.model import FactBase
 
-_IMPORT = re.compile(r"^[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))", re.MULTILINE)
+_IMPORT: Final = re.compile(r"^[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))", re.MULTILINE)
 # `_IMPORT` at one line start: both its alternatives hold the word "import", so only the lines that
 # hold it are tried (the anchored regex alone tries every position of the text).
-_IMPORT_AT_LINE_START = re.compile(r"[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))")
-_PROJECT_MARKERS = ("pyproject.toml", "setup.py", "setup.cfg", ".git")
+_IMPORT_AT_LINE_START: Final = re.compile(r"[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))")
+_PROJECT_MARKERS: Final = ("pyproject.toml", "setup.py", "setup.cfg", ".git")
 
 
 @dataclass
@@ -300,9 +300,9 @@ def _add_quaternion_read(summary: FunctionSummary, index: int, order: str, where
         summary.reads_quaternion[index] = ("", "")  # read in both orders: no evidence
 
 
-_CONFLICT = ("", "", False)
-_ARROW = " -> "
-_SHOWN_HOPS = 5  # a longer chain of helpers is shown as its first hops, "...", and its end
+_CONFLICT: Final = ("", "", False)
+_ARROW: Final = " -> "
+_SHOWN_HOPS: Final = 5  # a longer chain of helpers is shown as its first hops, "...", and its end
 
 
 def _chain(helper: str, rest: str | None) -> str:
@@ -372,10 +372,10 @@ def _agreed(found: list, field: str) -> list | None:  # type: ignore[type-arg]
 
 # --- composition: summaries of one linted module's helpers, to a fixpoint ------------------------
 
-_MAX_SUMMARY_DEPTH = 12  # helpers calling helpers this deep; deeper calls are unknown
-_MAX_ROUNDS = 4  # passes over a recursion or import cycle before it is given up as unknown
-_BUDGET = 3000  # summaries computed for one linted module (each costs about its function's size)
-_NO_CUT = 1 << 30
+_MAX_SUMMARY_DEPTH: Final = 12  # helpers calling helpers this deep; deeper calls are unknown
+_MAX_ROUNDS: Final = 4  # passes over a recursion or import cycle before it is given up as unknown
+_BUDGET: Final = 3000  # summaries computed for one linted module (each costs about its function's size)
+_NO_CUT: Final = 1 << 30
 
 
 class ProjectSummaries:
@@ -579,7 +579,7 @@ def _module_file_from(module: str, here: str, level: int) -> str | None:
     return None
 
 
-PACKAGE_MANIFEST = "package.xml"  # a ROS package (REP 140/149)
+PACKAGE_MANIFEST: Final = "package.xml"  # a ROS package (REP 140/149)
 
 
 @lru_cache(maxsize=65536)
@@ -759,7 +759,7 @@ def imported_names(source: str, members: bool = False) -> list[str]:
     return names
 
 
-_MEMBER = re.compile(r"[A-Za-z_]\w*")
+_MEMBER: Final = re.compile(r"[A-Za-z_]\w*")
 
 
 def _imported_members(source: str, start: int) -> list[str]:
@@ -785,7 +785,7 @@ def _joined(module: str, member: str) -> str:
     return f"{module}{member}" if module.endswith(".") else f"{module}.{member}"
 
 
-_UNREADABLE = "-"  # the hash of a module that could not be read
+_UNREADABLE: Final = "-"  # the hash of a module that could not be read
 
 
 class ImportGraph:

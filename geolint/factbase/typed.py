@@ -10,6 +10,8 @@ The frames graph reads transforms the same way.
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import AST, Attribute, ClassDef, Constant, Module, Name, Subscript
 
@@ -17,12 +19,12 @@ from geolint.factbase.model import last_name
 from geolint.semantic.names import NameFrames, Operator
 
 # geolint's generic types by what they state: operators take (Dst, Src), values one frame
-OPERATOR_TYPES: dict[str, Operator] = {
+OPERATOR_TYPES: Final[dict[str, Operator]] = {
     "Transform": "transform",
     "TransformMatrix": "transform",
     "RotationMatrix": "rotation",
 }
-VALUE_TYPES = frozenset(
+VALUE_TYPES: Final = frozenset(
     {
         "Point", "Vector", "Direction", "PointCloud", "Twist", "Wrench",
         "PointArray", "VectorArray", "DirectionArray", "HomogeneousPoints", "HomogeneousVectors",

@@ -8,17 +8,17 @@ module holds what libraries mean. The gate (`may_hold_geometry`) is a regex buil
 from __future__ import annotations
 
 import re
-from typing import Callable, Iterable
+from typing import Callable, Final, Iterable
 
 from geolint.algebra import Kind
 from geolint.semantic import names
 from geolint.semantic.names import NameFrames
 
 # Array libraries whose functions behave alike for our purposes (numpy's names).
-ARRAY_MODULES = frozenset({"numpy", "np", "torch", "jax.numpy", "jnp", "cupy", "cp"})
-ARRAY_ROOTS = frozenset({"numpy", "np", "torch", "jax", "jnp", "cupy", "cp"})
+ARRAY_MODULES: Final = frozenset({"numpy", "np", "torch", "jax.numpy", "jnp", "cupy", "cp"})
+ARRAY_ROOTS: Final = frozenset({"numpy", "np", "torch", "jax", "jnp", "cupy", "cp"})
 # Packages that are never the project's own modules (no summary is looked for in them).
-THIRD_PARTY_ROOTS = frozenset(
+THIRD_PARTY_ROOTS: Final = frozenset(
     {
         "numpy", "torch", "jax", "cupy", "scipy", "math", "os", "sys", "re", "json", "typing", "collections",
         "open3d", "trimesh", "cv2", "PIL", "matplotlib", "pytransform3d", "spatialmath", "transforms3d",
@@ -28,21 +28,21 @@ THIRD_PARTY_ROOTS = frozenset(
     }
 )  # fmt: skip
 # Local names that mean a module by convention even when the import is not in this file.
-CONVENTIONAL_ALIASES = {"np": "numpy", "jnp": "jax.numpy", "cp": "cupy"}
+CONVENTIONAL_ALIASES: Final = {"np": "numpy", "jnp": "jax.numpy", "cp": "cupy"}
 # Module aliases that are never geometric values themselves (`np.random.normal` is not a normal).
-MODULE_LIKE = frozenset({"np", "numpy", "math", "random", "torch", "scipy", "stats", "tf", "jnp", "cp", "os", "sys", "F"})
+MODULE_LIKE: Final = frozenset({"np", "numpy", "math", "random", "torch", "scipy", "stats", "tf", "jnp", "cp", "os", "sys", "F"})
 
-DIRECTION_ATTRIBUTES = frozenset({"normals", "vertex_normals", "face_normals", "normal"})
-POINT_ATTRIBUTES = frozenset({"vertices", "points", "centroid", "origin", "position"})
+DIRECTION_ATTRIBUTES: Final = frozenset({"normals", "vertex_normals", "face_normals", "normal"})
+POINT_ATTRIBUTES: Final = frozenset({"vertices", "points", "centroid", "origin", "position"})
 
 # Calls that return their first argument's value, reshaped, copied or moved between devices.
-PASSTHROUGH_FUNCTIONS = frozenset(
+PASSTHROUGH_FUNCTIONS: Final = frozenset(
     {
         "asarray", "array", "copy", "asanyarray", "ascontiguousarray", "atleast_1d", "atleast_2d",
         "squeeze", "float64", "float32", "tensor", "as_tensor", "from_numpy", "clone",
     }
 )  # fmt: skip
-PASSTHROUGH_METHODS = frozenset(
+PASSTHROUGH_METHODS: Final = frozenset(
     {"copy", "astype", "reshape", "squeeze", "flatten", "ravel", "clone", "detach", "cpu", "cuda", "to", "float", "double", "numpy", "contiguous", "view"}
 )
 # Library calls that return a transform with no translation when one argument has a given value:
@@ -50,20 +50,20 @@ PASSTHROUGH_METHODS = frozenset(
 # position, the value). nerfstudio's `auto_orient_and_center_poses(poses, method="up",
 # center_method="poses")` returns (poses, transform) with the translation -R @ mean_origin, which
 # is zeros for center_method="none".
-UNTRANSLATED_WITH = {
+UNTRANSLATED_WITH: Final = {
     "nerfstudio.cameras.camera_utils.auto_orient_and_center_poses": (1, "center_method", 2, "none"),
 }
 # Calls that return a unit vector.
-UNIT_FUNCTIONS = frozenset({"unitize", "normalize", "normalized", "unit_vector", "norm_vector", "normalize_vector"})
-NORM_FUNCTIONS = frozenset({"norm", "vector_norm"})
-INVERSE_FUNCTIONS = frozenset({"inv", "invert_transform", "inverse_transform", "invert", "pinv"})
-INVERSE_METHODS = frozenset({"inv", "inverse", "Inverse", "inverted", "inverse_transform"})
+UNIT_FUNCTIONS: Final = frozenset({"unitize", "normalize", "normalized", "unit_vector", "norm_vector", "normalize_vector"})
+NORM_FUNCTIONS: Final = frozenset({"norm", "vector_norm"})
+INVERSE_FUNCTIONS: Final = frozenset({"inv", "invert_transform", "inverse_transform", "invert", "pinv"})
+INVERSE_METHODS: Final = frozenset({"inv", "inverse", "Inverse", "inverted", "inverse_transform"})
 # Joins along the last axis that can append a w column (`torch.cat([x, ones], dim=-1)`).
-STACKING_FUNCTIONS = frozenset({"hstack", "column_stack", "concatenate", "cat", "concat"})
+STACKING_FUNCTIONS: Final = frozenset({"hstack", "column_stack", "concatenate", "cat", "concat"})
 
 # Learned-feature operations: their results are feature maps sampled at or pooled over points,
 # never coordinates, whatever the variable is called (`tpv_pts = F.grid_sample(plane, loc)`).
-FEATURE_FUNCTIONS = frozenset(
+FEATURE_FUNCTIONS: Final = frozenset(
     f"torch.nn.functional.{name}"
     for name in (
         "grid_sample", "interpolate", "conv1d", "conv2d", "conv3d", "conv_transpose2d", "linear", "relu",
@@ -74,7 +74,7 @@ FEATURE_FUNCTIONS = frozenset(
 )  # fmt: skip
 
 # Library calls whose result kind is fixed, by qualified name.
-LIBRARY_KINDS: dict[str, Kind] = {
+LIBRARY_KINDS: Final[dict[str, Kind]] = {
     "scipy.spatial.transform.Rotation.as_matrix": Kind.ROTATION,
     "transforms3d.quaternions.quat2mat": Kind.ROTATION,
     "transforms3d.euler.euler2mat": Kind.ROTATION,
@@ -88,7 +88,7 @@ LIBRARY_KINDS: dict[str, Kind] = {
 }
 
 # Attributes that state a convention in so many words (pycolmap, BOP, nerfstudio-style names).
-DECLARING_ATTRIBUTES: dict[str, NameFrames] = {
+DECLARING_ATTRIBUTES: Final[dict[str, NameFrames]] = {
     "cam_from_world": NameFrames(dst="camera", src="world", operator="transform"),
     "world_from_cam": NameFrames(dst="world", src="camera", operator="transform"),
     "cam_R_w2c": NameFrames(dst="camera", src="world", operator="rotation"),
@@ -96,14 +96,14 @@ DECLARING_ATTRIBUTES: dict[str, NameFrames] = {
 }
 # Abbreviations NeRF, SLAM and dataset code uses for camera extrinsics, in names and dict keys
 # (`c2w`, `pose_c2w`, `meta["w2c"]`): the direction is in the word itself.
-EXTRINSICS_TOKENS: dict[str, NameFrames] = {
+EXTRINSICS_TOKENS: Final[dict[str, NameFrames]] = {
     "c2w": NameFrames(dst="world", src="camera", operator="unknown"),
     "w2c": NameFrames(dst="camera", src="world", operator="unknown"),
     "cam2world": NameFrames(dst="world", src="camera", operator="unknown"),
     "world2cam": NameFrames(dst="camera", src="world", operator="unknown"),
 }
 
-DECLARING_ATTRIBUTE_SOURCES = {
+DECLARING_ATTRIBUTE_SOURCES: Final = {
     "cam_from_world": "pycolmap: world to camera",
     "world_from_cam": "pycolmap: camera to world",
     "cam_R_w2c": "BOP: world to camera",
@@ -112,7 +112,7 @@ DECLARING_ATTRIBUTE_SOURCES = {
 
 # --- the gate ---------------------------------------------------------------------------------
 
-_GATE_WORDS = sorted(
+_GATE_WORDS: Final = sorted(
     # point names: GEO103 needs nothing but `+` of two of them, GEO102 a w = 0 pad of one;
     # direction names need a product, a `_h` name or a library call, all gated on their own
     names.POINT_WORDS
@@ -124,11 +124,11 @@ _GATE_WORDS = sorted(
     | {"matrix_world", "from_frame", "to_frame", "as_frames", "lookup_transform", "lookupTransform", "Frame", "SE3"}
     | {"tform"}  # Boston Dynamics' `odom_tform_body`
 )
-_FRAME_WORDS = "|".join(sorted(names.KNOWN_FRAMES | {"c", "w", "cam"}))
+_FRAME_WORDS: Final = "|".join(sorted(names.KNOWN_FRAMES | {"c", "w", "cam"}))
 # Structure every rule needs one of: a matrix product (not a decorator), a transpose, a frame-naming
 # shape built from the known frame words (`T_a_b`, `a_T_b`, `X_WB`, `cam2world`, `world_from_cam`,
 # `p_world`), a homogeneous name (`p_h`), trig of something, or one of the words above in a name.
-GATE = re.compile(
+GATE: Final = re.compile(
     r"[\w)\]]\s*@=?\s*[\w(\[-]|\.dot\(|matmul|einsum\(|\.m?T\b|\b[TRXH]_[A-Za-z0-9]|_[TRXH]_|"
     rf"\b(?:{_FRAME_WORDS})[0-9]*(?:2|_to_|_from_|_in_)(?:{_FRAME_WORDS})|\b[pv]_(?:{_FRAME_WORDS})\b|"
     r"_h\b|_hom|homog|\b(?:sin|cos|tan)\(|euler2|axangle2|_from_angle\(|QuaternionFromEuler\(|"
@@ -142,16 +142,16 @@ GATE = re.compile(
 # `_*_CANDIDATE` is searched again from one past its last start, so overlapping candidates are seen.
 # Alternatives that start with different literals are separate regexes: the engine scans for one
 # literal fast, and for the first characters of several far slower (3x on gate-failing files).
-_AFTER_AT = re.compile(r"@=?\s*[\w(\[-]")
-_PRODUCT_TEXTS = (".dot(", "matmul", "einsum(", "_hom", "homog")  # plain text: `in` finds it faster than a regex
-_TRANSPOSE_OR_PRODUCT = tuple(re.compile(part) for part in (r"\.m?T\b", "_[TRXH]_", r"_h\b"))
-_NAMED_OPERATOR_CANDIDATE = re.compile(r"[TRXH]_[A-Za-z0-9]")
-_FRAMES = frozenset(_FRAME_WORDS.split("|"))
-_FRAME_PAIR_CANDIDATES = tuple(re.compile(rf"{connector}(?:{_FRAME_WORDS})") for connector in ("2", "_to_", "_from_", "_in_"))
-_FRAME_VECTOR_CANDIDATE = re.compile(rf"[pv]_(?:{_FRAME_WORDS})\b")
-_TRIG_CANDIDATES = tuple(re.compile(rf"{name}\(") for name in ("sin", "cos", "tan"))
+_AFTER_AT: Final = re.compile(r"@=?\s*[\w(\[-]")
+_PRODUCT_TEXTS: Final = (".dot(", "matmul", "einsum(", "_hom", "homog")  # plain text: `in` finds it faster than a regex
+_TRANSPOSE_OR_PRODUCT: Final = tuple(re.compile(part) for part in (r"\.m?T\b", "_[TRXH]_", r"_h\b"))
+_NAMED_OPERATOR_CANDIDATE: Final = re.compile(r"[TRXH]_[A-Za-z0-9]")
+_FRAMES: Final = frozenset(_FRAME_WORDS.split("|"))
+_FRAME_PAIR_CANDIDATES: Final = tuple(re.compile(rf"{connector}(?:{_FRAME_WORDS})") for connector in ("2", "_to_", "_from_", "_in_"))
+_FRAME_VECTOR_CANDIDATE: Final = re.compile(rf"[pv]_(?:{_FRAME_WORDS})\b")
+_TRIG_CANDIDATES: Final = tuple(re.compile(rf"{name}\(") for name in ("sin", "cos", "tan"))
 # one regex per word, looked for only where the word occurs at all
-_WORD_CANDIDATES = {word: re.compile(re.escape(word) + r"(?:\b|_|s\b)") for word in _GATE_WORDS}
+_WORD_CANDIDATES: Final = {word: re.compile(re.escape(word) + r"(?:\b|_|s\b)") for word in _GATE_WORDS}
 
 
 class WordSet:
@@ -210,8 +210,8 @@ def _word_tree(words: tuple[str, ...]) -> tuple[_WordNode, ...]:
     return tuple(node(part) for part in sorted(tops, key=words_first))
 
 
-_SHARED_PART = 3  # letters
-_SHARED_BY = 3  # words
+_SHARED_PART: Final = 3  # letters
+_SHARED_BY: Final = 3  # words
 
 
 def _any_found(nodes: tuple[_WordNode, ...], source: str, accept: Callable[[str], bool] | None) -> bool:
@@ -224,7 +224,7 @@ def _any_found(nodes: tuple[_WordNode, ...], source: str, accept: Callable[[str]
     return False
 
 
-_GATE_WORD_SET = WordSet(_GATE_WORDS)
+_GATE_WORD_SET: Final = WordSet(_GATE_WORDS)
 
 
 def is_word_character(character: str) -> bool:
@@ -321,7 +321,7 @@ class Gate:
         return any(word in source for word in extra)
 
 
-GATE_TRIGGER = Gate()
+GATE_TRIGGER: Final = Gate()
 
 
 def may_hold_geometry(source: str) -> bool:

@@ -4,7 +4,7 @@ is walked (`AllOf`), and the texts the pose rules look for (`POSE_PART_TEXT`, `M
 from __future__ import annotations
 
 import re
-from typing import Protocol
+from typing import Final, Protocol
 
 from geolint.factbase.vocabulary import WordSet, any_match_at, is_word_character, matrix_product_at
 
@@ -81,7 +81,7 @@ def _literal(pattern: str) -> str | None:
     return text if text and re.escape(text) == pattern else None
 
 
-_ESCAPED_PUNCTUATION = re.compile(r"\\([^\w\s])")
+_ESCAPED_PUNCTUATION: Final = re.compile(r"\\([^\w\s])")
 
 
 def _regex_test(pattern: str) -> re.Pattern[str] | _LeftContext:
@@ -201,5 +201,5 @@ def _inside_quoted_word(source: str, start: int) -> bool:
     return start > 0 and source[start - 1] in "'\"" and end < len(source) and source[end] in "'\""
 
 
-POSE_PART_TEXT = _PosePartText()
-MATMUL_TEXT = AnyOf(_MatrixProductText(), r"\.dot\(|matmul\(|bmm\(|einsum\(")
+POSE_PART_TEXT: Final = _PosePartText()
+MATMUL_TEXT: Final = AnyOf(_MatrixProductText(), r"\.dot\(|matmul\(|bmm\(|einsum\(")

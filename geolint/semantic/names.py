@@ -21,7 +21,7 @@ import re
 from dataclasses import dataclass
 from enum import Enum
 from functools import lru_cache
-from typing import Literal
+from typing import Final, Literal
 
 from geolint.lint_types import Config
 
@@ -64,7 +64,7 @@ class NameFrames:
 
 # --- vocabulary -------------------------------------------------------------------------
 
-DIRECTION_WORDS = frozenset(
+DIRECTION_WORDS: Final = frozenset(
     {
         "normal", "normals", "binormal", "binormals", "nrm", "nrms", "dir", "dirs", "direction",
         "directions", "axis", "approach", "heading", "velocity", "velocities", "vel", "vels",
@@ -72,21 +72,21 @@ DIRECTION_WORDS = frozenset(
         "tangent", "tangents",
     }
 )  # fmt: skip
-POINT_WORDS = frozenset(
+POINT_WORDS: Final = frozenset(
     {
         "point", "points", "pts", "pt", "position", "positions", "pos", "centroid", "centroids",
         "vertex", "vertices", "verts", "origin", "landmark", "landmarks",
     }
 )  # fmt: skip
-TRANSFORM_WORDS = frozenset({"pose", "poses", "transform", "tf", "extrinsic", "extrinsics"})
+TRANSFORM_WORDS: Final = frozenset({"pose", "poses", "transform", "tf", "extrinsic", "extrinsics"})
 # One-letter kind prefixes that need a frame after them to mean anything (`p_world`, `v_cam`):
 # `p` alone is a probability or a polynomial as often as a point.
-POINT_PREFIXES = frozenset({"p"})
-DIRECTION_PREFIXES = frozenset({"v"})
+POINT_PREFIXES: Final = frozenset({"p"})
+DIRECTION_PREFIXES: Final = frozenset({"v"})
 
 # Tokens that turn a geometric word into something else: `n_points` is a count,
 # `normal_idx` an index, `point_size` a scalar. Any of them in a name means "not geometry".
-NON_GEOMETRIC_TOKENS = frozenset(
+NON_GEOMETRIC_TOKENS: Final = frozenset(
     {
         "n", "num", "nb", "count", "counts", "cnt", "idx", "index", "indices", "ids", "id", "len",
         "length", "lengths", "size", "sizes", "shape", "dim", "dims", "ndim", "mask", "masks",
@@ -103,7 +103,7 @@ NON_GEOMETRIC_TOKENS = frozenset(
 )  # fmt: skip
 
 # Qualifiers that look like a frame after a kind word but are not one (`pos_des`, `p_h`).
-NOT_A_FRAME = frozenset(
+NOT_A_FRAME: Final = frozenset(
     {
         "new", "old", "prev", "previous", "next", "cur", "curr", "current", "des", "desired", "cmd",
         "ref", "err", "min", "max", "tmp", "temp", "est", "hat", "init", "initial", "start", "end",
@@ -119,7 +119,7 @@ NOT_A_FRAME = frozenset(
 )  # fmt: skip
 
 # Representations, not frames: `deg2rad`, `quat2mat`, `euler_to_matrix` are conversions.
-NOT_A_FRAME_IN_CONVERSION = frozenset(
+NOT_A_FRAME_IN_CONVERSION: Final = frozenset(
     {
         "deg", "rad", "degrees", "radians", "str", "string", "int", "float", "bytes", "hex", "bin",
         "dec", "quat", "quaternion", "mat", "matrix", "euler", "axangle", "axis", "angle", "rotvec",
@@ -135,7 +135,7 @@ NOT_A_FRAME_IN_CONVERSION = frozenset(
 # `world_from_cam`, `p_world`): without them `herm2poly`, `module_from_spec` and `p_neg`
 # would read as frames. Trailing digits are ignored (`cam0`, `link3`); `frame-aliases`
 # entries count as known too.
-KNOWN_FRAMES = frozenset(
+KNOWN_FRAMES: Final = frozenset(
     {
         "world", "map", "odom", "base", "body", "cam", "camera", "optical", "color", "depth", "rgb",
         "ir", "lidar", "laser", "velodyne", "radar", "imu", "gps", "sensor", "tool", "tcp", "ee",
@@ -150,13 +150,13 @@ KNOWN_FRAMES = frozenset(
     }
 )  # fmt: skip
 
-TRANSFORM_LETTERS = frozenset({"T", "X", "H"})
-ROTATION_LETTERS = frozenset({"R"})
-_MONOGRAM_FRAME = r"[A-Z][0-9]*"
-_MONOGRAM_OPERATOR = re.compile(rf"^([TXHR])_({_MONOGRAM_FRAME})({_MONOGRAM_FRAME})$")
-_MONOGRAM_VALUE = re.compile(rf"^([pv])_({_MONOGRAM_FRAME})({_MONOGRAM_FRAME})$")
-_FRAME_WORD = re.compile(r"^[a-z][a-z0-9]*$")
-_TO_STYLE_COMPACT = re.compile(r"^([A-Za-z][A-Za-z0-9]*?)2([A-Za-z][A-Za-z0-9]*)$")
+TRANSFORM_LETTERS: Final = frozenset({"T", "X", "H"})
+ROTATION_LETTERS: Final = frozenset({"R"})
+_MONOGRAM_FRAME: Final = r"[A-Z][0-9]*"
+_MONOGRAM_OPERATOR: Final = re.compile(rf"^([TXHR])_({_MONOGRAM_FRAME})({_MONOGRAM_FRAME})$")
+_MONOGRAM_VALUE: Final = re.compile(rf"^([pv])_({_MONOGRAM_FRAME})({_MONOGRAM_FRAME})$")
+_FRAME_WORD: Final = re.compile(r"^[a-z][a-z0-9]*$")
+_TO_STYLE_COMPACT: Final = re.compile(r"^([A-Za-z][A-Za-z0-9]*?)2([A-Za-z][A-Za-z0-9]*)$")
 
 
 def tokens(name: str) -> tuple[str, ...]:
@@ -306,7 +306,7 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
 _VALUE_HEADS = DIRECTION_WORDS | POINT_WORDS | POINT_PREFIXES | DIRECTION_PREFIXES
 
 # The frames of Boston Dynamics' SDK whose names have several words (bosdyn.client.frame_helpers).
-TFORM_COMPOUND_FRAMES = frozenset(
+TFORM_COMPOUND_FRAMES: Final = frozenset(
     {
         "flat_body", "desired_tool", "gaze_target", "fl_foot", "fr_foot", "hl_foot", "hr_foot",
         "desired_tool_at_end", "measured_tool_at_start",
@@ -356,7 +356,7 @@ def _is_conversion_frame(word: str) -> bool:
 
 # Point words that mean geometry almost always; `pos`, `position`, `point`, `origin` are also
 # file offsets, cursor positions and sympy tuples, so they need more evidence (see GEO103).
-STRONG_POINT_WORDS = frozenset({"vertex", "vertices", "verts", "centroid", "centroids", "landmark", "landmarks"})
+STRONG_POINT_WORDS: Final = frozenset({"vertex", "vertices", "verts", "centroid", "centroids", "landmark", "landmarks"})
 
 
 def states_geometry(name: str, config: Config = Config()) -> bool:

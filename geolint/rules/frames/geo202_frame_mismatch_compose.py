@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import EXTRINSICS_EVIDENCE, FrameFact, MatMul
 from geolint.factbase.rule_support import STATED, Mismatch, ProductRule, SameFrame
@@ -10,7 +12,7 @@ from geolint.semantic.names import NameFrames
 
 # Words that name a pose a body should take (a waypoint), not a body: `T_base_grasp` is the tcp's pose
 # at the grasp in grasping code, so `T_base_grasp @ T_tcp_tool0` is the flange pose there.
-WAYPOINT_WORDS = frozenset(
+WAYPOINT_WORDS: Final = frozenset(
     {
         "grasp", "pregrasp", "postgrasp", "retreat", "lift", "approach", "pick", "prepick", "place",
         "preplace", "goal", "target", "waypoint", "setpoint", "desired", "des", "standoff", "hover",

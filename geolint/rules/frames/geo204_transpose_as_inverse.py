@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import re
 
 import ast
@@ -14,11 +16,11 @@ from geolint.factbase.rule_support import FactRule
 
 # Methods and functions that turn a matrix into a flat buffer: the transpose only picks the
 # column-major memory layout, it is never applied as an operator.
-_FLATTENING = frozenset({"flatten", "ravel", "tolist", "tobytes", "tofile", "flat"})
+_FLATTENING: Final = frozenset({"flatten", "ravel", "tolist", "tobytes", "tofile", "flat"})
 # A contiguous copy of the transpose (`T.T.copy()`, `np.ascontiguousarray(T.T)`) is the column-major
 # buffer an OpenGL uniform takes: nobody copies a transpose to use it as an inverse.
-_LAYOUT_COPIES = frozenset({"copy", "ascontiguousarray"})
-_OPENGL_CALL = re.compile(r"gl[A-Z]\w*$")
+_LAYOUT_COPIES: Final = frozenset({"copy", "ascontiguousarray"})
+_OPENGL_CALL: Final = re.compile(r"gl[A-Z]\w*$")
 
 
 class TransposeAsInverse(FactRule):

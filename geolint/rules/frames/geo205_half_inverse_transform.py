@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST,
@@ -37,7 +39,7 @@ from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import MATMUL_TEXT, POSE_PART_TEXT, AllOf, AnyOf
 
 # A product, or a transpose/inverse written into a pose's rotation block.
-_PRODUCT_OR_TRANSPOSE_TEXT = AnyOf(MATMUL_TEXT, r"\.m?T\b|\.transpose\(|\binv\(")
+_PRODUCT_OR_TRANSPOSE_TEXT: Final = AnyOf(MATMUL_TEXT, r"\.m?T\b|\.transpose\(|\binv\(")
 
 
 class HalfInverseTransform(AstRule):

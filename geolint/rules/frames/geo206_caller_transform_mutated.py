@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 import re
 from ast import (
@@ -26,9 +28,9 @@ from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
 
 # Attribute words that name a part of a transform or pose message (geometry_msgs Transform/Pose).
-_PART_ATTRIBUTES = frozenset({"translation", "rotation", "position", "orientation"})
+_PART_ATTRIBUTES: Final = frozenset({"translation", "rotation", "position", "orientation"})
 # Function names that announce an in-place update.
-_MUTATOR_NAME = re.compile(r"^_*(set|update|apply|reset|zero|fill|write|assign|modify|normalize|init|populate)_|inplace|in_place|_$")
+_MUTATOR_NAME: Final = re.compile(r"^_*(set|update|apply|reset|zero|fill|write|assign|modify|normalize|init|populate)_|inplace|in_place|_$")
 
 
 class CallerTransformMutated(AstRule):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST, Add, Assign, AsyncFunctionDef, Attribute, BinOp, Call, ClassDef, Constant, FunctionDef, Import, ImportFrom,
@@ -18,21 +20,21 @@ from geolint.rules.triggers import AllOf
 
 # tf2 Buffer calls and the positions of their frame-id arguments (each one goes through
 # validateFrameId or warnFrameId; `transform(obj, target_frame)` looks up obj's stamp and the target).
-_FULL = (0, 2, 4)  # target, target_time, source, source_time, fixed
-_FRAME_ARGUMENTS = {
+_FULL: Final = (0, 2, 4)  # target, target_time, source, source_time, fixed
+_FRAME_ARGUMENTS: Final = {
     "lookup_transform": (0, 1), "can_transform": (0, 1), "lookup_transform_async": (0, 1), "wait_for_transform_async": (0, 1),
     "lookup_transform_full": _FULL, "can_transform_full": _FULL, "wait_for_transform_full_async": _FULL,
     "transform": (1,), "transform_full": (1, 3),
 }  # fmt: skip
-_BUFFER_ONLY = frozenset({"transform", "transform_full"})
-_BUFFER_NAME = re.compile(r"(?i)(?:buffer|tf)\w*$")
-_FRAME_KEYWORDS = frozenset({"frame_id", "child_frame_id", "target_frame", "source_frame", "target", "source"})
+_BUFFER_ONLY: Final = frozenset({"transform", "transform_full"})
+_BUFFER_NAME: Final = re.compile(r"(?i)(?:buffer|tf)\w*$")
+_FRAME_KEYWORDS: Final = frozenset({"frame_id", "child_frame_id", "target_frame", "source_frame", "target", "source"})
 # calls that hand TransformStamped messages to tf2's setTransform
-_SETS_TRANSFORMS = frozenset({"sendTransform", "send_transform", "set_transform", "set_transform_static", "setTransform"})
-_TF2_TEXT = re.compile(r"tf2_ros|rclpy")
-TF2 = "tf2"  # the module uses tf2_ros or ROS 2 itself
-ROS1_TF2 = "ros1-tf2"  # a ROS 1 module (rospy, message types) whose ROS package targets tf2
-_STRAY = re.compile(r"[\"'\s]")  # a quote or whitespace: never part of a frame id
+_SETS_TRANSFORMS: Final = frozenset({"sendTransform", "send_transform", "set_transform", "set_transform_static", "setTransform"})
+_TF2_TEXT: Final = re.compile(r"tf2_ros|rclpy")
+TF2: Final = "tf2"  # the module uses tf2_ros or ROS 2 itself
+ROS1_TF2: Final = "ros1-tf2"  # a ROS 1 module (rospy, message types) whose ROS package targets tf2
+_STRAY: Final = re.compile(r"[\"'\s]")  # a quote or whitespace: never part of a frame id
 
 
 class InvalidTfFrameId(AstRule):

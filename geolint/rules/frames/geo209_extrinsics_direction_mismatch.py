@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import AnnAssign, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Name, Starred, Subscript
 
@@ -49,7 +51,7 @@ class _OrbSlamPoseName:
         return False
 
 
-TRIGGER = AllOf(
+TRIGGER: Final = AllOf(
     AnyOf(
         r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
         r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|pyrender|_from_world|world_from_cam",

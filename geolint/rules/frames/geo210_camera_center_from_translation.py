@@ -23,7 +23,7 @@ from ast import (
     Store,
     Subscript,
 )
-from typing import TYPE_CHECKING
+from typing import Final, TYPE_CHECKING
 
 from geolint.factbase.extrinsics import (
     DATA,
@@ -42,11 +42,11 @@ from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.frames.geo209_extrinsics_direction_mismatch import TRIGGER
 
-_CENTRE_WORDS = frozenset({"center", "centre", "centers", "centres", "position", "positions", "pos", "location", "loc", "origin", "origins"})
-_CAMERA_WORDS = frozenset({"cam", "camera", "cams", "cameras", "c", "view", "viewpoint", "eye"})
-_CENTRE_NAMES = frozenset({"center", "centre", "centers", "centres", "campos", "camloc", "eye", "rays_o", "ray_o", "ray_origin", "ray_origins", "rays_origin", "rays_origins"})
+_CENTRE_WORDS: Final = frozenset({"center", "centre", "centers", "centres", "position", "positions", "pos", "location", "loc", "origin", "origins"})
+_CAMERA_WORDS: Final = frozenset({"cam", "camera", "cams", "cameras", "c", "view", "viewpoint", "eye"})
+_CENTRE_NAMES: Final = frozenset({"center", "centre", "centers", "centres", "campos", "camloc", "eye", "rays_o", "ray_o", "ray_origin", "ray_origins", "rays_origin", "rays_origins"})
 # A centre of something else: an object, a box, a target the camera looks at.
-_OTHER_THINGS = frozenset(
+_OTHER_THINGS: Final = frozenset(
     {"obj", "object", "objects", "model", "mesh", "bbox", "box", "target", "goal", "light", "lookat", "look", "scene",
      "principal", "pp", "image", "img", "pixel", "grid", "voxel", "bound", "bounds", "aabb", "rotation", "world"}
 )  # fmt: skip
@@ -236,9 +236,9 @@ class CameraCenterFromTranslation(FactRule):
 
 
 # `.tvec` read as COLMAP's is evidence enough under a camera name, not under a plain `position` key.
-_AMBIGUOUS_SOURCE = EXTRINSIC_ATTRIBUTES["tvec"][2]
+_AMBIGUOUS_SOURCE: Final = EXTRINSIC_ATTRIBUTES["tvec"][2]
 # Keys and keywords of a position in the world (`{"location": ...}`, `look_at(eye=...)`).
-_POSITION_KEYS = frozenset({"location", "position", "eye"})
+_POSITION_KEYS: Final = frozenset({"location", "position", "eye"})
 
 
 def _is_position_key(key: str) -> bool:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import re
 
 import ast
@@ -218,7 +220,7 @@ class PointNotTranslated(FactRule):
                 )
 
 
-_TRANSLATION_COLUMN = re.compile(r"([\w.]+)\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]")
+_TRANSLATION_COLUMN: Final = re.compile(r"([\w.]+)\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]")
 
 
 def _scope_text(facts, scope_node: AST) -> str:  # type: ignore[no-untyped-def]

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import AST, Add, BinOp, Call, Constant, Div, FloorDiv, Mult, Name, Slice, Sub, Subscript, USub, UnaryOp
 
@@ -10,16 +12,16 @@ from geolint.algebra import FREE, Kind
 from geolint.factbase.model import last_name, number
 from geolint.factbase.rule_support import FactRule
 
-_COLLECTION_WORDS = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
+_COLLECTION_WORDS: Final = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
 # `delta_pos`, `pos_offset`, `displacement`: a displacement (a vector), never a point
-_DISPLACEMENT_WORDS = frozenset(
+_DISPLACEMENT_WORDS: Final = frozenset(
     {"delta", "d", "diff", "difference", "offset", "offsets", "displacement", "disp", "shift", "step", "increment", "inc",
      "rel", "relative"}
 )  # fmt: skip
 # What a rotated displacement is made from: `rot.dot(action[:3])` turns an action's translation into the world
 _MOTION_WORDS = _DISPLACEMENT_WORDS | {"action", "actions", "act"}
 # joint-space "positions" (`arm_motor_pos`, `joint_pos`, `qpos`) are not Euclidean points
-_JOINT_SPACE_WORDS = frozenset({"joint", "joints", "motor", "motors", "qpos", "arm", "actuator", "servo", "gripper_pos"})
+_JOINT_SPACE_WORDS: Final = frozenset({"joint", "joints", "motor", "motors", "qpos", "arm", "actuator", "servo", "gripper_pos"})
 
 
 def _name_tokens(node: AST) -> set[str]:
@@ -29,7 +31,7 @@ def _name_tokens(node: AST) -> set[str]:
     return set(name.lower().split("_")) if name else set()
 
 
-_ARRAY_WRAPPERS = frozenset({"array", "asarray", "tensor", "as_tensor"})
+_ARRAY_WRAPPERS: Final = frozenset({"array", "asarray", "tensor", "as_tensor"})
 
 
 def _is_collection(node: AST) -> bool:
@@ -46,7 +48,7 @@ def _is_sequence_slice(node: AST) -> bool:
 
 
 # Reductions that turn a sum of points into an affine combination.
-_AVERAGING_CALLS = frozenset({"mean", "average", "sum", "nanmean", "median"})
+_AVERAGING_CALLS: Final = frozenset({"mean", "average", "sum", "nanmean", "median"})
 
 
 class PointPlusPoint(FactRule):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import re
 
 import ast
@@ -14,8 +16,8 @@ from geolint.factbase.model import GEOMETRIC, last_name, transposed_value, walk_
 from geolint.factbase.rule_support import FactRule
 from geolint.semantic.names import tokens
 
-_NORMAL_TOKENS = frozenset({"normal", "normals", "nrm", "nrms"})
-_MENTIONS_NORMAL_FIELDS = re.compile(r"normal_x")
+_NORMAL_TOKENS: Final = frozenset({"normal", "normals", "nrm", "nrms"})
+_MENTIONS_NORMAL_FIELDS: Final = re.compile(r"normal_x")
 
 
 class NormalsLeftBehind(FactRule):

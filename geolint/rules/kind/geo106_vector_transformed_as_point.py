@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import Assign, Attribute, Call, Module, Name
 
@@ -12,7 +14,7 @@ from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
 
 # Fields of geometry_msgs Twist / Wrench / Accel / Vector3Stamped: free vectors, never positions.
-_FREE_VECTOR_FIELDS = frozenset({"linear", "angular", "force", "torque", "vector"})
+_FREE_VECTOR_FIELDS: Final = frozenset({"linear", "angular", "force", "torque", "vector"})
 
 
 class VectorTransformedAsPoint(AstRule):

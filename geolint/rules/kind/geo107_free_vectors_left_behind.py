@@ -9,7 +9,7 @@ from ast import (
 )
 import re
 from dataclasses import dataclass
-from typing import AbstractSet
+from typing import AbstractSet, Final
 
 from geolint.algebra import FREE, Kind
 from geolint.factbase.index import ParamBinding
@@ -25,7 +25,7 @@ _POSITION_WORDS = POINT_WORDS | {
     "keypoints", "kpts", "corners",
 }  # fmt: skip
 # Members that hold free vectors of the same object: rotated only, never left behind.
-_FREE_WORDS = frozenset(
+_FREE_WORDS: Final = frozenset(
     {
         "normal", "normals", "binormal", "binormals", "tangent", "tangents", "velocity", "velocities",
         "vel", "vels", "velo", "axis", "axes", "direction", "directions", "dir", "dirs", "force",
@@ -34,26 +34,26 @@ _FREE_WORDS = frozenset(
     }
 )  # fmt: skip
 # Members that hold the object's orientation (an angle or a rotation): rotating positions changes it.
-_ORIENTATION_WORDS = frozenset({"heading", "headings", "yaw", "yaws", "orientation", "orientations", "ry", "rot_y", "rotation_y"})
+_ORIENTATION_WORDS: Final = frozenset({"heading", "headings", "yaw", "yaws", "orientation", "orientations", "ry", "rot_y", "rotation_y"})
 # Column labels of a box layout written in a docstring or comment (`[x, y, z, dx, dy, dz, heading, vx, vy]`).
-_VELOCITY_COLUMNS = {"vx": 0, "vy": 1, "vz": 2, "vel_x": 0, "vel_y": 1, "vel_z": 2, "v_x": 0, "v_y": 1, "v_z": 2}
-_HEADING_COLUMNS = frozenset({"heading", "yaw", "ry", "rz", "rot_y", "rot_z", "rotation_y", "heading_angle"})
+_VELOCITY_COLUMNS: Final = {"vx": 0, "vy": 1, "vz": 2, "vel_x": 0, "vel_y": 1, "vel_z": 2, "v_x": 0, "v_y": 1, "v_z": 2}
+_HEADING_COLUMNS: Final = frozenset({"heading", "yaw", "ry", "rz", "rot_y", "rot_z", "rotation_y", "heading_angle"})
 # Names of operands that rotate (a rotation matrix, a pose): a product with one of them moves a position.
-_OPERATOR_TOKENS = frozenset(
+_OPERATOR_TOKENS: Final = frozenset(
     {"r", "rot", "rotation", "rotmat", "rmat", "pose", "poses", "transform", "transformation", "tf", "extrinsic",
      "extrinsics", "c2w", "w2c", "se3", "so3", "rotation_matrix"}
 )  # fmt: skip
 # ... unless the name also says it is something else (a translation only, intrinsics, a scale).
-_NOT_OPERATOR_TOKENS = frozenset(
+_NOT_OPERATOR_TOKENS: Final = frozenset(
     {"k", "intrinsic", "intrinsics", "proj", "projection", "calib", "scale", "scaling", "translation", "shift", "offset",
      "noise", "angle", "angles", "axis", "vec", "vector", "quat", "quaternion", "euler", "deg", "rad"}
 )  # fmt: skip
-_ROTATING_CALL = re.compile(r"rotat|transform_points|apply_transform|quaternion_rotate|quat_apply", re.IGNORECASE)
-_ROTATION_MAKER = re.compile(r"rot|euler|quat2mat|as_matrix|rodrigues|axangle2mat", re.IGNORECASE)
+_ROTATING_CALL: Final = re.compile(r"rotat|transform_points|apply_transform|quaternion_rotate|quat_apply", re.IGNORECASE)
+_ROTATION_MAKER: Final = re.compile(r"rot|euler|quat2mat|as_matrix|rodrigues|axangle2mat", re.IGNORECASE)
 # Calls that only read a value (a finding stays possible when the free vector is passed to them).
-_READERS = frozenset({"len", "print", "isinstance", "type", "id", "repr", "str", "norm", "vector_norm"})
-_STACKERS = frozenset({"hstack", "column_stack", "concatenate", "cat", "concat", "stack", "dstack"})
-_LAYOUT_START = re.compile(r"[\[(<]\s*x\s*,\s*y\s*,\s*z\s*,")
+_READERS: Final = frozenset({"len", "print", "isinstance", "type", "id", "repr", "str", "norm", "vector_norm"})
+_STACKERS: Final = frozenset({"hstack", "column_stack", "concatenate", "cat", "concat", "stack", "dstack"})
+_LAYOUT_START: Final = re.compile(r"[\[(<]\s*x\s*,\s*y\s*,\s*z\s*,")
 
 
 @dataclass(frozen=True)

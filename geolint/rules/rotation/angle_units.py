@@ -65,7 +65,7 @@ from ast import (
 )
 from collections import Counter
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Final, TYPE_CHECKING
 
 from geolint.factbase.angles import (
     DEGREES,
@@ -92,32 +92,32 @@ from geolint.factbase.summaries import only_bound_as_parameter
 if TYPE_CHECKING:
     from geolint.factbase.summaries import FunctionSummary
 
-_DEGREE_WORDS = frozenset({"deg", "degs", "degree", "degrees"})
-_RADIAN_WORDS = frozenset({"rad", "rads", "radian", "radians"})
+_DEGREE_WORDS: Final = frozenset({"deg", "degs", "degree", "degrees"})
+_RADIAN_WORDS: Final = frozenset({"rad", "rads", "radian", "radians"})
 # words that turn a unit word into something else (`deg_per_s` is a rate, `rad2deg` a factor)
-_NOT_AN_ANGLE = frozenset({"per", "to", "s", "sec", "rate", "vel", "velocity", "speed", "factor", "scale", "step", "tol", "thresh", "threshold", "eps", "err", "error", "std", "sigma", "noise"})
-_TO_DEGREES = frozenset({"degrees", "rad2deg"})
-_TO_RADIANS = frozenset({"radians", "deg2rad"})
-_INVERSE_TRIG = frozenset({"arctan2", "arctan", "arcsin", "arccos", "atan2", "atan", "asin", "acos"})
-_ANGLE_MODULES = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"})
+_NOT_AN_ANGLE: Final = frozenset({"per", "to", "s", "sec", "rate", "vel", "velocity", "speed", "factor", "scale", "step", "tol", "thresh", "threshold", "eps", "err", "error", "std", "sigma", "noise"})
+_TO_DEGREES: Final = frozenset({"degrees", "rad2deg"})
+_TO_RADIANS: Final = frozenset({"radians", "deg2rad"})
+_INVERSE_TRIG: Final = frozenset({"arctan2", "arctan", "arcsin", "arccos", "atan2", "atan", "asin", "acos"})
+_ANGLE_MODULES: Final = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"})
 # TensorFlow's `tf.acos`, `tf.math.atan2`... return radians as well (it has no degree conversions)
 _INVERSE_TRIG_MODULES = _ANGLE_MODULES | {"tensorflow", "tensorflow.math"}
-_MAX_DEPTH = 10
-_TWO_PI = 2 * math.pi
-_SPATIALMATH_ANGLE_CALLS = frozenset(
+_MAX_DEPTH: Final = 10
+_TWO_PI: Final = 2 * math.pi
+_SPATIALMATH_ANGLE_CALLS: Final = frozenset(
     {"Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz", "rpy2r", "eul2r", "rpy2tr", "eul2tr"}
 )
 # The names `radian_arguments` knows exactly (beside transforms3d's `euler2*` / `axangle2*` and
 # pytransform3d's `*_from_euler` / `*_from_angle`).
-_RADIAN_API_NAMES = frozenset(
+_RADIAN_API_NAMES: Final = frozenset(
     {"from_euler", "from_rotvec", *_SPATIALMATH_ANGLE_CALLS, "quaternion_from_euler", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
     | {qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS}
 )
-_ROTATION_VECTOR_NAMES = frozenset({"from_rotvec", *(qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS)})
+_ROTATION_VECTOR_NAMES: Final = frozenset({"from_rotvec", *(qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS)})
 
 
 # Library calls that read angles in DEGREES, by qualified name: each angle's position and keyword.
-DEGREE_CONSUMERS: dict[str, tuple[tuple[int, str], ...]] = {
+DEGREE_CONSUMERS: Final[dict[str, tuple[tuple[int, str], ...]]] = {
     # glRotatef/glRotated(angle, x, y, z): "The angle of rotation, in degrees" (OpenGL reference,
     # learn.microsoft.com/en-us/windows/win32/OpenGL/glrotatef); PyOpenGL and pyglet.gl bind the C call
     **{f"{module}.{name}": ((0, "angle"),) for module in ("OpenGL.GL", "pyglet.gl") for name in ("glRotatef", "glRotated")},
@@ -135,9 +135,9 @@ DEGREE_CONSUMERS: dict[str, tuple[tuple[int, str], ...]] = {
     # yaw and roll likewise (CARLA Python API reference, Docs/python_api.md, carla.Rotation)
     "carla.Rotation": ((0, "pitch"), (1, "yaw"), (2, "roll")),
 }
-DEGREE_CONSUMER_NAMES = frozenset(qualified.rpartition(".")[2] for qualified in DEGREE_CONSUMERS)  # by `called_name`
-_GL_ROTATE = frozenset({"glRotatef", "glRotated"})
-_GL_PACKAGES = frozenset({"OpenGL", "pyglet"})  # `from pyglet.gl import *`: the usual way GL is imported
+DEGREE_CONSUMER_NAMES: Final = frozenset(qualified.rpartition(".")[2] for qualified in DEGREE_CONSUMERS)  # by `called_name`
+_GL_ROTATE: Final = frozenset({"glRotatef", "glRotated"})
+_GL_PACKAGES: Final = frozenset({"OpenGL", "pyglet"})  # `from pyglet.gl import *`: the usual way GL is imported
 
 
 @dataclass(frozen=True)
@@ -697,7 +697,7 @@ def _angle_elements(node: ast.expr) -> list[ast.expr]:
 _Block = FunctionDef | AsyncFunctionDef | With | AsyncWith  # a body that may be left early
 
 # a loop's body may run no time at all, like a branch's
-_BRANCHES = (
+_BRANCHES: Final = (
     If, IfExp, Try, getattr(ast, "TryStar", Try), While, For, AsyncFor, BoolOp,
     ast.comprehension, Match, Lambda,
 )  # fmt: skip
@@ -723,7 +723,7 @@ def _unconditional(facts: FactBase, node: AST) -> bool:
     return all(getattr(held, "lineno", 0) <= _first_early_exit(facts, block) for block, held in blocks)
 
 
-_DEFINITIONS = (FunctionDef, AsyncFunctionDef, ClassDef)
+_DEFINITIONS: Final = (FunctionDef, AsyncFunctionDef, ClassDef)
 
 
 def _first_early_exit(facts: FactBase, block: _Block) -> int:
@@ -745,7 +745,7 @@ def _early_exit_line(body: list[ast.stmt]) -> int:
 
 # the expressions `AngleUnits.unit_of` can know a unit of; for any other (a constant, a list, a
 # comparison...) it is None, found without following anything
-_MAY_HAVE_UNIT = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript})
+_MAY_HAVE_UNIT: Final = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript})
 
 
 def helper_reads(facts: FactBase, call: Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:

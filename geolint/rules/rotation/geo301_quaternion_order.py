@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST, Assign, AsyncFunctionDef, Attribute, BinOp, Call, Constant, FunctionDef, If, IfExp, Load, Match, Name,
@@ -48,7 +50,7 @@ from geolint.rules.rotation.quaternion_flow import (
     unwrapped_scalar,
 )
 
-_COMPONENTS = "wxyz"
+_COMPONENTS: Final = "wxyz"
 
 
 @dataclass(frozen=True)
@@ -96,11 +98,11 @@ class _GateOrOrderName:
         return any(word in lowered for word in self._ORDER_WORDS)
 
 
-_GATE_OR_ORDER_NAME = _GateOrOrderName()
+_GATE_OR_ORDER_NAME: Final = _GateOrOrderName()
 # the expressions `QuaternionFlow.order_of` / `reorder_of` can know something of; for any other (a
 # constant, an f-string, a comparison...) both are None, found without following anything
-_MAY_HAVE_ORDER = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript, ast.List, ast.Tuple})
-_LETTERS = frozenset(_COMPONENTS)
+_MAY_HAVE_ORDER: Final = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript, ast.List, ast.Tuple})
+_LETTERS: Final = frozenset(_COMPONENTS)
 
 
 class QuaternionOrder(FactRule):
@@ -875,9 +877,9 @@ class QuaternionOrder(FactRule):
         )
 
 
-_ORDER_FLAGS = frozenset({"w_last", "w_first", "scalar_first", "scalar_last", "wxyz", "xyzw", "is_wxyz", "is_xyzw"})
-_ORDER_FLAG_WORDS = ("w_last", "w_first", "scalar_first", "scalar_last", "is_wxyz", "is_xyzw")
-_ORDER_FLAG_TEXT = re.compile(rf"\b(?:{'|'.join(_ORDER_FLAG_WORDS)})\b")
+_ORDER_FLAGS: Final = frozenset({"w_last", "w_first", "scalar_first", "scalar_last", "wxyz", "xyzw", "is_wxyz", "is_xyzw"})
+_ORDER_FLAG_WORDS: Final = ("w_last", "w_first", "scalar_first", "scalar_last", "is_wxyz", "is_xyzw")
+_ORDER_FLAG_TEXT: Final = re.compile(rf"\b(?:{'|'.join(_ORDER_FLAG_WORDS)})\b")
 
 
 def _mentions_order_flag(source: str) -> bool:
@@ -886,7 +888,7 @@ def _mentions_order_flag(source: str) -> bool:
     return any(word in source for word in _ORDER_FLAG_WORDS) and _ORDER_FLAG_TEXT.search(source) is not None
 # project operations that return a quaternion in the order their flag names (isaacgym-style
 # `quat_mul(a, b, w_last)`), as opposed to ones returning vectors or angles (`quat_rotate`, `calc_heading`)
-_QUATERNION_RESULT = re.compile(
+_QUATERNION_RESULT: Final = re.compile(
     r"^(?:quat_(?:mul|mul_norm|multiply|product|conjugate|inv|inverse|unit|normalize|pos|identity(?:_like)?|from_\w+)|"
     r"\w+_to_quat(?:ernion)?|quaternion_(?:multiply|product|invert|conjugate|raw_multiply))$"
 )
@@ -1029,7 +1031,7 @@ def _identity_comment(source: str, node: ast.expr) -> bool:
     return comment >= 0 and _IDENTITY_COMMENT.search(line[comment:]) is not None
 
 
-_IDENTITY_COMMENT = re.compile(r"(?i)\b(?:identity|no rotation|unrotated)\b")
+_IDENTITY_COMMENT: Final = re.compile(r"(?i)\b(?:identity|no rotation|unrotated)\b")
 
 
 def _numbers(facts: FactBase, node: ast.expr) -> list[float] | None:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 import math
 import re
@@ -49,10 +51,10 @@ from geolint.rules.rotation.angle_units import (
     wrong_unit_passed,
 )
 
-_TWO_PI = 2 * math.pi
+_TWO_PI: Final = 2 * math.pi
 # `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate
 # reads; `radians` / `deg2rad`: a parse table's converter to radians (a module of parsers, no geometry).
-_DIVIDES_BY_PI = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b|\b(?:radians|deg2rad)\b")
+_DIVIDES_BY_PI: Final = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b|\b(?:radians|deg2rad)\b")
 
 
 class _GateOrDivisionByPi:
@@ -64,10 +66,10 @@ class _GateOrDivisionByPi:
 
     def search_with(self, source: str, config: object, /) -> bool:
         return GATE_TRIGGER.search_with(source, config) or _DIVIDES_BY_PI.search(source) is not None
-_RADIAN_CONVERTERS = frozenset({"math.radians", "numpy.radians", "numpy.deg2rad"})
-_MATH_TRIG = frozenset(f"math.{fn}" for fn in TRIG_FUNCTIONS)
-_ANGLE_NAME = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
-_RADIAN_NAME = re.compile(r"(?i)rad")
+_RADIAN_CONVERTERS: Final = frozenset({"math.radians", "numpy.radians", "numpy.deg2rad"})
+_MATH_TRIG: Final = frozenset(f"math.{fn}" for fn in TRIG_FUNCTIONS)
+_ANGLE_NAME: Final = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
+_RADIAN_NAME: Final = re.compile(r"(?i)rad")
 
 
 class DegreesAsRadians(FactRule):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import AST, Assign, Attribute, AugAssign, Call, Constant, Module, Name, Starred, Subscript, USub, UnaryOp
 
@@ -318,9 +320,9 @@ class MisplacedTranslation(AstRule):
 
 
 # Dict keys and keyword arguments whose value is a translation (`{"location": ...}`, `translation=...`).
-_TRANSLATION_KEYS = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
+_TRANSLATION_KEYS: Final = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
 # Words of a name that holds a translation (`cam_location`, `obj.position`, `t_w2c`).
-_TRANSLATION_WORDS = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
+_TRANSLATION_WORDS: Final = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
 
 
 def _inverts(node: AST) -> bool:
@@ -349,7 +351,7 @@ def _peel_vector(node: ast.expr) -> ast.expr:
 
 
 # Calls whose argument is a translation (nuScenes/pyquaternion boxes, trimesh, Open3D, spatialmath).
-_TRANSLATING_CALLS = frozenset({"translate", "translation_matrix", "set_translation", "from_translation"})
+_TRANSLATING_CALLS: Final = frozenset({"translate", "translation_matrix", "set_translation", "from_translation"})
 
 
 def subscript_indices_text(target: Subscript) -> str:
@@ -411,7 +413,7 @@ def _writes_transposed_rotation(node: AST, base: ast.expr, index: ModuleIndex) -
 
 
 # Library classes that apply a 4x4 to row vectors (`coords @ M`): VisPy's transforms.
-_ROW_VECTOR_CONSUMERS = frozenset({"vispy.visuals.transforms.MatrixTransform", "vispy.visuals.transforms.linear.MatrixTransform"})
+_ROW_VECTOR_CONSUMERS: Final = frozenset({"vispy.visuals.transforms.MatrixTransform", "vispy.visuals.transforms.linear.MatrixTransform"})
 
 
 def _row_vector_consumer(node: AST, base: ast.expr, index: ModuleIndex) -> bool:

@@ -3,6 +3,8 @@ pyquaternion object written into an array slice (its w in every slot)."""
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST, AnnAssign, Assign, AsyncFunctionDef, Attribute, BinOp, Call, FunctionDef, ListComp, Mult, Name, Slice,
@@ -21,9 +23,9 @@ from geolint.rules.triggers import AllOf
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness
 # (in robotics `q` is just as often a joint configuration).
-_STRONG = frozenset({"quat", "quats", "quaternion", "quaternions", "qvec", "qvecs", "quatern", "orientation", "orientations", "rotq"})
-_WEAK = frozenset({"q", "qs"})
-_CYCLES = ((0, 1, 2, 3), (1, 2, 3, 0), (3, 0, 1, 2))
+_STRONG: Final = frozenset({"quat", "quats", "quaternion", "quaternions", "qvec", "qvecs", "quatern", "orientation", "orientations", "rotq"})
+_WEAK: Final = frozenset({"q", "qs"})
+_CYCLES: Final = ((0, 1, 2, 3), (1, 2, 3, 0), (3, 0, 1, 2))
 
 
 class _NamesQuaternion:
@@ -46,7 +48,7 @@ def _starts_a_q_word(source: str, at: int) -> bool:
     return source[at] == "Q" or before not in _ASCII_LETTERS
 
 
-_ASCII_LETTERS = frozenset(string.ascii_letters)
+_ASCII_LETTERS: Final = frozenset(string.ascii_letters)
 
 
 class QuaternionComponentReused(FactRule):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import BinOp, Call, Constant
 import re
@@ -23,8 +25,8 @@ from geolint.rules.triggers import AllOf
 
 
 # `angle_units="degrees"`, `unit="deg"`: a keyword that states the unit of the call's angles
-_UNIT_KEYWORD = re.compile(r"(?:^|_)units?$")
-_DEGREE_STRINGS = frozenset({"deg", "degree", "degrees"})
+_UNIT_KEYWORD: Final = re.compile(r"(?:^|_)units?$")
+_DEGREE_STRINGS: Final = frozenset({"deg", "degree", "degrees"})
 
 
 class RadiansAsDegrees(FactRule):

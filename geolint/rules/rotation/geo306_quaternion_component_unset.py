@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST,
@@ -24,12 +26,12 @@ from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
 
-_QUATERNION = "geometry_msgs.msg.Quaternion"
-_COMPONENTS = ("x", "y", "z", "w")
+_QUATERNION: Final = "geometry_msgs.msg.Quaternion"
+_COMPONENTS: Final = ("x", "y", "z", "w")
 # Words that make a source's `.x`, `.y`, `.z` a quaternion's (so it has a `.w` to copy too): a Quaternion
 # message misused to carry three angles (`q.x = rpy.x`) leaves w alone on purpose.
-_ROTATION_WORDS = frozenset({"rotation", "rot", "orientation", "quat", "quaternion", "attitude", "q"})
-_DEFAULTS = {"w": "0.0 in ROS 1, 1.0 in ROS 2", "x": "0.0", "y": "0.0", "z": "0.0"}
+_ROTATION_WORDS: Final = frozenset({"rotation", "rot", "orientation", "quat", "quaternion", "attitude", "q"})
+_DEFAULTS: Final = {"w": "0.0 in ROS 1, 1.0 in ROS 2", "x": "0.0", "y": "0.0", "z": "0.0"}
 
 
 class QuaternionComponentUnset(FactRule):

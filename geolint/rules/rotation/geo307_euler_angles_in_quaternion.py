@@ -3,6 +3,8 @@ or given whole where pybullet takes a quaternion."""
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import AST, Add, Assign, Attribute, BinOp, Call, Load, Name, Sub, Subscript, UAdd, USub, UnaryOp
 import re
@@ -22,19 +24,19 @@ from geolint.factbase.rule_support import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
 
-_QUATERNION = "geometry_msgs.msg.Quaternion"
-_COMPONENTS = ("x", "y", "z", "w")
+_QUATERNION: Final = "geometry_msgs.msg.Quaternion"
+_COMPONENTS: Final = ("x", "y", "z", "w")
 # Fields that hold a message's orientation: a Quaternion message placed there is read as a rotation.
-_ORIENTATION_FIELDS = frozenset({"orientation", "rotation"})
-_ANGLE_WORDS = ("roll", "pitch", "yaw")
-_SEQUENCE_WORDS = frozenset({"rpy", "euler", "eulers"})
+_ORIENTATION_FIELDS: Final = frozenset({"orientation", "rotation"})
+_ANGLE_WORDS: Final = ("roll", "pitch", "yaw")
+_SEQUENCE_WORDS: Final = frozenset({"rpy", "euler", "eulers"})
 # Words that make `yaw_rate`, `roll_vel`, `pitch_std`, `yaw_quat` something other than an angle.
-_NOT_AN_ANGLE = frozenset(
+_NOT_AN_ANGLE: Final = frozenset(
     {"rate", "rates", "vel", "velocity", "speed", "dot", "acc", "accel", "std", "sigma", "cov", "covariance", "noise", "gain", "sin", "cos", "half"}
     | {"q", "quat", "quaternion", "qx", "qy", "qz", "qw", "orientation", "rot", "rotation"}
 )
-_UNIT_CALLS = frozenset({"degrees", "radians", "deg2rad", "rad2deg"})
-_MAX_DEPTH = 6
+_UNIT_CALLS: Final = frozenset({"degrees", "radians", "deg2rad", "rad2deg"})
+_MAX_DEPTH: Final = 6
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,8 @@ GEO301 (quaternion order) and GEO304 (repeated component) ask two questions of a
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST, Assign, Attribute, BinOp, Call, ClassDef, Constant, Div, Mult, Name, Slice, Starred, Subscript, USub,
@@ -28,20 +30,20 @@ from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, 
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, quaternion_producer
 from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
 
-COMPONENTS = "wxyz"
-STANDARD_ORDERS = (SCALAR_FIRST, SCALAR_LAST)
+COMPONENTS: Final = "wxyz"
+STANDARD_ORDERS: Final = (SCALAR_FIRST, SCALAR_LAST)
 # mujoco's quaternion arrays (w, x, y, z), one row per body/geom/site/camera.
-_MUJOCO_ATTRIBUTES = frozenset({"xquat", "body_xquat", "body_quat", "geom_quat", "site_quat", "cam_quat", "body_iquat"})
-_MUJOCO_GETTERS = frozenset({"get_body_xquat", "get_site_xquat", "get_geom_xquat"})
-_MUJOCO_MODULES = ("mujoco", "mujoco_py", "dm_control")
+_MUJOCO_ATTRIBUTES: Final = frozenset({"xquat", "body_xquat", "body_quat", "geom_quat", "site_quat", "cam_quat", "body_iquat"})
+_MUJOCO_GETTERS: Final = frozenset({"get_body_xquat", "get_site_xquat", "get_geom_xquat"})
+_MUJOCO_MODULES: Final = ("mujoco", "mujoco_py", "dm_control")
 # pybullet calls returning (position, orientation): the orientation is (x, y, z, w).
-_PYBULLET_PAIRS = frozenset({"getBasePositionAndOrientation", "multiplyTransforms", "invertTransform"})
-_PYQUATERNION = ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion")
-_TYPING_WORDS = frozenset(
+_PYBULLET_PAIRS: Final = frozenset({"getBasePositionAndOrientation", "multiplyTransforms", "invertTransform"})
+_PYQUATERNION: Final = ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion")
+_TYPING_WORDS: Final = frozenset(
     {"List", "Sequence", "Iterable", "Iterator", "Optional", "Tuple", "Dict", "Union", "Set", "Collection", "Mapping", "Any", "Type"}
 )
-_NAME_ORDER = re.compile(r"(?i)(?:^|_|\d)(wxyz|xyzw)(?:$|_|s\b)")
-_MAX_DEPTH = 12
+_NAME_ORDER: Final = re.compile(r"(?i)(?:^|_|\d)(wxyz|xyzw)(?:$|_|s\b)")
+_MAX_DEPTH: Final = 12
 def _is_four_column_block(index: ast.expr) -> bool:
     """`[:, 3:7]`: every row, four consecutive columns (the result has two axes)."""
     if not (isinstance(index, ast.Tuple) and len(index.elts) == 2):
@@ -56,7 +58,7 @@ def _is_four_column_block(index: ast.expr) -> bool:
     return isinstance(lower, int) and isinstance(upper, int) and lower >= 0 and upper - lower == 4
 
 
-_STACK_WORDS = frozenset({"quats", "quaternions", "orientations", "qvecs"})
+_STACK_WORDS: Final = frozenset({"quats", "quaternions", "orientations", "qvecs"})
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,8 @@ result (`yaw = ...`, `def quat_get_yaw`) pick one reading; otherwise it says not
 
 from __future__ import annotations
 
+from typing import Final
+
 import ast
 from ast import (
     AST,
@@ -45,13 +47,13 @@ from geolint.rules.rotation.quaternion_flow import component_index
 Monomial = tuple[int, ...]  # sorted component indices (or letters' positions in "wxyz" for templates)
 Polynomial = dict[Monomial, Fraction]
 
-_MAX_DEPTH = 10
-_MAX_TERMS = 24
-_ATAN2 = frozenset({"atan2", "arctan2"})
-_ASIN = frozenset({"asin", "arcsin"})
-_CLAMPS = frozenset({"clip", "clamp"})
-_LETTER_PREFIXES = ("q_", "quat_", "q", "quat", "")
-_WORDS = {"yaw": "yaw", "heading": "yaw", "roll": "roll", "pitch": "pitch"}
+_MAX_DEPTH: Final = 10
+_MAX_TERMS: Final = 24
+_ATAN2: Final = frozenset({"atan2", "arctan2"})
+_ASIN: Final = frozenset({"asin", "arcsin"})
+_CLAMPS: Final = frozenset({"clip", "clamp"})
+_LETTER_PREFIXES: Final = ("q_", "quat_", "q", "quat", "")
+_WORDS: Final = {"yaw": "yaw", "heading": "yaw", "roll": "roll", "pitch": "pitch"}
 
 
 @dataclass(frozen=True)
@@ -104,15 +106,15 @@ def _template(text: str) -> Polynomial:
 
 # The textbook formulas (Hamilton quaternions, w the scalar): each entry is a list of equivalent
 # spellings (a unit quaternion's 1 - 2(y^2 + z^2) is also w^2 + x^2 - y^2 - z^2).
-_YAW = ([_template("2 wz + 2 xy")], [_template("1 - 2 yy - 2 zz"), _template("1 ww + 1 xx - 1 yy - 1 zz")])
-_ROLL = ([_template("2 wx + 2 yz")], [_template("1 - 2 xx - 2 yy"), _template("1 ww - 1 xx - 1 yy + 1 zz")])
-_PITCH = [_template("2 wy - 2 xz")]
-_DIAGONAL = [
+_YAW: Final = ([_template("2 wz + 2 xy")], [_template("1 - 2 yy - 2 zz"), _template("1 ww + 1 xx - 1 yy - 1 zz")])
+_ROLL: Final = ([_template("2 wx + 2 yz")], [_template("1 - 2 xx - 2 yy"), _template("1 ww - 1 xx - 1 yy + 1 zz")])
+_PITCH: Final = [_template("2 wy - 2 xz")]
+_DIAGONAL: Final = [
     [_template("1 - 2 yy - 2 zz"), _template("1 ww + 1 xx - 1 yy - 1 zz")],
     [_template("1 - 2 xx - 2 zz"), _template("1 ww - 1 xx + 1 yy - 1 zz")],
     [_template("1 - 2 xx - 2 yy"), _template("1 ww - 1 xx - 1 yy + 1 zz")],
 ]
-_OFF_DIAGONAL = {
+_OFF_DIAGONAL: Final = {
     (0, 1): _template("2 xy - 2 wz"), (0, 2): _template("2 xz + 2 wy"),
     (1, 0): _template("2 xy + 2 wz"), (1, 2): _template("2 yz - 2 wx"),
     (2, 0): _template("2 xz - 2 wy"), (2, 1): _template("2 yz + 2 wx"),

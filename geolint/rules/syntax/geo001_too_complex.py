@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+from typing import Final
+
 import re
 from ast import Module
 
 from geolint.lint_types import Severity
 from geolint.rules.base import AstRule, Invalid, Valid
 
-_DEEP_SUM = "total = " + " + ".join(f"offset_{i}" for i in range(200)) + "\n"
+_DEEP_SUM: Final = "total = " + " + ".join(f"offset_{i}" for i in range(200)) + "\n"
 
 
 class TooComplexToAnalyse(AstRule):
