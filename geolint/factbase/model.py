@@ -649,7 +649,7 @@ class FactBase:
 
     def _imported_function(self, qualified: str, importer: str) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
         for _ in range(_MAX_REEXPORTS):
-            found = self._defining_module(qualified, importer)
+            found = self.defining_module(qualified, importer)
             if found is None:
                 return None
             other, name = found
@@ -659,7 +659,7 @@ class FactBase:
             importer = other.path
         return None
 
-    def _defining_module(self, qualified: str, importer: str) -> tuple[FactBase, str] | None:
+    def defining_module(self, qualified: str, importer: str) -> tuple[FactBase, str] | None:
         """For `pkg.mod.name` (or `.mod.name`) imported by `importer`: the fact base of the project module
         `pkg.mod` and `name`; None for a third-party or unresolved module."""
         module, _, name = qualified.rpartition(".")
@@ -1008,7 +1008,7 @@ class FactBase:
             return classes
         found = dict(classes)
         for local, qualified in imported.items():
-            defining = self._defining_module(qualified, self.path)
+            defining = self.defining_module(qualified, self.path)
             if defining is not None:
                 other, name = defining
                 declared = other.module_fact("frame_classes", lambda: typed.frame_classes(other.index.tree)).get(name)  # noqa: B023

@@ -219,7 +219,7 @@ class CameraCenterFromTranslation(FactRule):
         if not (isinstance(func, Attribute) and isinstance(func.value, Name)):
             return None
         qualified = self.facts.index.imports.get(func.value.id)
-        found = self.facts._defining_module(qualified, self.facts.path) if qualified else (self.facts, func.value.id)
+        found = self.facts.defining_module(qualified, self.facts.path) if qualified else (self.facts, func.value.id)
         if found is None:
             return None
         other, class_name = found

@@ -468,7 +468,7 @@ def _class_literal(facts: FactBase, cls: ClassDef, attr: str, where: str) -> tup
 
 def _module_constant(facts: FactBase, qualified: str) -> tuple[float, str] | None:
     """A module-level name of a project module bound once to a literal (`config.TILT`)."""
-    found = facts._defining_module(qualified, facts.path)
+    found = facts.defining_module(qualified, facts.path)
     if found is None:
         return None
     other, name = found
@@ -866,7 +866,7 @@ def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ClassDef] 
         return None
     if not facts.cross_module:
         return None
-    found = facts._defining_module(facts.qualified_name(func) or "", facts.path)
+    found = facts.defining_module(facts.qualified_name(func) or "", facts.path)
     if found is None:
         return None
     other, name = found
