@@ -12,7 +12,7 @@ Conventions understood (each one switchable in `[tool.geolint.naming]`):
 - monogram:   Drake `X_WB`, `R_WB` (pose of B in W), `p_BQ` (position of Q measured in B)
 - from_style: `world_from_cam`; values `point_in_cam`, `normals_in_world`
 - to_style:   `cam_to_world`, pytransform3d `cam2world` (src first)
-- suffix:     `p_world`, `v_cam`, `points_cam`, `normals_world`
+- suffix:     `p_world`, `v_cam`, `points_cam`, `normals_world` (`v_cam` states a frame, not a kind)
 """
 
 from __future__ import annotations
@@ -79,10 +79,12 @@ POINT_WORDS: Final = frozenset(
     }
 )  # fmt: skip
 TRANSFORM_WORDS: Final = frozenset({"pose", "poses", "transform", "tf", "extrinsic", "extrinsics"})
-# One-letter kind prefixes that need a frame after them to mean anything (`p_world`, `v_cam`):
+# One-letter kind prefixes that need a frame after them to mean anything (`p_world`):
 # `p` alone is a probability or a polynomial as often as a point.
 POINT_PREFIXES: Final = frozenset({"p"})
-DIRECTION_PREFIXES: Final = frozenset({"v"})
+# One-letter prefixes that state a value's frame but not its kind: `v_cam` is a vector or a velocity
+# in kinematics code and a mesh's vertices in graphics code (`v_world = torch.Tensor(vertices)`).
+FRAMED_VALUE_PREFIXES: Final = frozenset({"v"})
 
 # Tokens that turn a geometric word into something else: `n_points` is a count,
 # `normal_idx` an index, `point_size` a scalar. Any of them in a name means "not geometry".
@@ -204,8 +206,6 @@ def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None: 
     if frames is not None and frames.frame is not None and len(parts) >= 2:
         if parts[0] in POINT_PREFIXES:
             kinds.add(Kind.POINT)
-        elif parts[0] in DIRECTION_PREFIXES:
-            kinds.add(Kind.DIRECTION)
     if len(kinds) != 1:
         return None
     kind = kinds.pop()
@@ -303,7 +303,7 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
             yield NameFrames(frame=frame.lower())
 
 
-_VALUE_HEADS = DIRECTION_WORDS | POINT_WORDS | POINT_PREFIXES | DIRECTION_PREFIXES
+_VALUE_HEADS = DIRECTION_WORDS | POINT_WORDS | POINT_PREFIXES | FRAMED_VALUE_PREFIXES
 
 # The frames of Boston Dynamics' SDK whose names have several words (bosdyn.client.frame_helpers).
 TFORM_COMPOUND_FRAMES: Final = frozenset(

@@ -21,7 +21,7 @@ from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_nam
         ("surface_normal", Kind.DIRECTION),
         ("ray_dir", Kind.DIRECTION),
         ("vertex_normals", Kind.DIRECTION),
-        ("v_cam", Kind.DIRECTION),
+        ("v_cam", None),  # a vector, a velocity or a mesh's vertices: the frame is stated, the kind is not
         ("points", Kind.POINT),
         ("p_world", Kind.POINT),
         ("p_BQ", Kind.POINT),

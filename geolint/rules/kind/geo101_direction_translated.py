@@ -77,6 +77,11 @@ class DirectionTranslated(FactRule):
         Valid("import numpy as np\np_h = np.append(point, 1)\n"),
         Valid("normal_world = R_world_cam @ normal_cam\n"),
         Valid("p_world = R @ p_cam + t\n"),
+        Valid(
+            "import torch\ndef project(v_world, pose):\n"
+            "    v_homo = torch.cat([v_world, torch.ones_like(v_world[:, :1])], dim=-1)\n"
+            "    return (v_homo @ pose.T)[:, :3]\n"
+        ),  # `v_world`: a mesh's vertices as often as a vector; `v` states the frame, not the kind
         Valid("v = R @ velocity + omega_cross_r\n"),
         Valid("tip_point = R @ approach + t\n"),  # a point built from a direction on purpose
         Valid("import trimesh\nn2 = trimesh.transform_points(normals, T, translate=False)\n"),
