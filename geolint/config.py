@@ -75,7 +75,11 @@ def find_config(start: Path) -> Config:
 
 
 def load_config(pyproject: Path) -> Config:
-    """Read and validate `[tool.geolint]` of one pyproject.toml (defaults when the table is absent)."""
+    """Read and validate `[tool.geolint]` of one pyproject.toml (defaults when the table is absent).
+
+    Besides the table's shape, every rule selector must name a registered rule or a prefix of one:
+    a typo in `select` would otherwise turn geolint off without a word.
+    """
     try:
         with open(pyproject, "rb") as stream:
             document = tomllib.load(stream)
@@ -88,7 +92,9 @@ def load_config(pyproject: Path) -> Config:
         return Config(source=pyproject.resolve())
     if not isinstance(table, dict):
         raise ConfigError(pyproject, "tool.geolint", "must be a table")
-    return config_from_table(table, pyproject.resolve())
+    config = config_from_table(table, pyproject.resolve())
+    _check_known_codes(table, config.source)
+    return config
 
 
 def config_from_table(table: Mapping[str, Any], source: Path | None) -> Config:
@@ -100,23 +106,31 @@ def config_from_table(table: Mapping[str, Any], source: Path | None) -> Config:
         if reader is None:
             raise ConfigError(source, raw_key, f"unknown key{_did_you_mean(key, _READERS)}")
         values[key] = reader(raw_value, source, raw_key)
+    if "extend_select" in values:  # as ruff's: added to `select` (or to the default, every rule)
+        values["select"] = values.get("select", Config.select) + values.pop("extend_select")
     return Config(**values, source=source)
 
 
 def with_overrides(
-    config: Config, *, select: tuple[str, ...] | None = None, extend_ignore: tuple[str, ...] = ()
+    config: Config,
+    *,
+    select: tuple[str, ...] | None = None,
+    extend_select: tuple[str, ...] = (),
+    extend_ignore: tuple[str, ...] = (),
 ) -> Config:
-    """The config with command-line `--select` (replaces) and `--ignore` (adds to) applied.
+    """The config with command-line `--select` (replaces), `--extend-select` and `--ignore` (add to) applied.
 
-    A malformed selector raises `UsageError` naming the option: the mistake is on the command line.
+    A malformed or unknown selector raises `UsageError` naming the option: the mistake is on the command line.
     """
-    for option, selectors in (("--select", select or ()), ("--ignore", extend_ignore)):
+    for option, selectors in (("--select", select or ()), ("--extend-select", extend_select), ("--ignore", extend_ignore)):
         for selector in selectors:
             if not SELECTOR.match(selector):
                 raise UsageError(f"{option}: invalid rule selector {selector!r} (expected e.g. GEO, GEO2, GEO201)")
+            if not _selects_a_rule(selector):
+                raise UsageError(f"{option}: {_unknown(selector)}")
     return replace(
         config,
-        select=select if select is not None else config.select,
+        select=(select if select is not None else config.select) + extend_select,
         ignore=config.ignore + extend_ignore,
     )
 
@@ -214,6 +228,7 @@ def _positive_int(value: Any, source: Path | None, key: str) -> int:
 
 _READERS: dict[str, Callable[[Any, Path | None, str], Any]] = {
     "select": _selectors,
+    "extend_select": _selectors,
     "ignore": _selectors,
     "per_file_ignores": _per_file_ignores,
     "exclude": _string_list,
@@ -226,6 +241,41 @@ _READERS: dict[str, Callable[[Any, Path | None, str], Any]] = {
     "max_file_size": _positive_int,
     "max_nesting_depth": _positive_int,
 }
+
+
+def _check_known_codes(table: Mapping[str, Any], source: Path | None) -> None:
+    """Raise `ConfigError` for a selector (or severity code) that names no registered rule (as ruff does)."""
+    for raw_key, value in table.items():
+        key = raw_key.replace("-", "_")
+        if key in ("select", "extend_select", "ignore"):
+            named = [(raw_key, selector) for selector in value]
+        elif key == "per_file_ignores":
+            named = [(f"{raw_key}.{pattern}", selector) for pattern, codes in value.items() for selector in codes]
+        elif key == "severity":
+            named = [(f"{raw_key}.{code}", code) for code in value]
+        else:
+            continue
+        for where, selector in named:
+            if not _selects_a_rule(selector):
+                raise ConfigError(source, where, _unknown(selector))
+
+
+def _known_codes() -> tuple[str, ...]:
+    from geolint.rules import all_rules  # the registry, imported only once a selector is checked
+
+    return tuple(rule.code for rule in all_rules())
+
+
+def _selects_a_rule(selector: str) -> bool:
+    return any(code.startswith(selector) for code in _known_codes())
+
+
+def _unknown(selector: str) -> str:
+    import difflib
+
+    close = difflib.get_close_matches(selector, _known_codes(), n=1)
+    hint = f"did you mean {close[0]}? " if close else ""
+    return f"unknown rule selector {selector!r}: no rule code starts with it ({hint}`geolint rules` lists them)"
 
 
 def _describe(value: Any) -> str:

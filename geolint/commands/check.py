@@ -30,6 +30,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("paths", nargs="*", type=Path, metavar="PATH", help="files or folders to lint (default: .)")
     parser.add_argument("--config", type=Path, metavar="FILE", help="use this pyproject.toml instead of the nearest one")
     parser.add_argument("--select", metavar="CODES", help="comma-separated codes or prefixes to enable (replaces the config's)")
+    parser.add_argument("--extend-select", metavar="CODES", help="comma-separated codes or prefixes to enable as well (adds to the config's)")
     parser.add_argument("--ignore", metavar="CODES", help="comma-separated codes or prefixes to disable (adds to the config's)")
     parser.add_argument("--format", choices=FORMATS, default="text", help="output format (default: text)")
     parser.add_argument("--output", type=Path, metavar="FILE", help="write findings to FILE instead of stdout")
@@ -191,6 +192,7 @@ def _config(args: argparse.Namespace, paths: Sequence[Path]) -> Config:
     return with_overrides(
         config,
         select=parse_selector_list(args.select) if args.select is not None else None,
+        extend_select=parse_selector_list(args.extend_select) if args.extend_select else (),
         extend_ignore=parse_selector_list(args.ignore) if args.ignore else (),
     )
 

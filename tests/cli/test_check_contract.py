@@ -42,6 +42,12 @@ def test_exit_zero_and_usage_errors(cli):
     assert cli("check", "--jobs", "0").returncode == 2
     bad_selector = cli("check", "--select", "E501")
     assert bad_selector.returncode == 2 and "E501" in bad_selector.stderr
+    # well-formed but naming no rule (ruff: "Unknown rule selector"): an error, never a silent pass
+    for option in ("--select", "--extend-select", "--ignore"):
+        unknown = cli("check", option, "GEO999")
+        assert unknown.returncode == 2 and unknown.stdout == "", option
+        assert f"{option}: unknown rule selector 'GEO999'" in unknown.stderr
+    assert cli("check", "--select", "GEO4").returncode == 2  # a prefix of no rule
 
 
 def test_select_and_ignore_match_prefixes(cli):
@@ -58,6 +64,8 @@ def test_select_and_ignore_match_prefixes(cli):
     assert codes("--ignore", "GEO1") == []
     # the more specific selector wins: ignore a family, keep one of its rules
     assert codes("--select", "GEO,GEO191", "--ignore", "GEO19") == ["GEO191"]
+    # --extend-select adds to the selection (the config's, or --select's)
+    assert codes("--select", "GEO190", "--extend-select", "GEO191") == ["GEO190", "GEO191"]
 
 
 def test_text_format_shows_location_source_line_and_caret(cli):

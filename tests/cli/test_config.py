@@ -81,6 +81,12 @@ def test_all_documented_keys_are_accepted_in_kebab_and_snake_case(cli):
         ('[tool.geolint.severity]\nGEO101 = "fatal"', "severity.GEO101"),
         ("extra-point-names = [\"not a name\"]", "extra-point-names"),
         ('[tool.geolint.per-file-ignores]\n"tests/*" = "GEO1"', "per-file-ignores.tests/*"),
+        # well-formed codes that name no rule: a typo must not turn geolint off in silence
+        ('select = ["GEO999"]', "select"),
+        ('extend-select = ["GEO4"]', "extend-select"),
+        ('ignore = ["GEO199"]', "ignore"),
+        ('[tool.geolint.per-file-ignores]\n"tests/*" = ["GEO55"]', "per-file-ignores.tests/*"),
+        ('[tool.geolint.severity]\nGEO999 = "warning"', "severity.GEO999"),
     ],
 )
 def test_bad_config_exits_2_naming_the_file_and_the_key(cli, table, key):
@@ -91,6 +97,16 @@ def test_bad_config_exits_2_naming_the_file_and_the_key(cli, table, key):
     assert str(pyproject.resolve()) in result.stderr
     assert f"'{key}'" in result.stderr
     assert result.stdout == ""
+
+
+def test_extend_select_adds_to_select_and_an_unknown_code_says_which(cli):
+    cli.write("pyproject.toml", '[tool.geolint]\nselect = ["GEO190"]\nextend-select = ["GEO191"]\n')
+    cli.write("mod.py", "a = bad_thing\nb = risky_thing\n")
+    assert codes(cli("check", "--format", "json")) == ["GEO190", "GEO191"]
+    cli.write("pyproject.toml", '[tool.geolint]\nselect = ["GEO999"]\n')
+    result = cli("check")
+    assert result.returncode == 2 and result.stdout == ""
+    assert "unknown rule selector 'GEO999'" in result.stderr and "All checks passed" not in result.stderr
 
 
 def test_invalid_toml_and_missing_config_file_exit_2(cli):

@@ -47,6 +47,7 @@ def test_an_opt_in_rule_runs_only_when_its_own_code_is_selected(cli_real):
     codes = lambda *args: [f["code"] for f in json.loads(cli_real("check", "--no-cache", "--format", "json", *args).stdout)]
     assert codes() == [] and codes("--select", "GEO1") == [] and codes("--select", "GEO") == []
     assert codes("--select", "GEO103") == ["GEO103"]
+    assert codes("--extend-select", "GEO103") == ["GEO103"]
     cli_real.write("pyproject.toml", '[tool.geolint]\nselect = ["GEO", "GEO103"]\n')
     assert codes() == ["GEO103"]
     listed = {rule["code"]: rule for rule in json.loads(cli_real("rules", "--format", "json").stdout)}
