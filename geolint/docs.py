@@ -25,7 +25,7 @@ def rule_doc(rule: type[RuleAttributes]) -> str:
     conventions for the rules that read names as frames."""
     doc = inspect.cleandoc(_docstring(rule)).strip()
     if rule.documents_naming:
-        from geolint.factbase.rule_support import NAMING_OPTIONS
+        from geolint.rules.fact_rule import NAMING_OPTIONS
 
         doc = f"{doc}\n\n{NAMING_OPTIONS}"
     return doc

@@ -21,6 +21,7 @@ from ast import (
     Subscript,
 )
 
+from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.model import FactBase, keyword, last_name, number
 
 SCALAR_LAST: Final = "xyzw"
@@ -531,8 +532,6 @@ def component_writes_of_parameter(facts: FactBase, stores: list[tuple[Attribute,
     parameters (`msg.x = q[0]` ... `msg.w = q[3]`), unconditionally: the parameter is read in that order.
     Returns (parameter, order, where) for each such object; only the two standard orders count (x, y, z
     permuted among themselves is an axis change, not a convention)."""
-    from geolint.rules.rotation.angle_units import _unconditional
-
     groups: dict[str, dict[str, tuple[Attribute, Subscript]]] = {}
     for target, value in stores:
         if target.attr not in _FIELD_LETTERS or not isinstance(value, Subscript):
@@ -556,7 +555,7 @@ def component_writes_of_parameter(facts: FactBase, stores: list[tuple[Attribute,
         order = "".join(positions[index] for index in range(4))
         if order not in (SCALAR_FIRST, SCALAR_LAST):
             continue
-        if not all(_unconditional(facts, facts.parent(target) or target) for target, _ in group.values()):
+        if not all(runs_unconditionally(facts, facts.parent(target) or target) for target, _ in group.values()):
             continue
         w_target, w_value = group["w"]
         owner = facts.code_of(w_target.value)

@@ -165,14 +165,14 @@ def _record_component_writes(facts: FactBase, stores: list[tuple[Attribute, ast.
 def _record_formula_reads(facts: FactBase, function: FunctionDef | AsyncFunctionDef, plain: set[str], summary: FunctionSummary) -> None:
     """A parameter whose components an unconditional textbook formula reads (`atan2(2 * (q[3] * q[2] + ...`)
     is read in that formula's order, as if handed to an API."""
-    from geolint.rules.rotation.angle_units import _unconditional
-    from geolint.rules.rotation.quaternion_formulas import formula_reads_within
+    from geolint.factbase.control_flow import runs_unconditionally
+    from geolint.factbase.quaternion_formulas import formula_reads_within
 
     for read in formula_reads_within(facts, function):
         base = read.base
         if not (isinstance(base, Name) and base.id in plain) or facts.index.scope_of(base).node is not function:
             continue
-        if _unconditional(facts, read.node):
+        if runs_unconditionally(facts, read.node):
             _add_quaternion_read(summary, summary.parameters.index(base.id), read.order, read.evidence(facts))
 
 
@@ -241,7 +241,7 @@ def _record_call(
                 if index in passed and order:
                     _add_quaternion_read(summary, passed[index], order, _chain(f"`{helper()}`", where))
             return
-    from geolint.rules.rotation.angle_units import unit_read_by
+    from geolint.factbase.angle_units import unit_read_by
 
     for index, own in passed.items():
         read = unit_read_by(facts, call, arguments[index])
@@ -254,7 +254,7 @@ def _record_call(
 
 def _record_rotation_vector(facts: FactBase, call: Call, plain: set[str], summary: FunctionSummary) -> None:
     """`from_rotation_vector(theta * axis)`: a parameter that scales a rotation vector is its angle, read in radians."""
-    from geolint.rules.rotation.angle_units import rotation_vector_factors, unit_read_by
+    from geolint.factbase.angle_units import rotation_vector_factors, unit_read_by
 
     for factor in rotation_vector_factors(facts, call):
         if isinstance(factor, Name) and factor.id in plain:
@@ -279,7 +279,7 @@ def quaternion_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str |
     """The component order `call` reads `argument` in, when it is the call's whole quaternion (scipy
     `from_quat(q)`, pybullet's orientation arguments...) and the call runs whenever its function does."""
     from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, isaac_orientation_arguments, pybullet_orientation_arguments, quaternion_argument, quaternion_order
-    from geolint.rules.rotation.angle_units import _unconditional
+    from geolint.factbase.control_flow import runs_unconditionally
 
     if any(found is argument for found in pybullet_orientation_arguments(call)):
         order: str | None = SCALAR_LAST
@@ -289,7 +289,7 @@ def quaternion_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str |
         order = quaternion_order(facts, call)
         if order is None or quaternion_argument(facts, call) is not argument:
             return None
-    return order if _unconditional(facts, call) else None
+    return order if runs_unconditionally(facts, call) else None
 
 
 def _add_quaternion_read(summary: FunctionSummary, index: int, order: str, where: str) -> None:
@@ -325,7 +325,7 @@ def _add_unit_read(summary: FunctionSummary, index: int, unit: str, where: str, 
 def _add_named_units(summary: FunctionSummary) -> None:
     """`def normalize(angle_in_degrees)`: a parameter named in a unit is read in it, unless its body
     reads it in the other unit (then nothing is known)."""
-    from geolint.rules.rotation.angle_units import name_unit
+    from geolint.factbase.angle_units import name_unit
 
     for index, name in enumerate(summary.parameters):
         unit = name_unit(name)
@@ -334,14 +334,14 @@ def _add_named_units(summary: FunctionSummary) -> None:
 
 
 def _returned_unit(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
-    from geolint.rules.rotation.angle_units import AngleUnits
+    from geolint.factbase.angle_units import AngleUnits
 
     found = _agreed([facts.shared(AngleUnits).unit_of(value) for value in returns], "unit")
     return None if found is None else (found[0].unit, found[0].evidence, any(unit.by_name for unit in found))
 
 
 def _returned_order(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
-    from geolint.rules.rotation.quaternion_flow import QuaternionFlow
+    from geolint.factbase.quaternion_orders import QuaternionFlow
 
     found = _agreed([facts.shared(QuaternionFlow).order_of(value) for value in returns], "order")
     return None if found is None else (found[0].order, found[0].evidence, all(order.batch for order in found))
@@ -352,7 +352,7 @@ def _returned_element_orders(facts: FactBase, returns: list[ast.expr]) -> dict[i
     is a tuple of one length and all of them agree on that position."""
     if not all(isinstance(value, ast.Tuple) for value in returns) or len({len(value.elts) for value in returns}) != 1:  # type: ignore[attr-defined]
         return {}
-    from geolint.rules.rotation.quaternion_flow import QuaternionFlow
+    from geolint.factbase.quaternion_orders import QuaternionFlow
 
     flow = facts.shared(QuaternionFlow)
     found: dict[int, tuple[str, str, bool]] = {}

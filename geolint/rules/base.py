@@ -100,7 +100,7 @@ class RuleAttributes:
     VALID: ClassVar[Sequence[Valid]] = ()
     INVALID: ClassVar[Sequence[Invalid]] = ()
     # Frame rules that read names as frames share one `## Options` section on naming conventions,
-    # which the documentation appends (`geolint.factbase.rule_support.NAMING_OPTIONS`).
+    # which the documentation appends (`geolint.rules.fact_rule.NAMING_OPTIONS`).
     documents_naming: ClassVar[bool] = False
 
 

@@ -380,7 +380,7 @@ def test_a_loop_over_its_own_name_ends_the_class_search():
 
     from geolint.factbase import facts_for_module
     from geolint.lint_types import Config
-    from geolint.rules.rotation.quaternion_flow import QuaternionFlow
+    from geolint.factbase.quaternion_orders import QuaternionFlow
 
     source = dedent(
         """

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import MatMul
-from geolint.factbase.rule_support import STATED, Mismatch, ProductRule, SameFrame
+from geolint.rules.fact_rule import STATED, Mismatch, ProductRule, SameFrame
 from geolint.semantic.names import NameFrames
 
 

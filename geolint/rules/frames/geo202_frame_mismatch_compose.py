@@ -6,7 +6,7 @@ from typing import Final
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import EXTRINSICS_EVIDENCE, FrameFact, MatMul
-from geolint.factbase.rule_support import STATED, Mismatch, ProductRule, SameFrame
+from geolint.rules.fact_rule import STATED, Mismatch, ProductRule, SameFrame
 from geolint.semantic.names import NameFrames
 
 

@@ -8,7 +8,7 @@ from ast import AnnAssign, Assign, Attribute, Call, Name, Subscript
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.bosdyn import frame_comparison, in_tform_words
 from geolint.factbase.model import FactBase, last_name, walk_within
-from geolint.factbase.rule_support import STATED, FactRule, Mismatch, SameFrame
+from geolint.rules.fact_rule import STATED, FactRule, Mismatch, SameFrame
 from geolint.semantic.names import NameFrames, same_frame
 
 

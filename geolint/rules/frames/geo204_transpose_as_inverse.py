@@ -11,7 +11,7 @@ from ast import AST, Attribute, BinOp, Call, MatMult, Subscript
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.model import last_name, number
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 
 
 # Methods and functions that turn a matrix into a flat buffer: the transpose only picks the

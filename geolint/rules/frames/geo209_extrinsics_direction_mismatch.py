@@ -23,7 +23,7 @@ from geolint.factbase.extrinsics import (
     is_blank_matrix,
 )
 from geolint.factbase.model import string, walk_within
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 from geolint.factbase.vocabulary import is_word_character
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf, AnyOf

@@ -38,7 +38,7 @@ from geolint.factbase.reaching import value_of
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.frames.geo209_extrinsics_direction_mismatch import TRIGGER
 

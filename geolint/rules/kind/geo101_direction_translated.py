@@ -17,7 +17,7 @@ from geolint.factbase.model import (
     string, subscript_parts, transposed_value,
 )  # fmt: skip
 from geolint.factbase.summaries import FunctionSummary
-from geolint.factbase.rule_support import FactRule, with_keyword
+from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.semantic.names import Kind as NameKind, kind_of_name
 
 

@@ -12,7 +12,7 @@ from ast import AST, Add, AnnAssign, Assign, BinOp, Call, Constant, Module, Name
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import Kind
 from geolint.factbase.model import keyword, last_name, positional_args, transposed_value
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 
 
 class PointNotTranslated(FactRule):

@@ -10,7 +10,7 @@ from ast import AST, Add, BinOp, Call, Constant, Div, FloorDiv, Mult, Name, Slic
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE, Kind
 from geolint.factbase.model import last_name, number
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 
 _COLLECTION_WORDS: Final = frozenset({"points", "pts", "vertices", "verts", "positions", "centroids", "landmarks"})
 # `delta_pos`, `pos_offset`, `displacement`: a displacement (a vector), never a point

@@ -6,14 +6,13 @@ from typing import Final
 
 import re
 
-import ast
-from ast import AST, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Module, Name, Return
+from ast import AST, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Module
 
 from geolint.rules.base import Invalid, Valid
-from geolint.algebra import Kind
 from geolint.factbase.index import ParamBinding
-from geolint.factbase.model import GEOMETRIC, last_name, transposed_value, walk_within
-from geolint.factbase.rule_support import FactRule
+from geolint.factbase.model import last_name
+from geolint.factbase.point_transforms import first_point_transform, read_outside_returns, returned_names
+from geolint.rules.fact_rule import FactRule
 from geolint.semantic.names import tokens
 
 _NORMAL_TOKENS: Final = frozenset({"normal", "normals", "nrm", "nrms"})
@@ -129,7 +128,7 @@ class NormalsLeftBehind(FactRule):
         for store in node.targets:
             if not isinstance(store, Attribute) or store.attr != "points":
                 continue
-            if _TransformFinder(self).first(node.value) is None:
+            if first_point_transform(self.facts, node.value) is None:
                 continue
             base = self.code_of(store.value)
             if not self._module_reads_normals_of(base):
@@ -159,7 +158,7 @@ class NormalsLeftBehind(FactRule):
         scope = self.facts.index.scopes.get(node)
         if scope is None:
             return
-        returned = _returned_names(scope.returns)
+        returned = returned_names(scope.returns)
         left_behind = [
             name
             for name, bindings in scope.bindings.items()
@@ -169,11 +168,11 @@ class NormalsLeftBehind(FactRule):
         ]
         if not left_behind:
             return
-        found = _TransformFinder(self, params_only=scope.bindings).first(node, body_only=True)
+        found = first_point_transform(self.facts, node, body_only=True, parameters=scope.bindings)
         if found is None:
             return
         for normals in left_behind:
-            if _uses_outside_returns(node, normals):
+            if read_outside_returns(node, normals):
                 continue
             site, points = found
             self.report(
@@ -181,72 +180,3 @@ class NormalsLeftBehind(FactRule):
                 f"points `{points}` are moved to a new frame here, but normals `{normals}` are returned unrotated",
             )
             return
-
-
-class _TransformFinder:
-    """Finds the first place where a point-like value is multiplied by a matrix or transformed."""
-
-    def __init__(self, rule: FactRule, params_only: dict | None = None) -> None:  # type: ignore[type-arg]
-        self.rule = rule
-        self.params_only = params_only
-
-    def _point(self, node: AST) -> str | None:
-        facts = self.rule.facts
-        while isinstance(node, (Attribute, Call)):
-            inner = transposed_value(node)
-            if inner is not None:
-                node = inner
-            elif isinstance(node, Call) and last_name(node.func) in ("asarray", "array") and node.args:
-                node = node.args[0]
-            else:
-                break
-        if facts.kind_of(node) != Kind.POINT:
-            return None
-        if self.params_only is not None:
-            if not isinstance(node, Name):
-                return None
-            bindings = self.params_only.get(node.id, [])
-            if not bindings or not all(isinstance(binding, ParamBinding) for binding in bindings):
-                return None
-        return self.rule.code_of(node)
-
-    def first(self, root: AST, body_only: bool = False) -> tuple[AST, str] | None:
-        """The first (in source order) product or `transform_points` call on a point inside `root`."""
-        facts = self.rule.facts
-        nodes = [root] if not body_only else []
-        nodes += sorted(walk_within(root), key=lambda n: (getattr(n, "lineno", 0), getattr(n, "col_offset", 0)))
-        for node in nodes:
-            product = facts.matmul(node)
-            if product is not None:
-                for value, matrix in ((product.left, product.right), (product.right, product.left)):
-                    points = self._point(value)
-                    if points is not None and facts.kind_of(matrix) not in GEOMETRIC:
-                        return node, points
-            if isinstance(node, Call) and last_name(node.func) == "transform_points" and node.args:
-                points = self._point(node.args[0])
-                if points is not None:
-                    return node, points
-        return None
-
-
-def _returned_names(returns: list[ast.expr]) -> set[str]:
-    names: set[str] = set()
-    for value in returns:
-        elements = value.elts if isinstance(value, (ast.Tuple, ast.List)) else [value]
-        for element in elements:
-            if isinstance(element, Name):
-                names.add(element.id)
-    return names
-
-
-def _uses_outside_returns(function: AST, name: str) -> bool:
-    """Whether `name` is read anywhere in the function's body other than directly in a `return`."""
-    stack = list(getattr(function, "body", []))
-    while stack:
-        node = stack.pop()
-        if isinstance(node, Return):
-            continue
-        if isinstance(node, Name) and node.id == name:
-            return True
-        stack.extend(ast.iter_child_nodes(node))
-    return False

@@ -14,9 +14,9 @@ from typing import AbstractSet, Final
 from geolint.algebra import FREE, Kind
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import OPERATORS, is_scalar_annotation, last_name, positional_args, string, transposed_value, walk_within
-from geolint.factbase.rule_support import FactRule
+from geolint.factbase.point_transforms import first_point_transform, read_outside_returns, returned_names
+from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.kind.geo104_normals_left_behind import _returned_names, _TransformFinder, _uses_outside_returns
 from geolint.semantic.names import KNOWN_FRAMES, NON_GEOMETRIC_TOKENS, NOT_A_FRAME, POINT_WORDS, frames_of_name, tokens
 
 # Members (attributes, dict keys) that hold positions of an object: rotated AND translated.
@@ -638,9 +638,9 @@ class FreeVectorsLeftBehind(FactRule):
         if (
             all(isinstance(binding, ParamBinding) for binding in bindings)
             and {"normal", "normals", "nrm", "nrms"} & set(tokens(vector.id))
-            and vector.id in _returned_names(scope.returns)
-            and not _uses_outside_returns(function, vector.id)
-            and _TransformFinder(self, params_only=scope.bindings).first(function, body_only=True) is not None
+            and vector.id in returned_names(scope.returns)
+            and not read_outside_returns(function, vector.id)
+            and first_point_transform(self.facts, function, body_only=True, parameters=scope.bindings) is not None
         ):
             return False  # GEO104 reports it
         return True

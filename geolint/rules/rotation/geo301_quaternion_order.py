@@ -32,10 +32,10 @@ from geolint.factbase.rotations import (
     spread_argument,
 )
 from geolint.factbase.reaching import Unpacked, value_of
-from geolint.factbase.rule_support import FactRule, with_keyword
+from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
-from geolint.rules.rotation.quaternion_formulas import formula_reads
-from geolint.rules.rotation.quaternion_flow import (
+from geolint.factbase.quaternion_formulas import formula_reads
+from geolint.factbase.quaternion_orders import (
     COMPONENTS,
     STANDARD_ORDERS,
     QuaternionFlow,

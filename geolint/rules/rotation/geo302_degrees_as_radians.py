@@ -32,10 +32,10 @@ from ast import (
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.model import keyword, last_name, number, positional_args, string
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
-from geolint.factbase.rule_support import FactRule, with_keyword
+from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.rotation.angle_units import (
+from geolint.factbase.angle_units import (
     DEGREE_CONSUMER_NAMES,
     DEGREES,
     RADIANS,
@@ -47,9 +47,8 @@ from geolint.rules.rotation.angle_units import (
     may_read_radians,
     name_unit,
     radian_arguments,
-    report_hand_conversion_of_converted,
-    wrong_unit_passed,
 )
+from geolint.rules.rotation.angle_findings import report_hand_conversion_of_converted, wrong_unit_passed
 
 _TWO_PI: Final = 2 * math.pi
 # `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate

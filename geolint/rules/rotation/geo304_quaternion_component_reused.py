@@ -15,10 +15,10 @@ import string
 
 from geolint.factbase.model import replace_span, subscript_parts
 from geolint.factbase.rotations import PYQUATERNION_CLASSES, PYQUATERNION_RETURNS_QUATERNION, quaternion_argument, quaternion_order
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 from geolint.factbase.vocabulary import any_match_at
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.rotation.quaternion_flow import COMPONENTS, same_base, unwrapped_scalar
+from geolint.factbase.quaternion_orders import COMPONENTS, same_base, unwrapped_scalar
 from geolint.rules.triggers import AllOf
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness

@@ -10,17 +10,15 @@ import re
 
 from geolint.factbase.model import keyword, positional_args, string
 from geolint.factbase.rotations import is_scipy_rotation_method
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
-from geolint.rules.rotation.angle_units import (
+from geolint.factbase.angle_units import (
     DEGREES,
     RADIANS,
     AngleUnits,
     degree_arguments,
-    report_conversion_of_converted,
-    report_hand_conversion_of_converted,
-    wrong_unit_passed,
 )
+from geolint.rules.rotation.angle_findings import report_conversion_of_converted, report_hand_conversion_of_converted, wrong_unit_passed
 from geolint.rules.triggers import AllOf
 
 

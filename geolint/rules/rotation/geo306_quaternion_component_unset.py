@@ -22,7 +22,7 @@ from geolint.factbase.index import FUNCTION_NODES
 from geolint.factbase.messages import MessageTypes
 from geolint.factbase.model import FactBase, dotted_name, number, walk_within
 from geolint.factbase.rotations import IDENTITY_NAME
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
 

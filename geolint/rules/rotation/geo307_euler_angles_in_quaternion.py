@@ -20,7 +20,7 @@ from geolint.factbase.index import Scope, UnpackBinding
 from geolint.factbase.messages import MessageTypes
 from geolint.factbase.model import dotted_name, last_name, number, positional_args, walk_within
 from geolint.factbase.rotations import PYBULLET_QUATERNION_CALLS, TRIG_FUNCTIONS, is_scipy_rotation_value, pybullet_quaternion_values
-from geolint.factbase.rule_support import FactRule
+from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
 

@@ -26,42 +26,24 @@ import re
 from ast import (
     AST,
     Add,
-    AnnAssign,
     Assign,
-    AsyncFor,
-    AsyncFunctionDef,
-    AsyncWith,
     Attribute,
-    AugAssign,
     BinOp,
-    BoolOp,
     Call,
     ClassDef,
     Constant,
     Div,
-    Expr,
-    For,
     FunctionDef,
     Global,
-    If,
-    IfExp,
-    Lambda,
     Load,
-    Match,
-    Module,
     Mult,
     Name,
-    Raise,
-    Return,
     Starred,
     Sub,
     Subscript,
-    Try,
     UAdd,
     UnaryOp,
     USub,
-    While,
-    With,
 )
 from collections import Counter
 from dataclasses import dataclass
@@ -75,6 +57,7 @@ from geolint.factbase.angles import (
     RETURNED_EULER_METHODS,
     ROTATION_VECTOR_READERS,
 )
+from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.model import (
@@ -194,7 +177,7 @@ class AngleUnits:
             return self._unit_of_name(node)
         if isinstance(node, Attribute):
             stated = name_unit(node.attr)
-            by_name = Unit(stated, f"the name `{node.attr}` says {_word(stated)}", True) if stated else None
+            by_name = Unit(stated, f"the name `{node.attr}` says {unit_word(stated)}", True) if stated else None
             literal = self.bound_literal(node)
             if literal is not None:
                 return self._agree(by_name, [literal])
@@ -232,7 +215,7 @@ class AngleUnits:
         if isinstance(node.op, (Mult, Div)):
             converted = self.converts_by_hand(node)
             if converted is not None:
-                return Unit(converted[0], f"`{self.facts.code_of(node)}` converts to {_word(converted[0])}", False)
+                return Unit(converted[0], f"`{self.facts.code_of(node)}` converts to {unit_word(converted[0])}", False)
             # halving or scaling by a plain number keeps the unit; anything else may convert it
             if number(node.right) is not None and not _is_conversion_factor(number(node.right)):
                 return self.unit_of(node.left)
@@ -254,12 +237,12 @@ class AngleUnits:
         facts = self.facts
         converted = self.converts(call)
         if converted is not None:
-            return Unit(converted, f"`{facts.code_of(call.func)}` returns {_word(converted)}", False)
+            return Unit(converted, f"`{facts.code_of(call.func)}` returns {unit_word(converted)}", False)
         if facts.may_have_summary(call):  # a project helper whose every `return` agrees on a unit
             summary = facts.function_summary(call)
             if summary is not None and summary.angle_unit is not None:
                 unit, evidence, by_name = summary.angle_unit
-                return Unit(unit, f"`{facts.code_of(call.func)}` returns {_word(unit)}: {evidence}", by_name)
+                return Unit(unit, f"`{facts.code_of(call.func)}` returns {unit_word(unit)}: {evidence}", by_name)
         return self._unit_of_library_call(call)
 
     def _unit_of_library_call(self, call: Call) -> Unit | None:
@@ -267,18 +250,18 @@ class AngleUnits:
         facts = self.facts
         converted = self.converts(call)
         if converted is not None:
-            return Unit(converted, f"`{facts.code_of(call.func)}` returns {_word(converted)}", False)
+            return Unit(converted, f"`{facts.code_of(call.func)}` returns {unit_word(converted)}", False)
         qualified = facts.qualified_name(call.func) or ""
         module, _, name = qualified.rpartition(".")
         if module in _INVERSE_TRIG_MODULES and name in _INVERSE_TRIG:
             return Unit(RADIANS, f"`{facts.code_of(call.func)}` returns radians", False)
         returned = RETURNED_ANGLES.get(qualified)
         if returned is not None:
-            return Unit(returned, f"`{qualified}` returns its angles in {_word(returned)}", False)
+            return Unit(returned, f"`{qualified}` returns its angles in {unit_word(returned)}", False)
         method = EULER_METHOD_NAMES.get(call.func.attr) if isinstance(call.func, Attribute) and not call.args else None
         if method is not None:  # `imu.getRollPitchYaw()`: matched by its camelCase name on any receiver
             returned = RETURNED_EULER_METHODS[method][0]
-            return Unit(returned, f"`{method}` returns its angles in {_word(returned)}", False)
+            return Unit(returned, f"`{method}` returns its angles in {unit_word(returned)}", False)
         if isinstance(call.func, Attribute) and call.func.attr in ("as_euler", "magnitude") and not call.keywords:
             from geolint.factbase.rotations import is_scipy_rotation_value
 
@@ -293,7 +276,7 @@ class AngleUnits:
     def _unit_of_name(self, node: Name) -> Unit | None:
         facts = self.facts
         stated = name_unit(node.id)
-        by_name = Unit(stated, f"the name `{node.id}` says {_word(stated)}", True) if stated else None
+        by_name = Unit(stated, f"the name `{node.id}` says {unit_word(stated)}", True) if stated else None
         bound = facts.bindings(node) or []
         scope = facts.index.scope_of(node)
         if node.id in scope.augmented:
@@ -526,34 +509,7 @@ def _is_degrees_per_radian(value: float) -> bool:
     return abs(abs(value) - 57.29578) < 1e-2
 
 
-def report_hand_conversion_of_converted(rule, node: BinOp, into: str, units: AngleUnits) -> None:  # type: ignore[no-untyped-def]
-    """`yaw * 180 / np.pi` (into degrees) or `yaw * np.pi / 180` (into radians) written by hand, of a
-    value already in that unit: the twin of `np.degrees(yaw_deg)` / `np.radians(yaw)`."""
-    if not isinstance(node.op, (Mult, Div)):
-        return
-    converted = units.converts_by_hand(node)
-    if converted is not None and converted[0] == into:
-        report_conversion_of_converted(rule, node, rule.code_of(node), converted[1], into, units)
-
-
-def report_conversion_of_converted(rule, node: ast.expr, conversion: str, argument: ast.expr, into: str, units: AngleUnits) -> None:  # type: ignore[no-untyped-def]
-    """`conversion` (into unit `into`, `np.radians(x)` or `x * 180 / pi`) applied to `argument`, reported
-    on `rule` (GEO302, GEO305) when the argument is already in that unit."""
-    unit = units.unit_of(argument)
-    if unit is None or unit.unit != into:
-        return
-    rule.report(
-        node,
-        f"`{conversion}` converts {_word(RADIANS if into == DEGREES else DEGREES)} to {_word(into)}, but "
-        f"`{rule.code_of(argument)}` is already in {_word(into)} ({unit.evidence})",
-        replacement=rule.facts.index.segment(argument) or None,
-        applicability="unsafe",
-        fix_description="drop the conversion",
-        evidence=(unit.evidence,),
-    )
-
-
-def _word(unit: str | None) -> str:
+def unit_word(unit: str | None) -> str:
     return "degrees" if unit == DEGREES else "radians"
 
 
@@ -655,7 +611,7 @@ def unit_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str | None:
     a condition of its function): RADIANS for a radian API (`np.cos(theta)`, `from_euler` without
     `degrees=True`), DEGREES for a conversion from degrees (`np.radians(a)`) or `from_euler(...,
     degrees=True)` or a library call in `DEGREE_CONSUMERS` (`glRotatef(a, 0, 1, 0)`); None otherwise."""
-    if not _unconditional(facts, call):
+    if not runs_unconditionally(facts, call):
         return None
     if any(element is argument for found in radian_arguments(facts, call) or () for element in _angle_elements(found)):
         return RADIANS
@@ -692,55 +648,6 @@ def _angle_elements(node: ast.expr) -> list[ast.expr]:
     if isinstance(node, (ast.List, ast.Tuple)):
         return list(node.elts)
     return [node]
-
-
-_Block = FunctionDef | AsyncFunctionDef | With | AsyncWith  # a body that may be left early
-
-# a loop's body may run no time at all, like a branch's
-_BRANCHES: Final = (
-    If, IfExp, Try, getattr(ast, "TryStar", Try), While, For, AsyncFor, BoolOp,
-    ast.comprehension, Match, Lambda,
-)  # fmt: skip
-
-
-def _unconditional(facts: FactBase, node: AST) -> bool:
-    """No branch between `node` and its function, and no statement before it, in the function's body
-    or in the body of a `with` around it, that may leave early (`if degrees: return ...`): it runs
-    whenever the function does."""
-    current = facts.parent(node)
-    statement = node
-    blocks: list[tuple[_Block, AST]] = []  # each block around `node` with its statement that holds `node`
-    while current is not None and not isinstance(current, (FunctionDef, AsyncFunctionDef, Module)):
-        if isinstance(current, _BRANCHES):
-            return False
-        if isinstance(current, (With, AsyncWith)) and statement in current.body:
-            blocks.append((current, statement))  # (not in its items, which run before any exit of its body)
-        statement = current
-        current = facts.parent(current)
-    if not isinstance(current, (FunctionDef, AsyncFunctionDef)):
-        return True
-    blocks.append((current, statement))
-    return all(getattr(held, "lineno", 0) <= _first_early_exit(facts, block) for block, held in blocks)
-
-
-_DEFINITIONS: Final = (FunctionDef, AsyncFunctionDef, ClassDef)
-
-
-def _first_early_exit(facts: FactBase, block: _Block) -> int:
-    """The last line of the first statement of a block's body (a function's, a `with`'s) that holds a
-    `return` or `raise` under a branch or a nested block (statements after it may not run); past the
-    end when there is none."""
-    return facts.memoised("early-exit", block, lambda: _early_exit_line(block.body))
-
-
-def _early_exit_line(body: list[ast.stmt]) -> int:
-    for statement in body:
-        if isinstance(statement, (Return, Raise, Expr, Assign, AugAssign, AnnAssign, *_DEFINITIONS)):
-            continue  # straight-line statements (a `return` of the block itself ends it for every path alike)
-        for inner in walk_within(statement):
-            if isinstance(inner, (Return, Raise)):
-                return statement.end_lineno or statement.lineno
-    return 1 << 30
 
 
 # the expressions `AngleUnits.unit_of` can know a unit of; for any other (a constant, a list, a
@@ -804,9 +711,9 @@ def _summary_reads(facts: FactBase, call: Call, unit: str, summary: FunctionSumm
         if read == unit and index < len(call.args):
             parameter = summary.parameters[index]
             if by_name and not where:
-                how = f"`{helper}` names its parameter `{parameter}` in {_word(unit)}"
+                how = f"`{helper}` names its parameter `{parameter}` in {unit_word(unit)}"
             else:
-                how = f"`{helper}` passes its parameter `{parameter}` to {where}, which reads {_word(unit)}"
+                how = f"`{helper}` passes its parameter `{parameter}` to {where}, which reads {unit_word(unit)}"
             found.append((call.args[index], how, by_name))
     return found
 
@@ -845,7 +752,7 @@ def _constructor_reads_of(facts: FactBase, call: Call, unit: str, units: AngleUn
             argument = getattr(keyword(call, parameter), "value", None)
         given = None if argument is None else units.unit_of(argument)
         if argument is not None and given is not None and given.unit == wrong:
-            how = f"`{facts.code_of(call.func)}` stores its parameter `{parameter}` for {where}, which reads {_word(unit)}"
+            how = f"`{facts.code_of(call.func)}` stores its parameter `{parameter}` for {where}, which reads {unit_word(unit)}"
             found.append((argument, how, False))
     return found
 
@@ -907,7 +814,7 @@ def _constructor_reads(facts: FactBase, cls: ClassDef) -> tuple[tuple[str, ...],
         target = node.targets[0]
         if not (isinstance(target, Attribute) and isinstance(target.value, Name) and target.value.id == "self"):
             continue
-        if [store for store in stores.get(target.attr, ()) if enclosing_class(facts, store) is cls] == [target] and _unconditional(facts, node.value):
+        if [store for store in stores.get(target.attr, ()) if enclosing_class(facts, store) is cls] == [target] and runs_unconditionally(facts, node.value):
             held[target.attr] = parameters.index(node.value.id)
     found: dict[int, tuple[str, str]] = {}
     conflicting: set[int] = set()
@@ -952,17 +859,3 @@ def _self_attributes(facts: FactBase) -> tuple[dict[str, list[Attribute]], dict[
         return loads, stores
 
     return facts.module_fact("self attributes", collect)
-
-
-def wrong_unit_passed(
-    facts: FactBase, call: Call, read: str, units: AngleUnits
-) -> tuple[ast.expr, str, tuple[str, str]] | None:
-    """The first argument of a call to a project helper that reads `read` (`helper_reads`) whose
-    value is in the other unit: (argument, message, evidence). A name against a name is too weak."""
-    given = RADIANS if read == DEGREES else DEGREES
-    for argument, how, by_name in helper_reads(facts, call, read, units):
-        unit = units.unit_of(argument)
-        if unit is not None and unit.unit == given and not (by_name and unit.by_name):
-            message = f"{how}, but `{facts.code_of(argument)}` is in {_word(given)} ({unit.evidence})"
-            return argument, message, (how, unit.evidence)
-    return None

@@ -40,9 +40,9 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from geolint.factbase.model import FactBase, last_name, number
+from geolint.factbase.quaternion_orders import component_index
 from geolint.factbase.reaching import Unpacked, value_of
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST
-from geolint.rules.rotation.quaternion_flow import component_index
 
 Monomial = tuple[int, ...]  # sorted component indices (or letters' positions in "wxyz" for templates)
 Polynomial = dict[Monomial, Fraction]
