@@ -16,24 +16,27 @@ from mypy.plugin import CheckerPluginInterface
 from mypy.subtypes import is_same_type
 from mypy.types import AnyType, Instance, ProperType, Type, UnionType, get_proper_type
 
+from geolint.algebra import Kind
 from geolint.mypy import frame_names, fullnames as names
 
 RUNTIME = "runtime"
 ARRAY = "array"
 
-# kind names shared by both families; the algebra (`algebra`) is written once in these terms
-POINT = "point"
-VECTOR = "vector"
-DIRECTION = "direction"
-TRANSFORM = "transform"
-ROTATION = "rotation"
-TRANSLATION = "translation"
-HOMOGENEOUS_POINT = "homogeneous point"
-HOMOGENEOUS_VECTOR = "homogeneous vector"
+# Kind names shared by both families: `geolint.algebra.Kind`'s, so the plugin and the shared table speak of
+# one vocabulary (`algebra.shared_kind` reads them back as `Kind`).
+POINT = Kind.POINT.value
+VECTOR = Kind.VECTOR.value
+DIRECTION = Kind.DIRECTION.value
+TRANSFORM = Kind.TRANSFORM.value
+ROTATION = Kind.ROTATION.value
+TRANSLATION = Kind.TRANSLATION.value
+HOMOGENEOUS_POINT = Kind.HOMOGENEOUS_POINT.value
+HOMOGENEOUS_VECTOR = Kind.HOMOGENEOUS_VECTOR.value
+TWIST = Kind.TWIST.value
+WRENCH = Kind.WRENCH.value
+# Carriers only the plugin has (the table has no kind for them; their rules live in the plugin's `algebra`).
 VECTOR_WITH_W1 = "vector with w=1"
 CLOUD = "point cloud"
-TWIST = "twist"
-WRENCH = "wrench"
 COVARIANCE = "covariance"
 ORIGIN_OFFSET = "origin offset"  # (in, from, to): what R @ t gives in a hand-written composition
 NEGATED_ROTATION = "negated rotation"  # -R: only its product with a translation means something

@@ -19,21 +19,14 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from enum import Enum
 from functools import lru_cache
 from typing import Final, Literal
 
+# The one kind vocabulary. A name states POINT, TRANSFORM, ROTATION or DIRECTION; DIRECTION stands for
+# every free vector a name can state (`normal`, `axis`, `velocity`): a name cannot tell a unit vector from
+# a velocity, and both only rotate.
+from geolint.algebra import Kind
 from geolint.lint_types import Config
-
-
-class Kind(str, Enum):
-    """The geometric kind a value has, as far as the linter can tell."""
-
-    POINT = "point"  # a location: rotates AND translates (homogeneous w = 1)
-    DIRECTION = "direction"  # a free vector, normal, axis, velocity: rotates only (w = 0)
-    TRANSFORM = "transform"  # a rigid transform / pose (maps points between frames)
-    ROTATION = "rotation"  # a rotation only
-
 
 Operator = Literal["transform", "rotation", "unknown"]
 
