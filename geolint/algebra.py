@@ -16,6 +16,10 @@ Decisions worth stating:
 - A DIRECTION scaled, or added to another free vector, is a plain VECTOR.
 - ``R @ x`` keeps the kind of x (a point rotated about the origin is still a point); ``R @ x + t``
   is a rigid motion: fine for a point, an error for a free vector (it must not be translated).
+  Rows (``x @ R.T``) are rotated the same way.
+- Two rotations compose to a rotation; a rigid transform composed with a rotation or a transform, on
+  either side, is a rigid transform (a rotation is one without translation).
+- ``x / |x|`` is a unit DIRECTION, whatever located value x was (for a point: its direction from the origin).
 - ``T @ [x; w]``: w = 1 marks a point, w = 0 a free vector; a free vector with w = 1 is translated
   (error), a point with w = 0 loses its translation (error).
 - Affine combinations ``sum(w_i p_i)`` of points are a POINT when the weights sum to 1 (midpoints,
@@ -99,6 +103,8 @@ _APPLY: Final[dict[tuple[Kind, Kind], Kind]] = {
     (Kind.TRANSFORM, Kind.HOMOGENEOUS_POINT): Kind.HOMOGENEOUS_POINT,
     (Kind.TRANSFORM, Kind.HOMOGENEOUS_VECTOR): Kind.HOMOGENEOUS_VECTOR,
     (Kind.TRANSFORM, Kind.TRANSFORM): Kind.TRANSFORM,
+    (Kind.ROTATION, Kind.TRANSFORM): Kind.TRANSFORM,
+    (Kind.TRANSFORM, Kind.ROTATION): Kind.TRANSFORM,
     (Kind.TRANSFORM, Kind.TWIST): Kind.TWIST,  # the adjoint
     (Kind.TRANSFORM, Kind.WRENCH): Kind.WRENCH,
 }
@@ -108,6 +114,17 @@ def apply(operator: Kind, value: Kind) -> Outcome | None:
     """``operator @ value`` (column vectors): rotate, transform, or compose."""
     result = _APPLY.get((operator, value))
     return None if result is None else Outcome(result)
+
+
+def apply_rows(value: Kind, operator: Kind) -> Outcome | None:
+    """``x @ operator`` with x as rows (``(N, 3) @ (3, 3)``): ``(operator.T @ x.T).T``, so what `apply` makes of
+    x under the operator's transpose. A rigid transform's transpose is not its inverse: None."""
+    if value not in LOCATED:
+        return None
+    transposed = transpose(operator)
+    if transposed is None or transposed.problem is not None:
+        return None
+    return apply(transposed.kind, value)
 
 
 def rigid_apply(value: Kind) -> Outcome | None:
@@ -131,16 +148,27 @@ def rotate_only(value: Kind) -> Outcome | None:
 # --- homogeneous coordinates ---------------------------------------------------------------
 
 
-def homogenize(value: Kind, w: int) -> Outcome | None:
+def marked_by_w(w: float) -> Kind | None:
+    """The kind a homogeneous w marks: 1 a point (a transform translates it), 0 a free vector (it is only
+    rotated); None for any other w."""
+    if w == 1:
+        return Kind.POINT
+    if w == 0:
+        return Kind.VECTOR
+    return None
+
+
+def homogenize(value: Kind, w: float) -> Outcome | None:
     """``[x; w]``: w = 1 for a point, w = 0 for a free vector; the other pairings are errors."""
-    if w not in (0, 1):
+    marked = marked_by_w(w)
+    if marked is None:
         return None
     if value == Kind.POINT:
-        if w == 1:
+        if marked == Kind.POINT:
             return Outcome(Kind.HOMOGENEOUS_POINT)
         return Outcome(Kind.HOMOGENEOUS_VECTOR, Problem.POINT_NOT_TRANSLATED)
     if value in FREE:
-        if w == 0:
+        if marked in FREE:
             return Outcome(Kind.HOMOGENEOUS_VECTOR)
         return Outcome(Kind.HOMOGENEOUS_POINT, Problem.DIRECTION_TRANSLATED)
     return None
@@ -183,6 +211,8 @@ def add(left: Kind, right: Kind) -> Outcome | None:
 
 def sub(left: Kind, right: Kind) -> Outcome | None:
     """``left - right``: point - point is a vector, point - vector a point, vector - point an error."""
+    if right == Kind.TRANSLATION:
+        return _minus_translation(left)
     if left == Kind.POINT and right == Kind.POINT:
         return Outcome(Kind.VECTOR)
     if left == Kind.POINT and right in FREE:
@@ -191,12 +221,18 @@ def sub(left: Kind, right: Kind) -> Outcome | None:
         return Outcome(Kind.UNKNOWN, Problem.VECTOR_MINUS_POINT)
     if left in FREE and right in FREE:
         return Outcome(Kind.VECTOR)
-    if left == Kind.POINT and right == Kind.TRANSLATION:
-        return Outcome(Kind.POINT)
-    if left in FREE and right == Kind.TRANSLATION:
-        return Outcome(left if left == Kind.VECTOR else Kind.VECTOR, Problem.DIRECTION_TRANSLATED)
     if left in SPATIAL and right in SPATIAL:
         return Outcome(left) if left == right else Outcome(Kind.UNKNOWN, Problem.KIND_MISMATCH)
+    return None
+
+
+def _minus_translation(left: Kind) -> Outcome | None:
+    """``left - t``: a point moved back; a free vector must not be translated; two translations differ by the
+    translation between their origins (as `add` chains them)."""
+    if left in (Kind.POINT, Kind.TRANSLATION):
+        return Outcome(left)
+    if left in FREE:
+        return Outcome(Kind.VECTOR, Problem.DIRECTION_TRANSLATED)
     return None
 
 
@@ -217,6 +253,14 @@ def scale(value: Kind) -> Outcome | None:
         return Outcome(Kind.VECTOR)
     if value in SPATIAL or value == Kind.TRANSLATION:
         return Outcome(value)
+    return None
+
+
+def normalize(value: Kind) -> Outcome | None:
+    """``x / |x|``: a unit direction, for any located value x (UNKNOWN included: the division says it);
+    normalising an operator (a quaternion) is not this algebra's business."""
+    if value in LOCATED or value == Kind.UNKNOWN:
+        return Outcome(Kind.DIRECTION)
     return None
 
 
@@ -295,15 +339,18 @@ class FrameOutcome:
 
 
 def _differ(a: str | None, b: str | None, same: object = None) -> bool:
+    """Whether two frames are known to differ. `same` answers True, False, or None when the two names cannot
+    be compared (then they are not known to differ)."""
     if a is None or b is None:
         return False
     if callable(same):
-        return not same(a, b)
+        return same(a, b) is False
     return a != b
 
 
 def compose_frames(left: Frames, right: Frames, same: object = None) -> FrameOutcome:
-    """``X_ab @ X_bc = X_ac``: the inner frames must agree. `same` compares two frame names (default ==)."""
+    """``X_ab @ X_bc = X_ac``: the inner frames must agree. `same` compares two frame names (default ==;
+    True, False, or None for names it cannot compare)."""
     result = Frames(dst=left.dst, src=right.src)
     if _differ(left.src, right.dst, same):
         return FrameOutcome(result, Problem.FRAME_MISMATCH, (left.src, right.dst))  # type: ignore[arg-type]

@@ -30,6 +30,7 @@ import re
 from dataclasses import dataclass
 from typing import Callable, Final, Iterator, Literal, TypeVar
 
+from geolint import algebra
 from geolint.algebra import FREE, Kind
 from geolint.factbase import summaries
 from geolint.factbase import vocabulary as vocab
@@ -47,11 +48,11 @@ from geolint.factbase.index import (
 )
 from geolint.lint_types import Config
 from geolint.semantic.names import (
-    Kind as NameKind,
     NameFrames,
     frames_of_name,
     kind_of_name,
     order_dependent,
+    same_frame,
     states_geometry,
 )
 
@@ -66,12 +67,6 @@ GEOMETRIC: Final = frozenset({Kind.POINT, Kind.VECTOR, Kind.DIRECTION})
 EXTRINSICS_EVIDENCE: Final = "states camera extrinsics"  # the evidence of a name read by its extrinsics word alone
 RELATIVE_WORDS: Final = frozenset({"rel", "relative", "delta", "diff", "residual", "incr", "increment", "update", "correction", "corr"})
 OPERATORS: Final = frozenset({Kind.TRANSFORM, Kind.ROTATION})
-_NAME_KIND: Final = {
-    NameKind.POINT: Kind.POINT,
-    NameKind.DIRECTION: Kind.DIRECTION,
-    NameKind.TRANSFORM: Kind.TRANSFORM,
-    NameKind.ROTATION: Kind.ROTATION,
-}
 _MAX_DEPTH: Final = 60
 _MAX_REEXPORTS: Final = 3  # package `__init__` modules followed to the module that defines a helper
 _MISSING: Final = object()
@@ -212,6 +207,12 @@ def transposed_value(node: AST) -> ast.expr | None:
     if is_transpose(node):
         return node.value if isinstance(node, Attribute) else node.func.value  # type: ignore[attr-defined,no-any-return]
     return None
+
+
+def valid_kind(outcome: algebra.Outcome | None) -> Kind | None:
+    """The kind `geolint.algebra` gives an operation that is valid geometry; None for one it does not judge,
+    and for an invalid one (`p + q`: a rule reports it, and its result is no evidence of a kind)."""
+    return outcome.kind if outcome is not None and outcome.problem is None else None
 
 
 class FactBase:
@@ -456,7 +457,7 @@ class FactBase:
             return None
         if isinstance(node, UnaryOp) and isinstance(node.op, USub):
             kind = self.kind_of(node.operand)
-            return kind if kind in FREE else None
+            return None if kind is None else valid_kind(algebra.negate(kind))
         if isinstance(node, (ast.List, ast.Tuple)) and _origin_and_axis_tips(node):
             return Kind.POINT
         if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 3:  # `[v.x, v.y, v.z]` is what v is
@@ -469,8 +470,7 @@ class FactBase:
         return None
 
     def _name_kind(self, name: str) -> Kind | None:
-        kind = kind_of_name(name, self.config)
-        return None if kind is None else _NAME_KIND[kind]
+        return kind_of_name(name, self.config)
 
     def _kind_of_self_attribute(self, attr: str) -> Kind | None:
         """`self.x`: the kind every `self.x = value` of the module agrees on."""
@@ -481,50 +481,42 @@ class FactBase:
         return kinds.pop() if len(kinds) == 1 else None
 
     def _kind_of_binary(self, node: BinOp) -> Kind | None:
+        """What `geolint.algebra` makes of the operands' kinds. An operand of no known kind next to one of a
+        known kind is read as the scalar of `*` and `/`; a division by a norm normalises."""
         op = node.op
         if isinstance(op, MatMult):
             return self._kind_of_product(node)
         left, right = self.kind_of(node.left), self.kind_of(node.right)
-        if isinstance(op, Div):
-            if self.is_norm_call(node.right):
-                return Kind.DIRECTION
-            return Kind.DIRECTION if left in FREE and right is None else None
-        if isinstance(op, Mult):
-            if left in FREE and right is None and not self._is_operator_expr(node.right):
-                return left
-            if right in FREE and left is None and not self._is_operator_expr(node.left):
-                return right
+        if isinstance(op, Div) and self.is_norm_call(node.right):
+            return valid_kind(algebra.normalize(left or Kind.UNKNOWN))
+        if isinstance(op, (Mult, Div)):
+            if left is not None and right is None:
+                return valid_kind(algebra.scale(left))
+            if right is not None and left is None and isinstance(op, Mult):
+                return valid_kind(algebra.scale(right))
+            return None
+        if left is None or right is None:
             return None
         if isinstance(op, Sub):
-            if left == Kind.POINT and right == Kind.POINT:
-                return Kind.VECTOR  # algebra.sub: a displacement
-            if left == Kind.POINT and right in FREE:
-                return Kind.POINT
-            if left in FREE and right in FREE:
-                return Kind.VECTOR if Kind.VECTOR in (left, right) else Kind.DIRECTION
-            return None
+            return valid_kind(algebra.sub(left, right))
         if isinstance(op, Add):
-            if left == Kind.POINT and right in FREE or right == Kind.POINT and left in FREE:
-                return Kind.POINT
-            if left in FREE and right in FREE:
-                return Kind.VECTOR if Kind.VECTOR in (left, right) else Kind.DIRECTION
+            return valid_kind(algebra.add(left, right))
         return None
-
-    def _is_operator_expr(self, node: AST) -> bool:
-        return self.kind_of(node) in OPERATORS
 
     def _kind_of_product(self, node: AST) -> Kind | None:
         product = self.matmul(node)
         if product is None:
             return None
         left, right = self.kind_of(product.left), self.kind_of(product.right)
-        if left in OPERATORS and right in OPERATORS:
-            return Kind.ROTATION if left == right == Kind.ROTATION else Kind.TRANSFORM
-        if left == Kind.ROTATION and right in GEOMETRIC:  # algebra.apply: a rotation keeps the kind
-            return right
-        if right == Kind.ROTATION and left in GEOMETRIC:
-            return left
-        return None
+        if left is None or right is None:
+            return None
+        if left == Kind.TRANSFORM and right not in OPERATORS:
+            # a 4x4 matrix reaches homogeneous 4-vectors only (`homogeneous` reads those); the table's
+            # `T @ p` is the runtime's Transform, which a kind alone does not tell from a matrix
+            return None
+        if left in OPERATORS:
+            return valid_kind(algebra.apply(left, right))
+        return valid_kind(algebra.apply_rows(left, right))
 
     def _kind_of_call(self, node: Call) -> Kind | None:
         func = node.func
@@ -1057,26 +1049,31 @@ class FactBase:
             return None
         left, right = left_fact.frames, right_fact.frames
         evidence = left_fact.evidence + right_fact.evidence
-        from geolint.semantic.names import same_frame
-
         # a result is declared when the operands its frames come from are
         if left.is_operator and right.is_operator:
-            if same_frame(left.src, right.dst) is True:
-                operator: Literal["rotation", "transform"] = "rotation" if left.operator == right.operator == "rotation" else "transform"
-                declared = left_fact.declared and right_fact.declared
-                return FrameFact(NameFrames(dst=left.dst, src=right.src, operator=operator), evidence, declared)
-            return None
+            composed = algebra.compose_frames(_algebra_frames(left), _algebra_frames(right), same=_known_same)
+            if composed.problem is not None:
+                return None
+            declared = left_fact.declared and right_fact.declared
+            return FrameFact(NameFrames(dst=composed.frames.dst, src=composed.frames.src, operator=_composed_operator(left, right)), evidence, declared)
         if left.is_operator and right.frame is not None:
-            return FrameFact(NameFrames(frame=left.dst), evidence, left_fact.declared)
+            applied = algebra.apply_frames(_algebra_frames(left), _algebra_frames(right)).frames
+            return FrameFact(NameFrames(frame=applied.frame), evidence, left_fact.declared)
         if right.is_operator and left.frame is not None:
             # row vectors: `x @ M` applies M.T
-            return FrameFact(NameFrames(frame=right.src), evidence, right_fact.declared)
+            applied = algebra.apply_frames(_algebra_frames(right).inverted(), _algebra_frames(left)).frames
+            return FrameFact(NameFrames(frame=applied.frame), evidence, right_fact.declared)
         return None
 
     # -- homogeneous coordinates ---------------------------------------------------------------
     def homogeneous(self, node: AST) -> Homogeneous | None:
         """The homogeneous construction `node` is (directly, or through a variable), or None."""
         return self._cached("homog", node, FactBase._homogeneous)
+
+    def homogenized(self, homogeneous: Homogeneous) -> algebra.Outcome | None:
+        """What `algebra.homogenize` makes of a construction `[x; w]` from x's kind (None: x's kind is unknown)."""
+        kind = self.kind_of(homogeneous.inner)
+        return None if kind is None else algebra.homogenize(kind, homogeneous.w)
 
     def homogeneous_built_by(self, node: AST) -> Homogeneous | None:
         """The homogeneous value whose construction is exactly `node` (including an `np.ones(4)`
@@ -1326,6 +1323,24 @@ class FactBase:
                 return None
         codes = {ast.dump(base) for base in bases}
         return bases[0] if len(codes) == 1 else None
+
+
+def _algebra_frames(frames: NameFrames) -> algebra.Frames:
+    return algebra.Frames(dst=frames.dst, src=frames.src, frame=frames.frame)
+
+
+def _known_same(first: str | None, second: str | None) -> bool:
+    """Frames a composition joins: the same by `same_frame`; two it cannot compare join nothing."""
+    return same_frame(first, second) is True
+
+
+_OPERATOR_KINDS: Final = {"rotation": Kind.ROTATION, "transform": Kind.TRANSFORM}
+
+
+def _composed_operator(left: NameFrames, right: NameFrames) -> Literal["rotation", "transform"]:
+    """What `algebra.apply` makes of two composed operators; one of unknown size composes as a transform."""
+    kinds = [_OPERATOR_KINDS.get(frames.operator or "", Kind.TRANSFORM) for frames in (left, right)]
+    return "rotation" if valid_kind(algebra.apply(*kinds)) == Kind.ROTATION else "transform"
 
 
 def _origin_and_axis_tips(node: ast.List | ast.Tuple) -> bool:

@@ -28,7 +28,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, Final, Iterable, Iterator, Mapping, Sequence, TYPE_CHECKING
 
-from geolint.algebra import FREE, Kind
+from geolint.algebra import FREE, Kind, marked_by_w
 from geolint.factbase.index import ParamBinding, index_of_file  # no cycle: the index imports no fact base module
 from geolint.factbase.vocabulary import THIRD_PARTY_ROOTS
 
@@ -177,8 +177,8 @@ def _record_formula_reads(facts: FactBase, function: FunctionDef | AsyncFunction
 
 
 def _record_homogeneous_product(facts: FactBase, node: AST, plain: set[str], summary: FunctionSummary) -> None:
-    """`T @ to_homogeneous(x).T`, `np.hstack([x, ones]) @ T.T`: a parameter given w = 1 and
-    multiplied by an operator is translated along with the rotation."""
+    """`T @ to_homogeneous(x).T`, `np.hstack([x, ones]) @ T.T`: a parameter given the w that marks a point
+    (`algebra.marked_by_w`: 1) and multiplied by an operator is translated along with the rotation."""
     product = facts.matmul(node)
     if product is None:
         return
@@ -186,7 +186,7 @@ def _record_homogeneous_product(facts: FactBase, node: AST, plain: set[str], sum
 
     for operand, operator in ((product.left, product.right), (product.right, product.left)):
         homogeneous = facts.homogeneous(transposed_value(operand) or operand)
-        if homogeneous is None or homogeneous.w != 1 or not isinstance(homogeneous.inner, Name):
+        if homogeneous is None or marked_by_w(homogeneous.w) != Kind.POINT or not isinstance(homogeneous.inner, Name):
             continue
         name = homogeneous.inner.id
         if name in plain and facts.kind_of(homogeneous.inner) not in FREE and facts.kind_of(operator) not in GEOMETRIC:

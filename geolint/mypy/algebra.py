@@ -156,6 +156,22 @@ def scale(value: Geo) -> Outcome | None:
     return Outcome(value.with_frames(value.frame, kind=verdict.kind.value), _problem(verdict.problem, value, value))
 
 
+def homogenize(value: Geo, w: float) -> Outcome | None:
+    """``[x; w]`` of a located array, by the shared table: w = 1 makes a point homogeneous, w = 0 a free vector.
+    A free vector given w = 1 is carried as ``VectorWithW1`` (the result, no problem: the caller decides whether
+    to report it now or when a 4x4 product meets it); a point given w = 0 is left to mypy."""
+    if value.family != ARRAY or value.kind not in LOCATED_KINDS:
+        return None
+    verdict = shared.homogenize(Kind(value.kind), w)
+    if verdict is None:
+        return None
+    if verdict.problem == shared.Problem.DIRECTION_TRANSLATED:
+        return Outcome(value.with_frames(value.frame, kind=VECTOR_WITH_W1))
+    if verdict.problem is not None:
+        return None
+    return Outcome(value.with_frames(value.frame, kind=verdict.kind.value))
+
+
 def combination(kinds: list[str], weights: list[float], sample: Geo) -> Outcome | None:
     """``sum(w_i * x_i)`` of located arrays in one frame (`sample`'s): a point when the point weights sum to 1,
     a vector when they sum to 0; the problem says what the weights summed to otherwise."""

@@ -17,15 +17,9 @@ from mypy.types import Type
 from geolint.mypy import algebra, fullnames as names, geometry
 from geolint.mypy.geometry import (
     ARRAY,
-    DIRECTION,
-    HOMOGENEOUS_POINT,
-    HOMOGENEOUS_VECTOR,
-    POINT,
     ROTATION,
     TRANSFORM,
     TRANSLATION,
-    VECTOR,
-    VECTOR_WITH_W1,
 )
 from geolint.mypy.plugin_api import report_and_build
 
@@ -54,26 +48,17 @@ def asarray(ctx: FunctionContext) -> Type:
     return geometry.build(ctx.api, array) or ctx.default_return_type
 
 
-_APPENDED: dict[tuple[str, float], str] = {
-    (POINT, 1): HOMOGENEOUS_POINT,
-    (VECTOR, 0): HOMOGENEOUS_VECTOR,
-    (DIRECTION, 0): HOMOGENEOUS_VECTOR,
-    (VECTOR, 1): VECTOR_WITH_W1,
-    (DIRECTION, 1): VECTOR_WITH_W1,
-}
-
-
 def append(ctx: FunctionContext) -> Type:
-    """``np.append(v, 0)`` homogenizes a vector, ``np.append(p, 1)`` a point; ``np.append(v, 1)`` marks the
-    vector as carrying w=1, which a later 4x4 product reports as ``geo-translation``."""
+    """``np.append(v, 0)`` homogenizes a vector, ``np.append(p, 1)`` a point (`algebra.homogenize`);
+    ``np.append(v, 1)`` marks the vector as carrying w=1, which a later 4x4 product reports as ``geo-translation``."""
     value = _first_argument(ctx.arg_types)
-    if value is None or value.family != ARRAY or len(ctx.args) < 2 or len(ctx.args[1]) != 1:
+    if value is None or len(ctx.args) < 2 or len(ctx.args[1]) != 1:
         return ctx.default_return_type
     w = _number(ctx.args[1][0])
-    kind = _APPENDED.get((value.kind, w)) if w is not None else None
-    if kind is None:
+    outcome = algebra.homogenize(value, w) if w is not None else None
+    if outcome is None or outcome.result is None:
         return ctx.default_return_type
-    return geometry.build(ctx.api, value.with_frames(value.frame, kind=kind)) or ctx.default_return_type
+    return geometry.build(ctx.api, outcome.result) or ctx.default_return_type
 
 
 def inverse(ctx: FunctionContext) -> Type:

@@ -25,8 +25,6 @@ from geolint.mypy.errorcodes import GEO_TRANSLATION
 from geolint.mypy.geometry import (
     ARRAY,
     DIRECTION,
-    HOMOGENEOUS_POINT,
-    HOMOGENEOUS_VECTOR,
     POINT,
     TRANSFORM,
     VECTOR,
@@ -55,22 +53,23 @@ def trimesh_transform_points(ctx: FunctionContext) -> Type:
 
 
 def pytransform3d_vector_to_point(ctx: FunctionContext) -> Type:
+    """``vector_to_point(v)`` appends w = 1; a vector given it is reported here, at the call that translates it."""
     value = _argument(ctx, "v")
-    if value is None or value.family != ARRAY:
+    outcome = algebra.homogenize(value, 1) if value is not None else None
+    if outcome is None or outcome.result is None:
         return ctx.default_return_type
-    if value.kind in (VECTOR, DIRECTION):
-        problem = Problem(GEO_TRANSLATION, messages.vector_made_point("vector_to_point", value))
-        return report_and_build(ctx, Outcome(value.with_frames(value.frame, kind=geometry.VECTOR_WITH_W1), problem))
-    if value.kind == POINT:
-        return report_and_build(ctx, Outcome(value.with_frames(value.frame, kind=HOMOGENEOUS_POINT)))
-    return ctx.default_return_type
+    if outcome.result.kind == geometry.VECTOR_WITH_W1:
+        outcome = Outcome(outcome.result, Problem(GEO_TRANSLATION, messages.vector_made_point("vector_to_point", value)))
+    return report_and_build(ctx, outcome)
 
 
 def pytransform3d_vector_to_direction(ctx: FunctionContext) -> Type:
+    """``vector_to_direction(v)`` appends w = 0."""
     value = _argument(ctx, "v")
-    if value is None or value.family != ARRAY or value.kind not in (VECTOR, DIRECTION):
+    outcome = algebra.homogenize(value, 0) if value is not None else None
+    if outcome is None:
         return ctx.default_return_type
-    return report_and_build(ctx, Outcome(value.with_frames(value.frame, kind=HOMOGENEOUS_VECTOR)))
+    return report_and_build(ctx, outcome)
 
 
 def pytransform3d_transform(ctx: FunctionContext) -> Type:

@@ -68,6 +68,20 @@ def test_apply(operator: Kind, value: Kind, expected: Kind | None) -> None:
     assert (outcome.kind if outcome else None) == expected
 
 
+def test_rows_compositions_and_normalisation() -> None:
+    assert algebra.apply_rows(K.POINT, K.ROTATION) == Outcome(K.POINT)  # `pts @ R.T`
+    assert algebra.apply_rows(K.DIRECTION, K.ROTATION) == Outcome(K.DIRECTION)
+    assert algebra.apply_rows(K.POINT, K.TRANSFORM) is None  # a 4x4's transpose is not its inverse
+    assert algebra.apply_rows(K.ROTATION, K.ROTATION) is None  # not rows of values
+    assert algebra.apply(K.ROTATION, K.TRANSFORM) == Outcome(K.TRANSFORM)
+    assert algebra.apply(K.TRANSFORM, K.ROTATION) == Outcome(K.TRANSFORM)
+    assert algebra.normalize(K.VECTOR) == Outcome(K.DIRECTION)
+    assert algebra.normalize(K.UNKNOWN) == Outcome(K.DIRECTION)
+    assert algebra.normalize(K.ROTATION) is None
+    assert algebra.sub(K.TRANSLATION, K.TRANSLATION) == Outcome(K.TRANSLATION)
+    assert algebra.sub(K.VECTOR, K.TRANSLATION) == Outcome(K.VECTOR, Problem.DIRECTION_TRANSLATED)
+
+
 def test_rigid_motion_translates_points_only() -> None:
     assert algebra.rigid_apply(K.POINT) == Outcome(K.POINT)
     assert algebra.rigid_apply(K.DIRECTION) == Outcome(K.DIRECTION, Problem.DIRECTION_TRANSLATED)
@@ -82,6 +96,7 @@ def test_homogeneous_w() -> None:
     assert algebra.homogenize(K.POINT, 0).problem == Problem.POINT_NOT_TRANSLATED
     assert algebra.homogenize(K.POINT, 2) is None
     assert algebra.dehomogenize(K.HOMOGENEOUS_POINT) == Outcome(K.POINT)
+    assert [algebra.marked_by_w(w) for w in (1, 1.0, 0, 2)] == [K.POINT, K.POINT, K.VECTOR, None]
 
 
 @pytest.mark.parametrize(
@@ -111,6 +126,9 @@ def test_frames() -> None:
     assert world_cam.inverted() == Frames(dst="cam", src="world")
     assert algebra.chain([world_cam, cam_lidar, Frames(dst="lidar", src="imu")]).frames == Frames("world", "imu")
     assert algebra.combine_frames(Frames(frame="a"), Frames(frame="b")).problem == Problem.FRAME_MISMATCH
+    # a comparison that cannot tell (None) is no mismatch; one that must be sure says False
+    assert algebra.compose_frames(world_cam, Frames("camera", "lidar"), same=lambda a, b: None).problem is None
+    assert algebra.compose_frames(world_cam, Frames("camera", "lidar"), same=lambda a, b: False).problem == Problem.FRAME_MISMATCH
 
 
 # --- the runtime agrees with the table ----------------------------------------------------

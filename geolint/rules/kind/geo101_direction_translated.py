@@ -9,7 +9,7 @@ from ast import (
 )
 
 from geolint.rules.base import Invalid, Valid
-from geolint.algebra import FREE
+from geolint.algebra import FREE, Kind, Problem
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.index import ParamBinding, UnpackBinding
 from geolint.factbase.model import (
@@ -18,7 +18,7 @@ from geolint.factbase.model import (
 )  # fmt: skip
 from geolint.factbase.summaries import FunctionSummary
 from geolint.rules.fact_rule import FactRule, with_keyword
-from geolint.semantic.names import Kind as NameKind, kind_of_name
+from geolint.semantic.names import kind_of_name
 
 
 class DirectionTranslated(FactRule):
@@ -199,9 +199,10 @@ class DirectionTranslated(FactRule):
     def _check_homogeneous(self, node: ast.expr) -> None:
         facts = self.facts
         homogeneous = facts.homogeneous_built_by(node)
-        if homogeneous is None or homogeneous.w != 1 or not facts.used_as_homogeneous(homogeneous):
+        if homogeneous is None:
             return
-        if not facts.is_free(homogeneous.inner):
+        outcome = facts.homogenized(homogeneous)
+        if outcome is None or outcome.problem != Problem.DIRECTION_TRANSLATED or not facts.used_as_homogeneous(homogeneous):
             return
         if self._meets_only_untranslated(homogeneous.construction):
             return  # w = 1 is harmless where every matrix it meets has no translation (`torch.eye(4)[:3, :4]`)
@@ -368,7 +369,7 @@ class DirectionTranslated(FactRule):
         parent = self.facts.parent(node)
         if isinstance(parent, Assign):
             return any(
-                isinstance(target, Name) and kind_of_name(target.id, self.context.config) == NameKind.POINT
+                isinstance(target, Name) and kind_of_name(target.id, self.context.config) == Kind.POINT
                 for target in parent.targets
             )
         return False

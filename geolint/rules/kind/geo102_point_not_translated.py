@@ -10,7 +10,8 @@ import ast
 from ast import AST, Add, AnnAssign, Assign, BinOp, Call, Constant, Module, Name, Return, Sub, Subscript
 
 from geolint.rules.base import Invalid, Valid
-from geolint.algebra import Kind
+from geolint import algebra
+from geolint.algebra import Kind, Problem
 from geolint.factbase.model import keyword, last_name, positional_args, transposed_value
 from geolint.rules.fact_rule import FactRule
 
@@ -111,9 +112,12 @@ class PointNotTranslated(FactRule):
     def _check_homogeneous(self, node: ast.expr) -> None:
         facts = self.facts
         homogeneous = facts.homogeneous_built_by(node)
-        if homogeneous is None or homogeneous.w != 0 or not facts.used_as_homogeneous(homogeneous):
+        if homogeneous is None:
             return
-        if facts.kind_of(homogeneous.inner) != Kind.POINT or self._is_pure_quaternion(node):
+        outcome = facts.homogenized(homogeneous)
+        if outcome is None or outcome.problem != Problem.POINT_NOT_TRANSLATED or not facts.used_as_homogeneous(homogeneous):
+            return
+        if self._is_pure_quaternion(node):
             return
         self.report(
             node,
@@ -151,7 +155,7 @@ class PointNotTranslated(FactRule):
             matrix = facts.rotation_block_of(block)
             if matrix is None or facts.kind_of(matrix) != Kind.TRANSFORM:
                 continue
-            if facts.kind_of(value) != Kind.POINT or self._translated_later(node, matrix):
+            if not _loses_translation(facts.kind_of(value)) or self._translated_later(node, matrix):
                 continue
             self.report(
                 node,
@@ -231,6 +235,12 @@ def _is_quaternion_call(call: AST) -> bool:
     """`quaternion_multiply`, `quat_mul`, `qmult`, `Quaternion(...)`: quaternion algebra."""
     name = (last_name(call.func) or "").lower()  # type: ignore[attr-defined]
     return "quat" in name or name in ("qmult", "qmul")
+
+
+def _loses_translation(kind: Kind | None) -> bool:
+    """Whether a value of `kind` is wrong under a transform's rotation block alone (`algebra.rotate_only`)."""
+    outcome = None if kind is None else algebra.rotate_only(kind)
+    return outcome is not None and outcome.problem == Problem.POINT_NOT_TRANSLATED
 
 
 def _row_form(left: ast.expr, right: ast.expr) -> tuple[ast.expr | None, ast.expr | None]:
