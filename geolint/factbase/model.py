@@ -28,14 +28,14 @@ import builtins
 import sys
 import re
 from dataclasses import dataclass
-from typing import Callable, Final, Iterator, Literal, TypeVar
+from typing import Callable, Final, Iterator, Literal, Sequence, TypeVar
 
 from geolint import algebra
 from geolint.algebra import FREE, Kind
 from geolint.factbase import summaries
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.summaries import FunctionSummary
-from geolint.factbase.reaching import reaching_bindings
+from geolint.factbase.reaching import every_binding_reaches, reaching_bindings
 from geolint.factbase.index import (
     Binding,
     child_nodes,
@@ -305,6 +305,16 @@ class FactBase:
         self._memo[key] = value
         return value  # type: ignore[return-value]
 
+    def _of_bindings(self, tag: str, name: Name, compute: Callable[[FactBase, str, Sequence[Binding], str], _T], order: str = "") -> _T | None:
+        """`compute(self, name.id, bindings, order)` over the bindings that reach `name`. For a name
+        bound more often than flow order is kept for, every use reads all of them: then once per
+        name and scope, every use reading that answer (and a use in one of those bindings, `T = T @ D`,
+        a cycle: None), so a scope costs its size, not its uses times its bindings."""
+        bindings = self.bindings(name) or ()
+        if not every_binding_reaches(bindings):
+            return compute(self, name.id, bindings, order)
+        return self._cached(tag, bindings, lambda facts, *_: compute(facts, name.id, bindings, order), order)  # type: ignore[arg-type]
+
     def memoised(self, tag: str, node: AST, compute: Callable[[], _T]) -> _T:
         """`compute()` once per `node` and `tag` for this module (no cycle guard: for facts that ask no others)."""
         key = (tag, id(node), "")
@@ -318,9 +328,9 @@ class FactBase:
     def code_of(self, node: AST) -> str:
         return self.index.code_of(node)
 
-    def bindings(self, name: Name) -> list[Binding] | None:
+    def bindings(self, name: Name) -> Sequence[Binding] | None:
         """The bindings of `name` that can reach it: in its own scope, in order (`reaching`);
-        from an enclosing scope, all of them."""
+        from an enclosing scope, all of them (a list its uses share: never change it)."""
         scope = self.index.scope_of(name)
         own = scope.bindings.get(name.id)
         if own is not None:
@@ -663,8 +673,10 @@ class FactBase:
         return None if other is None else (other, name)
 
     def _kind_of_variable(self, name: Name) -> Kind | None:
-        stated = self._name_kind(name.id)
-        bindings = self.bindings(name) or []
+        return self._of_bindings("variable kind", name, FactBase._kind_of_bindings)
+
+    def _kind_of_bindings(self, name: str, bindings: Sequence[Binding], order: str = "") -> Kind | None:
+        stated = self._name_kind(name)
         flowed: set[Kind | None] = set()
         for binding in bindings:
             if self.is_non_geometric(binding):
@@ -791,10 +803,7 @@ class FactBase:
         if isinstance(node, Name):
             if states_geometry(node.id, self.config):
                 return True
-            return any(
-                isinstance(binding, ast.expr) and self.has_geometric_evidence(binding)
-                for binding in self.bindings(node) or []
-            )
+            return bool(self._of_bindings("variable evidence", node, FactBase._evidence_of_bindings))
         if isinstance(node, Attribute):
             if node.attr in ("T", "mT"):
                 return self.has_geometric_evidence(node.value)
@@ -810,6 +819,9 @@ class FactBase:
             return self.has_geometric_evidence(node.left) or self.has_geometric_evidence(node.right)
         return False
 
+    def _evidence_of_bindings(self, name: str, bindings: Sequence[Binding], order: str = "") -> bool:
+        return any(isinstance(binding, ast.expr) and self.has_geometric_evidence(binding) for binding in bindings)
+
     # -- library transforms ------------------------------------------------------------------
     def translating_library_object(self, node: AST) -> str | None:
         """"PyKDL.Frame" or "spatialmath.SE3" when `node` is one (built directly, through a
@@ -818,10 +830,7 @@ class FactBase:
 
     def _library_object(self, node: AST) -> str | None:
         if isinstance(node, Name):
-            bindings = self.bindings(node) or []
-            values = [b for b in bindings if isinstance(b, ast.expr)]
-            found = {self.translating_library_object(b) for b in values}
-            return found.pop() if len(found) == 1 and len(bindings) == len(values) else None
+            return self._of_bindings("variable library", node, FactBase._library_object_of_bindings)
         if isinstance(node, BinOp) and isinstance(node.op, Mult):
             left, right = self.translating_library_object(node.left), self.translating_library_object(node.right)
             return left if left is not None and left == right else None  # SE3 * SE3 is an SE3
@@ -839,6 +848,11 @@ class FactBase:
                 found = {self.translating_library_object(value) for value in scope.returns}
                 return found.pop() if len(found) == 1 else None
         return None
+
+    def _library_object_of_bindings(self, name: str, bindings: Sequence[Binding], order: str = "") -> str | None:
+        values = [b for b in bindings if isinstance(b, ast.expr)]
+        found = {self.translating_library_object(b) for b in values}
+        return found.pop() if len(found) == 1 and len(bindings) == len(values) else None
 
     # -- frames ------------------------------------------------------------------------------
     def frames_of(self, node: AST, order: str = DST_FIRST) -> NameFrames | None:
@@ -934,15 +948,17 @@ class FactBase:
         return None
 
     def _frames_of_variable(self, node: Name, order: str) -> FrameFact | None:
-        bindings = self.bindings(node) or []
-        if any(self._rebinds_own_inverse(node.id, binding) for binding in bindings):
+        return self._of_bindings("variable frames", node, FactBase._frames_of_bindings, order)
+
+    def _frames_of_bindings(self, name: str, bindings: Sequence[Binding], order: str) -> FrameFact | None:
+        if any(self._rebinds_own_inverse(name, binding) for binding in bindings):
             return None  # `world2cam = inv(world2cam)`: the name holds both directions
         declared = [fact for fact in (self._declared_frames(b) for b in bindings if isinstance(b, ast.expr)) if fact is not None]
-        declared += [fact for fact in (self._typed_frames(node.id, b) for b in bindings) if fact is not None]
+        declared += [fact for fact in (self._typed_frames(name, b) for b in bindings) if fact is not None]
         if declared:
             frames = {fact.frames for fact in declared}
             return declared[0] if len(frames) == 1 else None
-        stated = self.name_frames(node.id, order)
+        stated = self.name_frames(name, order)
         if stated is not None:
             return stated
         readings = set()

@@ -32,6 +32,7 @@ from ast import (
     DictComp, ExceptHandler, For, FunctionDef, GeneratorExp, IfExp, Import, ImportFrom, Lambda, ListComp, Load, Name,
     NamedExpr, SetComp, Starred, Try, While, With,
 )
+from bisect import bisect_right
 from dataclasses import dataclass
 from typing import Any, Callable, Final, Iterator, Sequence
 
@@ -78,54 +79,90 @@ class Unpacked:
     statement: ast.stmt
 
 
-def reaching_bindings(index: ModuleIndex, scope: Scope, use: Name, bindings: Sequence[Binding]) -> list[Binding]:
-    """The bindings of `use.id` (all of them: `bindings`) that can reach `use`."""
+def reaching_bindings(index: ModuleIndex, scope: Scope, use: Name, bindings: Sequence[Binding]) -> Sequence[Binding]:
+    """The bindings of `use.id` (all of them: `bindings`) that can reach `use`: `bindings` itself
+    when all can (a list every such use shares: never change it)."""
     if len(bindings) < 2 or len(bindings) > _MAX_BINDINGS or not isinstance(use.ctx, Load):
-        return list(bindings)
+        return bindings
     uses = _memo(index, "reaching_uses")
     known = uses.get(id(use))
     if known is None:
-        events = _events(index, scope, use.id, bindings, augmented=False)
-        reached = _reached(index, scope, use, events) if events is not None else None
-        known = uses[id(use)] = [event.binding for event in reached] if reached is not None else list(bindings)  # type: ignore[misc]
-    return known
+        placed = _events(index, scope, use.id, bindings, augmented=False)
+        reached = _reached(index, scope, use, placed) if placed is not None else None
+        known = uses[id(use)] = [event.binding for event in reached] if reached is not None else bindings  # type: ignore[misc]
+    return known  # type: ignore[no-any-return]
 
 
-def _reached(index: ModuleIndex, scope: Scope, use: Name, events: list[Definition]) -> list[Definition] | None:
-    """The definitions among `events` (all of the name's, in order) that can reach `use`; None when
-    none is placed before it (a loop's later one, or a closure's read)."""
+def every_binding_reaches(bindings: Sequence[Binding]) -> bool:
+    """Whether `reaching_bindings` gives every use of the name all of `bindings`, past order's
+    cost (more of them than it is kept for): then the answer about one use is the answer about all."""
+    return len(bindings) > _MAX_BINDINGS
+
+
+class _Placed:
+    """A name's definitions in one scope, in order, with what `_reached` looks up in them: those
+    bound outside comprehensions (`plain`) and their points, for bisection; those a comprehension
+    binds, by comprehension; the statements whose `:=` binds the name."""
+
+    __slots__ = ("events", "plain", "points", "within", "walrus_statements")
+
+    def __init__(self, events: list[Definition]) -> None:
+        self.events = events
+        self.within: dict[int, list[Definition]] = {}
+        for event in events:
+            if event.within is not None:
+                self.within.setdefault(id(event.within), []).append(event)
+        self.plain = [event for event in events if event.within is None] if self.within else events
+        self.points = [event.point for event in self.plain]
+        self.walrus_statements = {id(event.statement) for event in self.plain if event.walrus is not None}
+
+
+def _reached(index: ModuleIndex, scope: Scope, use: Name, placed: _Placed, most: int | None = None) -> list[Definition] | None:
+    """The definitions among `placed` (all of the name's, in order) that can reach `use`; None when
+    none is placed before it (a loop's later one, or a closure's read), or as soon as more than
+    `most` can (when given). Bisection on the definitions' points and the loops' ends keeps the
+    cost to what reaches the use, not every definition of the name."""
     ancestors = _ancestors(index, use, scope.node)
-    if any(event.within is not None for event in events):
+    if placed.within:
         # a comprehension's target is the only binding its comprehension reads, and none outside it
         for node in ancestors:
-            inside = [event for event in events if event.within is node]
+            inside = placed.within.get(id(node))
             if inside and not _in_first_iterable(node, use, ancestors):
-                return inside
-        events = [event for event in events if event.within is None]
-    if any(event.walrus is not None for event in events):
-        own = statement_of(index, use)
-        if any(event.walrus is not None and event.statement is own for event in events):
-            return None  # a `:=` in the read's own statement: source order is not evaluation order there
+                return inside if most is None or len(inside) <= most else None
+    events, points = placed.plain, placed.points
+    if placed.walrus_statements and id(statement_of(index, use)) in placed.walrus_statements:
+        return None  # a `:=` in the read's own statement: source order is not evaluation order there
     position = (use.lineno, use.col_offset)
-    before = [event for event in events if event.point <= position]
-    if not before:
+    cut = bisect_right(points, position)
+    if cut == 0:
         return None
-    after = [event for event in events if event.point > position]
+    # the last definition that always runs before the use starts the reaching ones (past `most`
+    # from the end, there are too many whichever it is)
+    last = -1 if most is None else max(cut - 1 - most, -1)
     start = 0
-    for number in range(len(before) - 1, -1, -1):
-        if _always_runs_before(index, before[number], ancestors):
+    for number in range(cut - 1, last, -1):
+        if _always_runs_before(index, events[number], ancestors):
             start = number
             break
-    reaching = before[start:]
-    dominating = before[start] if _always_runs_before(index, before[start], ancestors) else None
+    else:
+        if most is not None and cut > most:
+            return None
+    reaching = events[start:cut]
+    dominating = events[start] if _always_runs_before(index, events[start], ancestors) else None
     for loop in (node for node in ancestors if isinstance(node, _LOOPS)):
         if dominating is not None and _repeats_in(index, dominating, loop):
             break  # re-bound on every iteration before the use: nothing is carried back past it
-        reaching.extend(event for event in after if _repeats_in(index, event, loop))
+        # a definition inside the loop is placed no later than the loop's end
+        end = bisect_right(points, (loop.end_lineno or loop.lineno, loop.end_col_offset or 0), cut)
+        for event in events[cut:end]:
+            if _repeats_in(index, event, loop):
+                reaching.append(event)
+                if most is not None and len(reaching) > most:
+                    return None
     return reaching
 
 
-def _events(index: ModuleIndex, scope: Scope, name: str, bindings: Sequence[Binding], augmented: bool) -> list[Definition] | None:
+def _events(index: ModuleIndex, scope: Scope, name: str, bindings: Sequence[Binding], augmented: bool) -> _Placed | None:
     """Every definition of `name` in the scope's body, placed, in order (augmented assignments when
     `augmented`); None when one of the index's `bindings` cannot be placed."""
     memo = _memo(index, "events")
@@ -138,7 +175,8 @@ def _events(index: ModuleIndex, scope: Scope, name: str, bindings: Sequence[Bind
         first: ast.stmt = scope.node.body[0]  # type: ignore[index]  # a body that is a list (`table`)
         events = [Definition(binding, first, (0, 0), False) for binding in bindings if isinstance(binding, ParamBinding)]
         events.extend(event for event in table.get(name, ()) if augmented or not isinstance(event.binding, Augmented))
-        placed = _match(events, bindings)
+        matched = _match(events, bindings)
+        placed = _Placed(matched) if matched is not None else None
     memo[key] = placed
     return placed
 
@@ -242,35 +280,38 @@ def _repeats_in(index: ModuleIndex, event: Definition, loop: AST) -> bool:
 def _match(events: list[Definition], bindings: Sequence[Binding]) -> list[Definition] | None:
     """The events in source order, each holding the index's own binding object; None unless every
     binding of the index is found (an unplaced binding makes order unsafe). Augmented assignments,
-    which the index does not bind, pass as they are."""
-    remaining = list(bindings)
+    which the index does not bind, pass as they are. Each event takes the first binding of the index
+    not taken yet that records the same thing (`_identity`): one look-up per event."""
+    unmatched: dict[object, list[Binding]] = {}
+    for binding in reversed(bindings):  # reversed: each list pops its first binding off its end
+        unmatched.setdefault(_identity(binding), []).append(binding)
     matched: list[Definition] = []
     for event in events:
         if isinstance(event.binding, Augmented):
             matched.append(event)
             continue
-        for number, binding in enumerate(remaining):
-            if _same(event.binding, binding):
-                # the constructor, not `dataclasses.replace`: this runs for every binding of every scope
-                matched.append(Definition(binding, event.statement, event.point, event.only_inside, event.within, event.walrus))
-                del remaining[number]
-                break
-        else:
+        candidates = unmatched.get(_identity(event.binding))
+        if not candidates:
             return None
-    if remaining:
+        binding = candidates.pop()
+        # the constructor, not `dataclasses.replace`: this runs for every binding of every scope
+        matched.append(Definition(binding, event.statement, event.point, event.only_inside, event.within, event.walrus))
+    if any(unmatched.values()):
         return None
     matched.sort(key=lambda event: event.point)
     return matched
 
 
-def _same(found: Binding, recorded: Binding) -> bool:
-    if isinstance(found, OpaqueBinding) or isinstance(recorded, OpaqueBinding):
-        return isinstance(found, OpaqueBinding) and isinstance(recorded, OpaqueBinding)
-    if isinstance(found, LoopBinding) and isinstance(recorded, LoopBinding):
-        return found.iterable is recorded.iterable and found.position == recorded.position
-    if isinstance(found, UnpackBinding) and isinstance(recorded, UnpackBinding):
-        return found.value is recorded.value and found.position == recorded.position
-    return found is recorded
+def _identity(binding: Binding) -> object:
+    """What a binding records, as a key: two bindings with one key are the same binding (every
+    `OpaqueBinding` is like every other; a loop or unpacked element is its value and position)."""
+    if isinstance(binding, OpaqueBinding):
+        return OpaqueBinding
+    if isinstance(binding, LoopBinding):
+        return (LoopBinding, id(binding.iterable), binding.position)
+    if isinstance(binding, UnpackBinding):
+        return (UnpackBinding, id(binding.value), binding.position)
+    return id(binding)
 
 
 def _statements(body: list[ast.stmt]) -> Iterator[ast.stmt]:
@@ -414,32 +455,45 @@ def _always_runs_before(index: ModuleIndex, event: Definition, ancestors: list[A
             return True  # the read is in a block of the statement whose test, iterable... binds it
     if event.only_inside:
         # a loop target reaches its own body for sure (a `for` with zero iterations never runs it)
-        return any(node is statement for node in ancestors) and _in_block(statement, "body", ancestors)
+        return any(node is statement for node in ancestors) and _in_block(index, statement, "body", ancestors)
     parent = index.parents.get(statement)
     for node in ancestors:
         if index.parents.get(node) is parent and node is not statement:
-            return _same_block(parent, statement, node)
+            return _same_block(index, parent, statement, node)
         if node is statement:
             # the use sits inside the binding statement's own blocks (`with ... as x:` body)
             return isinstance(statement, (With, AsyncWith))
     return False
 
 
-def _same_block(parent: AST | None, first: ast.stmt, second: AST) -> bool:
+def _same_block(index: ModuleIndex, parent: AST | None, first: ast.stmt, second: AST) -> bool:
     """Whether `first` and `second` are statements of one block of `parent` (then `first`, being
     earlier, always runs before `second`)."""
     if parent is None:
         return False
-    for field in _BLOCK_FIELDS:
-        block = getattr(parent, field, None)
-        if isinstance(block, list) and any(item is first for item in block):
-            return any(item is second for item in block)
-    return False
+    blocks = _blocks_of(index, parent)
+    field = blocks.get(id(first))
+    return field is not None and blocks.get(id(second)) == field
 
 
-def _in_block(statement: ast.stmt, field: str, ancestors: list[AST]) -> bool:
-    block = getattr(statement, field, None) or []
-    return any(item is node for node in ancestors for item in block)
+def _in_block(index: ModuleIndex, statement: ast.stmt, field: str, ancestors: list[AST]) -> bool:
+    """Whether one of `ancestors` is a statement of `statement`'s block `field`."""
+    blocks = _blocks_of(index, statement)
+    return any(blocks.get(id(node)) == field for node in ancestors)
+
+
+def _blocks_of(index: ModuleIndex, holder: AST) -> dict[int, str]:
+    """Which of `holder`'s blocks (`body`, `orelse`, `finalbody`) each of its statements is in,
+    by statement: one pass over a block, not one per question about it."""
+    memo = _memo(index, "blocks")
+    blocks = memo.get(id(holder))
+    if blocks is None:
+        blocks = memo[id(holder)] = {}
+        for field in reversed(_BLOCK_FIELDS):  # reversed: a statement in two lists is the first list's
+            block = getattr(holder, field, None)
+            if isinstance(block, list):
+                blocks.update((id(item), field) for item in block)
+    return blocks  # type: ignore[no-any-return]
 
 
 def _inside(index: ModuleIndex, node: AST, container: AST) -> bool:
@@ -483,8 +537,8 @@ def single_definition(index: ModuleIndex, use: Name) -> Definition | None:
         if len(bindings) == 1 and isinstance(bindings[0], ParamBinding):  # its body is one expression
             found = Definition(bindings[0], scope.node.body, (0, 0), False)  # type: ignore[arg-type]
     elif bindings is not None or use.id in scope.augmented:
-        events = _events(index, scope, use.id, bindings or (), augmented=True)
-        reached = _reached(index, scope, use, events) if events is not None else None
+        placed = _events(index, scope, use.id, bindings or (), augmented=True)
+        reached = _reached(index, scope, use, placed, most=1) if placed is not None else None
         if reached is not None and len(reached) == 1:
             found = reached[0]
     memo[key] = found
@@ -557,21 +611,31 @@ def parameter_of(index: ModuleIndex, use: Name) -> ast.arg | None:
 
 def assigned_values(index: ModuleIndex, use: Name) -> list[ast.expr | Unpacked | None]:
     """Every value `use.id` is given in its scope, in order (None for a parameter, a loop target or
-    anything else whose value is unknown), whichever of them reaches `use`."""
+    anything else whose value is unknown), whichever of them reaches `use` (one list per name and
+    scope, shared by its uses: never change it)."""
     scope = scope_of(index, use)
-    bindings = scope.bindings.get(use.id) or ()
-    events = _events(index, scope, use.id, bindings, augmented=True)
-    if events is None:  # not every binding placed: the index's own, in its order
+    memo = _memo(index, "assigned_values")
+    key = (id(scope.node), use.id)
+    values = memo.get(key)
+    if values is None:
+        values = memo[key] = _assigned_values(index, scope, use.id)
+    return values  # type: ignore[no-any-return]
+
+
+def _assigned_values(index: ModuleIndex, scope: Scope, name: str) -> list[ast.expr | Unpacked | None]:
+    bindings = scope.bindings.get(name) or ()
+    placed = _events(index, scope, name, bindings, augmented=True)
+    if placed is None:  # not every binding placed: the index's own, in its order
         return [binding if isinstance(binding, ast.expr) else None for binding in bindings]
     values: list[ast.expr | Unpacked | None] = []
-    for event in events:
+    for event in placed.events:
         binding = event.binding
         if isinstance(binding, Augmented):
             values.append(binding.value)
         elif isinstance(binding, ast.expr):
             values.append(binding)
         elif isinstance(binding, UnpackBinding) and isinstance(event.statement, Assign):
-            values.append(_element(binding, event.statement, use.id))
+            values.append(_element(binding, event.statement, name))
         else:
             values.append(None)
     return values

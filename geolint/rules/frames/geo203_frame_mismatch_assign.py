@@ -7,7 +7,8 @@ from ast import AnnAssign, Assign, Attribute, Call, Name, Subscript
 
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.bosdyn import frame_comparison, in_tform_words
-from geolint.factbase.model import FactBase, last_name, walk_within
+from geolint.factbase import dataflow
+from geolint.factbase.model import FactBase, last_name
 from geolint.rules.fact_rule import STATED, FactRule, Mismatch, SameFrame
 from geolint.semantic.names import NameFrames, same_frame
 
@@ -129,7 +130,7 @@ class FrameMismatchAssign(FactRule):
         facts = self.facts
         if any(facts.name_frames(target.id, order) is None for order in facts.readings()):
             return  # the name states no frames (most names): nothing to compare, and the tests below walk the value
-        if _mentions_name(value, target.id):
+        if target.id in dataflow.names_read(facts.index, value):
             return  # `world2cam = inv(world2cam)`, `T_a_b = T_a_b @ D`: a name updated from itself
         if _is_copy(facts, value) or _edited_in_place(facts, target):
             return  # `T_new = T.copy(); T_new[:3, 3] -= d`: the name describes the value after the edit
@@ -179,10 +180,6 @@ class FrameMismatchAssign(FactRule):
         return None
 
 
-def _mentions_name(value: ast.expr, name: str) -> bool:
-    return any(isinstance(node, Name) and node.id == name for node in walk_within(value))
-
-
 def _reversed(stated: NameFrames, declared: NameFrames) -> bool:
     return bool(same_frame(stated.dst, declared.src)) and bool(same_frame(stated.src, declared.dst))
 
@@ -210,14 +207,7 @@ def _is_copy(facts: FactBase, value: ast.expr) -> bool:
 def _edited_in_place(facts: FactBase, target: Name) -> bool:
     """Whether the scope writes into the target after binding it (`T[:3, 3] = t`, `T.translation -= d`,
     `T += D`, or a later `T = f(T)`)."""
-    scope = facts.index.scope_of(target)
-    name = target.id
-    if name in scope.subscript_stores or name in scope.augmented:
-        return True
-    if any(isinstance(stored.value, Name) and stored.value.id == name for stored, _ in scope.attribute_stores):
-        return True
+    index = facts.index
+    scope = index.scope_of(target)
     # `p_base = p_cam.T` then `p_base = np.dot(p_base, R.T)`: a later binding updates the name from itself
-    return any(
-        isinstance(value, ast.expr) and value.lineno > target.lineno and _mentions_name(value, name)
-        for value in scope.bindings.get(name, [])
-    )
+    return dataflow.writes_into(index, scope, target.id) or dataflow.last_update_from_itself(index, scope, target.id) > target.lineno
