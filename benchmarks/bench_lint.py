@@ -7,10 +7,10 @@ built-in rules. Every geolint, ruff and fixit figure is a real CLI run in a subp
 included; geolint runs with the semantic rules only (`--select GEO1,GEO2,GEO3`), as the real-code
 benchmark does, with geolint's bytecode compiled first (as a wheel install leaves it).
 
-    python benchmarks/bench_lint.py /work/realcode --repeats 3 --skip-fixit   # the real-code corpus
+    python benchmarks/bench_lint.py CORPUS --repeats 3 --skip-fixit   # the real-code corpus
     python benchmarks/bench_lint.py                      # the installed numpy source tree
     python benchmarks/bench_lint.py PATH --repeats 3 --fixit-repeats 1
-    python benchmarks/bench_lint.py /work/realcode --repeats 3 --skip-fixit --compiled   # + the mypyc build
+    python benchmarks/bench_lint.py CORPUS --repeats 3 --skip-fixit --compiled   # + the mypyc build
 
 `--compiled` builds this checkout's optional compiled wheel first (`GEOLINT_MYPYC=1 pip wheel
 --no-build-isolation`, a few minutes, not timed; needs mypy and a C compiler) and adds its cold rows

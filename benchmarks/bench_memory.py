@@ -6,7 +6,7 @@ Lints growing sets of repositories from the given source trees as one run each, 
 project holding every tree given is the 1M-line case when the real-code and held-out corpora are
 both passed.
 
-    python benchmarks/bench_memory.py /work/realcode /work/heldout
+    python benchmarks/bench_memory.py CORPUS HELDOUT
 """
 
 from __future__ import annotations

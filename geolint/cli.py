@@ -34,12 +34,34 @@ EXTRA_OF_MODULE = {"pygls": "lsp", "lsprotocol": "lsp", "mypy": "mypy", "scipy":
 
 
 def missing_extra_message(command: str, error: ImportError) -> str | None:
-    """What to install when `error` is an optional dependency's absence, else None."""
+    """What to install when `error` is an optional dependency's absence, else None.
+
+    The extra's own requirements, read from the installed distribution, install wherever geolint came
+    from; `DISTRIBUTION[extra]` would need the package index, where geolint is not published yet.
+    """
     module = (getattr(error, "name", None) or "").split(".")[0]
     extra = EXTRA_OF_MODULE.get(module)
     if extra is None:
         return None
-    return f"geolint {command} needs the `{extra}` extra ({module} is not installed): pip install '{DISTRIBUTION}[{extra}]'"
+    requirements = " ".join(f"'{requirement}'" for requirement in requirements_of_extra(extra))
+    install = f"pip install {requirements}" if requirements else f"pip install '.[{extra}]' in a checkout of geolint"
+    return f"geolint {command} needs the `{extra}` extra ({module} is not installed): {install}"
+
+
+def requirements_of_extra(extra: str) -> list[str]:
+    """The requirements the installed distribution lists for `extra` (`pygls>=2.0`), markers dropped."""
+    from importlib.metadata import PackageNotFoundError, requires
+
+    try:
+        listed = requires(DISTRIBUTION) or []
+    except PackageNotFoundError:
+        return []
+    found = []
+    for line in listed:
+        requirement, _, marker = line.partition(";")
+        if f'extra == "{extra}"' in marker.replace("'", '"'):
+            found.append(requirement.strip().replace(" ", ""))
+    return found
 
 
 def build_parser() -> argparse.ArgumentParser:

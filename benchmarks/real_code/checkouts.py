@@ -3,7 +3,7 @@
     python benchmarks/real_code/checkouts.py MIRRORS OUT [--manifest benchmarks/real_code/blind7.toml]
 
 MIRRORS holds one git repository per manifest row, named `<owner>+<repo>` (a bare git directory, a
-clone, or a folder whose `repo/` is either: what the session's snapshot fetcher leaves). Each becomes
+clone, or a folder whose `repo/` is either, as some snapshot tools leave them). Each becomes
 OUT/<owner>+<repo>, a clone of it (full history, for `run.py --history`) with the pinned commit checked
 out. Nothing is downloaded; a missing mirror or commit is reported and the others are made. Files a
 snapshot lists but does not hold (large binaries) are left out of the work tree. Exit 1 if any failed.

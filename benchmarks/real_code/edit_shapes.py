@@ -9,8 +9,8 @@ swapped for w2c, a degree/radian conversion added or removed, `zeros` swapped fo
 permutation changed, quaternion order words changed, components reordered, a bottom-row write moved
 to the translation column, a normal's product restricted to the rotation block, the operands of a
 product swapped). Every candidate must then be read: most are refactors, and only a commit (or its
-issue) that says so, or the algebra, makes one a bug. That is how session 7 measured recall blind
-(docs/real-code.md, "Session 7: the other 86 repositories searched"): the search never runs geolint.
+issue) that says so, or the algebra, makes one a bug. This is how recall is measured blind
+(docs/benchmark.md, "How historical bugs are found and counted"): the search never runs geolint.
 """
 
 from __future__ import annotations

@@ -27,11 +27,15 @@ import subprocess
 import sys
 import tempfile
 import time
-import tomllib
 from collections import Counter, defaultdict
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
 
 HERE = Path(__file__).resolve().parent
 DEFAULT_SELECT = ("GEO1", "GEO2", "GEO3")
@@ -306,7 +310,7 @@ def compare(args: argparse.Namespace) -> int:
 
 
 def write_markdown(path: str, rows: list, total: Counter, seconds: float) -> None:
-    """The per-repository table for docs/real-code.md."""
+    """The per-repository table of a run, in Markdown."""
     lines = [
         "| repository | category | torch | commit | files | lines | findings | TP | FP | unclear |",
         "|---|---|---|---|---:|---:|---:|---:|---:|---:|",

@@ -8,15 +8,17 @@ names one by the markdown heading above it, so editing prose does not break the 
 from __future__ import annotations
 
 import re
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 # The public repository URL the snippets name; tests point it at a local clone instead.
 PUBLIC_URL = "https://github.com/geolint/geolint"
-# Docs other helpers own and test themselves (the editors guide, the typing guide, the real-code
-# study) and the generated rules page, whose examples the rule tests run.
-NOT_HERE = ("docs/editors.md", "docs/typing.md", "docs/real-code.md", "docs/rules.md")
+# Docs whose blocks other tests run (the editors guide: tests/integrations/test_lsp_docs.py; the
+# typing guide: tests/typing/test_docs_examples.py) and the generated rules page, whose examples the
+# rule tests run.
+NOT_HERE = ("docs/editors.md", "docs/typing.md", "docs/rules.md")
 
 FENCE = re.compile(r"^```(?P<language>[\w-]*)\n(?P<body>.*?)^```$", re.S | re.M)
 HEADING = re.compile(r"^#{1,6} (.+)$|^\*\*(.+?)\*\*", re.M)
@@ -65,7 +67,10 @@ def block(relative: str, heading: str, index: int = 0) -> Block:
 
 
 def project_version() -> str:
-    import tomllib
+    if sys.version_info >= (3, 11):
+        import tomllib
+    else:  # pragma: no cover
+        import tomli as tomllib
 
     with open(REPO_ROOT / "pyproject.toml", "rb") as stream:
         return str(tomllib.load(stream)["project"]["version"])

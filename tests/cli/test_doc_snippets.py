@@ -18,34 +18,37 @@ from pathlib import Path
 
 import pytest
 
-from tests.cli.doc_snippets import REPO_ROOT, Block, all_blocks, block, commands_of
+from tests.cli.doc_snippets import PUBLIC_URL, REPO_ROOT, Block, all_blocks, block, commands_of
 
 INSTALL = "tests/cli/test_install.py"
+COMPILED = "Compiled build (optional, about a quarter faster)."
+TYPING = "Static typing: generics and the mypy plugin"
 ILLUSTRATION = "illustration"  # not a command or config to copy: sample output or an API listing
 
 COVERED: dict[tuple[str, str, int], str] = {
-    ("README.md", "Install", 0): f"{INSTALL}::test_git_url_install_gives_a_working_linter",
-    ("README.md", "Compiled build (optional, faster).", 0): "tests/engine/test_compiled_core.py::test_the_compiled_wheel_finds_what_pure_python_finds",
-    ("README.md", "Quick start", 0): f"{INSTALL}::test_readme_quick_start",
-    ("README.md", "Quick start", 1): "test_readme_test_command_is_what_ci_runs",
     ("README.md", "What it finds", 0): "test_demo_output_is_what_the_readme_shows",
-    ("README.md", "A tour of the runtime", 0): "test_runtime_tours_run_through_their_intentional_errors",
+    ("README.md", "Install", 0): f"{INSTALL}::test_plain_install_gives_a_working_linter",  # each line has its own test there
+    ("README.md", COMPILED, 0): "tests/engine/test_compiled_core.py::test_the_compiled_wheel_finds_what_pure_python_finds",
+    ("README.md", "Quick start", 0): f"{INSTALL}::test_readme_quick_start",
+    ("README.md", "The runtime: `import geolint`", 0): "test_runtime_tours_run_through_their_intentional_errors",
     ("README.md", "The linter: `geolint check`", 0): "test_command_lines_run",
-    ("README.md", "The linter: `geolint check`", 1): "test_geolint_config_snippets_are_accepted",
-    ("README.md", "Precision and recall on real code.", 0): f"{INSTALL}::test_precision_command_lints_the_named_trees",
-    ("README.md", "1. Frame classes, any checker (mypy, pyright, no plugin).", 0): "test_typing_snippets_under_mypy",
-    ("README.md", "2. The mypy plugin: string frames and precise messages.", 0): "test_mypy_config_snippets",
-    ("README.md", "2. The mypy plugin: string frames and precise messages.", 1): "test_mypy_config_snippets",
-    ("README.md", "2. The mypy plugin: string frames and precise messages.", 2): "test_mypy_config_snippets",
-    ("README.md", "3. Plain numpy arrays, annotated (`geolint.typing`, zero runtime cost).", 0): "test_typing_snippets_under_mypy",
-    ("README.md", "In pre-commit", 0): f"{INSTALL}::test_pre_commit_snippets_at_the_release_tag",
-    ("README.md", "In CI", 0): f"{INSTALL}::test_ci_snippet_commands",
-    ("README.md", "In CI", 1): f"{INSTALL}::test_ci_snippet_commands",
-    ("README.md", "Picture the frames", 0): "test_command_lines_run",
+    ("README.md", TYPING, 0): "test_mypy_config_snippets",
+    ("README.md", TYPING, 1): "test_mypy_config_snippets",
+    ("README.md", "Editors", 0): "test_readme_editor_snippets_are_the_tested_ones",
+    ("README.md", "Editors", 1): "test_readme_editor_snippets_are_the_tested_ones",
+    ("README.md", "pre-commit", 0): f"{INSTALL}::test_local_pre_commit_hook_with_geolint_installed",
+    ("README.md", "CI", 0): f"{INSTALL}::test_ci_snippet_commands",
+    ("README.md", "CI", 1): f"{INSTALL}::test_ci_snippet_commands",
+    ("README.md", "Configuration", 0): "test_geolint_config_snippets_are_accepted",
+    ("README.md", "Contributing", 0): "test_readme_test_command_is_what_ci_runs",
+    ("docs/benchmark.md", "Running it", 0): "tests/benchmarks/test_real_code_docs.py::test_the_documented_commands_run",
+    ("docs/benchmark.md", "Running it", 1): "tests/benchmarks/test_real_code_docs.py::test_the_documented_commands_run",
     ("docs/ci.md", "GitHub Actions", 0): f"{INSTALL}::test_ci_snippet_commands",
     ("docs/ci.md", "GitLab CI", 0): f"{INSTALL}::test_ci_snippet_commands",
     ("docs/ci.md", "Adopting geolint on an existing codebase", 0): "test_command_lines_run",
-    ("docs/ci.md", "pre-commit", 0): f"{INSTALL}::test_pre_commit_snippets_at_the_release_tag",
+    ("docs/ci.md", "pre-commit", 0): f"{INSTALL}::test_local_pre_commit_hook_with_geolint_installed",
+    ("docs/ci.md", "pre-commit", 1): f"{INSTALL}::test_pre_commit_hook_from_a_clone_at_a_commit",
+    ("docs/ci.md", "pre-commit", 2): f"{INSTALL}::test_pre_commit_try_repo",
     ("docs/frames.md", "Picture the frames: `geolint frames`", 0): "test_command_lines_run",
     ("docs/linter.md", "`geolint check`: command line and configuration", 0): "test_command_lines_run",
     ("docs/linter.md", "text", 0): ILLUSTRATION,  # sample output of the text format
@@ -54,7 +57,7 @@ COVERED: dict[tuple[str, str, int], str] = {
     ("docs/linter.md", "Suppressing a finding", 0): ILLUSTRATION,  # comment placements, not a program
     ("docs/linter.md", "Adopting geolint on an existing codebase", 0): "test_command_lines_run",
     ("docs/real-world.md", "Command", 0): f"{INSTALL}::test_precision_command_lints_the_named_trees",
-    ("docs/releasing.md", "Releasing", 0): f"{INSTALL}::test_pre_commit_snippets_at_the_release_tag",
+    ("docs/releasing.md", "Releasing", 0): f"{INSTALL}::test_the_release_tag_command",
     ("docs/runtime.md", "Tour", 0): "test_runtime_tours_run_through_their_intentional_errors",
     ("docs/runtime.md", "Transforms", 0): ILLUSTRATION,  # API listing (R, t, M are placeholders)
     ("docs/runtime.md", "Applying and composing.", 0): ILLUSTRATION,  # sample error messages
@@ -90,11 +93,32 @@ def bash(script: str, cwd: Path) -> subprocess.CompletedProcess[str]:
 
 
 def test_readme_test_command_is_what_ci_runs() -> None:
-    command = block("README.md", "Quick start", 1).body.strip()
+    command = block("README.md", "Contributing", 0).body.strip()
     assert "--config-settings editable_mode=compat" in command  # type checkers must see the editable install
+    assert command.endswith('python -m pytest -q -m "not slow"')  # the fast subset; .ci/run adds the slow tests
     ci_run = (REPO_ROOT / ".ci" / "run").read_text(encoding="utf-8")
     # .ci/run creates and activates the venv itself; the rest of the line is the same text.
     assert command.split(" && ", 2)[2] in ci_run
+    assert "-m slow" in ci_run
+
+
+def test_no_snippet_names_an_unpublished_release() -> None:
+    """Nothing is tagged or on PyPI yet: a `rev:` tag, a git URL of the public repository or
+    `pip install geolint-robotics` would fail for every reader (docs/releasing.md says when they may come)."""
+    offenders = []
+    for snippet in all_blocks():
+        body = snippet.body
+        if re.search(r"rev: v\d", body) or PUBLIC_URL in body or re.search(r"pip install [\"']?geolint-robotics\b", body):
+            offenders.append(f"{snippet.file}:{snippet.line}")
+    assert offenders == []
+
+
+def test_readme_editor_snippets_are_the_tested_ones() -> None:
+    """The README's editor snippets are copies of docs/editors.md's, which tests/integrations/test_lsp_docs.py runs."""
+    editors = (REPO_ROOT / "docs" / "editors.md").read_text(encoding="utf-8")
+    for index in (0, 1):
+        snippet = block("README.md", "Editors", index)
+        assert f"```{snippet.language}\n{snippet.body}```" in editors, f"README.md:{snippet.line} differs from docs/editors.md"
 
 
 def test_demo_output_is_what_the_readme_shows(tmp_path: Path) -> None:
@@ -118,7 +142,7 @@ def test_evidence_sample_is_what_geolint_prints() -> None:
     assert printed[1].startswith(shown[1]) and printed[2] == shown[2]
 
 
-@pytest.mark.parametrize("where", [("README.md", "A tour of the runtime"), ("docs/runtime.md", "Tour")])
+@pytest.mark.parametrize("where", [("README.md", "The runtime: `import geolint`"), ("docs/runtime.md", "Tour")])
 def test_runtime_tours_run_through_their_intentional_errors(where: tuple[str, str]) -> None:
     tour = block(*where)
     assert tour.language == "pycon"
@@ -142,7 +166,6 @@ def demo_project(tmp_path: Path) -> Path:
 
 COMMAND_BLOCKS = [
     ("README.md", "The linter: `geolint check`", 0),
-    ("README.md", "Picture the frames", 0),
     ("docs/ci.md", "Adopting geolint on an existing codebase", 0),
     ("docs/frames.md", "Picture the frames: `geolint frames`", 0),
     ("docs/linter.md", "`geolint check`: command line and configuration", 0),
@@ -170,7 +193,7 @@ def test_command_lines_run(tmp_path: Path, key: tuple[str, str, int]) -> None:
 
 
 @pytest.mark.parametrize(
-    "key", [("README.md", "The linter: `geolint check`", 1), ("docs/linter.md", "Configuration: `[tool.geolint]`", 0)]
+    "key", [("README.md", "Configuration", 0), ("docs/linter.md", "Configuration: `[tool.geolint]`", 0)]
 )
 def test_geolint_config_snippets_are_accepted(tmp_path: Path, key: tuple[str, str, int]) -> None:
     snippet = block(*key)
@@ -182,14 +205,15 @@ def test_geolint_config_snippets_are_accepted(tmp_path: Path, key: tuple[str, st
     assert f"config: {(project / 'pyproject.toml').resolve()}" in result.stderr
 
 
-# --- mypy: the plugin's configuration in its three forms, and the typing examples -----------------
+# --- mypy: the plugin's configuration in its forms (the typing guide's examples: tests/typing) ------
 
 ALIAS_PROBE = '''\
 from geolint import Point, Transform
 
 def to_base(T: Transform["base", "camera"], p: Point["camera"]) -> Point["base_link"]:
-    return T @ p  # "base" is an alias of "base_link" in the README's configuration
+    return T @ p  # "base" is an alias of "base_link" in the configuration
 '''
+TYPING_GUIDE_PLUGIN = "2. The mypy plugin, with string frames and precise messages"
 
 
 def run_mypy(project: Path, *files: str) -> subprocess.CompletedProcess[str]:
@@ -208,34 +232,27 @@ def expected_errors(python: str) -> list[str]:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("form", ["mypy.ini", "setup.cfg", "pyproject.toml"])
-def test_mypy_config_snippets(tmp_path: Path, form: str) -> None:
-    heading = "2. The mypy plugin: string frames and precise messages."
-    config = block("README.md", heading, 1 if form == "pyproject.toml" else 0)
-    example = block("README.md", heading, 2)
+@pytest.mark.parametrize(
+    "source, form",
+    [("README.md", "mypy.ini"), ("README.md", "setup.cfg"), ("docs/typing.md", "mypy.ini"), ("docs/typing.md", "pyproject.toml")],
+)
+def test_mypy_config_snippets(tmp_path: Path, source: str, form: str) -> None:
+    """The README's plugin config in both ini files, and the typing guide's (with frame aliases) as ini and toml."""
+    if source == "README.md":
+        config, example = block(source, TYPING, 0), block(source, TYPING, 1)
+    else:
+        config = block(source, TYPING_GUIDE_PLUGIN, 1 if form == "pyproject.toml" else 0)
+        example = block(source, TYPING_GUIDE_PLUGIN, 2)
     assert config.language == ("toml" if form == "pyproject.toml" else "ini")
     (tmp_path / form).write_text(config.body, encoding="utf-8")
     (tmp_path / "example.py").write_text(example.body, encoding="utf-8")
-    (tmp_path / "alias.py").write_text(ALIAS_PROBE, encoding="utf-8")
-    result = run_mypy(tmp_path, "example.py", "alias.py")
+    files = ["example.py"]
+    if "frame_aliases" in config.body:
+        (tmp_path / "alias.py").write_text(ALIAS_PROBE, encoding="utf-8")
+        files.append("alias.py")
+    result = run_mypy(tmp_path, *files)
     output = result.stdout + result.stderr
     wanted = expected_errors(example.body)
     assert wanted and all(message in output for message in wanted), output
     assert "alias.py" not in output, output  # the alias took effect
     assert result.returncode == 1 and output.count("error:") == len(wanted), output
-
-
-@pytest.mark.slow
-def test_typing_snippets_under_mypy(tmp_path: Path) -> None:
-    classes = block("README.md", "1. Frame classes, any checker (mypy, pyright, no plugin).", 0)
-    arrays = block("README.md", "3. Plain numpy arrays, annotated (`geolint.typing`, zero runtime cost).", 0)
-    (tmp_path / "classes.py").write_text(classes.body, encoding="utf-8")
-    plain = run_mypy(tmp_path, "classes.py")  # no plugin, no config
-    assert plain.returncode == 0, plain.stdout + plain.stderr
-    (tmp_path / "mypy.ini").write_text(block("README.md", "2. The mypy plugin: string frames and precise messages.", 0).body)
-    (tmp_path / "arrays.py").write_text(arrays.body, encoding="utf-8")
-    with_plugin = run_mypy(tmp_path, "arrays.py")
-    output = with_plugin.stdout
-    line = next(n for n, text in enumerate(arrays.body.splitlines(), 1) if "# error:" in text)
-    assert re.search(rf"^arrays\.py:{line}: error: .*\[geo-translation\]$", output, re.M), output
-    assert output.count("error:") == 1, output

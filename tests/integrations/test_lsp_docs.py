@@ -2,21 +2,27 @@
 
 Each editor snippet names a command; the test takes it from the snippet as written (JSON, TOML,
 Lua or Emacs Lisp), starts it and completes an LSP handshake with it over stdio. The Neovim
-snippets are also checked against the API each one says it needs, and the VS Code note about
-`${workspaceFolder}` against the snippet.
+snippets are also checked against the API each one says it needs, and the one the installed Neovim
+is new enough for is run headless (Debian 12's 0.7 runs the 0.7 snippet); the VS Code note about
+`${workspaceFolder}` is checked against the snippet.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import re
 import shutil
 import subprocess
 import sys
-import tomllib
 from pathlib import Path
 
 import pytest
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "editors.md"
 FENCE = re.compile(r"^```(?P<language>[\w-]*)\n(?P<body>.*?)^```$", re.S | re.M)
@@ -95,7 +101,15 @@ def test_the_install_line_and_help_run() -> None:
 
 
 # Neovim API by the version that introduced it.
-NEOVIM_API = {"vim.lsp.config": (0, 11), "vim.lsp.enable": (0, 11), "vim.fs.root": (0, 10), "vim.lsp.start": (0, 8), "vim.fs.find": (0, 8)}
+NEOVIM_API = {
+    "vim.lsp.config": (0, 11),
+    "vim.lsp.enable": (0, 11),
+    "vim.fs.root": (0, 10),
+    "vim.lsp.start(": (0, 8),
+    "vim.fs.find": (0, 8),
+    "vim.fs.dirname": (0, 8),
+    "nvim_create_autocmd": (0, 7),
+}
 
 
 def test_each_neovim_snippet_uses_only_the_api_of_the_version_it_names() -> None:
@@ -110,7 +124,71 @@ def test_each_neovim_snippet_uses_only_the_api_of_the_version_it_names() -> None
             if api in body:
                 assert since <= needs, f"the Neovim {needs} snippet uses {api} (new in {since})"
         checked.append(needs)
-    assert (0, 9) in checked and (0, 10) in checked and (0, 11) in checked
+    assert (0, 7) in checked and (0, 8) in checked and (0, 11) in checked  # Debian 12 ships 0.7
+
+
+def neovim_snippets() -> list[tuple[tuple[int, int], str]]:
+    """(the version a Neovim snippet names, its Lua)."""
+    found = []
+    for heading, language, body, prose in blocks():
+        version = re.search(r"Neovim (\d+)\.(\d+)", prose.strip().split("\n\n")[-1])
+        if language == "lua" and heading == "Neovim" and version:
+            found.append(((int(version.group(1)), int(version.group(2))), body))
+    return found
+
+
+def installed_neovim() -> tuple[int, int] | None:
+    if shutil.which("nvim") is None:
+        return None
+    done = subprocess.run(["nvim", "--version"], capture_output=True, text=True, timeout=60, check=False)
+    match = re.match(r"NVIM v(\d+)\.(\d+)", done.stdout)
+    return (int(match.group(1)), int(match.group(2))) if match else None
+
+
+# Appended to a snippet as the test's own init.lua: wait for geolint's diagnostics, write what Neovim has.
+NEOVIM_PROBE = """
+function GeolintProbe(out)
+  vim.wait(60000, function() return #vim.diagnostic.get(0) > 0 end, 100)
+  local lines = {}
+  for _, client in pairs((vim.lsp.get_clients or vim.lsp.get_active_clients)({ bufnr = 0 })) do
+    table.insert(lines, "client " .. client.name)
+  end
+  for _, d in ipairs(vim.diagnostic.get(0)) do
+    table.insert(lines, string.format("diagnostic %d %s", d.lnum + 1, tostring(d.code)))
+  end
+  vim.fn.writefile(lines, out)
+  vim.cmd("qa!")
+end
+"""
+
+
+def test_the_neovim_snippet_for_the_installed_version_attaches_and_shows_findings(tmp_path: Path) -> None:
+    """Every snippet the installed Neovim is new enough for, run headless as the user's init.lua."""
+    version = installed_neovim()
+    if version is None:
+        pytest.skip("Neovim is not installed (apt-get install neovim)")
+    runnable = [(needs, body) for needs, body in neovim_snippets() if needs <= version]
+    assert runnable, f"no snippet for Neovim {version}"
+    env = {**os.environ, "PATH": os.pathsep.join([str(Path(sys.executable).parent), os.environ.get("PATH", "")])}
+    env["XDG_CONFIG_HOME"] = env["XDG_DATA_HOME"] = env["XDG_STATE_HOME"] = str(tmp_path / "xdg")  # no user config
+    for index, (needs, body) in enumerate(runnable):
+        project = tmp_path / f"project{index}"
+        project.mkdir()
+        (project / "pyproject.toml").write_text("[tool.geolint]\n", encoding="utf-8")
+        (project / "buggy.py").write_text(
+            "def normal_to_world(R_world_cam, t_world_cam, normal_cam):\n    return R_world_cam @ normal_cam + t_world_cam\n",
+            encoding="utf-8",
+        )
+        init = tmp_path / f"init{index}.lua"
+        init.write_text(body + NEOVIM_PROBE, encoding="utf-8")
+        out = tmp_path / f"out{index}.txt"
+        done = subprocess.run(
+            ["nvim", "--headless", "-u", str(init), "buggy.py", "-c", f"lua GeolintProbe('{out}')"],
+            cwd=project, env=env, capture_output=True, text=True, timeout=120, check=False, stdin=subprocess.DEVNULL,
+        )  # fmt: skip
+        seen = out.read_text(encoding="utf-8").splitlines() if out.exists() else []
+        assert "client geolint" in seen, f"Neovim {needs} snippet: {seen} {done.stderr}"
+        assert "diagnostic 2 GEO101" in seen, f"Neovim {needs} snippet: {seen} {done.stderr}"
 
 
 def test_the_vscode_note_matches_the_snippet() -> None:
