@@ -110,17 +110,20 @@ def lint_paths(
     cache_dir: Path | None = None,
     progress: Callable[[int, int], None] | None = None,
     stats: dict[str, int] | None = None,
+    sources: Sequence[SourceFile] | None = None,
 ) -> Iterator[FileResult]:
     """Lint files and folders (honouring excludes), in parallel, with a content-keyed cache.
 
     Results come sorted by display path whatever `jobs` is, so output is deterministic.
     `progress(done, total)` is called as files finish; `stats` (if given) receives the counts
     `files`, `cache_hits`, `linted`, `errors`. Raises `DiscoveryError` for a path that does not exist.
+    `sources`, when given, are the files to lint, already found (`paths` is then not walked).
     """
     config = config or Config()
     directory = cache_dir or default_cache_dir(config_root(config))
-    listing = DiscoveryCache(directory) if use_cache else None
-    sources = discover([Path(p) for p in paths], config, force_exclude=force_exclude, cache=listing)
+    if sources is None:
+        listing = DiscoveryCache(directory) if use_cache else None
+        sources = discover([Path(p) for p in paths], config, force_exclude=force_exclude, cache=listing)
     cache = FindingsCache(directory, config) if use_cache else None
     resolved = ImportsCache(directory) if use_cache else None
     votes = VotesCache(directory) if use_cache else None

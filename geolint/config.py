@@ -7,6 +7,7 @@ Keys may be written in kebab-case (`per-file-ignores`) or snake_case (`per_file_
 
 from __future__ import annotations
 
+import os
 import re
 import sys
 from dataclasses import fields, replace
@@ -57,6 +58,25 @@ def find_pyproject(start: Path) -> Path | None:
         if candidate.is_file() and _has_geolint_table(candidate):
             return candidate
     return None
+
+
+def nearest_pyproject(folder: Path) -> Path | None:
+    """`find_pyproject` for a folder, remembered with every folder above it (a run asks for each
+    folder of its files; siblings share their parents' answers). For one run: the CLI's."""
+    found = _nearest_pyproject(os.path.abspath(folder))
+    return Path(found) if found is not None else None
+
+
+@lru_cache(maxsize=None)
+def _nearest_pyproject(folder: str) -> str | None:
+    candidate = os.path.join(folder, "pyproject.toml")
+    if os.path.isfile(candidate) and _has_geolint_table(Path(candidate)):
+        return candidate
+    parent = os.path.dirname(folder)
+    return None if parent == folder else _nearest_pyproject(parent)
+
+
+nearest_pyproject.cache_clear = _nearest_pyproject.cache_clear  # type: ignore[attr-defined]
 
 
 def _has_geolint_table(pyproject: Path) -> bool:

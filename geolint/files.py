@@ -101,6 +101,13 @@ def discover(
     return sources
 
 
+def is_excluded(path: Path, config: Config) -> bool:
+    """Whether the config's excludes or a `.gitignore` drop the file at `path` (which need not exist:
+    `--stdin-filename` names where a buffer would be saved)."""
+    root = config_root(config).resolve()
+    return _excluded_file(Path(os.path.abspath(path)), _Excluder(root, exclude_patterns(config)))
+
+
 def _display(path: Path | str) -> str:
     """The path as given (normalised); absolute paths under the cwd are shown relative to it."""
     text = os.path.normpath(str(path))

@@ -30,6 +30,7 @@ class FixOutcome:
     source: str
     fixed: int
     remaining: tuple[Finding, ...]
+    fixed_codes: tuple[str, ...] = ()  # the code of each finding a fix removed (`--show-fixes` lists them)
 
     @property
     def changed(self) -> bool:
@@ -57,6 +58,7 @@ def fix_source(
     """Apply every allowed fix to `source`, pass after pass, until none is left or none applies."""
     current = source
     fixed = 0
+    fixed_codes: list[str] = []
     dropped: set[tuple[str, str, str]] = set()  # fixes that broke the module: (code, message, edit text)
     findings = lint_source(current, path, config, rules)
     for _ in range(MAX_PASSES):
@@ -71,15 +73,17 @@ def fix_source(
         attempt = apply_edits(current, [edit for finding in batch for edit in finding.fix.edits])  # type: ignore[union-attr]
         if attempt != current and parses(attempt):
             current, fixed = attempt, fixed + len(batch)
+            fixed_codes += [finding.code for finding in batch]
         else:  # something in the batch breaks the module: find the culprits one at a time
             for finding in batch:
                 attempt = apply_edits(current, finding.fix.edits)  # type: ignore[union-attr]
                 if attempt != current and parses(attempt):
                     current, fixed = attempt, fixed + 1
+                    fixed_codes.append(finding.code)
                     break  # the other fixes' positions moved: re-lint before trying them
                 dropped.add(_identity(finding))
         findings = lint_source(current, path, config, rules)
-    return FixOutcome(current, fixed, tuple(findings))
+    return FixOutcome(current, fixed, tuple(findings), tuple(fixed_codes))
 
 
 def parses(source: str) -> bool:

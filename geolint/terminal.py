@@ -14,6 +14,7 @@ from typing import TextIO
 RESET = "\x1b[0m"
 BOLD = "\x1b[1m"
 RED = "\x1b[31m"
+GREEN = "\x1b[32m"
 YELLOW = "\x1b[33m"
 CYAN = "\x1b[36m"
 DIM = "\x1b[2m"

@@ -1,10 +1,15 @@
-"""`geolint check [PATH ...]`: lint files and folders, print findings, optionally fix them.
+"""`geolint check [PATH ...]`: lint files and folders (or stdin), print findings, optionally fix them.
 
-Exit codes: 0 nothing to report, 1 findings (or, with `--exit-non-zero-on-fix`, files fixed),
-2 a usage, config or internal error. Findings go to stdout (or `--output FILE`) in the chosen
-format. The text format's summary follows the findings on stdout, so a piped CI log reads top to
-bottom; with a machine format or `--output` it goes to stderr, so stdout stays machine-readable.
-Progress, warnings and errors go to stderr.
+Exit codes: 0 nothing to report, 1 a finding of severity error or warning (or, with
+`--exit-non-zero-on-fix`, a file fixed), 2 a usage, config or internal error; info and hint
+findings are printed but leave the exit code alone. Findings go to stdout (or `--output FILE`) in
+the chosen format. The human formats' summary (text, concise, full) follows the findings on
+stdout, so a piped CI log reads top to bottom; with a machine format or `--output` it goes to
+stderr, so stdout stays machine-readable. Progress, warnings and errors go to stderr.
+
+Each file is linted with the nearest pyproject.toml that has a `[tool.geolint]` table, found from
+the file's own folder (`--config FILE` names one for all): two projects on one command line each
+keep their config.
 """
 
 from __future__ import annotations
@@ -15,35 +20,52 @@ import os
 import sys
 import time
 from collections import Counter
+from dataclasses import replace
 from pathlib import Path
-from typing import Sequence
+from typing import Callable, Sequence
 
 from geolint import api
 from geolint.cli import EXIT_ERROR, EXIT_FINDINGS, EXIT_OK
-from geolint.config import ConfigError, load_config, parse_selector_list, with_overrides
-from geolint.lint_types import Config, Finding
+from geolint.config import ConfigError, load_config, nearest_pyproject, parse_selector_list, with_overrides
+from geolint.files import SourceFile
+from geolint.lint_types import Config, Finding, Severity
 from geolint.output import FORMATS, render
 from geolint.terminal import ProgressBar, show_progress, use_color
 
+FORMAT_VARIABLE = "GEOLINT_OUTPUT_FORMAT"
+# Formats read by people: the summary follows the findings on stdout, and a terminal gets colour.
+HUMAN_FORMATS = ("text", "concise", "full")
+# Severities that fail a run (exit 1); info and hint findings are shown but do not.
+FAILING = (Severity.ERROR, Severity.WARNING)
+STDIN = Path("-")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("paths", nargs="*", type=Path, metavar="PATH", help="files or folders to lint (default: .)")
+    parser.add_argument("paths", nargs="*", type=Path, metavar="PATH", help="files or folders to lint (default: .), or - for stdin")
     parser.add_argument("--config", type=Path, metavar="FILE", help="use this pyproject.toml instead of the nearest one")
     parser.add_argument("--select", metavar="CODES", help="comma-separated codes or prefixes to enable (replaces the config's)")
     parser.add_argument("--extend-select", metavar="CODES", help="comma-separated codes or prefixes to enable as well (adds to the config's)")
     parser.add_argument("--ignore", metavar="CODES", help="comma-separated codes or prefixes to disable (adds to the config's)")
-    parser.add_argument("--format", choices=FORMATS, default="text", help="output format (default: text)")
+    parser.add_argument("--exclude", action="append", metavar="PATTERNS", help="comma-separated gitignore-style patterns to skip, replacing the config's `exclude` and the defaults")
+    parser.add_argument("--extend-exclude", action="append", metavar="PATTERNS", help="comma-separated gitignore-style patterns to skip as well")
+    parser.add_argument(
+        "--output-format", "--format", dest="format", choices=FORMATS, default=_default_format(),
+        help=f"output format (default: text, or ${FORMAT_VARIABLE})",
+    )  # fmt: skip
     parser.add_argument("--output", type=Path, metavar="FILE", help="write findings to FILE instead of stdout")
     parser.add_argument("--statistics", action="store_true", help="print how often each code occurs instead of the findings")
     parser.add_argument("--exit-zero", action="store_true", help="exit 0 even when there are findings")
+    parser.add_argument("--stdin-filename", metavar="PATH", help="the path of the file read from stdin (its config, per-file-ignores, display)")
+    parser.add_argument("--watch", "-w", action="store_true", help="check again whenever a file or a config changes (Ctrl-C stops)")
     parser.add_argument("--jobs", "-j", type=_positive_int, metavar="N", help="worker processes (default: all cores)")
     parser.add_argument("--no-cache", action="store_true", help="neither read nor write the findings cache")
     parser.add_argument("--cache-dir", type=Path, metavar="DIR", help="where to keep the cache (default: <root>/.geolint_cache)")
     parser.add_argument("--force-exclude", action="store_true", help="apply excludes to files named on the command line too")
     fixing = parser.add_argument_group("fixes")
-    fixing.add_argument("--fix", action="store_true", help="apply safe fixes in place")
+    fixing.add_argument("--fix", action="store_true", help="apply safe fixes in place (stdin: print the fixed text)")
     fixing.add_argument("--unsafe-fixes", action="store_true", help="with --fix or --diff, apply unsafe fixes too")
     fixing.add_argument("--diff", action="store_true", help="print the fixes as unified diffs; change no file")
+    fixing.add_argument("--show-fixes", action="store_true", help="show the lines each fix changes; with --fix, list the findings fixed")
     fixing.add_argument("--exit-non-zero-on-fix", action="store_true", help="exit 1 when --fix changed a file")
     adoption = parser.add_argument_group("adopting geolint on existing code")
     adoption.add_argument("--write-baseline", type=Path, metavar="FILE", help="record the current findings in FILE and exit 0")
@@ -54,6 +76,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     talk.add_argument("--verbose", "-v", action="store_true", help="also print config, file and cache counts, timing")
 
 
+def _default_format() -> str:
+    chosen = os.environ.get(FORMAT_VARIABLE, "text")
+    return chosen if chosen in FORMATS else "text"  # an unknown value is reported by `run`
+
+
 def _positive_int(text: str) -> int:
     value = int(text)
     if value < 1:
@@ -62,31 +89,53 @@ def _positive_int(text: str) -> int:
 
 
 def run(args: argparse.Namespace) -> int:
-    started = time.perf_counter()
-    paths: list[Path] = args.paths or [Path(".")]
-    try:
-        config = _config(args, paths)
-    except ConfigError as error:
-        _error(str(error))
+    problem = _usage_problem(args)
+    if problem is not None:
+        _error(problem)
         return EXIT_ERROR
-    if args.verbose:
-        _note(f"config: {config.source or 'defaults (no [tool.geolint] found)'}")
+    if args.watch:
+        from geolint.commands.watch import watch
 
+        return watch(args, check_once)
+    return check_once(args)
+
+
+def _reads_stdin(args: argparse.Namespace) -> bool:
+    return STDIN in args.paths or (bool(args.stdin_filename) and not args.paths)
+
+
+def _usage_problem(args: argparse.Namespace) -> str | None:
+    """What is wrong with the options together (argparse checks each alone), or None."""
+    chosen = os.environ.get(FORMAT_VARIABLE)
+    if chosen is not None and chosen not in FORMATS:
+        return f"${FORMAT_VARIABLE}: unknown output format {chosen!r} (choose one of {', '.join(FORMATS)})"
+    if _reads_stdin(args):
+        if args.paths not in ([], [STDIN]):
+            return "`-` (stdin) cannot be combined with other paths"
+        for option, given in (("--watch", args.watch), ("--add-noqa", args.add_noqa), ("--write-baseline", args.write_baseline)):
+            if given:
+                return f"{option} cannot be used with stdin"
+    return None
+
+
+def check_once(args: argparse.Namespace) -> int:
+    """One `geolint check` run: lint, report, return the exit code."""
+    started = time.perf_counter()
+    if _reads_stdin(args):
+        return _check_stdin(args, started)
+    paths: list[Path] = args.paths or [Path(".")]
     progress = ProgressBar(sys.stderr, enabled=not args.quiet and show_progress(sys.stderr))
     stats: dict[str, int] = {}
     try:
-        results = list(
-            api.lint_paths(
-                paths,
-                config,
-                jobs=args.jobs,
-                use_cache=not args.no_cache,
-                force_exclude=args.force_exclude,
-                cache_dir=args.cache_dir,
-                progress=progress.update,
-                stats=stats,
-            )
-        )
+        groups = _groups(args, paths)
+        if args.verbose:
+            for config, _ in groups:
+                _note(f"config: {config.source or 'defaults (no [tool.geolint] found)'}")
+        results, config_of = _lint_groups(args, groups, progress.update, stats)
+    except ConfigError as error:
+        progress.close()
+        _error(str(error))
+        return EXIT_ERROR
     except api.DiscoveryError as error:
         progress.close()
         _error(str(error))
@@ -94,32 +143,13 @@ def run(args: argparse.Namespace) -> int:
     progress.close()
     if not results:
         _warn_nothing_found(paths)
+    unchecked = _report_errors(results, args.verbose)
 
-    unchecked = 0
-    for result in results:
-        if result.broken_link:  # as ruff users expect: a warning, and the run goes on without it
-            _warning(f"skipped {result.path}: {result.error}")
-        elif result.unreadable:
-            unchecked += 1
-            _error(f"cannot read {result.path}: {result.error}")
-        elif result.error is not None:
-            unchecked += 1
-            detail = result.error.rstrip() if args.verbose else result.error.rstrip().splitlines()[-1]
-            hint = "" if args.verbose else " (--verbose shows the traceback)"
-            _error(f"internal error while checking {result.path}{hint}; please report it:\n  {detail}")
-
-    fixed_total = 0
+    fixed_codes: dict[str, Counter[str]] = {}
     if args.fix or args.diff:
-        results, fixed_total, diffs = _fix(results, config, unsafe=args.unsafe_fixes, write=not args.diff)
+        results, fixed_codes, diffs = _fix(results, config_of, unsafe=args.unsafe_fixes, write=not args.diff)
         if args.diff:
-            sys.stdout.flush()
-            sys.stdout.buffer.write(b"".join(diffs))  # each diff in its file's own encoding, as patch reads it
-            sys.stdout.buffer.flush()
-            if not args.quiet:
-                _note(f"Would fix {fixed_total} finding{'s' * (fixed_total != 1)}." if fixed_total else "No fixes available.")
-            return EXIT_ERROR if unchecked else (EXIT_FINDINGS if diffs else EXIT_OK)
-
-    findings = [finding for result in results for finding in result.findings]
+            return _print_diffs(args, diffs, fixed_codes, unchecked)
 
     if args.add_noqa:
         added, files = _add_noqa(results)
@@ -130,11 +160,236 @@ def run(args: argparse.Namespace) -> int:
     if args.write_baseline:
         from geolint.baseline import write_baseline
 
-        count = write_baseline(findings, args.write_baseline)
+        count = write_baseline([f for result in results for f in result.findings], args.write_baseline)
         if not args.quiet:
             _note(f"Recorded {count} finding{'s' * (count != 1)} in {args.write_baseline}.")
         return EXIT_ERROR if unchecked else EXIT_OK
 
+    if args.verbose:
+        _note(
+            f"files: {stats.get('files', 0)}, from cache: {stats.get('cache_hits', 0)}, "
+            f"linted: {stats.get('linted', 0)}, internal errors: {stats.get('errors', 0)}, "
+            f"time: {time.perf_counter() - started:.2f}s"
+        )
+    return _report(args, [f for result in results for f in result.findings], fixed_codes, unchecked)
+
+
+# ---- which config for which file ----------------------------------------------------------------
+
+
+def _groups(args: argparse.Namespace, paths: Sequence[Path]) -> list[tuple[Config, list[SourceFile]]]:
+    """The files to lint, grouped by the config that applies to them (in first-seen order).
+
+    Each path is walked with the config nearest to it; a file below a nearer `[tool.geolint]` of
+    its own (a sub-project) goes with that config instead, and that config's excludes then apply
+    to it too (unless it was named on the command line). One group is the usual answer.
+    """
+    from geolint.cache import DiscoveryCache, default_cache_dir
+    from geolint.config import config_root
+    from geolint.files import discover, is_excluded
+
+    configs: dict[Path | None, Config] = {}
+    config_of_folder: dict[str, Config] = {}  # by the folder as discovery spells it: one lookup per folder
+
+    def config_at(folder: Path | str) -> Config:
+        known = config_of_folder.get(str(folder))
+        if known is not None:
+            return known
+        source = nearest_pyproject(Path(os.path.abspath(folder or os.curdir)))
+        if source not in configs:
+            configs[source] = _with_command_line(args, load_config(source) if source is not None else Config())
+        config_of_folder[str(folder)] = configs[source]
+        return configs[source]
+
+    fixed_config = None
+    if args.config is not None:
+        if not args.config.is_file():
+            raise ConfigError(args.config, None, "no such config file")
+        fixed_config = _with_command_line(args, load_config(args.config))
+    roots: dict[Config, list[Path]] = {}
+    for path in paths:
+        if not path.exists():
+            raise api.DiscoveryError(f"{path}: no such file or directory")
+        folder = Path(os.path.abspath(path))
+        roots.setdefault(fixed_config or config_at(folder if path.is_dir() else folder.parent), []).append(path)
+    named = {os.path.normpath(path) for path in paths if not path.is_dir()}
+    grouped: dict[Config, list[SourceFile]] = {}
+    seen: set[Path] = set()
+    for config, root_paths in roots.items():
+        listing = None if args.no_cache else DiscoveryCache(args.cache_dir or default_cache_dir(config_root(config)))
+        for source_file in discover(root_paths, config, force_exclude=args.force_exclude, cache=listing):
+            real = source_file.real_path()
+            if real in seen:  # a file two paths name is linted once
+                continue
+            seen.add(real)
+            own = fixed_config or config_at(os.path.dirname(source_file.path))
+            if own.source != config.source and (args.force_exclude or os.path.normpath(source_file.path) not in named):
+                if is_excluded(source_file.path, own):  # the sub-project's own excludes
+                    continue
+            grouped.setdefault(own, []).append(source_file)
+    return list(grouped.items())
+
+
+def _with_command_line(args: argparse.Namespace, config: Config) -> Config:
+    """The config with the command line's selectors and excludes applied."""
+    config = with_overrides(
+        config,
+        select=parse_selector_list(args.select) if args.select is not None else None,
+        extend_select=parse_selector_list(args.extend_select) if args.extend_select else (),
+        extend_ignore=parse_selector_list(args.ignore) if args.ignore else (),
+    )
+    if args.exclude:  # as ruff's --exclude: the command line's patterns instead of the config's
+        config = replace(config, exclude=_patterns(args.exclude))
+    if args.extend_exclude:
+        config = replace(config, extend_exclude=config.extend_exclude + _patterns(args.extend_exclude))
+    return config
+
+
+def _patterns(values: Sequence[str]) -> tuple[str, ...]:
+    """`--exclude a,b --exclude c` as the patterns a, b, c."""
+    return tuple(part.strip() for value in values for part in value.split(",") if part.strip())
+
+
+def _lint_groups(
+    args: argparse.Namespace,
+    groups: list[tuple[Config, list[SourceFile]]],
+    progress: Callable[[int, int], None],
+    stats: dict[str, int],
+) -> tuple[list[api.FileResult], dict[str, Config]]:
+    """Lint every group; the results sorted by path as one run gives them, and each file's config."""
+    results: list[api.FileResult] = []
+    config_of: dict[str, Config] = {}
+    total = sum(len(sources) for _, sources in groups)
+    done_before = 0
+    for config, sources in groups:
+        group_stats: dict[str, int] = {}
+        offset = done_before
+        for result in api.lint_paths(
+            [],
+            config,
+            jobs=args.jobs,
+            use_cache=not args.no_cache,
+            cache_dir=args.cache_dir,
+            progress=lambda done, _, offset=offset: progress(offset + done, total),
+            stats=group_stats,
+            sources=sources,
+        ):
+            results.append(result)
+            config_of[result.path] = config
+        done_before += len(sources)
+        for key, value in group_stats.items():
+            stats[key] = stats.get(key, 0) + value
+    if len(groups) > 1:
+        results.sort(key=lambda result: result.path)
+    return results, config_of
+
+
+# ---- stdin --------------------------------------------------------------------------------------
+
+
+def _check_stdin(args: argparse.Namespace, started: float) -> int:
+    """`geolint check - --stdin-filename PATH`: lint the text on stdin as if it were PATH (for editors
+    without a language server). With `--fix` the fixed text goes to stdout and the report to stderr."""
+    from geolint.engine import decode_source, encode_source, lint_bytes
+    from geolint.output.source import remember_text
+
+    data = sys.stdin.buffer.read()
+    name = args.stdin_filename or "-"
+    display = os.path.normpath(name) if args.stdin_filename else name
+    try:
+        if args.config is not None:
+            if not args.config.is_file():
+                raise ConfigError(args.config, None, "no such config file")
+            config = _with_command_line(args, load_config(args.config))
+        else:
+            folder = Path(os.path.abspath(name)).parent if args.stdin_filename else Path.cwd()
+            source = nearest_pyproject(folder)
+            config = _with_command_line(args, load_config(source) if source is not None else Config())
+    except ConfigError as error:
+        _error(str(error))
+        return EXIT_ERROR
+    if args.verbose:
+        _note(f"config: {config.source or 'defaults (no [tool.geolint] found)'}")
+    if args.force_exclude and args.stdin_filename and _is_excluded(Path(name), config):
+        if args.fix:
+            sys.stdout.buffer.write(data)  # an editor replaces its buffer with what comes back
+        return EXIT_OK
+    try:
+        text, encoding = decode_source(data)
+    except (SyntaxError, UnicodeDecodeError, LookupError):
+        text, encoding = None, "utf-8"
+    try:
+        findings = lint_bytes(data, display, config)
+    except Exception as error:  # an internal error: reported, as for a file
+        _error(f"internal error while checking {display}; please report it:\n  {type(error).__name__}: {error}")
+        return EXIT_ERROR
+    if text is not None:
+        remember_text(display, text)
+    fixed_codes: dict[str, Counter[str]] = {}
+    if (args.fix or args.diff) and text is not None:
+        from geolint.fixes import fix_source
+
+        outcome = fix_source(text, display, config, unsafe=args.unsafe_fixes)
+        fixed = encode_source(outcome.source, encoding)
+        if args.diff:
+            diffs = [_unified_diff(display, data, fixed)] if outcome.changed else []
+            return _print_diffs(args, diffs, {display: Counter(outcome.fixed_codes)} if outcome.changed else {}, 0)
+        sys.stdout.buffer.write(fixed)
+        sys.stdout.flush()
+        if outcome.changed:
+            fixed_codes[display] = Counter(outcome.fixed_codes)
+            remember_text(display, outcome.source)
+        findings = list(outcome.remaining)
+        return _report(args, findings, fixed_codes, 0, stream=sys.stderr)  # stdout holds the fixed text
+    elif args.fix:
+        sys.stdout.buffer.write(data)
+    return _report(args, findings, fixed_codes, 0)
+
+
+def _is_excluded(path: Path, config: Config) -> bool:
+    from geolint.files import is_excluded
+
+    return is_excluded(path, config)
+
+
+# ---- reporting ----------------------------------------------------------------------------------
+
+
+def _report_errors(results: Sequence[api.FileResult], verbose: bool) -> int:
+    """Print the files that could not be checked; how many there are (broken links only warn)."""
+    unchecked = 0
+    for result in results:
+        if result.broken_link:  # as ruff users expect: a warning, and the run goes on without it
+            _warning(f"skipped {result.path}: {result.error}")
+        elif result.unreadable:
+            unchecked += 1
+            _error(f"cannot read {result.path}: {result.error}")
+        elif result.error is not None:
+            unchecked += 1
+            detail = result.error.rstrip() if verbose else result.error.rstrip().splitlines()[-1]
+            hint = "" if verbose else " (--verbose shows the traceback)"
+            _error(f"internal error while checking {result.path}{hint}; please report it:\n  {detail}")
+    return unchecked
+
+
+def _print_diffs(args: argparse.Namespace, diffs: list[bytes], fixed_codes: dict[str, Counter[str]], unchecked: int) -> int:
+    fixed_total = sum(sum(counts.values()) for counts in fixed_codes.values())
+    sys.stdout.flush()
+    sys.stdout.buffer.write(b"".join(diffs))  # each diff in its file's own encoding, as patch reads it
+    sys.stdout.buffer.flush()
+    if not args.quiet:
+        _note(f"Would fix {fixed_total} finding{'s' * (fixed_total != 1)}." if fixed_total else "No fixes available.")
+    return EXIT_ERROR if unchecked else (EXIT_FINDINGS if diffs else EXIT_OK)
+
+
+def _report(
+    args: argparse.Namespace,
+    findings: list[Finding],
+    fixed_codes: dict[str, Counter[str]],
+    unchecked: int,
+    stream=None,
+) -> int:
+    """Print the findings (less a baseline's) and the summary; the exit code."""
     known = 0
     if args.baseline:
         from geolint.baseline import BaselineError, new_findings
@@ -146,9 +401,16 @@ def run(args: argparse.Namespace) -> int:
             return EXIT_ERROR
         known, findings = len(findings) - len(remaining), remaining
 
+    out = stream or sys.stdout
     to_file = args.output is not None
-    color = args.format == "text" and not to_file and use_color(sys.stdout)
-    text = _statistics(findings, args.format) if args.statistics else render(findings, args.format, color=color)
+    human = args.format in HUMAN_FORMATS
+    color = human and not to_file and use_color(out)
+    if args.statistics:
+        text = _statistics(findings, args.format)
+    else:
+        text = render(findings, args.format, color=color, show_fixes=args.show_fixes, unsafe_fixes=args.unsafe_fixes)
+        if args.show_fixes and fixed_codes and human:
+            text = _fixed_list(fixed_codes, bool(findings)) + text
     if to_file:
         try:
             args.output.write_text(text, encoding="utf-8")
@@ -156,65 +418,39 @@ def run(args: argparse.Namespace) -> int:
             _error(f"{args.output}: cannot write output: {error.strerror or error}")
             return EXIT_ERROR
     else:
-        sys.stdout.write(text)
-        sys.stdout.flush()
+        out.write(text)
+        out.flush()
 
-    if args.verbose:
-        _note(
-            f"files: {stats.get('files', 0)}, from cache: {stats.get('cache_hits', 0)}, "
-            f"linted: {stats.get('linted', 0)}, internal errors: {stats.get('errors', 0)}, "
-            f"time: {time.perf_counter() - started:.2f}s"
-        )
+    fixed_total = sum(sum(counts.values()) for counts in fixed_codes.values())
     if not args.quiet:
         summary = _summary(findings, fixed_total, known, unchecked)
-        if args.format == "text" and not to_file and not args.statistics:
-            sys.stdout.write(summary + "\n")
-            sys.stdout.flush()
+        if human and not to_file and not args.statistics:
+            out.write(summary + "\n")
+            out.flush()
         else:
             _note(summary)
 
     if unchecked:
         return EXIT_ERROR
-    if findings and not args.exit_zero:
+    if any(Severity(f.severity) in FAILING for f in findings) and not args.exit_zero:
         return EXIT_FINDINGS
     if fixed_total and args.exit_non_zero_on_fix:
         return EXIT_FINDINGS
     return EXIT_OK
 
 
-def _config(args: argparse.Namespace, paths: Sequence[Path]) -> Config:
-    if args.config is not None:
-        if not args.config.is_file():
-            raise ConfigError(args.config, None, "no such config file")
-        config = load_config(args.config)
-    else:
-        config = api.find_config(_common_folder(paths))
-    return with_overrides(
-        config,
-        select=parse_selector_list(args.select) if args.select is not None else None,
-        extend_select=parse_selector_list(args.extend_select) if args.extend_select else (),
-        extend_ignore=parse_selector_list(args.ignore) if args.ignore else (),
-    )
-
-
-def _common_folder(paths: Sequence[Path]) -> Path:
-    """Where to start looking for pyproject.toml: the deepest folder containing every path."""
-    existing = [os.path.abspath(p) for p in paths if p.exists()]
-    if not existing:
-        return Path.cwd()
-    common = Path(os.path.commonpath(existing))
-    return common if common.is_dir() else common.parent
+# ---- fixes --------------------------------------------------------------------------------------
 
 
 def _fix(
-    results: list[api.FileResult], config: Config, *, unsafe: bool, write: bool
-) -> tuple[list[api.FileResult], int, list[bytes]]:
-    """Fix every file that has an applicable fix; returns new results, the count fixed, and diffs."""
+    results: list[api.FileResult], config_of: dict[str, Config], *, unsafe: bool, write: bool
+) -> tuple[list[api.FileResult], dict[str, Counter[str]], list[bytes]]:
+    """Fix every file that has an applicable fix; returns new results, the codes fixed in each file, and diffs."""
     from geolint.engine import decode_source, encode_source
     from geolint.fixes import fix_source, fixable
 
     updated: list[api.FileResult] = []
-    fixed_total = 0
+    fixed_codes: dict[str, Counter[str]] = {}
     diffs: list[bytes] = []
     for result in results:
         if result.error or result.location is None or not any(fixable(f, unsafe=unsafe) for f in result.findings):
@@ -223,21 +459,21 @@ def _fix(
         try:
             data = result.location.read_bytes()
             source, encoding = decode_source(data)
-            outcome = fix_source(source, result.path, config, unsafe=unsafe)
+            outcome = fix_source(source, result.path, config_of[result.path], unsafe=unsafe)
             if outcome.changed:
                 fixed = encode_source(outcome.source, encoding)
                 if write:
                     result.location.write_bytes(fixed)
                 else:
                     diffs.append(_unified_diff(result.path, data, fixed))
-                fixed_total += outcome.fixed
+                fixed_codes[result.path] = Counter(outcome.fixed_codes)
                 updated.append(api.FileResult(result.path, outcome.remaining, location=result.location))
             else:
                 updated.append(result)
         except Exception as error:  # one file's failure to fix must not lose the others' results
             _error(f"cannot fix {result.path}: {error}")
             updated.append(result)
-    return updated, fixed_total, diffs
+    return updated, fixed_codes, diffs
 
 
 def _unified_diff(path: str, before: bytes, after: bytes) -> bytes:
@@ -301,6 +537,20 @@ def _statistics(findings: Sequence[Finding], format_name: str) -> str:
     return "".join(f"{n:>{width}}\t{c}\t{'[*] ' if c in fixable else ''}{names[c]}\n" for c, n in rows)
 
 
+def _fixed_list(fixed_codes: dict[str, Counter[str]], more_follows: bool) -> str:
+    """`--fix --show-fixes`: what was fixed, file by file (`    2 x GEO101 (direction-translated)`)."""
+    from geolint.rules import rule_by_code
+
+    total = sum(sum(counts.values()) for counts in fixed_codes.values())
+    lines = [f"Fixed {total} finding{'s' * (total != 1)}:"]
+    for path in sorted(fixed_codes):
+        lines.append(f"- {path}:")
+        for code, count in sorted(fixed_codes[path].items()):
+            rule = rule_by_code(code)
+            lines.append(f"    {count} x {code}{f' ({rule.name})' if rule is not None else ''}")
+    return "\n".join(lines) + "\n" + ("\n" if more_follows else "")
+
+
 def _summary(findings: Sequence[Finding], fixed: int, known: int, unchecked: int = 0) -> str:
     parts = []
     if fixed:
@@ -309,10 +559,18 @@ def _summary(findings: Sequence[Finding], fixed: int, known: int, unchecked: int
         safe = sum(1 for f in findings if f.fix is not None and f.fix.applicability == "safe")
         unsafe = sum(1 for f in findings if f.fix is not None and f.fix.applicability != "safe")
         line = f"Found {len(findings)} finding{'s' * (len(findings) != 1)}"
-        hints = [f"{safe} fixable with --fix"] if safe else []
+        by_severity = Counter(Severity(f.severity) for f in findings)
+        hints = []
+        if set(by_severity) != {Severity.ERROR}:  # the mix, when it is not only errors
+            hints.append(", ".join(_severity_count(level, by_severity[level]) for level in Severity if by_severity[level]))
+        fixes = [f"{safe} fixable with --fix"] if safe else []
         if unsafe:
-            hints.append(f"{unsafe} more with --fix --unsafe-fixes")
-        parts.append(line + (f" ({', '.join(hints)})" if hints else "") + ".")
+            fixes.append(f"{unsafe} more with --fix --unsafe-fixes")
+        if fixes:
+            hints.append(", ".join(fixes))
+        parts.append(line + (f" ({'; '.join(hints)})" if hints else "") + ".")
+        if not any(level in FAILING for level in by_severity):
+            parts.append("Info and hint findings do not fail the run.")
     elif not unchecked:  # only when every file was checked
         parts.append("All checks passed.")
     if unchecked:
@@ -320,6 +578,11 @@ def _summary(findings: Sequence[Finding], fixed: int, known: int, unchecked: int
     if known:
         parts.append(f"({known} known finding{'s' * (known != 1)} hidden by the baseline.)")
     return " ".join(parts)
+
+
+def _severity_count(level: Severity, count: int) -> str:
+    plural = "s" if count != 1 and level in FAILING else ""  # "2 errors", "2 warnings", but "2 info"
+    return f"{count} {level.value}{plural}"
 
 
 def _warn_nothing_found(paths: Sequence[Path]) -> None:

@@ -32,21 +32,26 @@ def run(args: argparse.Namespace) -> int:
     name_width = max((len(n) for _, n, _, _ in rows), default=4)
     indent = 7 + 1 + name_width + 1 + 3 + 2
     width = _terminal_width()
-    if width is not None and width - indent < 30:  # too narrow for a column: the summary goes under its row
+    if width - indent < 30:  # too narrow for a column: the summary goes under its row
         for code, name, fixable, summary in rows:
             sys.stdout.write(f"{code} {name}{' (fix)' if fixable else ''}\n")
             sys.stdout.writelines(f"    {line}\n" for line in textwrap.wrap(summary, max(width - 4, 16), break_on_hyphens=False))
-        return EXIT_OK
-    sys.stdout.write(f"{'CODE':<7} {'NAME':<{name_width}} FIX  SUMMARY\n")
-    for code, name, fixable, summary in rows:
-        first, *rest = textwrap.wrap(summary, width - indent, break_on_hyphens=False) if width is not None else [summary]
-        sys.stdout.write(f"{code:<7} {name:<{name_width}} {'yes' if fixable else '   '}  {first}\n")
-        sys.stdout.writelines(" " * indent + line + "\n" for line in rest)
+    else:
+        sys.stdout.write(f"{'CODE':<7} {'NAME':<{name_width}} FIX  SUMMARY\n")
+        for code, name, fixable, summary in rows:
+            first, *rest = textwrap.wrap(summary, width - indent, break_on_hyphens=False)
+            sys.stdout.write(f"{code:<7} {name:<{name_width}} {'yes' if fixable else '   '}  {first}\n")
+            sys.stdout.writelines(" " * indent + line + "\n" for line in rest)
+    footer = textwrap.wrap("`geolint rule CODE` prints one rule's documentation.", max(width, 16))
+    sys.stdout.write("\n" + "".join(line + "\n" for line in footer))
     return EXIT_OK
 
 
-def _terminal_width() -> int | None:
-    """The width to wrap summaries to: a terminal's (or `COLUMNS`); None for a pipe, so grep sees whole rows."""
+PIPE_WIDTH = 100  # for a pipe or a file: the width of a wide terminal, not one line per rule
+
+
+def _terminal_width() -> int:
+    """The width to wrap summaries to: `COLUMNS`, else the terminal's, else PIPE_WIDTH."""
     if not os.environ.get("COLUMNS") and not sys.stdout.isatty():
-        return None
+        return PIPE_WIDTH
     return shutil.get_terminal_size().columns

@@ -1,5 +1,6 @@
 """Output formats for findings. Each format is a module with
-`render(findings: Sequence[Finding], *, color: bool = False) -> str`.
+`render(findings: Sequence[Finding], *, color: bool = False, ...) -> str`; a format takes the
+options it names (`color`, `show_fixes`, `unsafe_fixes`) and is never handed the others.
 
 Modules are imported on use so the common text path stays cheap.
 """
@@ -7,11 +8,12 @@ Modules are imported on use so the common text path stays cheap.
 from __future__ import annotations
 
 import importlib
+import inspect
 from typing import Callable, Sequence
 
 from geolint.lint_types import Finding
 
-FORMATS = ("text", "json", "github", "sarif", "junit", "gitlab")
+FORMATS = ("text", "concise", "full", "json", "github", "sarif", "junit", "gitlab")
 
 Renderer = Callable[..., str]
 
@@ -24,4 +26,6 @@ def renderer(format_name: str) -> Renderer:
 
 
 def render(findings: Sequence[Finding], format_name: str, **options: object) -> str:
-    return renderer(format_name)(findings, **options)
+    function = renderer(format_name)
+    accepted = inspect.signature(function).parameters
+    return function(findings, **{name: value for name, value in options.items() if name in accepted})

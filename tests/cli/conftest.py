@@ -27,22 +27,33 @@ def _env(extra: dict[str, str] | None, cache_dir: Path | None) -> dict[str, str]
     return env
 
 
+def launch_geolint(*args: str) -> list[str]:
+    """The command line that runs `geolint ARGS` with the sample rules registered."""
+    return [sys.executable, "-c", LAUNCHER, *args]
+
+
+def cli_env(env: dict[str, str] | None = None, cache_dir: Path | None = None) -> dict[str, str]:
+    """The environment the CLI tests run geolint in (no colour settings of the caller's, sample rules importable)."""
+    return _env(env, cache_dir)
+
+
 def run_geolint(
-    *args: str, cwd: Path, env: dict[str, str] | None = None, cache_dir: Path | None = None
+    *args: str, cwd: Path, env: dict[str, str] | None = None, cache_dir: Path | None = None, input: str | None = None
 ) -> subprocess.CompletedProcess[str]:
-    """`geolint ARGS` with the sample rules registered, in `cwd`."""
+    """`geolint ARGS` with the sample rules registered, in `cwd` (`input` is its stdin)."""
     return subprocess.run(
-        [sys.executable, "-c", LAUNCHER, *args],
+        launch_geolint(*args),
         cwd=cwd,
         env=_env(env, cache_dir),
         capture_output=True,
         text=True,
         timeout=120,
+        input=input,
     )
 
 
 def run_module(
-    *args: str, cwd: Path, env: dict[str, str] | None = None, cache_dir: Path | None = None
+    *args: str, cwd: Path, env: dict[str, str] | None = None, cache_dir: Path | None = None, input: str | None = None
 ) -> subprocess.CompletedProcess[str]:
     """`python -m geolint ARGS` exactly as a user runs it (only the real rules)."""
     return subprocess.run(
@@ -52,6 +63,7 @@ def run_module(
         capture_output=True,
         text=True,
         timeout=120,
+        input=input,
     )
 
 
@@ -63,8 +75,8 @@ class Runner:
         self.project = project
         self.cache_dir = cache_dir
 
-    def __call__(self, *args: str, env: dict[str, str] | None = None, cwd: Path | None = None):
-        return self.function(*args, cwd=cwd or self.project, env=env, cache_dir=self.cache_dir)
+    def __call__(self, *args: str, env: dict[str, str] | None = None, cwd: Path | None = None, input: str | None = None):
+        return self.function(*args, cwd=cwd or self.project, env=env, cache_dir=self.cache_dir, input=input)
 
     def write(self, name: str, text: str, encoding: str = "utf-8") -> Path:
         """Write a file under the project (folders made as needed)."""
