@@ -3,7 +3,8 @@
 This is the only place that turns rule `Report`s into `Finding`s. The API, the CLI and
 the language server all come through here, so the editor and CI always agree.
 
-The pipeline for one file: decode (PEP 263 cookie, BOM) -> syntax check (GEO000, CPython's `ast`)
+The pipeline for one file: decode (PEP 263 cookie, BOM) -> syntax check (GEO000, CPython's `ast`,
+which reads the syntax of Python 3.10-3.13 whichever of them runs: `geolint.parsing`)
 -> prefilter (each rule's `triggers`; a file no enabled rule can fire on is analysed no further)
 -> every `AstRule`'s `check` on the cached `ast` tree and the file's fact base -> (only for the
 libcst `Rule`s still enabled) one libcst traversal -> configured severities -> suppression
@@ -28,6 +29,7 @@ from typing import TYPE_CHECKING, Iterable, Sequence, TypeGuard
 from geolint import guards, suppression
 from geolint.config import enabled_codes
 from geolint.lint_types import Config, Edit, Finding, Fix, Severity
+from geolint.parsing import SUPPORTED_GRAMMARS, parse_module
 
 if TYPE_CHECKING:
     import libcst as cst
@@ -145,7 +147,7 @@ def lint_source(
                 module, parse_error = _libcst_parse(source)
             if module is None:
                 line, column, message = syntax_error
-                return _only_syntax_error(path, config, rules, line, column, f"syntax error: {message}")
+                return _only_syntax_error(path, config, rules, line, column, f"syntax error for {SUPPORTED_GRAMMARS}: {message}")
 
     ast_rules, cst_rules = _split_rules(active)
     if syntax_error is not None:
@@ -417,7 +419,8 @@ _last_tree = threading.local()
 
 
 def cached_ast(source: str) -> ast.Module:
-    """`ast.parse(source)`, remembered for the last text parsed in this thread.
+    """`parse_module(source)` (CPython's `ast`, Python 3.10-3.13 syntax read under any of them),
+    remembered for the last text parsed in this thread.
 
     The engine's syntax check, the suppression scanner and the rules' prefilter all need the
     `ast` of the same text in a row; parsing it once saves a full parse per file.
@@ -426,7 +429,7 @@ def cached_ast(source: str) -> ast.Module:
     cached = getattr(_last_tree, "value", None)
     if cached is not None and cached[0] is source:
         return cached[1]
-    tree = ast.parse(source)
+    tree = parse_module(source)
     _last_tree.value = (source, tree)
     return tree
 

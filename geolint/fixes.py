@@ -10,12 +10,12 @@ Guarantees, whatever the rules do:
 
 from __future__ import annotations
 
-import ast
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Collection, Sequence
 
 from geolint.engine import apply_edits, lint_source
 from geolint.lint_types import Config, Finding
+from geolint.parsing import parse_module
 
 if TYPE_CHECKING:
     from geolint.rules import Rule
@@ -87,9 +87,9 @@ def fix_source(
 
 
 def parses(source: str) -> bool:
-    """Whether both CPython and libcst accept `source` (a fix must never break a file)."""
+    """Whether both CPython (reading Python 3.10-3.13 syntax) and libcst accept `source` (a fix must never break a file)."""
     try:
-        ast.parse(source)
+        parse_module(source)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return False
     import libcst as cst

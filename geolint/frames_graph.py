@@ -29,6 +29,7 @@ from pathlib import Path
 from typing import Iterable, Sequence
 
 from geolint.lint_types import Config, Finding
+from geolint.parsing import parse_module
 from geolint.render import FrameEdge, FrameGraph
 from geolint.factbase import typed
 from geolint.factbase.conventions import naming_config, orders_for
@@ -343,7 +344,7 @@ def graph_of_source(
     gives an empty graph (the linter reports it as GEO000).
     """
     try:
-        module = ast.parse(source)
+        module = parse_module(source)
     except (SyntaxError, ValueError):
         return FrameGraph()
     reading = orders_for(location or path, source, module, config.naming.order)

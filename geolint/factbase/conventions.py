@@ -29,7 +29,6 @@ composition of `T_` names are skipped by a substring test before any parsing).
 
 from __future__ import annotations
 
-import ast
 from ast import AnnAssign, Assign, Attribute, Call, Module, Name
 import os
 import re
@@ -42,6 +41,7 @@ from geolint.factbase.index import parse_of_file
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames, statements_under
 from geolint.factbase.summaries import project_root
 from geolint.lint_types import Config
+from geolint.parsing import parse_module
 from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS, NameFrames, is_frame
 
 _ORDER_NAME: Final = re.compile(r"^_*([TRXH])_([A-Za-z][A-Za-z0-9]*)_([A-Za-z][A-Za-z0-9]*)$")
@@ -160,7 +160,7 @@ def votes_of_source(source: str, tree: Module | None = None, file: tuple[str, tu
     if any(word in source for word in _DECLARING):
         if tree is None:
             try:
-                tree = ast.parse(source) if file is None else parse_of_file(file[0], source, file[1])
+                tree = parse_module(source) if file is None else parse_of_file(file[0], source, file[1])
             except (SyntaxError, ValueError, MemoryError, RecursionError):
                 return votes
             if tree is None:

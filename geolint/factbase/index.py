@@ -50,6 +50,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Final, Union
 
 from geolint.lint_types import Config
+from geolint.parsing import parse_module
 
 ScopeNode = Union[Module, FunctionDef, AsyncFunctionDef, ClassDef, Lambda]
 FUNCTION_NODES: Final = (FunctionDef, AsyncFunctionDef)
@@ -665,7 +666,7 @@ def parse_of_file(file: str, source: str, signature: tuple[int, int]) -> Module 
 def _parse_and_share(key: str, source: str, signature: tuple[int, int]) -> _SharedModule:
     """Parse a project module's text (None for a text that does not parse) and keep it under `key`."""
     try:
-        tree: Module | None = ast.parse(source)
+        tree: Module | None = parse_module(source)
     except (SyntaxError, ValueError, MemoryError, RecursionError):
         tree = None
     entry = _SharedModule(source, tree, None, signature)

@@ -11,9 +11,11 @@ from geolint.rules.base import AstRule, Invalid, Valid
 
 class SyntaxErrorRule(AstRule):
     """## What it does
-    Reports a file that cannot be parsed as Python 3 (by CPython or by libcst), or whose bytes
-    cannot be decoded with its declared encoding (a PEP 263 coding cookie, a UTF-8 BOM, else UTF-8).
-    The file gets exactly one finding, at the first error, and the rest of the run goes on.
+    Reports a file that is not valid Python 3.10-3.13, or whose bytes cannot be decoded with its
+    declared encoding (a PEP 263 coding cookie, a UTF-8 BOM, else UTF-8). The file gets exactly
+    one finding, at the first error, and the rest of the run goes on. Syntax newer than the running
+    interpreter's (`type X = ...` or a PEP 701 f-string under Python 3.11) is no error: the file is
+    analysed as under the newer Python. The message names the versions whose grammar rejects it.
 
     ## Why is this bad?
     geolint reads code without running it; a file it cannot parse is a file it cannot check, so
