@@ -171,3 +171,14 @@ def test_the_frame_graph_reads_a_file_of_newer_syntax():
         ("world", "base", "newer.py:3"),
         ("base", "cam", "newer.py:3"),
     ]
+
+
+def test_a_suppression_comment_on_a_line_of_newer_syntax_is_read():
+    source = (
+        "def to_base[T](mesh: T, face_normals, R_base_mesh, t_base_mesh):\n"
+        f'    log(f"{{mesh.names["base"]}}"); normals = {BUG}  # geolint: ignore[GEO101]\n'
+        "    return normals\n"
+    )
+    assert lint_source(source, "newer.py") == []
+    unused = source.replace("ignore[GEO101]", "ignore[GEO102]")
+    assert [(f.code, f.line) for f in lint_source(unused, "newer.py")] == [("GEO101", 2), ("GEO900", 2)]
