@@ -25,7 +25,7 @@ from geolint import engine
 from geolint.cache import DiscoveryCache, FindingsCache, ImportsCache, VotesCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
 from geolint.factbase import conventions, ros_packages
-from geolint.factbase.summaries import ImportGraph, consulted_folders, folder_listings, project_root
+from geolint.factbase.project_files import ImportGraph, consulted_folders, folder_listings, project_root
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 

@@ -46,8 +46,8 @@ from ast import (
     USub,
 )
 from collections import Counter
-from dataclasses import dataclass
-from typing import Final, TYPE_CHECKING
+from dataclasses import dataclass, field
+from typing import Final
 
 from geolint.factbase.angles import (
     DEGREES,
@@ -70,10 +70,17 @@ from geolint.factbase.model import (
     walk_within,
 )
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
-from geolint.factbase.summaries import only_bound_as_parameter
-
-if TYPE_CHECKING:
-    from geolint.factbase.summaries import FunctionSummary
+from geolint.factbase.summaries import (
+    Function,
+    Summary,
+    SummaryFamily,
+    agreed,
+    chain,
+    only_bound_as_parameter,
+    plain_parameters,
+    settled_returns,
+    shifted,
+)
 
 _DEGREE_WORDS: Final = frozenset({"deg", "degs", "degree", "degrees"})
 _RADIAN_WORDS: Final = frozenset({"rad", "rads", "radian", "radians"})
@@ -239,7 +246,7 @@ class AngleUnits:
         if converted is not None:
             return Unit(converted, f"`{facts.code_of(call.func)}` returns {unit_word(converted)}", False)
         if facts.may_have_summary(call):  # a project helper whose every `return` agrees on a unit
-            summary = facts.function_summary(call)
+            summary = facts.summary_of(call, ANGLE_UNITS)
             if summary is not None and summary.angle_unit is not None:
                 unit, evidence, by_name = summary.angle_unit
                 return Unit(unit, f"`{facts.code_of(call.func)}` returns {unit_word(unit)}: {evidence}", by_name)
@@ -667,7 +674,7 @@ def helper_reads(facts: FactBase, call: Call, unit: str, units: AngleUnits | Non
         units = facts.shared(AngleUnits) if units is None else units
         other = RADIANS if unit == DEGREES else DEGREES
         if any(type(arg) in _MAY_HAVE_UNIT and (given := units.unit_of(arg)) is not None and given.unit == other for arg in args):
-            summary = facts.function_summary(call)
+            summary = facts.summary_of(call, ANGLE_UNITS)
             if summary is not None:
                 return _summary_reads(facts, call, unit, summary)
         return _class_reads(facts, call, unit, None)
@@ -704,7 +711,7 @@ def _class_reads(facts: FactBase, call: Call, unit: str, local: ClassDef | None)
     return _constructor_reads_of(facts, call, unit, cheap)
 
 
-def _summary_reads(facts: FactBase, call: Call, unit: str, summary: FunctionSummary) -> list[tuple[ast.expr, str, bool]]:
+def _summary_reads(facts: FactBase, call: Call, unit: str, summary: AngleSummary) -> list[tuple[ast.expr, str, bool]]:
     helper = facts.code_of(call.func)
     found = []
     for index, (read, where, by_name) in sorted(summary.reads_unit.items()):
@@ -859,3 +866,102 @@ def _self_attributes(facts: FactBase) -> tuple[dict[str, list[Attribute]], dict[
         return loads, stores
 
     return facts.module_fact("self attributes", collect)
+
+
+# --- the summaries of angle units: what a helper returns and what it reads its parameters in ------
+
+
+@dataclass
+class AngleSummary(Summary):
+    # the angle unit every `return` agrees on: (unit, evidence, decided by a name alone)
+    angle_unit: tuple[str, str, bool] | None = None
+    # parameter index -> (unit, where, decided by its name alone): parameters passed as they are to an
+    # API that reads that unit, or named in it (`angle_in_degrees`)
+    reads_unit: dict[int, tuple[str, str, bool]] = field(default_factory=dict)
+
+
+_CONFLICT: Final = ("", "", False)
+
+
+def _summarize_angle_units(facts: FactBase, function: Function, params: tuple[str, ...]) -> AngleSummary:
+    """The unit a function returns its angles in, and the unit it reads each parameter in (`heading(v)`
+    returns radians; `rot_z(theta)` reads radians)."""
+    summary = AngleSummary(parameters=params)
+    scope = facts.index.scopes.get(function)
+    if scope is None:
+        return summary
+    plain = plain_parameters(scope, params)
+    returns = settled_returns(facts, scope, ANGLE_UNITS)
+    if returns:
+        summary.angle_unit = _returned_unit(facts, returns)
+    for node in walk_within(function):
+        if isinstance(node, Call) and node.args:
+            _record_unit_reads(facts, node, positional_args(node), params, plain, summary)
+    _add_named_units(summary)
+    return summary
+
+
+def _record_unit_reads(
+    facts: FactBase, call: Call, arguments: list[ast.expr], params: tuple[str, ...], plain: set[str], summary: AngleSummary
+) -> None:
+    """What a call inside the function reads the function's own parameters in (its `positional_args`):
+    a project helper that reads a unit, an API that does (`np.cos(theta)`)."""
+    passed = {index: params.index(arg.id) for index, arg in enumerate(arguments) if isinstance(arg, Name) and arg.id in plain}
+    if not passed:
+        if arguments and isinstance(arguments[0], BinOp):
+            _record_rotation_vector(facts, call, plain, summary)
+        return
+    if facts.may_have_summary(call):
+        callee = facts.summary_of(call, ANGLE_UNITS)
+        if callee is not None:
+            for index, (unit, where, by_name) in callee.reads_unit.items():
+                if index in passed and unit:
+                    if where:
+                        through = chain(f"`{facts.code_of(call.func)}`", where)
+                    else:
+                        through = f"`{facts.code_of(call.func)}` (whose parameter `{callee.parameters[index]}` is named in {'degrees' if unit == 'deg' else 'radians'})"
+                    _add_unit_read(summary, passed[index], unit, through, by_name)
+            return
+    for index, own in passed.items():
+        read = unit_read_by(facts, call, arguments[index])
+        if read is not None:
+            _add_unit_read(summary, own, read, f"`{facts.code_of(call.func)}`")
+
+
+def _record_rotation_vector(facts: FactBase, call: Call, plain: set[str], summary: AngleSummary) -> None:
+    """`from_rotation_vector(theta * axis)`: a parameter that scales a rotation vector is its angle, read in radians."""
+    for factor in rotation_vector_factors(facts, call):
+        if isinstance(factor, Name) and factor.id in plain:
+            read = unit_read_by(facts, call, factor)
+            if read is not None:
+                where = f"`{facts.code_of(call.func)}` (as the angle of the rotation vector `{facts.code_of(facts.parent(factor) or factor)}`)"
+                _add_unit_read(summary, summary.parameters.index(factor.id), read, where)
+
+
+def _add_unit_read(summary: AngleSummary, index: int, unit: str, where: str, by_name: bool = False) -> None:
+    known = summary.reads_unit.get(index)
+    if known is None:
+        summary.reads_unit[index] = (unit, where, by_name)
+    elif known[0] != unit:
+        summary.reads_unit[index] = _CONFLICT  # read as both units: no evidence
+
+
+def _add_named_units(summary: AngleSummary) -> None:
+    """`def normalize(angle_in_degrees)`: a parameter named in a unit is read in it, unless its body
+    reads it in the other unit (then nothing is known)."""
+    for index, name in enumerate(summary.parameters):
+        unit = name_unit(name)
+        if unit is not None:
+            _add_unit_read(summary, index, unit, "", by_name=True)  # no call: the name itself
+
+
+def _returned_unit(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
+    found = agreed([facts.shared(AngleUnits).unit_of(value) for value in returns], "unit")
+    return None if found is None else (found[0].unit, found[0].evidence, any(unit.by_name for unit in found))
+
+
+def _bound_angle_summary(summary: AngleSummary) -> AngleSummary:
+    return AngleSummary(parameters=summary.parameters[1:], angle_unit=summary.angle_unit, reads_unit=shifted(summary.reads_unit), pending=summary.pending)
+
+
+ANGLE_UNITS: Final = SummaryFamily("angle units", AngleSummary, _summarize_angle_units, _bound_angle_summary)

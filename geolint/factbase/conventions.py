@@ -39,7 +39,7 @@ from typing import Final, Iterator, NamedTuple
 
 from geolint.factbase.index import parse_of_file
 from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames, statements_under
-from geolint.factbase.summaries import project_root
+from geolint.factbase.project_files import project_root
 from geolint.lint_types import Config
 from geolint.parsing import parse_module
 from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS, NameFrames, is_frame

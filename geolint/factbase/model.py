@@ -34,7 +34,9 @@ from geolint import algebra
 from geolint.algebra import FREE, Kind
 from geolint.factbase import summaries
 from geolint.factbase import vocabulary as vocab
-from geolint.factbase.summaries import FunctionSummary
+from geolint.factbase.kind_summaries import HOMOGENEOUS, KINDS
+from geolint.factbase.project_files import may_be_project_import, module_file
+from geolint.factbase.summaries import Summary, SummaryFamily
 from geolint.factbase.reaching import every_binding_reaches, reaching_bindings
 from geolint.factbase.index import (
     Binding,
@@ -58,6 +60,7 @@ from geolint.semantic.names import (
 
 _T = TypeVar("_T")
 _A = TypeVar("_A")  # an analysis built on one fact base
+_S = TypeVar("_S", bound=Summary)  # a family's summary
 
 DST_FIRST: Final = "dst-first"
 SRC_FIRST: Final = "src-first"
@@ -244,7 +247,7 @@ class FactBase:
         # the summaries of the project's helpers this module's lint reads (shared with the fact
         # bases of the other modules they come from)
         if project is None:
-            project = summaries.ProjectSummaries(config)
+            project = summaries.ProjectSummaries(config, FactBase)
             project.adopt(self)
         self.project = project
         self._memo: dict[tuple[str, int, str], object] = {}
@@ -556,7 +559,7 @@ class FactBase:
         library = vocab.LIBRARY_KINDS.get(qualified)
         if library is not None:
             return library
-        summary = self.function_summary(node)
+        summary = self.summary_of(node, KINDS)
         return None if summary is None else summary.returns
 
     def may_have_summary(self, call: Call) -> bool:
@@ -579,21 +582,23 @@ class FactBase:
             return root is func and bool(self.index.star_imports) and self._star_imported_callee(func) is not None  # type: ignore[arg-type]
         # `from numpy import array` then `array(x)`: a third-party function has no summary either,
         # nor one of a package the project's folders do not hold (`gym.make`, `time.sleep`)
-        return summaries.may_be_project_import(imported, self.path)
+        return may_be_project_import(imported, self.path)
 
-    def function_summary(self, call: Call) -> FunctionSummary | None:
-        """What the called helper does (a function of this module, or of a project module it imports)."""
-        return self._cached("summary", call, FactBase._function_summary)
+    def summary_of(self, call: Call, family: SummaryFamily[_S]) -> _S | None:
+        """What the called helper does, as far as `family` asks (`KINDS`, `ANGLE_UNITS`...): a function of
+        this module, or of a project module it imports. Only the families asked are computed."""
+        return self._cached("summary", call, FactBase._summary_of_call, family.tag)  # type: ignore[return-value]
 
-    def _function_summary(self, call: Call) -> FunctionSummary | None:
+    def _summary_of_call(self, call: Call, tag: str) -> Summary | None:
+        family = summaries.family_of(tag)
         found = self.called_function(call)
         if found is not None:
-            return self.project.summary(*found)
+            return self.project.summary(found[0], found[1], family)
         method = self.own_method(call)
         if method is None:
             return None
-        summary = self.project.summary(self, method)
-        return None if summary is None else summaries.bound(summary)
+        summary = self.project.summary(self, method, family)
+        return None if summary is None else family.bound(summary)
 
     def own_method(self, call: Call) -> FunctionDef | AsyncFunctionDef | None:
         """For `self.helper(...)` inside a method: the one `helper` of the same class, when it takes
@@ -668,7 +673,7 @@ class FactBase:
         if not module.strip(".") or not name or module.lstrip(".").split(".")[0] in vocab.THIRD_PARTY_ROOTS:
             return None
         level = len(module) - len(module.lstrip("."))
-        file = summaries.module_file(module.lstrip("."), importer, level)
+        file = module_file(module.lstrip("."), importer, level)
         other = None if file is None else self.project.facts_of(file)
         return None if other is None else (other, name)
 
@@ -1165,7 +1170,7 @@ class FactBase:
             and self._feeds_a_product(node)  # only then is a helper's w worth looking up
             and not self.is_array_call(node.func, *_ARRAY_BUILDERS)
         ):
-            summary = self.function_summary(node)
+            summary = self.summary_of(node, HOMOGENEOUS)
             if summary is not None and summary.homogenizes:
                 index, w = next(iter(summary.homogenizes.items()))
                 if index < len(positional):  # `to_homogeneous(normals)`: the helper appends w

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from geolint.factbase.model import FactBase, last_name, number
-from geolint.factbase.quaternion_orders import component_index
+from geolint.factbase.quaternion_components import component_index
 from geolint.factbase.reaching import Unpacked, value_of
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST
 

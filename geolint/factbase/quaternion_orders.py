@@ -17,17 +17,30 @@ from typing import Final
 
 import ast
 from ast import (
-    AST, Assign, Attribute, BinOp, Call, ClassDef, Constant, Div, Mult, Name, Slice, Starred, Subscript, USub,
+    AST, Assign, Attribute, BinOp, Call, ClassDef, Div, Mult, Name, Slice, Starred, Subscript, USub,
     UnaryOp,
 )
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
+from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import LoopBinding, ParamBinding, UnpackBinding
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.messages import QUATERNION_FIELD_NAMES, MessageTypes, field_label, field_order
-from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts
-from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST, quaternion_producer
+from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts, walk_within
+from geolint.factbase.quaternion_formulas import formula_reads_within
+from geolint.factbase.quaternion_components import is_ellipsis, same_base, spelled_components
+from geolint.factbase.rotations import (
+    SCALAR_FIRST,
+    SCALAR_LAST,
+    component_writes_of_parameter,
+    isaac_orientation_arguments,
+    pybullet_orientation_arguments,
+    quaternion_argument,
+    quaternion_order,
+    quaternion_producer,
+)
+from geolint.factbase.summaries import Function, Summary, SummaryFamily, agreed, chain, plain_parameters, settled_returns, shifted
 from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
 
 COMPONENTS: Final = "wxyz"
@@ -107,58 +120,6 @@ def name_order(name: str) -> str | None:
     return found.pop() if len(found) == 1 else None
 
 
-def component_index(node: ast.expr) -> tuple[ast.expr, int] | None:
-    """`q[3]`, `q[:, 3]`, `q[..., 3]`, `float(q[3])`: (q, 3) for an integer last index after full slices only."""
-    node = unwrapped_scalar(node)
-    if not isinstance(node, Subscript):
-        return None
-    parts = subscript_parts(node)
-    if not parts:
-        return None  # `x[()]`
-    *leading, last = parts
-    if not all(is_full_slice(part) or _is_ellipsis(part) for part in leading):
-        return None
-    value = number(last)
-    if not isinstance(value, int) or isinstance(value, bool) or not -4 <= value <= 3:
-        return None
-    return node.value, value % 4
-
-
-def spelled_components(facts: FactBase, node: ast.expr) -> list[ast.expr] | None:
-    """The four elements of `[a, b, c, d]`, `(a, b, c, d)` or `np.array([a, b, c, d])`."""
-    if isinstance(node, Call) and last_name(node.func) in ("array", "asarray", "tensor", "as_tensor") and len(node.args) == 1:
-        if facts.is_array_call(node.func, "array", "asarray", "tensor", "as_tensor"):
-            node = node.args[0]
-    if isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) == 4 and not any(isinstance(e, Starred) for e in node.elts):
-        return list(node.elts)
-    return None
-
-
-def unwrapped_scalar(node: ast.expr) -> ast.expr:
-    """`float(q[3])` -> `q[3]`: the builtin conversion keeps the component's value."""
-    if (
-        isinstance(node, Call) and isinstance(node.func, Name) and node.func.id == "float"
-        and len(node.args) == 1 and not node.keywords
-    ):
-        return node.args[0]
-    return node
-
-
-def same_base(facts: FactBase, elements: list[ast.expr]) -> tuple[ast.expr, list[int]] | None:
-    """`[q[1], q[2], q[3], q[0]]` -> (q, [1, 2, 3, 0]): integer components of one base expression."""
-    found = [component_index(element) for element in elements]
-    if any(item is None for item in found):
-        return None
-    bases = {ast.dump(item[0]) for item in found}  # type: ignore[index]
-    if len(bases) != 1:
-        return None
-    return found[0][0], [item[1] for item in found]  # type: ignore[index]
-
-
-def _is_ellipsis(node: AST) -> bool:
-    return isinstance(node, Constant) and node.value is Ellipsis
-
-
 def _words(name: str) -> list[str]:
     return [word.lower() for word in re.findall(r"[A-Z]?[a-z0-9]+|[A-Z]+(?![a-z])", name)]
 
@@ -182,7 +143,7 @@ class QuaternionFlow:
             if not parts:
                 return None  # `x[()]`
             *leading, last = parts
-            if all(is_full_slice(part) or _is_ellipsis(part) for part in leading):
+            if all(is_full_slice(part) or is_ellipsis(part) for part in leading):
                 permutation = _index_list(facts, last)
                 if permutation is not None:
                     return Reorder(node, node.value, permutation, "index")
@@ -325,7 +286,7 @@ class QuaternionFlow:
         if elements is not None:
             return self._order_of_spelled(call, elements)
         if facts.may_have_summary(call):  # a project helper whose every `return` agrees on an order
-            summary = facts.function_summary(call)
+            summary = facts.summary_of(call, QUATERNIONS)
             if summary is not None and summary.quaternion_order is not None:
                 order, evidence, batch = summary.quaternion_order
                 return Order(order, f"from `{facts.code_of(call.func)}`, which returns it {evidence}", local=False, batch=batch)
@@ -336,7 +297,7 @@ class QuaternionFlow:
         facts = self.facts
         if not facts.may_have_summary(call):
             return None
-        summary = facts.function_summary(call)
+        summary = facts.summary_of(call, QUATERNIONS)
         if summary is None or position not in summary.quaternion_elements:
             return None
         order, evidence, batch = summary.quaternion_elements[position]
@@ -588,3 +549,142 @@ def _spelled_order(elements: list[ast.expr]) -> str | None:
 
 def convention(order: str) -> str:
     return "scalar-first (w, x, y, z)" if order == SCALAR_FIRST else "scalar-last (x, y, z, w)" if order == SCALAR_LAST else label(order)
+
+
+# --- the summaries of quaternion orders: what a helper returns and what it reads its parameters in -
+
+
+@dataclass
+class QuaternionSummary(Summary):
+    # the quaternion order every `return` agrees on: (order, evidence, a stack of quaternions)
+    quaternion_order: tuple[str, str, bool] | None = None
+    # `return pos, quat`: tuple position -> the quaternion order every `return` agrees on there
+    quaternion_elements: dict[int, tuple[str, str, bool]] = field(default_factory=dict)
+    # parameter index -> (quaternion order, where): parameters passed as they are, unconditionally, as
+    # the quaternion of an API that reads that order (`Rotation.from_quat(q)`), directly or through helpers
+    reads_quaternion: dict[int, tuple[str, str]] = field(default_factory=dict)
+
+
+def _summarize_quaternions(facts: FactBase, function: Function, params: tuple[str, ...]) -> QuaternionSummary:
+    """The order a function returns its quaternions in, and the order it reads each parameter in."""
+    summary = QuaternionSummary(parameters=params)
+    scope = facts.index.scopes.get(function)
+    if scope is None:
+        return summary
+    plain = plain_parameters(scope, params)
+    returns = settled_returns(facts, scope, QUATERNIONS)
+    if returns:
+        summary.quaternion_order = _returned_order(facts, returns)
+        summary.quaternion_elements = _returned_element_orders(facts, returns)
+    for node in walk_within(function):
+        if isinstance(node, Call) and node.args:
+            _record_quaternion_reads(facts, node, positional_args(node), params, plain, summary)
+        if isinstance(node, Call) and node.keywords:
+            _record_keyword_quaternions(facts, node, params, plain, summary)
+    _record_formula_reads(facts, function, plain, summary)
+    if plain and scope.attribute_stores:
+        _record_component_writes(facts, scope.attribute_stores, plain, summary)
+    return summary
+
+
+def _record_quaternion_reads(
+    facts: FactBase, call: Call, arguments: list[ast.expr], params: tuple[str, ...], plain: set[str], summary: QuaternionSummary
+) -> None:
+    """What a call inside the function reads the function's own parameters as (its `positional_args`):
+    a project helper that reads a quaternion order, an API that does (`Rotation.from_quat(q)`)."""
+    passed = {index: params.index(arg.id) for index, arg in enumerate(arguments) if isinstance(arg, Name) and arg.id in plain}
+    if not passed:
+        return
+    if facts.may_have_summary(call):
+        callee = facts.summary_of(call, QUATERNIONS)
+        if callee is not None:
+            for index, (order, where) in callee.reads_quaternion.items():
+                if index in passed and order:
+                    _add_quaternion_read(summary, passed[index], order, chain(f"`{facts.code_of(call.func)}`", where))
+            return
+    for index, own in passed.items():
+        read_order = quaternion_read_by(facts, call, arguments[index])
+        if read_order is not None:
+            _add_quaternion_read(summary, own, read_order, f"`{facts.code_of(call.func)}`")
+
+
+def _record_keyword_quaternions(facts: FactBase, call: Call, params: tuple[str, ...], plain: set[str], summary: QuaternionSummary) -> None:
+    """`XFormPrim(path, orientation=q)`, `loadURDF(path, baseOrientation=q)`: a parameter passed by keyword
+    as an API's quaternion."""
+    for given in call.keywords:
+        value = given.value
+        if isinstance(value, Name) and value.id in plain:
+            order = quaternion_read_by(facts, call, value)
+            if order is not None:
+                _add_quaternion_read(summary, params.index(value.id), order, f"`{facts.code_of(call.func)}`")
+
+
+def _record_formula_reads(facts: FactBase, function: Function, plain: set[str], summary: QuaternionSummary) -> None:
+    """A parameter whose components an unconditional textbook formula reads (`atan2(2 * (q[3] * q[2] + ...`)
+    is read in that formula's order, as if handed to an API."""
+    for read in formula_reads_within(facts, function):
+        base = read.base
+        if not (isinstance(base, Name) and base.id in plain) or facts.index.scope_of(base).node is not function:
+            continue
+        if runs_unconditionally(facts, read.node):
+            _add_quaternion_read(summary, summary.parameters.index(base.id), read.order, read.evidence(facts))
+
+
+def _record_component_writes(facts: FactBase, stores: list[tuple[Attribute, ast.expr]], plain: set[str], summary: QuaternionSummary) -> None:
+    """`msg.x = q[0]` ... `msg.w = q[3]` on a parameter `q`: read in that order, as if handed to an API."""
+    for name, order, where in component_writes_of_parameter(facts, stores, plain):
+        _add_quaternion_read(summary, summary.parameters.index(name), order, where)
+
+
+def quaternion_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str | None:
+    """The component order `call` reads `argument` in, when it is the call's whole quaternion (scipy
+    `from_quat(q)`, pybullet's orientation arguments...) and the call runs whenever its function does."""
+    if any(found is argument for found in pybullet_orientation_arguments(call)):
+        order: str | None = SCALAR_LAST
+    elif any(found is argument for found in isaac_orientation_arguments(facts, call)):
+        order = SCALAR_FIRST
+    else:
+        order = quaternion_order(facts, call)
+        if order is None or quaternion_argument(facts, call) is not argument:
+            return None
+    return order if runs_unconditionally(facts, call) else None
+
+
+def _add_quaternion_read(summary: QuaternionSummary, index: int, order: str, where: str) -> None:
+    known = summary.reads_quaternion.get(index)
+    if known is None:
+        summary.reads_quaternion[index] = (order, where)
+    elif known[0] != order:
+        summary.reads_quaternion[index] = ("", "")  # read in both orders: no evidence
+
+
+def _returned_order(facts: FactBase, returns: list[ast.expr]) -> tuple[str, str, bool] | None:
+    found = agreed([facts.shared(QuaternionFlow).order_of(value) for value in returns], "order")
+    return None if found is None else (found[0].order, found[0].evidence, all(order.batch for order in found))
+
+
+def _returned_element_orders(facts: FactBase, returns: list[ast.expr]) -> dict[int, tuple[str, str, bool]]:
+    """`return pos, quat_wxyz`: the order of each position of the returned tuple, when every `return`
+    is a tuple of one length and all of them agree on that position."""
+    if not all(isinstance(value, ast.Tuple) for value in returns) or len({len(value.elts) for value in returns}) != 1:  # type: ignore[attr-defined]
+        return {}
+    flow = facts.shared(QuaternionFlow)
+    found: dict[int, tuple[str, str, bool]] = {}
+    for position in range(len(returns[0].elts)):  # type: ignore[attr-defined]
+        orders = agreed([flow.order_of(value.elts[position]) for value in returns], "order")  # type: ignore[attr-defined]
+        if orders is not None:
+            found[position] = (orders[0].order, orders[0].evidence, all(order.batch for order in orders))
+    return found
+
+
+def _bound_quaternion_summary(summary: QuaternionSummary) -> QuaternionSummary:
+    return QuaternionSummary(
+        parameters=summary.parameters[1:],
+        quaternion_order=summary.quaternion_order,
+        quaternion_elements=summary.quaternion_elements,
+        reads_quaternion=shifted(summary.reads_quaternion),
+        pending=summary.pending,
+    )
+
+
+QUATERNIONS: Final = SummaryFamily("quaternions", QuaternionSummary, _summarize_quaternions, _bound_quaternion_summary)

@@ -27,7 +27,7 @@ import re
 import threading
 
 from geolint.factbase import conventions
-from geolint.factbase.summaries import PACKAGE_MANIFEST, package_of_folder
+from geolint.factbase.project_files import PACKAGE_MANIFEST, package_of_folder
 
 # a `<depend>`, `<build_depend>`, `<exec_depend>`, `<run_depend>`... on a tf2 package
 _TF2_DEPENDENCY: Final = re.compile(

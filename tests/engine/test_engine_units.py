@@ -212,7 +212,7 @@ def test_import_scan_finds_what_the_anchored_regex_finds() -> None:
     find exactly the module names the line-anchored regex finds."""
     import random
 
-    from geolint.factbase.summaries import _IMPORT, imported_names
+    from geolint.factbase.project_files import _IMPORT, imported_names
 
     pieces = ["from", "import", " ", "\t", "\n", "\r", "a", ".", "x", "os", "#", "fromimport", "_", "é"]
     rng = random.Random(7)

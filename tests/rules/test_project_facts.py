@@ -115,7 +115,7 @@ def test_a_package_no_project_folder_holds_has_no_summary(tmp_path: Path) -> Non
     import ast
 
     from geolint.factbase import facts_for_module
-    from geolint.factbase.summaries import folder_listings, may_be_project_module
+    from geolint.factbase.project_files import folder_listings, may_be_project_module
     from geolint.lint_types import Config
 
     (tmp_path / "pyproject.toml").write_text("[project]\nname = 'demo'\n")

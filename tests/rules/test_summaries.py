@@ -11,9 +11,16 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
+from geolint._build import is_compiled
 from geolint.factbase import facts_for_module
 from geolint.factbase.model import FactBase
-from geolint.factbase.summaries import ImportGraph, ProjectSummaries, dependency_digest, imported_names
+from geolint.factbase.angle_units import ANGLE_UNITS
+from geolint.factbase.kind_summaries import HOMOGENEOUS
+from geolint.factbase.project_files import ImportGraph, dependency_digest, imported_names
+from geolint.factbase.quaternion_orders import QUATERNIONS
+from geolint.factbase.summaries import ProjectSummaries
 from geolint.lint_types import Config
 from geolint.engine import lint_source
 
@@ -149,8 +156,8 @@ def test_mutual_recursion_gives_the_same_summaries_whichever_is_asked_first() ->
     answers = []
     for order in (("even", "odd"), ("odd", "even")):
         facts = facts_for_module(tree, source, "<string>", Config())
-        project = ProjectSummaries(Config())
-        answers.append([project.summary(facts, facts.index.functions[name]) for name in order])
+        project = ProjectSummaries(Config(), FactBase)
+        answers.append([project.summary(facts, facts.index.functions[name], HOMOGENEOUS) for name in order])
     (even_first, odd_second), (odd_first, even_second) = answers
     assert even_first == even_second and odd_first == odd_second
     assert even_first is not None and even_first.homogenizes == {0: 1}
@@ -164,10 +171,10 @@ def test_a_chain_deeper_than_the_bound_is_unknown_from_its_top() -> None:
         lines += [f"def h{level}(theta):", f"    return h{level - 1}(theta)"]
     source = "\n".join(lines) + "\n"
     facts = facts_for_module(ast.parse(source), source, "<string>", Config())
-    top = facts.project.summary(facts, facts.index.functions[f"h{depth - 1}"])
+    top = facts.project.summary(facts, facts.index.functions[f"h{depth - 1}"], ANGLE_UNITS)
     assert top is not None and top.reads_unit == {}  # the stack stopped short of `np.cos`: nothing known
     assert facts.project.computed <= depth  # and nothing was computed twice
-    bottom = facts.project.summary(facts, facts.index.functions["h3"])
+    bottom = facts.project.summary(facts, facts.index.functions["h3"], ANGLE_UNITS)
     assert bottom is not None and bottom.reads_unit[0][0] == "rad"
     # a lint asks from the top too: a helper 19 calls away from `np.cos` is unknown there, and silent;
     # one 4 calls away is known
@@ -277,16 +284,16 @@ def test_a_with_block_that_may_return_before_the_read_reads_nothing() -> None:
     whose exit comes after the call. A loop body may not run at all."""
     facts = facts_for_module(ast.parse(_GUARDED_HELPERS), _GUARDED_HELPERS, "<string>", Config())
 
-    def summary(name: str):  # type: ignore[no-untyped-def]
-        found = facts.project.summary(facts, facts.index.functions[name])
+    def summary(name: str, family):  # type: ignore[no-untyped-def]
+        found = facts.project.summary(facts, facts.index.functions[name], family)
         assert found is not None
         return found
 
-    assert summary("yaw_rotation").reads_unit[0][0] == "rad"
-    assert summary("yaw_rotation_or_identity").reads_unit == {}
-    assert summary("yaw_of").reads_quaternion[0][0] == summary("yaw_logged").reads_quaternion[0][0] != ""
+    assert summary("yaw_rotation", ANGLE_UNITS).reads_unit[0][0] == "rad"
+    assert summary("yaw_rotation_or_identity", ANGLE_UNITS).reads_unit == {}
+    assert summary("yaw_of", QUATERNIONS).reads_quaternion[0][0] == summary("yaw_logged", QUATERNIONS).reads_quaternion[0][0] != ""
     for conditional in ("yaw_or_zero", "yaw_checked", "yaw_when_ready", "yaw_nested", "yaw_retrying"):
-        assert summary(conditional).reads_quaternion == {}, conditional
+        assert summary(conditional, QUATERNIONS).reads_quaternion == {}, conditional
 
     calls = (
         "from transforms3d.quaternions import mat2quat\n"
@@ -395,6 +402,67 @@ def test_a_long_chain_of_helpers_keeps_its_evidence_short() -> None:
     assert any("-> ... ->" in f.message for f in findings)
 
 
+_HELPERS_OF_THREE_FAMILIES = """\
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+
+def apply_pose(T, p):
+    return T[:3, :3] @ p + T[:3, 3]
+
+
+def heading(q):
+    return Rotation.from_quat(q).as_euler("zyx")[0]
+
+
+def wrapped_yaw(theta):
+    return np.degrees(np.arctan2(np.sin(theta), np.cos(theta)))
+
+
+def to_world(T_world_cam, normal_cam, q):
+    yaw = heading(q)
+    normal_world = apply_pose(T_world_cam, normal_cam)
+    return normal_world, wrapped_yaw(yaw)
+"""
+
+# The modules that answer angle-unit and quaternion-order questions.
+_ROTATION_MODULES = frozenset(
+    {"geolint.factbase.angle_units", "geolint.factbase.quaternion_orders", "geolint.factbase.quaternion_formulas", "geolint.factbase.rotations"}
+)
+
+
+def _rotation_functions_run(select: tuple[str, ...]) -> set[str]:
+    """The functions of `_ROTATION_MODULES` that run while `_HELPERS_OF_THREE_FAMILIES` is linted with `select`."""
+    from geolint.rules import all_rules
+
+    all_rules()  # every module imported: what runs below is the lint, not an import
+    ran: set[str] = set()
+
+    def profile(frame, event, arg):  # type: ignore[no-untyped-def]
+        if event == "call" and frame.f_globals.get("__name__") in _ROTATION_MODULES:
+            ran.add(f"{frame.f_globals['__name__']}.{frame.f_code.co_name}")
+
+    sys.setprofile(profile)
+    try:
+        found = lint_source(_HELPERS_OF_THREE_FAMILIES, "<string>", Config(select=select))
+    finally:
+        sys.setprofile(None)
+    if select == ("GEO101",):
+        assert [(finding.code, finding.line) for finding in found] == [("GEO101", 19)]  # through `apply_pose`'s summary
+    return ran
+
+
+@pytest.mark.skipif(is_compiled(), reason="compiled functions are not seen by sys.setprofile")
+def test_a_rule_pays_only_for_the_summaries_it_asks() -> None:
+    """Summaries are per family and computed on first use: GEO101 reads what helpers return and
+    translate, so linting with it alone runs no angle-unit or quaternion-order code, though the
+    module's helpers return and read angles and quaternions. GEO302 and GEO301 run it."""
+    assert _rotation_functions_run(("GEO101",)) == set()
+    ran = _rotation_functions_run(("GEO301", "GEO302"))
+    assert "geolint.factbase.angle_units._summarize_angle_units" in ran
+    assert "geolint.factbase.quaternion_orders._summarize_quaternions" in ran
+
+
 def test_summaries_are_kept_per_lint() -> None:
     """Each linted module gets its own summaries: a long-running process never serves one computed
     against an older version of a module."""
@@ -459,7 +527,7 @@ def test_a_helper_that_writes_its_parameter_into_fields_reads_it_in_their_order(
     facts = facts_for_module(ast.parse(_FIELD_HELPERS), _FIELD_HELPERS, "<string>", Config())
 
     def reads(name: str) -> dict[int, str]:
-        found = facts.project.summary(facts, facts.index.functions[name])
+        found = facts.project.summary(facts, facts.index.functions[name], QUATERNIONS)
         assert found is not None
         return {index: order for index, (order, _) in found.reads_quaternion.items()}
 

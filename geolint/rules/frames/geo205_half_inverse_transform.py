@@ -34,7 +34,7 @@ from geolint.factbase.pose_parts import (
     transposed_operand,
 )
 from geolint.factbase.reaching import Unpacked, resolve, scope_of
-from geolint.factbase.summaries import may_be_project_import
+from geolint.factbase.project_files import may_be_project_import
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import MATMUL_TEXT, POSE_PART_TEXT, AllOf, AnyOf
 

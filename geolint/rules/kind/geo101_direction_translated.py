@@ -16,7 +16,7 @@ from geolint.factbase.model import (
     GEOMETRIC, FactBase, is_transpose, is_zero, keyword, last_name, last_name_target, number, positional_args, replace_span,
     string, subscript_parts, transposed_value,
 )  # fmt: skip
-from geolint.factbase.summaries import FunctionSummary
+from geolint.factbase.kind_summaries import TRANSLATION, TranslationSummary
 from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.semantic.names import kind_of_name
 
@@ -182,7 +182,7 @@ class DirectionTranslated(FactRule):
         positional = positional_args(node)
         if not any(facts.is_free(arg) for arg in positional[:4]):
             return  # only a direction passed in makes the helper's body worth reading
-        summary = facts.function_summary(node)
+        summary = facts.summary_of(node, TRANSLATION)
         if summary is None or not summary.translates:
             return
         for index in sorted(summary.translates):
@@ -452,7 +452,7 @@ def _untranslated_element(facts: FactBase, call: Call, position: int | None) -> 
     return element == position and string(argument) == value
 
 
-def _through(summary: FunctionSummary, index: int) -> str:
+def _through(summary: TranslationSummary, index: int) -> str:
     """`, through `move` -> `apply_pose``: the helpers a summary's translation comes through."""
     chain = summary.translates_through.get(index)
     return f", through {chain}" if chain else ""

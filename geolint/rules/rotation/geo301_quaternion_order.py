@@ -36,6 +36,7 @@ from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.factbase.quaternion_formulas import formula_reads
 from geolint.factbase.quaternion_orders import (
+    QUATERNIONS,
     COMPONENTS,
     STANDARD_ORDERS,
     QuaternionFlow,
@@ -45,10 +46,8 @@ from geolint.factbase.quaternion_orders import (
     name_order,
     permutation_between,
     permuted,
-    same_base,
-    spelled_components,
-    unwrapped_scalar,
 )
+from geolint.factbase.quaternion_components import same_base, spelled_components, unwrapped_scalar
 
 _COMPONENTS: Final = "wxyz"
 
@@ -661,7 +660,7 @@ class QuaternionOrder(FactRule):
             return
         if not any(type(arg) in _MAY_HAVE_ORDER and (flow.reorder_of(arg) is not None or flow.order_of(arg) is not None) for arg in node.args):
             return  # nothing with a known order or a reorder: the helper's summary cannot matter
-        summary = facts.function_summary(node)
+        summary = facts.summary_of(node, QUATERNIONS)
         if summary is None:
             return
         for index, (order, where) in sorted(summary.reads_quaternion.items()):

@@ -36,6 +36,7 @@ from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.angle_units import (
+    ANGLE_UNITS,
     DEGREE_CONSUMER_NAMES,
     DEGREES,
     RADIANS,
@@ -340,7 +341,7 @@ class DegreesAsRadians(FactRule):
         function = self.facts.index.functions.get(converter.id)
         if function is None:
             return False
-        summary = self.facts.project.summary(self.facts, function)
+        summary = self.facts.project.summary(self.facts, function, ANGLE_UNITS)
         return summary is not None and summary.angle_unit is not None and summary.angle_unit[0] == RADIANS and not summary.angle_unit[2]
 
     def _passes_number_through(self, name: str, depth: int) -> bool:
@@ -532,7 +533,7 @@ class DegreesAsRadians(FactRule):
         helper's parameter it hands unchanged to one (not a parameter only named in radians)."""
         facts = self.facts
         found = [(element, f"`{self.code_of(node.func)}`") for argument in self._radian_arguments(node) or [] for element in _elements(argument)]
-        summary = facts.function_summary(node) if node.args and facts.may_have_summary(node) else None
+        summary = facts.summary_of(node, ANGLE_UNITS) if node.args and facts.may_have_summary(node) else None
         if summary is not None:
             for index, (unit, where, by_name) in sorted(summary.reads_unit.items()):
                 if unit == RADIANS and where and not by_name and index < len(node.args) and not isinstance(node.args[index], Starred):
