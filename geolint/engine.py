@@ -20,7 +20,6 @@ import ast
 import codecs
 import io
 import re
-import threading
 import tokenize
 from functools import lru_cache
 from collections.abc import Mapping
@@ -29,7 +28,8 @@ from typing import TYPE_CHECKING, Iterable, Sequence, TypeGuard
 from geolint import guards, suppression
 from geolint.config import enabled_codes
 from geolint.lint_types import Config, Edit, Finding, Fix, Severity
-from geolint.parsing import SUPPORTED_GRAMMARS, parse_module
+from geolint.parsing import SUPPORTED_GRAMMARS
+from geolint.source_text import cached_ast, remember_tree, split_lines
 
 if TYPE_CHECKING:
     import libcst as cst
@@ -214,7 +214,7 @@ def _reuse_shared_parse(path: str, source: str) -> ModuleIndex | None:
     shared = index_module.shared_parse(path, source)
     if shared is not None:
         tree, index = shared
-        _last_tree.value = (source, tree)
+        remember_tree(source, tree)
         if index is not None:
             remember_index(index)
         return index
@@ -415,25 +415,6 @@ def _severity_of(code: str, config: Config, default: Severity) -> Severity:
     return config.severity.get(code, default)
 
 
-_last_tree = threading.local()
-
-
-def cached_ast(source: str) -> ast.Module:
-    """`parse_module(source)` (CPython's `ast`, Python 3.10-3.13 syntax read under any of them),
-    remembered for the last text parsed in this thread.
-
-    The engine's syntax check, the suppression scanner and the rules' prefilter all need the
-    `ast` of the same text in a row; parsing it once saves a full parse per file.
-    Raises what `ast.parse` raises.
-    """
-    cached = getattr(_last_tree, "value", None)
-    if cached is not None and cached[0] is source:
-        return cached[1]
-    tree = parse_module(source)
-    _last_tree.value = (source, tree)
-    return tree
-
-
 def _syntax_error(source: str) -> tuple[int, int, str] | None:
     """(line, column, message) of CPython's first syntax error, or None when the module compiles."""
     try:
@@ -480,21 +461,6 @@ def _only_syntax_error(
 def _byte_position(data: bytes, offset: int) -> tuple[int, int]:
     line_start = data.rfind(b"\n", 0, offset) + 1
     return data.count(b"\n", 0, offset) + 1, offset - line_start + 1
-
-
-LINE_BREAK = re.compile(r"(?<=\n)|(?<=\r)(?!\n)")
-
-
-def split_lines(source: str) -> list[str]:
-    """The lines of `source` with their endings, split only at \\n, \\r\\n and \\r (as libcst and
-    tokenize count lines; `str.splitlines` also splits at form feeds and would shift positions)."""
-    if _OTHER_LINE_BREAKS.search(source) is None:  # the usual text: `str.splitlines` splits it the same, faster
-        return source.splitlines(keepends=True)
-    return [line for line in LINE_BREAK.split(source) if line]
-
-
-# What `str.splitlines` splits at besides \n, \r\n and \r.
-_OTHER_LINE_BREAKS = re.compile("[\v\f\x1c\x1d\x1e\x85\u2028\u2029]")
 
 
 @lru_cache(maxsize=256)

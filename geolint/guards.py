@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Callable, Sequence, TypeVar, cast
 
 from geolint.config import enabled_codes
 from geolint.lint_types import Config, Finding, Severity
+from geolint.source_text import cached_ast
 
 if TYPE_CHECKING:
     from geolint.rules.base import AnyRule
@@ -67,8 +68,6 @@ def exceeded_limit(source: str, config: Config, measure_depth: bool = True) -> L
     `measure_depth` the caller measures the depth itself (the engine does it on the fact base's
     walk of the tree, `depth_limit_finding`).
     """
-    from geolint.engine import cached_ast
-
     if len(source) > config.max_file_size:
         return LimitExceeded(
             1,

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from typing import Collection, Iterable, Sequence
 
 from geolint.lint_types import Finding, Severity
+from geolint.source_text import cached_ast, split_lines
 
 UNUSED_SUPPRESSION = "GEO900"
 UNUSED_SUPPRESSION_NAME = "unused-suppression"
@@ -79,8 +80,6 @@ def parse_directives(source: str) -> list[Directive]:
     are tokenized, each on its own; the module's `ast` says which of them lie inside a
     multi-line string. Without an `ast` (a file CPython cannot parse) the whole file is tokenized.
     """
-    from geolint.engine import cached_ast, split_lines
-
     if not may_have_directives(source):
         return []
     try:
@@ -240,8 +239,6 @@ def _directive(comment: str, line: int, column: int, after_code: bool) -> Direct
 
 
 def _assign_own_line_spans(source: str, directives: Sequence[Directive]) -> None:
-    from geolint.engine import split_lines
-
     lines = split_lines(source)
     spans = _statement_spans(source)
     for directive in directives:
@@ -262,8 +259,6 @@ def _next_code_line(lines: Sequence[str], after: int) -> int:
 
 def _statement_spans(source: str) -> dict[int, int]:
     """Start line -> last line covered, for every statement (compound statements: their header)."""
-    from geolint.engine import cached_ast
-
     try:
         tree = cached_ast(source)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
@@ -355,8 +350,6 @@ def add_suppressions(source: str, findings: Sequence[Finding]) -> str:
     already there; where a comment cannot go (the line ends inside a string or after a backslash),
     it goes on its own line above the statement instead, with the statement's indentation.
     """
-    from geolint.engine import split_lines
-
     lines = split_lines(source)
     if not findings or not lines:
         return source
@@ -404,8 +397,6 @@ def _comment_sites(source: str) -> tuple[set[int], dict[int, Directive]]:
 
 def _statement_start(source: str, line: int) -> int:
     """The first line of the innermost statement that covers `line` (the line itself if none)."""
-    from geolint.engine import cached_ast
-
     try:
         tree = cached_ast(source)  # called once per finding: parse the text once
     except (SyntaxError, ValueError):

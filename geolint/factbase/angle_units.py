@@ -47,7 +47,7 @@ from ast import (
 )
 from collections import Counter
 from dataclasses import dataclass, field
-from typing import Final
+from typing import Final, TYPE_CHECKING
 
 from geolint.factbase.angles import (
     DEGREES,
@@ -60,15 +60,7 @@ from geolint.factbase.angles import (
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import (
-    FactBase,
-    keyword,
-    last_name,
-    number,
-    positional_args,
-    string,
-    walk_within,
-)
+from geolint.factbase.syntax import keyword, last_name, number, positional_args, string, walk_within
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.summaries import (
     Function,
@@ -81,6 +73,9 @@ from geolint.factbase.summaries import (
     settled_returns,
     shifted,
 )
+
+if TYPE_CHECKING:
+    from geolint.factbase.model import FactBase
 
 _DEGREE_WORDS: Final = frozenset({"deg", "degs", "degree", "degrees"})
 _RADIAN_WORDS: Final = frozenset({"rad", "rads", "radian", "radians"})

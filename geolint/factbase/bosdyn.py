@@ -16,7 +16,8 @@ import ast
 from ast import Call
 from typing import Callable, Final, TYPE_CHECKING
 
-from geolint.factbase.model import FrameFact, keyword, positional_args, string
+from geolint.factbase.fact_types import FrameFact
+from geolint.factbase.syntax import keyword, positional_args, string
 from geolint.semantic.names import NameFrames, same_frame
 
 if TYPE_CHECKING:

@@ -31,7 +31,7 @@ from ast import (
 )
 from typing import TYPE_CHECKING, Final
 
-from geolint.factbase.model import walk_within
+from geolint.factbase.syntax import walk_within
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase

@@ -38,7 +38,9 @@ from pathlib import Path
 from typing import Final, Iterator, NamedTuple
 
 from geolint.factbase.index import parse_of_file
-from geolint.factbase.model import DST_FIRST, SRC_FIRST, declared_call_frames, statements_under
+from geolint.factbase.declarations import declared_call_frames
+from geolint.factbase.fact_types import DST_FIRST, SRC_FIRST
+from geolint.factbase.syntax import statements_under
 from geolint.factbase.project_files import project_root
 from geolint.lint_types import Config
 from geolint.parsing import parse_module
@@ -213,9 +215,6 @@ def forget_project_totals() -> None:
     """Let the next `project_votes` of each project look at its files again (a long-lived process)."""
     with _lock:
         _project_votes.clear()
-    from geolint.factbase import ros_packages  # imports this module
-
-    ros_packages.forget_packages()
 
 
 def file_votes(path: str) -> Votes:

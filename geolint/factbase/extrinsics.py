@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from typing import Final, TYPE_CHECKING
 
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import is_full_slice, is_slice_upto, number, string
+from geolint.factbase.syntax import is_full_slice, is_slice_upto, number, string
 from geolint.factbase.pose_parts import (
     call_name,
     int_value,
@@ -189,7 +189,7 @@ def _camera_pose_name(facts: FactBase, name: str, order: str) -> FrameFact | Non
     tokens = name.split("_")
     if len(tokens) != 3:  # most names: before the imports, a microsecond each
         return None
-    from geolint.factbase.model import DST_FIRST, FrameFact
+    from geolint.factbase.fact_types import DST_FIRST, FrameFact
     from geolint.semantic.names import NameFrames, ROTATION_LETTERS, TRANSFORM_LETTERS
 
     if tokens[0] not in TRANSFORM_LETTERS | ROTATION_LETTERS or facts.order_names_mixed:

@@ -51,6 +51,7 @@ from typing import Any, Callable, Final, Union
 
 from geolint.lint_types import Config
 from geolint.parsing import parse_module
+from geolint.source_text import split_lines  # \n, \r\n and \r, not \f: as ast counts lines
 
 ScopeNode = Union[Module, FunctionDef, AsyncFunctionDef, ClassDef, Lambda]
 FUNCTION_NODES: Final = (FunctionDef, AsyncFunctionDef)
@@ -446,10 +447,6 @@ class ModuleIndex:
             return None
         lines = self._lines
         if lines is None:
-            from geolint.engine import (
-                split_lines,  # \n, \r\n and \r, not \f: as ast counts lines
-            )
-
             lines = self._lines = split_lines(self.source)
         if not 0 <= first <= last < len(lines):
             return None

@@ -11,7 +11,9 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Final
 
 from geolint.algebra import FREE, Kind, marked_by_w
+from geolint.factbase.fact_types import GEOMETRIC
 from geolint.factbase.summaries import Function, Summary, SummaryFamily, chain, plain_parameters, settled_returns, shifted
+from geolint.factbase.syntax import positional_args, transposed_value, walk_within
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
@@ -48,8 +50,6 @@ def _returned_kind(facts: FactBase, function: Function, params: tuple[str, ...])
 
 
 def _returned_homogeneous(facts: FactBase, function: Function, params: tuple[str, ...]) -> HomogeneousSummary:
-    from geolint.factbase.model import positional_args
-
     summary = HomogeneousSummary(parameters=params)
     scope = facts.index.scopes.get(function)
     if scope is None:
@@ -71,8 +71,6 @@ def _returned_homogeneous(facts: FactBase, function: Function, params: tuple[str
 
 
 def _translated_parameters(facts: FactBase, function: Function, params: tuple[str, ...]) -> TranslationSummary:
-    from geolint.factbase.model import positional_args, transposed_value, walk_within
-
     summary = TranslationSummary(parameters=params)
     scope = facts.index.scopes.get(function)
     if scope is None:
@@ -127,8 +125,6 @@ def _record_homogeneous_product(facts: FactBase, node: AST, plain: set[str], sum
     product = facts.matmul(node)
     if product is None:
         return
-    from geolint.factbase.model import GEOMETRIC, transposed_value  # after the common case: an import costs a microsecond
-
     for operand, operator in ((product.left, product.right), (product.right, product.left)):
         homogeneous = facts.homogeneous(transposed_value(operand) or operand)
         if homogeneous is None or marked_by_w(homogeneous.w) != Kind.POINT or not isinstance(homogeneous.inner, Name):

@@ -10,7 +10,7 @@ resolved through the module's imports, so `q` alone, or an unimported `VehicleOd
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Final, TYPE_CHECKING
 
 import ast
 from ast import Attribute, Call, ClassDef, Constant, Name
@@ -18,8 +18,11 @@ from ast import Attribute, Call, ClassDef, Constant, Name
 from geolint.algebra import Kind
 from geolint.factbase.index import FUNCTION_NODES, ParamBinding
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.model import FactBase, keyword, last_name, positional_args
+from geolint.factbase.syntax import keyword, last_name, positional_args
 from geolint.factbase.rotations import SCALAR_FIRST
+
+if TYPE_CHECKING:
+    from geolint.factbase.model import FactBase
 
 # px4_msgs (PX4's uORB topics on the ROS 2 bridge): every quaternion is Hamilton (w, x, y, z), PX4's
 # matrix::Quatf layout ("the order is q(w, x, y, z)" in VehicleAttitude.msg).

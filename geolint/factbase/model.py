@@ -25,28 +25,47 @@ from ast import (
     Subscript, USub, UnaryOp, With,
 )
 import builtins
-import sys
 import re
-from dataclasses import dataclass
-from typing import Callable, Final, Iterator, Literal, Sequence, TypeVar
+from typing import Callable, Final, Literal, Sequence, TypeVar
 
 from geolint import algebra
 from geolint.algebra import FREE, Kind
 from geolint.factbase import summaries
 from geolint.factbase import vocabulary as vocab
+from geolint.factbase.declarations import declared_call_frames
+from geolint.factbase.fact_types import DST_FIRST, GEOMETRIC, OPERATORS, SRC_FIRST, FrameFact, Homogeneous, MatMul
+from geolint.factbase.spans import LastNameTarget, last_name_target, replace_span
+from geolint.factbase.syntax import (
+    dotted_name,
+    einsum_operands,
+    flat_literal,
+    is_full_slice,
+    is_index,
+    is_scalar_annotation,
+    is_slice_upto,
+    is_transpose,
+    is_zero,
+    keyword,
+    last_name,
+    number,
+    positional_args,
+    statements_under,
+    string,
+    subscript_parts,
+    transposed_value,
+    walk_within,
+)
 from geolint.factbase.kind_summaries import HOMOGENEOUS, KINDS
 from geolint.factbase.project_files import may_be_project_import, module_file
 from geolint.factbase.summaries import Summary, SummaryFamily
 from geolint.factbase.reaching import every_binding_reaches, reaching_bindings
 from geolint.factbase.index import (
     Binding,
-    child_nodes,
     LoopBinding,
     ModuleIndex,
     OpaqueBinding,
     ParamBinding,
     UnpackBinding,
-    statement_list_fields,
 )
 from geolint.lint_types import Config
 from geolint.semantic.names import (
@@ -62,154 +81,17 @@ _T = TypeVar("_T")
 _A = TypeVar("_A")  # an analysis built on one fact base
 _S = TypeVar("_S", bound=Summary)  # a family's summary
 
-DST_FIRST: Final = "dst-first"
-SRC_FIRST: Final = "src-first"
-GEOMETRIC: Final = frozenset({Kind.POINT, Kind.VECTOR, Kind.DIRECTION})
 # Words that make an extrinsics-named pose a relative one: `init_rel_w2c = inv(c2w_new @ w2c_last)`
 # is a world-to-world correction that `w2c_ref @ rel_w2c` applies, named after the pose it corrects.
 EXTRINSICS_EVIDENCE: Final = "states camera extrinsics"  # the evidence of a name read by its extrinsics word alone
 RELATIVE_WORDS: Final = frozenset({"rel", "relative", "delta", "diff", "residual", "incr", "increment", "update", "correction", "corr"})
-OPERATORS: Final = frozenset({Kind.TRANSFORM, Kind.ROTATION})
 _MAX_DEPTH: Final = 60
 _MAX_REEXPORTS: Final = 3  # package `__init__` modules followed to the module that defines a helper
 _MISSING: Final = object()
 
 
-@dataclass(frozen=True)
-class Homogeneous:
-    """A homogeneous 4-vector (or N x 4 array) built from `inner` with the constant `w`.
-
-    `construction` is the expression that builds it; `fixed` the source text of that expression
-    with the other w (0 <-> 1), ready to be a fix's replacement.
-    """
-
-    inner: ast.expr
-    w: int
-    construction: ast.expr
-    fixed: str | None  # None when the w is set elsewhere (inside a helper): no fix here
-    # False when only the use can tell a homogeneous w from a padded coordinate
-    # (`np.column_stack((xy, np.zeros(n)))` lifts 2D points to z = 0).
-    explicit: bool = True
-
-
-@dataclass(frozen=True)
-class MatMul:
-    """`left @ right` in any spelling (`@`, `.dot`, `np.dot`, `np.matmul`, `torch.matmul`)."""
-
-    node: ast.expr
-    left: ast.expr
-    right: ast.expr
-
-
-@dataclass(frozen=True)
-class FrameFact:
-    """Frames and the evidence they rest on (strongest source first)."""
-
-    frames: NameFrames
-    evidence: tuple[str, ...] = ()
-    declared: bool = False  # an explicit declaration, not a name
-
-
-# --- small ast helpers -----------------------------------------------------------------------
-
-
 _BUILTIN_NAMES: Final = frozenset(dir(builtins))  # `len(x)` under a star import: the builtin, in all but odd code
 _MATMUL_CALL_NAMES: Final = frozenset(("dot", "matmul", "bmm", "einsum"))  # what `FactBase.matmul` reads as a product
-
-
-def dotted_name(node: AST) -> str | None:
-    """`np.linalg.norm` for that expression; None for anything but a plain dotted name."""
-    parts = []
-    while isinstance(node, Attribute):
-        parts.append(node.attr)
-        node = node.value
-    if not isinstance(node, Name):
-        return None
-    parts.append(node.id)
-    return ".".join(reversed(parts))
-
-
-def last_name(node: AST) -> str | None:
-    if isinstance(node, Name):
-        return node.id
-    if isinstance(node, Attribute):
-        return node.attr
-    return None
-
-
-def number(node: AST | None) -> int | float | None:
-    """The value of a numeric literal (with an optional unary minus), else None."""
-    if isinstance(node, UnaryOp) and isinstance(node.op, USub):
-        inner = number(node.operand)
-        return None if inner is None else -inner
-    if isinstance(node, Constant):
-        value = node.value
-        if type(value) is int or type(value) is float:  # not a bool
-            # 1e999 is inf and a 400-digit integer overflows a float: no value to reason about.
-            return value if abs(value) <= sys.float_info.max else None
-    return None
-
-
-def is_zero(node: AST) -> bool:
-    """A value that is all zeros: `0`, `[0, 0, 0]`, `(0.0, 0.0, 0.0)`, `[0.] * 3`, `np.zeros(3)`, `np.zeros_like(t)`."""
-    if isinstance(node, Constant):
-        return node.value == 0
-    if isinstance(node, (ast.List, ast.Tuple)):
-        return bool(node.elts) and all(is_zero(element) for element in node.elts)
-    if isinstance(node, BinOp) and isinstance(node.op, Mult):
-        return is_zero(node.left) or is_zero(node.right)
-    return isinstance(node, Call) and last_name(node.func) in ("zeros", "zeros_like")
-
-
-def string(node: AST | None) -> str | None:
-    return node.value if isinstance(node, Constant) and isinstance(node.value, str) else None
-
-
-def positional_args(call: Call) -> list[ast.expr]:
-    return [arg for arg in call.args if not isinstance(arg, Starred)]
-
-
-def keyword(call: Call, name: str) -> ast.keyword | None:
-    return next((kw for kw in call.keywords if kw.arg == name), None)
-
-
-def subscript_parts(node: Subscript) -> list[ast.expr]:
-    index = node.slice
-    return list(index.elts) if isinstance(index, ast.Tuple) else [index]
-
-
-def is_slice_upto(part: AST, stop: int) -> bool:
-    """`:3` or `0:3` (no step)."""
-    if not isinstance(part, Slice) or part.step is not None:
-        return False
-    if part.lower is not None and number(part.lower) != 0:
-        return False
-    return part.upper is not None and number(part.upper) == stop
-
-
-def is_full_slice(part: AST) -> bool:
-    return isinstance(part, Slice) and part.lower is None and part.upper is None and part.step is None
-
-
-def is_index(part: AST, *values: int) -> bool:
-    return not isinstance(part, Slice) and number(part) in values
-
-
-def is_transpose(node: AST) -> bool:
-    """`x.T`, `x.mT`, `x.transpose(-1, -2)` / `x.transpose(1, 2)` / `x.swapaxes(-1, -2)`."""
-    if isinstance(node, Attribute) and node.attr in ("T", "mT"):
-        return True
-    if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in ("transpose", "swapaxes", "permute"):
-        values = [number(arg) for arg in node.args]
-        return node.func.attr != "permute" and (values == [] and node.func.attr == "transpose" or len(values) == 2 and None not in values)
-    return False
-
-
-def transposed_value(node: AST) -> ast.expr | None:
-    """For `x.T` (and the torch spellings), x."""
-    if is_transpose(node):
-        return node.value if isinstance(node, Attribute) else node.func.value  # type: ignore[attr-defined,no-any-return]
-    return None
 
 
 def valid_kind(outcome: algebra.Outcome | None) -> Kind | None:
@@ -1224,7 +1106,7 @@ class FactBase:
         if len(positional) < 2 or len(positional) != len(node.args):
             return None
         qualified = self.qualified_name(node.func)
-        widths = [number(width) for width in _flat_literal(positional[1])]
+        widths = [number(width) for width in flat_literal(positional[1])]
         if qualified == "torch.nn.functional.pad":  # (left, right) of the last axis first
             appends_one = len(widths) >= 2 and widths[:2] == [0, 1] and not any(widths[2:])
             mode: ast.expr | None = positional[2] if len(positional) > 2 else None
@@ -1246,7 +1128,7 @@ class FactBase:
             return Homogeneous(inner=positional[0], w=0, construction=node, fixed=None, explicit=False)
         return self._with_w(node, positional[0], value, explicit=False)
 
-    def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[AST | _LastName, str]] | None]:
+    def _w_value(self, node: ast.expr) -> tuple[int | None, list[tuple[AST | LastNameTarget, str]] | None]:
         """The constant w a construction appends, and the edits (node, new text) that give the other w."""
         literal = number(node)
         if literal in (0, 1) and isinstance(node, Constant):
@@ -1260,7 +1142,7 @@ class FactBase:
                 return self._w_value(bindings[0])
         if isinstance(node, Call) and self.is_array_call(node.func, "ones", "zeros", "ones_like", "zeros_like"):
             w = 1 if last_name(node.func) in ("ones", "ones_like") else 0
-            return w, [(_name_node_of(node.func), _SWAP[last_name(node.func) or ""])]
+            return w, [(last_name_target(node.func), _SWAP[last_name(node.func) or ""])]
         if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in ("type_as", "to", "astype", "float", "double"):
             return self._w_value(node.func.value)
         return None, None
@@ -1326,7 +1208,7 @@ class FactBase:
         if len(fills) != 1 or len(stores) != 1:
             return None
         w = 1 if last_name(value.func) == "ones" else 0
-        fixed = replace_span(self.index, value, [(_name_node_of(value.func), _SWAP[last_name(value.func) or ""])])
+        fixed = replace_span(self.index, value, [(last_name_target(value.func), _SWAP[last_name(value.func) or ""])])
         if fixed is None:
             return None
         return Homogeneous(inner=fills[0], w=w, construction=value, fixed=fixed)
@@ -1398,22 +1280,6 @@ _HOMOGENEOUS_MAKERS: Final = frozenset({"append", *vocab.STACKING_FUNCTIONS, "ar
 _SWAP: Final = {"ones": "zeros", "zeros": "ones", "ones_like": "zeros_like", "zeros_like": "ones_like"}
 
 
-@dataclass(frozen=True)
-class _LastName:
-    """An edit target: only the last name of a called function (`np.ones` -> its `ones`)."""
-
-    func: AST
-
-
-def _name_node_of(func: AST) -> _LastName:
-    return _LastName(func)
-
-
-def last_name_target(func: AST) -> _LastName:
-    """An edit target for `replace_span` that replaces only a called function's last name."""
-    return _LastName(func)
-
-
 def _drop_batch(parts: list[ast.expr]) -> list[ast.expr]:
     """`M[..., :3, :3]` and `M[:, :3, :3]` index a batch of matrices like `M[:3, :3]` indexes one."""
     if len(parts) == 3 and (isinstance(parts[0], Constant) and parts[0].value is Ellipsis or is_full_slice(parts[0])):
@@ -1428,153 +1294,12 @@ def _is_xyz_slice(target: Subscript) -> bool:
     return len(parts) == 2 and is_full_slice(parts[0]) and is_slice_upto(parts[1], 3)
 
 
-def is_scalar_annotation(annotation: ast.expr) -> bool:
-    text = ast.unparse(annotation)
-    words = set(re.split(r"[\s|\[\],]+", text)) - {""}
-    scalar = {"int", "float", "str", "bool", "SupportsIndex", "None", "Optional", "typing.Optional", "Literal"}
-    return bool(words) and words <= scalar | {word for word in words if word.startswith(("'", '"'))}
-
-
-def _flat_literal(node: ast.expr) -> list[ast.expr]:
-    """The elements of a literal tuple/list, nested ones flattened in order (`((0, 0), (0, 1))`)."""
-    if not isinstance(node, (ast.Tuple, ast.List)):
-        return [node]
-    return [element for item in node.elts for element in _flat_literal(item)]
-
-
-def einsum_operands(subscripts: ast.expr, first: ast.expr, second: ast.expr) -> tuple[ast.expr, ast.expr] | None:
-    """(matrix, operand) for an `einsum` that is the matrix acting on the operand, as `matrix @ operand`
-    does: the matrix's last index is summed against one index of the operand, which the output
-    replaces by the matrix's row index (`"ij,jk->ik"`, `"bij,bj->bi"`, `"ik,...k->...i"`, and
-    `"bij,bkj->bki"` on rows). Any other contraction (a transpose acting, a trace) is None."""
-    text = string(subscripts)
-    if text is None or text.count("->") != 1:
-        return None
-    inputs, output = text.replace(" ", "").split("->")
-    parts = inputs.split(",")
-    if len(parts) != 2:
-        return None
-    for matrix, operand, (matrix_node, operand_node) in ((parts[0], parts[1], (first, second)), (parts[1], parts[0], (second, first))):
-        letters = matrix.replace("...", "")
-        if len(letters) < 2 or len(set(letters)) != len(letters):
-            continue
-        row, summed = letters[-2], letters[-1]
-        batch = matrix[: -2]
-        if operand.count(summed) != 1 or row in operand or operand.replace(summed, row) != output:
-            continue
-        if all(letter in output for letter in batch.replace("...", "")):
-            return matrix_node, operand_node
-    return None
-
-
-def declared_call_frames(call: Call) -> tuple[NameFrames, str] | None:
-    """The frames a call states in so many words, and how it states them."""
-    from_kw, to_kw = keyword(call, "from_frame"), keyword(call, "to_frame")
-    source, target = string(from_kw.value) if from_kw else None, string(to_kw.value) if to_kw else None
-    if source and target:
-        return NameFrames(dst=target.lower(), src=source.lower(), operator="transform"), f"from_frame={source!r}, to_frame={target!r}"
-    func = call.func
-    if isinstance(func, Attribute) and func.attr == "as_frames" and len(call.args) >= 2:
-        source, target = string(call.args[0]), string(call.args[1])
-        if source and target:
-            return NameFrames(dst=target.lower(), src=source.lower(), operator="transform"), f".as_frames({source!r}, {target!r})"
-    if isinstance(func, Attribute) and func.attr in ("lookup_transform", "lookupTransform") and len(call.args) >= 2:
-        target, source = string(call.args[0]), string(call.args[1])
-        if source and target:
-            return NameFrames(dst=target.strip("/").lower(), src=source.strip("/").lower(), operator="transform"), f"{func.attr}({target!r}, {source!r})"
-    return None
-
-
-def replace_span(index: ModuleIndex, outer: AST, edits: list[tuple[AST | _LastName, str]]) -> str | None:
-    """The source text of `outer` with each inner node's span replaced (for a `_LastName` target,
-    only the function's last name)."""
-    text = index.segment(outer)
-    if not text:
-        return None
-    base = _offset(index, outer.lineno, outer.col_offset)  # type: ignore[attr-defined]
-    pieces = []
-    for node, new in edits:
-        if isinstance(node, _LastName):
-            node = node.func
-            if not isinstance(node, Attribute):
-                start = _offset(index, node.lineno, node.col_offset)  # type: ignore[attr-defined]
-                end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined,arg-type]
-                if start is None or end is None or base is None:
-                    return None
-                pieces.append((start - base, end - base, new))
-                continue
-            end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[arg-type]
-            start = None if end is None else end - len(node.attr)
-        else:
-            start = _offset(index, node.lineno, node.col_offset)  # type: ignore[attr-defined]
-            end = _offset(index, node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined,arg-type]
-        if start is None or end is None or base is None:
-            return None
-        pieces.append((start - base, end - base, new))
-    for start, end, new in sorted(pieces, reverse=True):
-        if start < 0 or end > len(text):
-            return None
-        text = text[:start] + new + text[end:]
-    return text
-
-
-def _offset(index: ModuleIndex, line: int | None, byte_column: int | None) -> int | None:
-    """The character offset in the module's source of an ast (line, UTF-8 byte column)."""
-    if line is None or byte_column is None:
-        return None
-    starts = index.line_starts
-    if starts is None:
-        from geolint.engine import split_lines
-
-        lines = split_lines(index.source)
-        starts = [0]
-        for text in lines:
-            starts.append(starts[-1] + len(text))
-        index.line_starts, index.line_texts = starts, lines
-    lines = index.line_texts or []
-    if not 1 <= line <= len(lines):
-        return None
-    text = lines[line - 1]
-    column = byte_column if text.isascii() else len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
-    return starts[line - 1] + column  # type: ignore[no-any-return]
-
-
-def walk_within(node: AST, stop_at_functions: bool = True) -> Iterator[AST]:
-    """The nodes below `node` (iteratively), not entering nested functions when asked (leaves such as
-    `Load` and operators left out)."""
-    stack = child_nodes(node)
-    while stack:
-        current = stack.pop()
-        yield current
-        if stop_at_functions and type(current) in _SCOPE_NODES:
-            continue
-        stack.extend(child_nodes(current))
-
-
-_SCOPE_NODES: Final = frozenset({FunctionDef, AsyncFunctionDef, Lambda, ClassDef})
-_DEFINITIONS: Final = (FunctionDef, AsyncFunctionDef, ClassDef)
-
-
-def statements_under(node: AST, into_definitions: bool = True) -> list[AST]:
-    """The statements below `node` (and the `except` handlers and `match` cases that hold some),
-    found through statement lists only, never walking an expression; with `into_definitions` False,
-    not those of the functions and classes defined inside."""
-    found: list[AST] = []
-    stack: list[AST] = list(getattr(node, "body", []))
-    while stack:
-        statement = stack.pop()
-        found.append(statement)
-        if not into_definitions and isinstance(statement, _DEFINITIONS):
-            continue
-        for field in statement_list_fields(statement):
-            stack.extend(getattr(statement, field))
-    return found
-
-
 __all__ = [
-    "DST_FIRST", "SRC_FIRST", "FactBase", "FrameFact", "Homogeneous", "MatMul", "OpaqueBinding",
-    "declared_call_frames", "dotted_name", "is_index", "is_slice_upto", "last_name", "number",
-    "positional_args", "keyword", "string", "subscript_parts", "walk_within",
+    "DST_FIRST", "EXTRINSICS_EVIDENCE", "FactBase", "FrameFact", "GEOMETRIC", "Homogeneous", "LastNameTarget",
+    "MatMul", "OPERATORS", "OpaqueBinding", "SRC_FIRST", "declared_call_frames", "dotted_name",
+    "einsum_operands", "is_full_slice", "is_index", "is_scalar_annotation", "is_slice_upto", "is_transpose",
+    "is_zero", "keyword", "last_name", "last_name_target", "number", "positional_args", "replace_span",
+    "statements_under", "string", "subscript_parts", "transposed_value", "walk_within",
 ]  # fmt: skip
 
 

@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING, Mapping, Sequence
 
 from geolint.algebra import Kind
 from geolint.factbase.index import ParamBinding
-from geolint.factbase.model import GEOMETRIC, last_name, transposed_value, walk_within
+from geolint.factbase.fact_types import GEOMETRIC
+from geolint.factbase.syntax import last_name, transposed_value, walk_within
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase

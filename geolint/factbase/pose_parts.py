@@ -29,7 +29,7 @@ from ast import (
 from dataclasses import dataclass
 
 from geolint.factbase.index import ModuleIndex
-from geolint.factbase.model import dotted_name, einsum_operands, is_full_slice, is_slice_upto, last_name, subscript_parts
+from geolint.factbase.syntax import dotted_name, einsum_operands, is_full_slice, is_slice_upto, last_name, subscript_parts
 from geolint.factbase.reaching import Unpacked, assigned_values, binding_of, resolve
 
 # Methods and functions that return the same values (copies, dtype/device moves, broadcasting views).

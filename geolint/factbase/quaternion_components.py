@@ -7,7 +7,7 @@ import ast
 from ast import AST, Call, Constant, Name, Starred, Subscript
 from typing import TYPE_CHECKING
 
-from geolint.factbase.model import is_full_slice, last_name, number, subscript_parts
+from geolint.factbase.syntax import is_full_slice, last_name, number, subscript_parts
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase

@@ -13,7 +13,7 @@ result (`yaw = ...`, `def quat_get_yaw`) pick one reading; otherwise it says not
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Final, TYPE_CHECKING
 
 import ast
 from ast import (
@@ -39,10 +39,13 @@ from ast import (
 from dataclasses import dataclass
 from fractions import Fraction
 
-from geolint.factbase.model import FactBase, last_name, number
+from geolint.factbase.syntax import last_name, number
 from geolint.factbase.quaternion_components import component_index
 from geolint.factbase.reaching import Unpacked, value_of
 from geolint.factbase.rotations import SCALAR_FIRST, SCALAR_LAST
+
+if TYPE_CHECKING:
+    from geolint.factbase.model import FactBase
 
 Monomial = tuple[int, ...]  # sorted component indices (or letters' positions in "wxyz" for templates)
 Polynomial = dict[Monomial, Fraction]

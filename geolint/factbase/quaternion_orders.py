@@ -13,7 +13,7 @@ GEO301 (quaternion order) and GEO304 (repeated component) ask two questions of a
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Final, TYPE_CHECKING
 
 import ast
 from ast import (
@@ -27,7 +27,7 @@ from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import LoopBinding, ParamBinding, UnpackBinding
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.messages import QUATERNION_FIELD_NAMES, MessageTypes, field_label, field_order
-from geolint.factbase.model import FactBase, is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts, walk_within
+from geolint.factbase.syntax import is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts, walk_within
 from geolint.factbase.quaternion_formulas import formula_reads_within
 from geolint.factbase.quaternion_components import is_ellipsis, same_base, spelled_components
 from geolint.factbase.rotations import (
@@ -42,6 +42,9 @@ from geolint.factbase.rotations import (
 )
 from geolint.factbase.summaries import Function, Summary, SummaryFamily, agreed, chain, plain_parameters, settled_returns, shifted
 from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
+
+if TYPE_CHECKING:
+    from geolint.factbase.model import FactBase
 
 COMPONENTS: Final = "wxyz"
 STANDARD_ORDERS: Final = (SCALAR_FIRST, SCALAR_LAST)

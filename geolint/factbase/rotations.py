@@ -3,7 +3,7 @@ qualified names resolved through the module's imports (one table per question)."
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Final, TYPE_CHECKING
 
 import ast
 import re
@@ -22,7 +22,10 @@ from ast import (
 )
 
 from geolint.factbase.control_flow import runs_unconditionally
-from geolint.factbase.model import FactBase, keyword, last_name, number
+from geolint.factbase.syntax import keyword, last_name, number
+
+if TYPE_CHECKING:
+    from geolint.factbase.model import FactBase
 
 SCALAR_LAST: Final = "xyzw"
 SCALAR_FIRST: Final = "wxyz"

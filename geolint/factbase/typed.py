@@ -15,7 +15,7 @@ from typing import Final
 import ast
 from ast import AST, Attribute, ClassDef, Constant, Module, Name, Subscript
 
-from geolint.factbase.model import last_name
+from geolint.factbase.syntax import last_name
 from geolint.semantic.names import NameFrames, Operator
 
 # geolint's generic types by what they state: operators take (Dst, Src), values one frame

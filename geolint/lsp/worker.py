@@ -14,7 +14,7 @@ import traceback
 from typing import Any, Callable
 
 from geolint import api
-from geolint.factbase import conventions
+from geolint.factbase import conventions, ros_packages
 
 JOBS: dict[str, Callable[..., Any]] = {"lint_text": api.lint_text, "fix_text": api.fix_text}
 
@@ -31,6 +31,7 @@ def main() -> None:
         # a long-lived worker: what the project's files say about names is asked again for every job
         # (each file's votes are reused while its stat is unchanged, so only edited files are read)
         conventions.forget_project_totals()
+        ros_packages.forget_packages()  # and what each ROS package's files say about its frame ids
         try:
             answer: tuple[str, Any] = ("ok", JOBS[function](*args, **kwargs))
         except Exception:

@@ -137,14 +137,14 @@ def test_cached_ast_parses_each_text_once():
 
 
 def test_a_file_no_selected_rule_can_read_is_parsed_only_when_a_check_needs_its_tree(tmp_path: Path):
-    from geolint import engine
+    from geolint import source_text
 
     def parsed(source: str, config: Config) -> bool:
         path = tmp_path / f"m{len(list(tmp_path.iterdir()))}.py"
         path.write_text(source)
-        engine._last_tree.value = None
+        source_text._last_tree.value = None
         lint_source(source, str(path), config)
-        last = engine._last_tree.value  # the tree the engine parsed last, with its text
+        last = source_text._last_tree.value  # the tree the engine parsed last, with its text
         return last is not None and last[0] is source
 
     no_geometry = "import json\nrows = json.loads(text)\n"
