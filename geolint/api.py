@@ -28,6 +28,7 @@ from geolint.factbase import conventions, ros_packages
 from geolint.factbase.project_files import ImportGraph, consulted_folders, folder_listings, project_root
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
+from geolint.notebook import NotebookError, is_notebook, read_notebook, unreadable_notebook
 
 __all__ = [
     "ConfigError",
@@ -140,8 +141,13 @@ def lint_paths(
         for source in sources:
             try:
                 data = source.path.read_bytes()
+                if is_notebook(source.path):
+                    data = read_notebook(data).python.encode("utf-8")
             except OSError as error:
                 results[source.display] = _unreadable(source, error)
+                continue
+            except NotebookError as error:
+                results[source.display] = FileResult(source.display, tuple(unreadable_notebook(source.display, config, error)), location=source.path)
                 continue
             if cache is None:  # nothing to look up or store: no digest to compute
                 pending.append((source, data, ""))

@@ -83,7 +83,7 @@ def _relative(path: str, base: Path) -> str:
 
 
 def _line_text(path: str, line: int) -> str:
-    from geolint.engine import read_source_lines
+    from geolint.output.source import source_lines
 
-    lines = read_source_lines(path)
+    lines = source_lines(path)
     return lines[line - 1] if 1 <= line <= len(lines) else ""

@@ -30,7 +30,7 @@ DEFAULT_EXCLUDES = (
     ".ruff_cache", ".geolint_cache", ".tox", ".venv", "venv", "__pypackages__", "__pycache__",
     "_build", "buck-out", "build", "dist", "node_modules", "*.egg-info",
 )  # fmt: skip
-PYTHON_SUFFIXES = (".py", ".pyi")
+PYTHON_SUFFIXES = (".py", ".pyi", ".ipynb")  # notebooks: their code cells (geolint.notebook)
 
 
 class DiscoveryError(Exception):

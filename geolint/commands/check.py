@@ -291,6 +291,7 @@ def _check_stdin(args: argparse.Namespace, started: float) -> int:
     """`geolint check - --stdin-filename PATH`: lint the text on stdin as if it were PATH (for editors
     without a language server). With `--fix` the fixed text goes to stdout and the report to stderr."""
     from geolint.engine import decode_source, encode_source, lint_bytes
+    from geolint.notebook import NotebookError, is_notebook, read_notebook, remember_notebook, unreadable_notebook, write_back
     from geolint.output.source import remember_text
 
     data = sys.stdin.buffer.read()
@@ -314,12 +315,24 @@ def _check_stdin(args: argparse.Namespace, started: float) -> int:
         if args.fix:
             sys.stdout.buffer.write(data)  # an editor replaces its buffer with what comes back
         return EXIT_OK
+    notebook = None
+    if is_notebook(display):
+        try:
+            notebook = read_notebook(data)
+        except NotebookError as error:
+            if args.fix:
+                sys.stdout.buffer.write(data)
+            return _report(args, unreadable_notebook(display, config, error), {}, 0, stream=sys.stderr if args.fix else None)
+        remember_notebook(display, notebook)
+        python = notebook.python.encode("utf-8")
+    else:
+        python = data
     try:
-        text, encoding = decode_source(data)
+        text, encoding = decode_source(python)
     except (SyntaxError, UnicodeDecodeError, LookupError):
         text, encoding = None, "utf-8"
     try:
-        findings = lint_bytes(data, display, config)
+        findings = lint_bytes(python, display, config)
     except Exception as error:  # an internal error: reported, as for a file
         _error(f"internal error while checking {display}; please report it:\n  {type(error).__name__}: {error}")
         return EXIT_ERROR
@@ -330,7 +343,11 @@ def _check_stdin(args: argparse.Namespace, started: float) -> int:
         from geolint.fixes import fix_source
 
         outcome = fix_source(text, display, config, unsafe=args.unsafe_fixes)
-        fixed = encode_source(outcome.source, encoding)
+        try:
+            fixed = write_back(data, outcome.source) if notebook is not None else encode_source(outcome.source, encoding)
+        except NotebookError as error:
+            _error(f"cannot fix {display}: {error}")
+            fixed, outcome = data, replace(outcome, source=text, fixed=0, remaining=tuple(findings), fixed_codes=())
         if args.diff:
             diffs = [_unified_diff(display, data, fixed)] if outcome.changed else []
             return _print_diffs(args, diffs, {display: Counter(outcome.fixed_codes)} if outcome.changed else {}, 0)
@@ -339,6 +356,8 @@ def _check_stdin(args: argparse.Namespace, started: float) -> int:
         if outcome.changed:
             fixed_codes[display] = Counter(outcome.fixed_codes)
             remember_text(display, outcome.source)
+            if notebook is not None:
+                remember_notebook(display, read_notebook(fixed))
         findings = list(outcome.remaining)
         return _report(args, findings, fixed_codes, 0, stream=sys.stderr)  # stdout holds the fixed text
     elif args.fix:
@@ -446,8 +465,9 @@ def _fix(
     results: list[api.FileResult], config_of: dict[str, Config], *, unsafe: bool, write: bool
 ) -> tuple[list[api.FileResult], dict[str, Counter[str]], list[bytes]]:
     """Fix every file that has an applicable fix; returns new results, the codes fixed in each file, and diffs."""
-    from geolint.engine import decode_source, encode_source
+    from geolint.engine import encode_source
     from geolint.fixes import fix_source, fixable
+    from geolint.notebook import is_notebook, write_back
 
     updated: list[api.FileResult] = []
     fixed_codes: dict[str, Counter[str]] = {}
@@ -458,12 +478,13 @@ def _fix(
             continue
         try:
             data = result.location.read_bytes()
-            source, encoding = decode_source(data)
+            source, encoding = _python_of(result.location, data)
             outcome = fix_source(source, result.path, config_of[result.path], unsafe=unsafe)
             if outcome.changed:
-                fixed = encode_source(outcome.source, encoding)
+                fixed = write_back(data, outcome.source) if is_notebook(result.location) else encode_source(outcome.source, encoding)
                 if write:
                     result.location.write_bytes(fixed)
+                    _forget_text(result.path)
                 else:
                     diffs.append(_unified_diff(result.path, data, fixed))
                 fixed_codes[result.path] = Counter(outcome.fixed_codes)
@@ -501,9 +522,29 @@ def _byte_lines(data: bytes) -> list[bytes]:
     return [line + b"\n" for line in lines[:-1]] + ([lines[-1]] if lines[-1] else [])
 
 
+def _python_of(location: Path, data: bytes) -> tuple[str, str]:
+    """The Python text of a file's bytes and its encoding (a notebook's: its code cells, UTF-8)."""
+    from geolint.engine import decode_source
+    from geolint.notebook import is_notebook, read_notebook
+
+    return (read_notebook(data).python, "utf-8") if is_notebook(location) else decode_source(data)
+
+
+def _forget_text(path: str) -> None:
+    """A file was rewritten: the output must show its new lines (and a notebook's new cells)."""
+    from geolint.engine import read_source_lines
+    from geolint.notebook import forget_notebooks
+    from geolint.output.source import forget_text
+
+    read_source_lines.cache_clear()
+    forget_notebooks()
+    forget_text(path)
+
+
 def _add_noqa(results: list[api.FileResult]) -> tuple[int, int]:
-    from geolint.engine import SYNTAX_ERROR, decode_source, encode_source
+    from geolint.engine import SYNTAX_ERROR, encode_source
     from geolint.fixes import parses
+    from geolint.notebook import NotebookError, is_notebook, write_back
     from geolint.suppression import UNUSED_SUPPRESSION, add_suppressions
 
     added = files = 0
@@ -512,12 +553,17 @@ def _add_noqa(results: list[api.FileResult]) -> tuple[int, int]:
         if not targets or result.location is None:
             continue
         data = result.location.read_bytes()
-        source, encoding = decode_source(data)
+        source, encoding = _python_of(result.location, data)
         new_source = add_suppressions(source, targets)
         if new_source == source or not parses(new_source):
             _error(f"{result.path}: could not add suppression comments without breaking the file; left unchanged")
             continue
-        result.location.write_bytes(encode_source(new_source, encoding))
+        try:
+            written = write_back(data, new_source) if is_notebook(result.location) else encode_source(new_source, encoding)
+        except NotebookError as error:
+            _error(f"{result.path}: {error}")
+            continue
+        result.location.write_bytes(written)
         added += len(targets)
         files += 1
     return added, files

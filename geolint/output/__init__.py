@@ -25,7 +25,22 @@ def renderer(format_name: str) -> Renderer:
     return importlib.import_module(f"geolint.output.{format_name}").render
 
 
+# Formats that show a notebook's cells themselves; the others get `cell N: ` before the message.
+CELL_AWARE = ("text", "concise", "full", "json")
+
+
 def render(findings: Sequence[Finding], format_name: str, **options: object) -> str:
     function = renderer(format_name)
+    if format_name not in CELL_AWARE:
+        findings = [_cell_named(finding) for finding in findings]
     accepted = inspect.signature(function).parameters
     return function(findings, **{name: value for name, value in options.items() if name in accepted})
+
+
+def _cell_named(finding: Finding) -> Finding:
+    from dataclasses import replace
+
+    from geolint.output.source import in_cell
+
+    shown, cell = in_cell(finding)
+    return shown if cell is None else replace(shown, message=f"cell {cell}: {shown.message}")

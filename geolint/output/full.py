@@ -10,7 +10,7 @@ from typing import Sequence
 
 from geolint.lint_types import Finding
 from geolint.output.concise import header_line
-from geolint.output.source import fixed_lines, location, source_lines
+from geolint.output.source import cell_lines, fixed_lines, location, source_lines
 from geolint.output.text import TAB, marked_line, severity_style
 from geolint.terminal import BOLD, DIM, GREEN, RED, paint
 
@@ -24,29 +24,32 @@ def render(findings: Sequence[Finding], *, color: bool = False, unsafe_fixes: bo
 
 def _block(finding: Finding, color: bool, unsafe_fixes: bool) -> str:
     lines = source_lines(finding.path)
-    last_flagged = min(max(finding.end_line, finding.line), len(lines))
-    first_shown = max(finding.line - CONTEXT, 1)
-    last_shown = min(last_flagged + CONTEXT, len(lines))
-    width = len(str(max(last_shown, finding.line)))
+    block_first, block_last, offset = cell_lines(finding.path, finding.line)  # a notebook's cell, else the file
+    last_flagged = min(max(finding.end_line, finding.line), block_last)
+    first_shown = max(finding.line - CONTEXT, block_first)
+    last_shown = min(last_flagged + CONTEXT, block_last)
+    width = len(str(max(last_shown, finding.line) - offset))
     bar = paint(" " * width + " |", DIM, color=color)
     out = [header_line(finding, color, unsafe_fixes, with_location=False)]
     out.append(f"{' ' * width}{paint('-->', DIM, color=color)} {location(finding)}\n")
     if 1 <= finding.line <= len(lines):
         out.append(bar + "\n")
-        out += _excerpt(finding, lines, first_shown, last_flagged, last_shown, width, color)
+        out += _excerpt(finding, lines, first_shown, last_flagged, last_shown, width, offset, color)
         out.append(bar + "\n")
     if finding.evidence:
         out.append(f"{' ' * width} {paint('= evidence:', DIM, color=color)} {'; '.join(finding.evidence)}\n")
-    out += _fix(finding, width, color)
+    out += _fix(finding, width, offset, color)
     from geolint.api import rule_url
 
     out.append(f"{' ' * width} {paint('= docs:', DIM, color=color)} {rule_url(finding.code)}\n")
     return "".join(out)
 
 
-def _excerpt(finding: Finding, lines: tuple[str, ...], first: int, last_flagged: int, last: int, width: int, color: bool) -> list[str]:
+def _excerpt(
+    finding: Finding, lines: tuple[str, ...], first: int, last_flagged: int, last: int, width: int, offset: int, color: bool
+) -> list[str]:
     def row(number: int, text: str) -> str:
-        return f"{paint(f'{number:>{width}} |', DIM, color=color)} {text}".rstrip() + "\n"
+        return f"{paint(f'{number - offset:>{width}} |', DIM, color=color)} {text}".rstrip() + "\n"
 
     def carets(caret: str) -> str:
         return f"{paint(' ' * width + ' |', DIM, color=color)} {paint(caret, severity_style(finding), color=color)}\n"
@@ -71,7 +74,7 @@ def _excerpt(finding: Finding, lines: tuple[str, ...], first: int, last_flagged:
     return out
 
 
-def _fix(finding: Finding, width: int, color: bool) -> list[str]:
+def _fix(finding: Finding, width: int, offset: int, color: bool) -> list[str]:
     if finding.fix is None:
         return []
     what = finding.fix.description or "apply the fix"
@@ -83,7 +86,7 @@ def _fix(finding: Finding, width: int, color: bool) -> list[str]:
         out.append(bar + "\n")
         out += [f"{' ' * width} {paint('- ' + line.replace(chr(9), TAB), RED, color=color)}\n" for line in before]
         out += [
-            f"{paint(f'{first + index:>{width}}', DIM, color=color)} {paint('+ ' + line.replace(chr(9), TAB), GREEN, color=color)}\n"
+            f"{paint(f'{first + index - offset:>{width}}', DIM, color=color)} {paint('+ ' + line.replace(chr(9), TAB), GREEN, color=color)}\n"
             for index, line in enumerate(after)
         ]
         out.append(bar + "\n")

@@ -3,7 +3,9 @@
 `message`, `severity`, `fix` (null, or `{"applicability": "safe"|"unsafe", "edits": [...]}` where
 each edit is `{"line", "column", "end_line", "end_column", "content"}`), and, only when the rule
 states why, `evidence` (a list of strings, strongest first), and, only for a frame mismatch,
-`frames` (`[expected, found]`: the frame the operation needs and the one it got). `[]` when clean.
+`frames` (`[expected, found]`: the frame the operation needs and the one it got), and, only in a
+notebook, `cell` (its 1-based number among all cells; lines are then counted within the cell,
+as ruff's JSON does). `[]` when clean.
 """
 
 from __future__ import annotations
@@ -12,9 +14,11 @@ import json
 from typing import Any, Sequence
 
 from geolint.lint_types import Finding, Severity
+from geolint.output.source import in_cell
 
 
 def finding_as_json(finding: Finding) -> dict[str, Any]:
+    finding, cell = in_cell(finding)
     fix = finding.fix
     shown = {
         "path": finding.path,
@@ -42,6 +46,8 @@ def finding_as_json(finding: Finding) -> dict[str, Any]:
             ],
         },
     }
+    if cell is not None:
+        shown["cell"] = cell
     if finding.evidence:
         shown["evidence"] = list(finding.evidence)
     if finding.frames is not None:
