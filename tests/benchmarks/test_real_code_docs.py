@@ -96,6 +96,10 @@ def test_the_readme_quotes_the_blind_figures() -> None:
     assert f"{true} of them ({round(100 * true / findings)} %)" in quoted
     assert f"of {bugs} bugs" in quoted and f"it flags {caught} at" in quoted
     assert f"{latest[3]} repositories, {latest[4]} lines) gave {latest[5]} findings, {latest[6]}" in quoted.replace("\n", " ")
+    tuned = next(row for row in table_after("## The tuned corpora") if row[2] == "main corpus")
+    repositories = len(real_code.load_manifest(BENCHMARK / "manifest.toml"))
+    assert f"On the {repositories} repositories the rules were developed against" in quoted.replace("\n", " ")
+    assert f"reports {tuned[3]} findings, {'all' if tuned[3] == tuned[4] else tuned[4]} real" in quoted.replace("\n", " ")
 
 
 def test_every_false_positive_pattern_cited_in_a_ledger_has_a_row() -> None:
