@@ -143,6 +143,7 @@ def git(repo: Path, *arguments: str) -> str:
     ).stdout.strip()
 
 
+@pytest.mark.slow  # the runner's every mode, --throughput's timed repeats included
 @pytest.mark.skipif(shutil.which("git") is None, reason="needs git")
 def test_the_documented_commands_run(tmp_path: Path) -> None:
     """Each command as written, with the placeholders (MIRRORS, CORPUS) and the corpus files pointed here."""

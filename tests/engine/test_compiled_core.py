@@ -44,6 +44,7 @@ def test_the_readme_builds_it_the_way_the_test_does():
     assert {r.split(">")[0].split("=")[0].split("<")[0] for r in needed} <= named, installed
 
 
+@pytest.mark.slow  # mypy over every compiled module; the wheel build checks it too
 def test_the_compiled_modules_type_check_cleanly():
     """mypyc refuses a module mypy does not accept, and checks the annotations at run time."""
     sources = compiled_sources(PACKAGE)

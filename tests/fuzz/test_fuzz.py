@@ -16,6 +16,7 @@ import sys
 from pathlib import Path
 
 import hypothesmith
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -139,6 +140,7 @@ def run_cli(root: Path, *args: str) -> subprocess.CompletedProcess[str]:
 MUTATED_FILES = 240
 
 
+@pytest.mark.slow  # the real CLI over many mutated files
 def test_mutated_real_files_through_the_cli(tmp_path: Path) -> None:
     rng = random.Random(13)
     seeds = seed_files()

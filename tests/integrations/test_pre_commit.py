@@ -59,6 +59,7 @@ def test_manifest_is_valid() -> None:
     assert completed.returncode == 0, completed.stdout + completed.stderr
 
 
+@pytest.mark.slow  # two hook environments built by pip: a minute or two
 def test_hooks_fail_on_the_buggy_file_fix_it_and_pass_on_the_clean_one(tmp_path: Path, head: str) -> None:
     project = tmp_path / "project"
     project.mkdir()

@@ -79,6 +79,7 @@ def test_docs_show_each_config_form() -> None:
     assert sorted({language for language, _ in config_blocks()}) == ["ini", "toml"]
 
 
+@pytest.mark.slow  # a cold mypy run per snippet
 @pytest.mark.parametrize("index", range(len(config_blocks())))
 def test_config_snippet_works_when_copied(index: int, tmp_path: Path) -> None:
     """The snippet as written (plus where to find geolint in this checkout): the plugin runs and the aliases apply."""

@@ -34,6 +34,7 @@ def _write_project(root: Path, aliases: str | None) -> Path:
     return config
 
 
+@pytest.mark.slow  # cold mypy or dmypy runs over numpy's stubs
 def test_error_code_can_be_disabled(tmp_path: Path) -> None:
     config = _write_project(tmp_path, None)
     cache = str(tmp_path / "cache")
@@ -46,6 +47,7 @@ def test_error_code_can_be_disabled(tmp_path: Path) -> None:
     assert "[return-value]" in disabled
 
 
+@pytest.mark.slow  # cold mypy or dmypy runs over numpy's stubs
 def test_changed_plugin_config_invalidates_the_cache(tmp_path: Path) -> None:
     cache = str(tmp_path / "cache")
     snippet = str(tmp_path / "snippet.py")
@@ -88,6 +90,7 @@ def test_malformed_plugin_config_is_a_clear_mypy_error(tmp_path: Path, name: str
     assert f"{name}: error: {named}" in result.stderr, output
 
 
+@pytest.mark.slow  # cold mypy or dmypy runs over numpy's stubs
 def test_dmypy_runs_the_plugin(tmp_path: Path) -> None:
     config = _write_project(tmp_path, None)
     dmypy = [sys.executable, "-m", "mypy.dmypy", "--status-file", str(tmp_path / "dmypy.json")]
@@ -112,6 +115,7 @@ def test_dmypy_runs_the_plugin(tmp_path: Path) -> None:
         subprocess.run([*dmypy, "stop"], cwd=tmp_path, capture_output=True, timeout=60, env=env)
 
 
+@pytest.mark.slow  # cold mypy or dmypy runs over numpy's stubs
 def test_dmypy_run_picks_up_a_changed_plugin_config(tmp_path: Path) -> None:
     dmypy = [sys.executable, "-m", "mypy.dmypy", "--status-file", str(tmp_path / "dmypy.json")]
     env = {**os.environ, "PYTHONPATH": str(REPO)}
