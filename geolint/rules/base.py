@@ -40,12 +40,20 @@ class Valid:
 
 @dataclass(frozen=True)
 class Invalid:
-    """Code the rule must flag; `expected_fix` is the whole module after the rule's fix; `options` is
-    the `[tool.geolint]` table it is linted with."""
+    """Code the rule must flag exactly once (fixit's `Invalid`).
+
+    `expected_fix` is the whole module after the rule's fix; `options` is the `[tool.geolint]` table it
+    is linted with. `message` pins the finding's exact message, and `range` where it is reported:
+    `(line, column, end_line, end_column)` of the reported node as the CLI prints them (lines and
+    columns count from 1; the end column is just past the node's last character). Every rule pins
+    both on at least one example, so a message or a caret cannot drift unnoticed.
+    """
 
     code: str
     expected_fix: str | None = None
     options: Mapping[str, object] | None = None
+    message: str | None = None
+    range: tuple[int, int, int, int] | None = None
 
 
 @dataclass(frozen=True)

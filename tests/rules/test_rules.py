@@ -1,13 +1,15 @@
 """Every registered rule's VALID and INVALID examples, run through the real engine.
 
 Adding a rule adds its cases here automatically (fixit's generic test builder): VALID code
-must give no finding of the rule; INVALID code exactly one; a fix must reproduce
-`expected_fix`, parse, and be idempotent; the rule's prefilter must let every INVALID through.
+must give no finding of the rule; INVALID code exactly one, with the `message` and `range` an
+example pins; a fix must reproduce `expected_fix`, parse, and be idempotent; the rule's prefilter
+must let every INVALID through.
 """
 
 from __future__ import annotations
 
 import ast
+from dataclasses import replace
 
 import pytest
 
@@ -47,6 +49,10 @@ def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
     finding = found[0]
     assert finding.name == rule.name
     assert 1 <= finding.line <= finding.end_line
+    if example.message is not None:
+        assert finding.message == example.message
+    if example.range is not None:
+        assert (finding.line, finding.column, finding.end_line, finding.end_column) == example.range
     if rule.triggers is not None and rule.code not in ENGINE_RULE_CODES:  # GEO000/GEO900 run in the engine
         assert rule.triggers.search(example.code), f"{rule.code}'s prefilter would skip its own INVALID example"
     if example.expected_fix is not None:
@@ -65,6 +71,27 @@ def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
 def test_rule_has_examples_both_ways(rule: type[Rule]) -> None:
     assert rule.VALID, f"{rule.code} has no VALID examples"
     assert rule.INVALID, f"{rule.code} has no INVALID examples"
+
+
+@pytest.mark.parametrize("rule", all_rules(), ids=lambda rule: rule.code)
+def test_rule_pins_a_message_and_a_range(rule: type[Rule]) -> None:
+    # fixit's `expected_message` and `range`: what a finding says and where, not only that it fires
+    assert any(example.message is not None and example.range is not None for example in rule.INVALID), (
+        f"{rule.code} has no INVALID example with both `message=` and `range=`"
+    )
+
+
+def test_a_wrong_pinned_message_or_range_fails() -> None:
+    rule = next(rule for rule in all_rules() if rule.code == "GEO101")
+    pinned = next(example for example in rule.INVALID if example.message is not None and example.range is not None)
+    line, column, end_line, end_column = pinned.range  # type: ignore[misc]
+    for wrong in (
+        replace(pinned, message=pinned.message + "!"),  # type: ignore[operator]
+        replace(pinned, range=(line, column + 1, end_line, end_column)),
+        replace(pinned, range=(line, column, end_line, end_column - 1)),
+    ):
+        with pytest.raises(AssertionError):
+            test_example(rule, wrong)
 
 
 SAFE_FIXES = {"GEO101", "GEO301", "GEO302"}  # the fixes issue 3 lists as safe

@@ -59,7 +59,11 @@ class FrameMismatchApply(ProductRule):
         Valid("import numpy as np\nT_world_base = T_world_cam @ T_cam_base\np = np.linalg.inv(T_world_cam) @ p_cam\n"),
     ]
     INVALID = [
-        Invalid("p_world = T_world_cam @ p_base\n", options=STATED),
+        Invalid(
+            "p_world = T_world_cam @ p_base\n", options=STATED,
+            message="`T_world_cam` maps cam into world, but `p_base` is in base",
+            range=(1, 11, 1, 31),
+        ),
         Invalid("from pydrake.math import RigidTransform\np_W = X_WB @ p_CQ\n", options=STATED),
         Invalid("p = cam_to_world @ p_world\n", options=STATED),
         Invalid("import numpy as np\np = np.dot(world_from_cam, point_in_base)\n", options=STATED),

@@ -77,7 +77,11 @@ class FrameMismatchCompose(ProductRule):
         Valid('T_ee_rot = RigidTransform(R, t, from_frame="tool", to_frame="tool")\nT = T_ee_world * T_ee_rot\n'),
     ]
     INVALID = [
-        Invalid("T_world_tool = T_world_base @ T_cam_tool\n", options=STATED),
+        Invalid(
+            "T_world_tool = T_world_base @ T_cam_tool\n", options=STATED,
+            message="`T_world_base` maps base into world, but `T_cam_tool` maps tool into cam: the inner frames base and cam differ",
+            range=(1, 16, 1, 41),
+        ),
         Invalid("from pydrake.math import RigidTransform\nX_WG = X_WB @ X_CG\n", options=STATED),
         Invalid("T = T_world_base @ T_base_cam @ T_tool_grip\n", options=STATED),
         Invalid("import numpy as np\nT = np.matmul(world_from_base, cam_from_tool)\n", options=STATED),

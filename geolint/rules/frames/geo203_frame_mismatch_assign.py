@@ -100,7 +100,11 @@ class FrameMismatchAssign(FactRule):
         ),
     ]
     INVALID = [
-        Invalid("p_world = T_cam_base @ p_base\n", options=STATED),
+        Invalid(
+            "p_world = T_cam_base @ p_base\n", options=STATED,
+            message="`p_world` should be in world, but `T_cam_base @ p_base` is in cam",
+            range=(1, 11, 1, 30),
+        ),
         Invalid("T_cam_world = T_world_cam\n", options=STATED),
         Invalid("from pydrake.math import RigidTransform\nX_CW = X_WB @ X_BC\n", options=STATED),
         Invalid("def f(T_world_cam):\n    pose = T_world_cam\n    T_cam_world = pose\n    return T_cam_world\n", options=STATED),

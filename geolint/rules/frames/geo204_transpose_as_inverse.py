@@ -84,6 +84,8 @@ class TransposeAsInverse(FactRule):
         Invalid(
             "T_cam_world = T_world_cam.T\n",
             expected_fix="T_cam_world = np.linalg.inv(T_world_cam)\n",
+            message="`T_world_cam.T` is not the inverse of the homogeneous transform `T_world_cam` (only a rotation's transpose is); use `np.linalg.inv(T_world_cam)`",
+            range=(1, 15, 1, 28),
         ),
         Invalid("p_cam = (T_world_cam.T @ p_world_h)[:3]\n"),
         Invalid("from pydrake.math import RigidTransform\nX_BW = X_WB.T\n"),

@@ -165,7 +165,11 @@ class HalfInverseTransform(AstRule):
         ),
     ]
     INVALID = [
-        Invalid("p_cam = T[:3, :3].T @ p_world + T[:3, 3]\n"),
+        Invalid(
+            "p_cam = T[:3, :3].T @ p_world + T[:3, 3]\n",
+            message="`T[:3, :3].T @ p_world + T[:3, 3]` applies the inverse rotation of a pose with its forward translation (+ t): neither the pose nor its inverse. The inverse is Rᵀ (p - t) (rows: (p - t) @ R); the pose itself is R p + t (rows: p @ R.T + t)",
+            range=(1, 9, 1, 41),
+        ),
         Invalid("def f(pts, T):\n    R = T[:3, :3]\n    t = T[:3, 3]\n    return pts @ R + t\n"),
         Invalid("def f(pose, p):\n    return pose.rotation @ (p - pose.translation)\n"),
         Invalid("def f(pts, T):\n    R, t = T[:3, :3], T[:3, 3]\n    return (pts - t) @ R.T\n"),

@@ -103,7 +103,11 @@ class CallerTransformMutated(AstRule):
         ),
     ]
     INVALID = [
-        Invalid("def f(T, p):\n    T[:3, 3] = 0\n    return T @ p\n"),
+        Invalid(
+            "def f(T, p):\n    T[:3, 3] = 0\n    return T @ p\n",
+            message="`f` rewrites part of the transform its caller passed as `T` (`T[:3, 3]`), so the caller's transform changes too; copy it first (`T.copy()`, `copy.deepcopy(T)`)",
+            range=(2, 5, 2, 13),
+        ),
         Invalid(
             "def rotate_only(vector, transform):\n    transform.transform.translation.x = 0.0\n"
             "    return do_transform_vector3(vector, transform)\n"

@@ -138,6 +138,8 @@ class InvalidTfFrameId(AstRule):
         Invalid(
             "import tf2_ros\nt = buffer.lookup_transform('/map', 'base_link', stamp)\n",
             expected_fix="import tf2_ros\nt = buffer.lookup_transform('map', 'base_link', stamp)\n",
+            message="tf2 frame ids never start with '/': `lookup_transform` raises InvalidArgumentException for '/map' (can_transform returns False)",
+            range=(2, 29, 2, 35),
         ),
         Invalid("import rclpy\nmsg.header.frame_id = '/camera_link'\n"),
         Invalid("import tf2_ros\nh = Header(frame_id='/odom')\n"),

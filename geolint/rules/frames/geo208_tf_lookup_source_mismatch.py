@@ -83,7 +83,9 @@ class TfLookupSourceMismatch(AstRule):
     INVALID = [
         Invalid(
             "def f(p, q):\n    t = TransformStamped()\n    t.header.frame_id = 'map'\n    t.child_frame_id = 'odom'\n"
-            "    p.header.frame_id = 'base_link'\n    return do_transform_point(p, t)\n"
+            "    p.header.frame_id = 'base_link'\n    return do_transform_point(p, t)\n",
+            message="`p` is stamped in 'base_link', but `t` is stamped with child_frame_id 'odom': it maps data from 'odom', so `do_transform_point` moves `p` from the wrong frame (the message or the transform names the wrong frame)",
+            range=(6, 12, 6, 36),
         ),
         Invalid(
             "def f(buffer, goal):\n    goal.header.frame_id = 'base_link'\n"

@@ -167,7 +167,9 @@ class ExtrinsicsDirectionMismatch(FactRule):
         Invalid(
             "import numpy as np\ndef f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
             "    t = np.array(info['cam_t_w2c'])\n    w2c = np.eye(4)\n    w2c[:3, :3] = R.T\n"
-            "    w2c[:3, 3] = -R.T @ t\n    return w2c\n"
+            "    w2c[:3, 3] = -R.T @ t\n    return w2c\n",
+            message="`w2c` is a world-to-camera pose by its name `w2c`, but its blocks are set from a camera-to-world pose (key 'cam_R_w2c' (BOP scene_camera.json: world-to-camera); inverted by `.T`; key 'cam_t_w2c' (BOP scene_camera.json: world-to-camera); inverse translation -R.T @ t): an inverse too many or one missing",
+            range=(6, 19, 6, 22),
         ),
         Invalid("import numpy as np\ndef f(frame):\n    frame['pose'].c2w = np.linalg.inv(np.array(frame['transform_matrix']))\n"),
         Invalid("def f(image, frames):\n    frames.append({'transform_matrix': image.cam_from_world.matrix().tolist()})\n"),

@@ -128,7 +128,9 @@ class CameraCenterFromTranslation(FactRule):
             "import numpy as np\ndef to_blender(p):\n    return [p[0], -p[2], p[1]]\n"
             "def f(sc, cameras):\n    cam_H_w2c = np.eye(4)\n    cam_H_w2c[:3, :3] = np.array(sc['cam_R_w2c']).reshape(3, 3)\n"
             "    cam_H_w2c[:3, 3] = np.array(sc['cam_t_w2c'])\n    pos = to_blender(list(cam_H_w2c[:3, 3]))\n"
-            "    cameras.append({'location': pos, 'rotation': cam_H_w2c[:3, :3]})\n"
+            "    cameras.append({'location': pos, 'rotation': cam_H_w2c[:3, :3]})\n",
+            message="the key 'location' is a camera position, but `pos` is the translation of a world-to-camera pose (key 'cam_R_w2c' (BOP scene_camera.json: world-to-camera); key 'cam_t_w2c' (BOP scene_camera.json: world-to-camera); axes relabelled by `to_blender`), i.e. the world origin seen from the camera; the camera centre is -R.T @ t",
+            range=(9, 33, 9, 36),
         ),
         Invalid("def f(image, viewer):\n    viewer.look_at(eye=image.tvec, target=(0, 0, 0))\n"),
         Invalid("def f(image):\n    cam_center = image.tvec\n    return cam_center\n"),

@@ -108,6 +108,8 @@ class DirectionTranslated(FactRule):
         Invalid(
             "import numpy as np\nnormal_h = np.append(normal, 1)\n",
             expected_fix="import numpy as np\nnormal_h = np.append(normal, 0)\n",
+            message="direction `normal` is given w = 1, so a transform will translate it; directions take w = 0",
+            range=(2, 12, 2, 32),
         ),
         Invalid(
             "import torch.nn.functional as F\nnormals_h = F.pad(normals, (0, 1), value=1.0)\nworld = normals_h @ c2w.T\n",

@@ -86,6 +86,8 @@ class PointNotTranslated(FactRule):
         Invalid(
             "import numpy as np\np_h = np.append(point, 0)\n",
             expected_fix="import numpy as np\np_h = np.append(point, 1)\n",
+            message="point `point` is given w = 0, so a transform will not translate it; points take w = 1",
+            range=(2, 7, 2, 26),
         ),
         Invalid(
             "import numpy as np\np_world = T_world_cam @ np.array([position.x, position.y, position.z, 0])\n",

@@ -137,7 +137,11 @@ class PointPlusPoint(FactRule):
         ),  # polar coordinates around the root: an offset
     ]
     INVALID = [
-        Invalid("grasp_position = object_centroid + gripper_position\n"),
+        Invalid(
+            "grasp_position = object_centroid + gripper_position\n",
+            message="`object_centroid` and `gripper_position` are both points; adding two positions depends on the origin (did you mean an offset, a difference or a midpoint?)",
+            range=(1, 18, 1, 52),
+        ),
         Invalid("def f(p_world, tip_position):\n    return p_world + tip_position\n"),
         Invalid("both = mesh_a.centroid + mesh_b.centroid\n"),
         Invalid("x = tip_position_world + base_position_world + offset\n"),

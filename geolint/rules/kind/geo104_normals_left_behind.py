@@ -83,7 +83,9 @@ class NormalsLeftBehind(FactRule):
         Invalid(
             "def to_world(points, normals, T):\n"
             "    pw = points @ T[:3, :3].T + T[:3, 3]\n"
-            "    return pw, normals\n"
+            "    return pw, normals\n",
+            message="points `points` are moved to a new frame here, but normals `normals` are returned unrotated",
+            range=(2, 10, 2, 30),
         ),
         Invalid(
             "import numpy as np\n"

@@ -70,7 +70,11 @@ class RotationIndexedAsPose(AstRule):
         Valid("def f(poses):\n    R = poses[:, :3, :3]\n    return R[3]\n"),  # the fourth rotation of a stack
     ]
     INVALID = [
-        Invalid("import numpy as np\nR = np.eye(3)\nR[:3, 3] = t\n"),
+        Invalid(
+            "import numpy as np\nR = np.eye(3)\nR[:3, 3] = t\n",
+            message="`R` is a 3x3 rotation, but `R[:3, 3]` indexes it as a 4x4 pose (there is no row or column 3): use the 4x4 pose it came from, or build one",
+            range=(3, 1, 3, 9),
+        ),
         Invalid("def f(pose):\n    R = Quaternion(pose['rotation']).rotation_matrix\n    return R[3, :3]\n"),
         Invalid("def f(T):\n    R = T[:3, :3].copy()\n    return R[:3, 3:]\n"),
         Invalid("from transforms3d.quaternions import quat2mat\nR = quat2mat(q)\nt = R[0:3, 3]\n"),

@@ -65,7 +65,11 @@ class VectorTransformedAsPoint(AstRule):
         Valid("def f(msg: PointStamped, t):\n    return do_transform_point(msg, t)\n"),
     ]
     INVALID = [
-        Invalid("def f(t):\n    v = Vector3Stamped()\n    return do_transform_point(v, t)\n"),
+        Invalid(
+            "def f(t):\n    v = Vector3Stamped()\n    return do_transform_point(v, t)\n",
+            message="`v` is a free vector (made by Vector3Stamped()); `do_transform_point` also translates it. Rotate it only: `do_transform_vector3`",
+            range=(3, 12, 3, 36),
+        ),
         Invalid("def f(normal: Vector3Stamped, t):\n    return tf2_geometry_msgs.do_transform_point(normal, t)\n"),
         Invalid(
             "def f(odom, t):\n    p = PointStamped()\n    p.header = odom.header\n    p.point.x = odom.twist.twist.linear.x\n"

@@ -194,7 +194,9 @@ class FreeVectorsLeftBehind(FactRule):
             "    box.velocity = lookup_velocity(token)\n"
             "def box_to_ego(box, R):\n"
             "    box.center = R @ box.center\n"
-            "    return box, box.velocity\n"
+            "    return box, box.velocity\n",
+            message="`box.center` is rotated into a new frame here, but not the same object's `box.velocity` (free vector); rotate those too",
+            range=(4, 5, 4, 15),
         ),
         Invalid(
             "def global_rotation(gt_boxes, rot):\n"

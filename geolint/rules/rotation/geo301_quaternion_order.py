@@ -329,11 +329,15 @@ class QuaternionOrder(FactRule):
     INVALID = [
         Invalid(
             "from transforms3d.euler import euler2quat\ndef to_ros(msg, q):\n    msg.x = q[0]\n    msg.y = q[1]\n"
-            "    msg.z = q[2]\n    msg.w = q[3]\n    return msg\ndef f(msg, r, p, y):\n    return to_ros(msg, euler2quat(r, p, y))\n"
+            "    msg.z = q[2]\n    msg.w = q[3]\n    return msg\ndef f(msg, r, p, y):\n    return to_ros(msg, euler2quat(r, p, y))\n",
+            message="`euler2quat(r, p, y)` is scalar-first (w, x, y, z) (from `euler2quat(r, p, y)`, line 9), but `to_ros` (which passes its parameter `q` to the fields of `msg` in x, y, z, w order (`msg.w = q[3]`)) expects scalar-last (x, y, z, w)",
+            range=(9, 24, 9, 43),
         ),
         Invalid(
             "from transforms3d.euler import euler2quat\ndef f(r, p, y):\n    q = euler2quat(r, p, y)\n"
-            "    qx = q[0]\n    qy = q[1]\n    qz = q[2]\n    qw = q[3]\n    return qx, qy, qz, qw\n"
+            "    qx = q[0]\n    qy = q[1]\n    qz = q[2]\n    qw = q[3]\n    return qx, qy, qz, qw\n",
+            message="`qw = q[3]` reads component 3 as w, but `q` is scalar-first (w, x, y, z) (from `euler2quat(r, p, y)`, line 3): w is component 0",
+            range=(7, 5, 7, 14),
         ),
         Invalid(
             "import numpy as np\nfrom scipy.spatial.transform import Rotation\ndef root_rotvec(frames):\n"
@@ -386,10 +390,14 @@ class QuaternionOrder(FactRule):
             "def make(q):\n    return Label(quaternion=quaternion.as_float_array(q))\n"
             "def save(labels: List[Label]):\n"
             "    return [{'x': l.quaternion[1], 'y': l.quaternion[2], 'z': l.quaternion[3], 'w': l.quaternion[0]} for l in labels]\n",
+            message='`"w": l.quaternion[3]` reads component 3 as w, but `l.quaternion` is scalar-first (w, x, y, z) (`Label.quaternion` is set from `quaternion.as_float_array(q)`, line 6): w is component 0',
+            range=(8, 13, 8, 101),
         ),
         Invalid(
             "from scipy.spatial.transform import Rotation\ndef f(msg, yaw):\n    q = Rotation.from_euler('z', yaw).as_quat()\n"
-            "    msg.w = q[0]\n    msg.x = q[1]\n    msg.y = q[2]\n    msg.z = q[3]\n"
+            "    msg.w = q[0]\n    msg.x = q[1]\n    msg.y = q[2]\n    msg.z = q[3]\n",
+            message="`msg.w = q[0]` reads component 0 as w, but `q` is scalar-last (x, y, z, w) (from `Rotation.from_euler('z', yaw).as_quat()`, line 3): w is component 3",
+            range=(4, 5, 4, 17),
         ),
         Invalid(
             "from scipy.spatial.transform import Rotation\nfrom transforms3d.quaternions import mat2quat\n"
@@ -792,11 +800,12 @@ class QuaternionOrder(FactRule):
     def _check_named_reads(self, group: dict[str, tuple[Name, Subscript]], flow: QuaternionFlow) -> None:
         """`ori_x = q[0]` ... `ori_w = q[3]`: four local names that say which component they hold, read by
         index from one quaternion of known order with w taken from another index than the order puts it at."""
-        first = min((target for target, _ in group.values()), key=lambda t: (t.lineno, t.col_offset))
         values: dict[str, ast.expr] = {letter: value for letter, (_, value) in group.items()}
         names = {letter: target.id for letter, (target, _) in group.items()}
         shape = "`" + names["w"].replace("{", "{{").replace("}", "}}")[:-1] + "{letter} = {value}`"
-        self._check_components(first, values, flow, shape, fixable=False)
+        # reported where the message quotes: the statement that reads w (`qw = q[3]`)
+        read = group["w"][0]
+        self._check_components(self.facts.parent(read) or read, values, flow, shape, fixable=False)
 
     # -- components written one by one: dicts, keyword arguments, message fields ----------------
     def _check_component_writes(self, flow: QuaternionFlow) -> None:
@@ -820,10 +829,10 @@ class QuaternionOrder(FactRule):
                     groups.setdefault(ast.dump(target.value), {})[target.attr] = (target, value)
             for group in groups.values():
                 if len(group) == 4:
-                    first = min((target for target, _ in group.values()), key=lambda t: (t.lineno, t.col_offset))
-                    owner = facts.code_of(first.value)
+                    written = group["w"][0]  # reported where the message quotes: the store into w
+                    owner = facts.code_of(written.value)
                     values = {letter: value for letter, (_, value) in group.items()}
-                    self._check_components(first, values, flow, f"`{owner}.{{letter}} = {{value}}`", fixable=False)
+                    self._check_components(facts.parent(written) or written, values, flow, f"`{owner}.{{letter}} = {{value}}`", fixable=False)
 
     def _check_components(
         self, reported: AST, mapping: dict[str, ast.expr], flow: QuaternionFlow, shape: str, fixable: bool = True

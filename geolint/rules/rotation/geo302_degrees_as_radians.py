@@ -217,9 +217,12 @@ class DegreesAsRadians(FactRule):
         ),
     ]
     INVALID = [
-        Invalid(  # computed degrees are degrees, whatever other names the function wraps in pi
+        Invalid(
+            # computed degrees are degrees, whatever other names the function wraps in pi
             "import numpy as np\ndef f(h):\n    yaw_deg = np.degrees(h)\n"
-            "    heading_deg = (h + np.pi) % (2 * np.pi) - np.pi\n    return np.cos(yaw_deg)\n"
+            "    heading_deg = (h + np.pi) % (2 * np.pi) - np.pi\n    return np.cos(yaw_deg)\n",
+            message="`np.cos` takes radians, but `yaw_deg` is in degrees (the name `yaw_deg` says degrees)",
+            range=(5, 19, 5, 26),
         ),
         Invalid(
             "import numpy as np\nimport quaternion\n"

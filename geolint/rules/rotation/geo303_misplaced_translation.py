@@ -135,6 +135,8 @@ class MisplacedTranslation(AstRule):
             "    return {'location': list(T[3, :]), 'rotation': R}\n",
             expected_fix="import numpy as np\ndef f(R, t):\n    T = np.eye(4)\n    T[:3, :3] = R\n    T[:3, 3] = t\n"
             "    return {'location': list(T[:3, 3]), 'rotation': R}\n",
+            message="`T[3, :]` is the bottom (homogeneous) row of a 4x4 pose, [0, 0, 0, 1], but it is stored as a translation; the translation is column 3 (`[:3, 3]`)",
+            range=(6, 30, 6, 37),
         ),
         Invalid(
             "import numpy as np\nT = np.eye(4)\nT[:3, :3] = R\nT[3, :3] = t\n",

@@ -127,6 +127,8 @@ class QuaternionComponentReused(FactRule):
         Invalid(
             "import numpy as np\ndef core_to_ros(q_core):\n    q_ros = np.array([q_core[1], q_core[2], q_core[2], q_core[0]])\n    return q_ros\n",
             expected_fix="import numpy as np\ndef core_to_ros(q_core):\n    q_ros = np.array([q_core[1], q_core[2], q_core[3], q_core[0]])\n    return q_ros\n",
+            message="`q_core[2]` repeats a component of `q_core` and component 3 is never used: a reorder of a quaternion uses each of its four components once",
+            range=(3, 45, 3, 54),
         ),
         Invalid("import numpy as np\ndef f(quat):\n    return np.array([quat[3], quat[0], quat[0], quat[2]])\n"),
         Invalid("from scipy.spatial.transform import Rotation\ndef f(v):\n    return Rotation.from_quat([v[1], v[1], v[3], v[0]])\n"),

@@ -117,7 +117,9 @@ class RadiansAsDegrees(FactRule):
     INVALID = [
         Invalid(
             "import cv2\nfrom tf.transformations import euler_from_quaternion\ndef f(q):\n"
-            "    roll, pitch, yaw = euler_from_quaternion(q)\n    return cv2.getRotationMatrix2D((0, 0), yaw, 1.0)\n"
+            "    roll, pitch, yaw = euler_from_quaternion(q)\n    return cv2.getRotationMatrix2D((0, 0), yaw, 1.0)\n",
+            message="`cv2.getRotationMatrix2D` reads its angle in degrees, but `yaw` is in radians (`tf.transformations.euler_from_quaternion` returns its angles in radians)",
+            range=(5, 44, 5, 47),
         ),
         Invalid(
             "import math\nclass Heading:\n    def __init__(self, yaw):\n        self.yaw = yaw\n"

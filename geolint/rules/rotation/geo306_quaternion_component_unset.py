@@ -18,12 +18,14 @@ from ast import (
     Subscript,
 )
 
+from geolint.factbase.angles import EULER_METHOD_NAMES, RETURNED_ANGLES
 from geolint.factbase.index import FUNCTION_NODES
 from geolint.factbase.messages import MessageTypes
 from geolint.factbase.model import FactBase, dotted_name, number, walk_within
 from geolint.factbase.rotations import IDENTITY_NAME
 from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
+from geolint.factbase.quaternion_orders import QuaternionFlow, convention
 from geolint.rules.triggers import AllOf
 
 _QUATERNION: Final = "geometry_msgs.msg.Quaternion"
@@ -31,6 +33,7 @@ _COMPONENTS: Final = ("x", "y", "z", "w")
 # Words that make a source's `.x`, `.y`, `.z` a quaternion's (so it has a `.w` to copy too): a Quaternion
 # message misused to carry three angles (`q.x = rpy.x`) leaves w alone on purpose.
 _ROTATION_WORDS: Final = frozenset({"rotation", "rot", "orientation", "quat", "quaternion", "attitude", "q"})
+_EULER_WORDS: Final = frozenset({"rpy", "euler", "eulers"})
 _DEFAULTS: Final = {"w": "0.0 in ROS 1, 1.0 in ROS 2", "x": "0.0", "y": "0.0", "z": "0.0"}
 
 
@@ -137,12 +140,30 @@ class QuaternionComponentUnset(FactRule):
         Invalid(
             "from geometry_msgs.msg import Transform\ndef f():\n    no_rotation = Transform()\n    no_rotation.rotation.x = 1.0\n    return no_rotation\n",
             expected_fix="from geometry_msgs.msg import Transform\ndef f():\n    no_rotation = Transform()\n    no_rotation.rotation.w = 1.0\n    return no_rotation\n",
+            message="`no_rotation.rotation` is named for the identity, but only `x` is set to 1 and w keeps `Transform()`'s default (0.0 in ROS 1, 1.0 in ROS 2): (x, y, z, w) = (1, 0, 0, 0) is a half turn about x in ROS 1, and (1, 0, 0, 1) is no unit quaternion in ROS 2; the identity is w = 1 (1 comes first only in the w, x, y, z order)",
+            range=(4, 5, 4, 33),
         ),
         # three values of a sequence in a row, w never set (an inertial unit's roll, pitch, yaw)
         Invalid(
             "from sensor_msgs.msg import Imu\ndef f(unit):\n    values = unit.getValues()\n    msg = Imu()\n"
             "    msg.orientation.x = scale(values[0], 1.0)\n    msg.orientation.y = scale(values[1], 1.0)\n"
-            "    msg.orientation.z = scale(values[2], 1.0)\n    return msg\n"
+            "    msg.orientation.z = scale(values[2], 1.0)\n    return msg\n",
+            message="`msg.orientation.w` is never set: x, y, z are `scale` of `values[0]`, `values[1]`, `values[2]`, three values in a row, and w keeps `Imu()`'s default (0.0 in ROS 1, 1.0 in ROS 2): whether these are three angles or three components of a quaternion, a quaternion needs its w",
+            range=(5, 5, 5, 46),
+        ),
+        # the same with the evidence that the three are Euler angles, or a quaternion's first three components
+        Invalid(
+            "from sensor_msgs.msg import Imu\ndef f(unit):\n    rpy = unit.getRollPitchYaw()\n    msg = Imu()\n"
+            "    msg.orientation.x = rpy[0]\n    msg.orientation.y = rpy[1]\n    msg.orientation.z = rpy[2]\n    return msg\n",
+            message="`msg.orientation.w` is never set: x, y, z are `rpy[0]`, `rpy[1]`, `rpy[2]`, three values in a row, and w keeps `Imu()`'s default (0.0 in ROS 1, 1.0 in ROS 2): three angles (roll, pitch, yaw; `controller.InertialUnit.getRollPitchYaw` returns them) are no quaternion, and a quaternion needs its w",
+            range=(5, 5, 5, 31),
+        ),
+        Invalid(
+            "from geometry_msgs.msg import Pose\nfrom scipy.spatial.transform import Rotation\ndef f(R):\n"
+            "    q = Rotation.from_matrix(R).as_quat()\n    pose = Pose()\n    pose.orientation.x = q[0]\n"
+            "    pose.orientation.y = q[1]\n    pose.orientation.z = q[2]\n    return pose\n",
+            message="`pose.orientation.w` is never set: x, y, z are `q[0]`, `q[1]`, `q[2]`, three values in a row, and w keeps `Pose()`'s default (0.0 in ROS 1, 1.0 in ROS 2): `q` is a quaternion, scalar-last (x, y, z, w) (from `Rotation.from_matrix(R).as_quat()`, line 4), and a quaternion needs all four of its components",
+            range=(6, 5, 6, 30),
         ),
         Invalid(
             "from geometry_msgs.msg import PoseWithCovariance\ndef f(tform):\n    msg = PoseWithCovariance()\n"
@@ -151,10 +172,14 @@ class QuaternionComponentUnset(FactRule):
             expected_fix="from geometry_msgs.msg import PoseWithCovariance\ndef f(tform):\n    msg = PoseWithCovariance()\n"
             "    msg.pose.orientation.x = tform.rotation.x\n    msg.pose.orientation.y = tform.rotation.y\n"
             "    msg.pose.orientation.z = tform.rotation.z\n    msg.pose.orientation.w = tform.rotation.w\n    return msg\n",
+            message="`msg.pose.orientation.w` is never set: x, y, z are copied from `tform.rotation`, and w keeps `PoseWithCovariance()`'s default (0.0 in ROS 1, 1.0 in ROS 2), so the quaternion is not `tform.rotation`'s",
+            range=(6, 5, 6, 46),
         ),
         Invalid(
             "from geometry_msgs.msg import TransformStamped\ndef f(q):\n    t = TransformStamped()\n"
-            "    t.transform.rotation.w = q.w\n    t.transform.rotation.y = q.y\n    t.transform.rotation.z = q.z\n    return t\n"
+            "    t.transform.rotation.w = q.w\n    t.transform.rotation.y = q.y\n    t.transform.rotation.z = q.z\n    return t\n",
+            message="`t.transform.rotation.x` is never set: w, y, z are copied from `q`, and x keeps `TransformStamped()`'s default (0.0), so the quaternion is not `q`'s",
+            range=(6, 5, 6, 33),
         ),
     ]
 
@@ -243,7 +268,7 @@ class QuaternionComponentUnset(FactRule):
             self.report(
                 first,  # no fix to insert after the last copy: the three values go in from the first one (as GEO307 reports)
                 f"`{path}.w` is never set: x, y, z are {elements}, three values in a row, and w keeps `{built}`'s default "
-                f"({_DEFAULTS['w']}): three angles (roll, pitch, yaw) are no quaternion, and a quaternion needs its w",
+                f"({_DEFAULTS['w']}): {self._what_the_values_are(assignments[0].value)}",
             )
             return
         fix = f"{text}\n{indent}{path}.{missing} = {source}.{missing}" if "\n" not in text else None
@@ -255,6 +280,23 @@ class QuaternionComponentUnset(FactRule):
             applicability="unsafe",
             fix_description=f"copy `{source}.{missing}` too",
         )
+
+    def _what_the_values_are(self, first_value: ast.expr) -> str:
+        """Why three values in a row of `s` (`first_value` is `s[i]` or `f(s[i], ...)`) are no quaternion,
+        saying only what the evidence shows: Euler angles, three components of a quaternion, or neither."""
+        facts = self.facts
+        sequence = first_value.args[0] if isinstance(first_value, Call) else first_value
+        assert isinstance(sequence, Subscript)  # `_elements` matched it
+        order = facts.shared(QuaternionFlow).order_of(sequence.value)
+        if order is not None and not order.batch:
+            return (
+                f"`{facts.code_of(sequence.value)}` is a quaternion, {convention(order.order)} ({order.evidence}), "
+                "and a quaternion needs all four of its components"
+            )
+        angles = _euler_angles(facts, sequence.value)
+        if angles is not None:
+            return f"three angles (roll, pitch, yaw; {angles}) are no quaternion, and a quaternion needs its w"
+        return "whether these are three angles or three components of a quaternion, a quaternion needs its w"
 
     def _built_here(self, root: Name, quaternion: ast.expr) -> str | None:
         """`Cls()` when the message at `root` is built in this function with no arguments and `quaternion`
@@ -322,6 +364,23 @@ def _elements(facts: FactBase, targets: list[Attribute], assignments: list[Assig
         return None
     elements = f"`{sequence}[{offset}]`, `{sequence}[{offset + 1}]`, `{sequence}[{offset + 2}]`"
     return elements if wrapper is None else f"`{wrapper[0]}` of {elements}"
+
+
+def _euler_angles(facts: FactBase, sequence: ast.expr) -> str | None:
+    """Why `sequence` holds Euler angles (a library call that returns them, or a name that says so), or None."""
+    bound = facts.bindings(sequence) if isinstance(sequence, Name) else None
+    if bound is not None and len(bound) == 1 and isinstance(bound[0], Call):
+        call = bound[0]
+        qualified = facts.qualified_name(call.func) or ""
+        if qualified in RETURNED_ANGLES:
+            return f"`{qualified}` returns Euler angles"
+        method = EULER_METHOD_NAMES.get(call.func.attr) if isinstance(call.func, Attribute) and not call.args else None
+        if method is not None:
+            return f"`{method}` returns them"
+    name = sequence.id if isinstance(sequence, Name) else sequence.attr if isinstance(sequence, Attribute) else ""
+    if _EULER_WORDS & set(name.lower().split("_")):
+        return f"the name `{name}` says Euler angles"
+    return None
 
 
 def _one_block(block: AST | None, statements: list[Assign]) -> bool:

@@ -167,7 +167,9 @@ class EulerAnglesInQuaternion(FactRule):
     INVALID = [
         Invalid(
             "from sensor_msgs.msg import Imu\ndef f(imu):\n    rpy = imu.getRollPitchYaw()\n    msg = Imu()\n    msg.orientation.x = rpy[0]\n"
-            "    msg.orientation.y = rpy[1]\n    msg.orientation.z = rpy[2]\n    return msg\n"
+            "    msg.orientation.y = rpy[1]\n    msg.orientation.z = rpy[2]\n    return msg\n",
+            message="`msg.orientation.x` is given `rpy[0]` (and y = `rpy[1]`, z = `rpy[2]`), an Euler angle (roll: `controller.InertialUnit.getRollPitchYaw` returns them); a quaternion's components are not angles: use `getQuaternion()` (x, y, z, w) and set all four",
+            range=(5, 5, 5, 22),
         ),
         Invalid(
             "from geometry_msgs.msg import Pose, Quaternion\nfrom tf_transformations import euler_from_quaternion\n"

@@ -47,7 +47,13 @@ class UnusedSuppressionRule(AstRule):
     # Detected by the engine after all rules ran; this visitor never fires.
     triggers = re.compile(r"(?!)")
     VALID = (Valid("normal_world = R_world_cam @ normal_cam  # noqa: E501\n"),)
-    INVALID = (Invalid("normal_world = R_world_cam @ normal_cam  # geolint: ignore[GEO999]\n"),)
+    INVALID = (
+        Invalid(
+            "normal_world = R_world_cam @ normal_cam  # geolint: ignore[GEO999]\n",
+            message="unknown rule code GEO999 in suppression",
+            range=(1, 42, 1, 67),
+        ),
+    )
 
     def check(self, tree: Module) -> None:
         """Nothing to visit: the engine itself reports this code."""

@@ -48,7 +48,13 @@ class SyntaxErrorRule(AstRule):
     # Detected by the engine before any rule runs; this visitor never fires.
     triggers = re.compile(r"(?!)")
     VALID = (Valid("normal = R @ normal\n"),)
-    INVALID = (Invalid("def transform_normals(R, normals:\n    return normals @ R.T\n"),)
+    INVALID = (
+        Invalid(
+            "def transform_normals(R, normals:\n    return normals @ R.T\n",
+            message="syntax error for Python 3.10-3.13: '(' was never closed",
+            range=(1, 22, 1, 23),
+        ),
+    )
 
     def check(self, tree: Module) -> None:
         """Nothing to visit: the engine itself reports this code."""

@@ -53,7 +53,13 @@ class TooComplexToAnalyse(AstRule):
     # Detected by the engine before any rule runs; this visitor never fires.
     triggers = re.compile(r"(?!)")
     VALID = (Valid("total = sum([offset_0, offset_1, offset_2])\n"),)
-    INVALID = (Invalid(_DEEP_SUM),)
+    INVALID = (
+        Invalid(
+            _DEEP_SUM,
+            message="file not analysed: its syntax tree is nested more than 150 levels deep here; raise `max-nesting-depth` in [tool.geolint] to analyse it",
+            range=(1, 9, 1, 10),
+        ),
+    )
 
     def check(self, tree: Module) -> None:
         """Nothing to visit: the engine itself reports this code."""
