@@ -1,14 +1,14 @@
-"""The lint engine: parse one file once, run every enabled rule in one traversal, return findings.
+"""The lint engine: parse one file once, run every enabled rule on it, return findings.
 
-This is the only place that turns rule `Report`s into `Finding`s. The API, the CLI and
+This is the only place that turns rule reports into `Finding`s. The API, the CLI and
 the language server all come through here, so the editor and CI always agree.
 
 The pipeline for one file: decode (PEP 263 cookie, BOM) -> syntax check (GEO000, CPython's `ast`,
 which reads the syntax of Python 3.10-3.13 whichever of them runs: `geolint.parsing`)
 -> prefilter (each rule's `triggers`; a file no enabled rule can fire on is analysed no further)
--> every `AstRule`'s `check` on the cached `ast` tree and the file's fact base -> (only for the
-libcst `Rule`s still enabled) one libcst traversal -> configured severities -> suppression
-comments -> GEO900. A file whose enabled rules are all AstRules never touches libcst.
+-> every `AstRule`'s `check` on the cached `ast` tree and the file's fact base -> fixes built as
+libcst transformations (`geolint.cst_fixes`; only a file with a fix is parsed with libcst)
+-> configured severities -> suppression comments -> GEO900.
 
 libcst and the rule registry are imported on first use, so a run served from the cache
 never pays for them.
@@ -22,8 +22,7 @@ import io
 import re
 import tokenize
 from functools import lru_cache
-from collections.abc import Mapping
-from typing import TYPE_CHECKING, Iterable, Sequence, TypeGuard
+from typing import TYPE_CHECKING, Iterable, Sequence
 
 from geolint import guards, suppression
 from geolint.config import enabled_codes
@@ -32,12 +31,9 @@ from geolint.parsing import SUPPORTED_GRAMMARS
 from geolint.source_text import cached_ast, remember_tree, split_lines
 
 if TYPE_CHECKING:
-    import libcst as cst
-
     from geolint.factbase import FactBase
     from geolint.factbase.index import ModuleIndex
-    from geolint.rules import Rule
-    from geolint.rules.base import AnyRule, AstReport, AstRule, Report
+    from geolint.rules.base import AstReport, AstRule
 
 SYNTAX_ERROR = "GEO000"
 SYNTAX_ERROR_NAME = "syntax-error"
@@ -45,7 +41,7 @@ SYNTAX_ERROR_NAME = "syntax-error"
 ENGINE_RULE_CODES = frozenset({SYNTAX_ERROR, guards.TOO_COMPLEX, suppression.UNUSED_SUPPRESSION})
 
 
-def registered_rules() -> tuple[AnyRule, ...]:
+def registered_rules() -> tuple[type[AstRule], ...]:
     from geolint.rules import all_rules
 
     return all_rules()
@@ -55,7 +51,7 @@ def lint_bytes(
     data: bytes,
     path: str = "<string>",
     config: Config = Config(),
-    rules: Sequence[AnyRule] | None = None,
+    rules: Sequence[type[AstRule]] | None = None,
 ) -> list[Finding]:
     """Lint a file's raw bytes: honours a PEP 263 coding cookie or a BOM (UTF-8 otherwise).
 
@@ -110,7 +106,7 @@ def lint_source(
     source: str,
     path: str = "<string>",
     config: Config = Config(),
-    rules: Sequence[AnyRule] | None = None,
+    rules: Sequence[type[AstRule]] | None = None,
 ) -> list[Finding]:
     """Lint one module's text and return its findings, sorted by position.
 
@@ -123,8 +119,6 @@ def lint_source(
     on -= {rule.code for rule in candidates if rule.opt_in and rule.code not in config.select}
     visitors = [rule for rule in candidates if rule.code in on and rule.code not in ENGINE_RULE_CODES]
 
-    module = None
-    syntax_error = None
     taken: ModuleIndex | None = None
     active = [rule for rule in visitors if _may_fire(rule, source, config)]
     # Parsing is the cost every file would pay: a file no enabled rule can read is parsed only when the
@@ -142,34 +136,18 @@ def lint_source(
         guards.make_room_for_recursion(config)
         syntax_error = _syntax_error(source)
         if syntax_error is not None:
-            # only a libcst rule could still read what CPython rejects
-            if any(not _is_ast_rule(rule) for rule in visitors) and guards.safe_for_libcst(source, syntax_error[2], config):
-                module, parse_error = _libcst_parse(source)
-            if module is None:
-                line, column, message = syntax_error
-                return _only_syntax_error(path, config, rules, line, column, f"syntax error for {SUPPORTED_GRAMMARS}: {message}")
-
-    ast_rules, cst_rules = _split_rules(active)
-    if syntax_error is not None:
-        ast_rules = []
-    if checked and syntax_error is None:
-        limit = _depth_limit(source, config, bool(ast_rules), bool(cst_rules) or guards.TOO_COMPLEX in on or (
+            line, column, message = syntax_error
+            return _only_syntax_error(path, config, rules, line, column, f"syntax error for {SUPPORTED_GRAMMARS}: {message}")
+        limit = _depth_limit(source, config, bool(active), guards.TOO_COMPLEX in on or (
             suppression.UNUSED_SUPPRESSION in on and suppression.may_have_directives(source)
         ))
         if limit is not None:
             return guards.limit_finding(path, config, limit)
     findings: list[Finding] = []
-    if ast_rules:
-        findings += _run_ast_rules(source, path, config, ast_rules)
+    if active:
+        findings += _run_ast_rules(source, path, config, active)
     if taken is not None:
         taken.forget_derived()  # the shared index stays as an importer found it
-    if cst_rules:
-        if module is None:
-            module, parse_error = _libcst_parse(source)
-            if module is None:  # CPython accepts it but libcst does not (rare, new syntax)
-                line, column, message = parse_error
-                return _only_syntax_error(path, config, rules, line, column, f"libcst cannot parse this file: {message}")
-        findings += _run_rules(module, path, config, cst_rules)
 
     if suppression.may_have_directives(source):
         directives = suppression.parse_directives(source)
@@ -221,31 +199,13 @@ def _reuse_shared_parse(path: str, source: str) -> ModuleIndex | None:
     return None
 
 
-def _may_fire(rule: AnyRule, source: str, config: Config) -> bool:
+def _may_fire(rule: type[AstRule], source: str, config: Config) -> bool:
     """The prefilter: whether the rule's trigger matches (a trigger that can read the config is given it)."""
     trigger = rule.triggers
     if trigger is None:
         return True
     search_with = getattr(trigger, "search_with", None)
     return bool(search_with(source, config) if search_with is not None else trigger.search(source))
-
-
-def _is_ast_rule(rule: AnyRule) -> TypeGuard[type[AstRule]]:
-    from geolint.rules.base import AstRule
-
-    return issubclass(rule, AstRule)
-
-
-def _split_rules(rules: Iterable[AnyRule]) -> tuple[list[type[AstRule]], list[type[Rule]]]:
-    """The `ast` rules and the libcst rules, each in the given order."""
-    ast_rules: list[type[AstRule]] = []
-    cst_rules: list[type[Rule]] = []
-    for rule in rules:
-        if _is_ast_rule(rule):
-            ast_rules.append(rule)
-        else:
-            cst_rules.append(rule)  # type: ignore[arg-type]  # not an AstRule: a libcst Rule
-    return ast_rules, cst_rules
 
 
 def _run_ast_rules(source: str, path: str, config: Config, rule_classes: Sequence[type[AstRule]]) -> list[Finding]:
@@ -266,7 +226,29 @@ def _run_ast_rules(source: str, path: str, config: Config, rule_classes: Sequenc
     if not any(rule.reports for rule in instances):
         return []
     columns = _CharacterColumns(source)
-    return [_ast_finding(rule, report, columns, path, config) for rule in instances for report in rule.reports]
+    findings = [_ast_finding(rule, report, columns, path, config) for rule in instances for report in rule.reports]
+    return _with_fixes(source, findings, [report for rule in instances for report in rule.reports])
+
+
+def _with_fixes(source: str, findings: list[Finding], reports: Sequence[AstReport]) -> list[Finding]:
+    """Each finding whose report has a replacement, with the fix that replaces its node in the module's
+    libcst tree (`geolint.cst_fixes`); libcst parses only a file with such a finding."""
+    wanted = [index for index, report in enumerate(reports) if report.replacement is not None]
+    if not wanted:
+        return findings
+    from dataclasses import replace
+
+    from geolint.cst_fixes import build_edits
+
+    requests = []
+    for index in wanted:
+        finding, replacement = findings[index], reports[index].replacement
+        requests.append(Edit(finding.line, finding.column, finding.end_line, finding.end_column, replacement))  # type: ignore[arg-type]
+    for index, edit in zip(wanted, build_edits(source, requests)):
+        if edit is not None:
+            report = reports[index]
+            findings[index] = replace(findings[index], fix=Fix(report.applicability, (edit,), report.fix_description))
+    return findings
 
 
 def _facts_for(
@@ -303,10 +285,6 @@ def _ast_finding(rule: AstRule, report: AstReport, columns: _CharacterColumns, p
     column = columns.column(line, getattr(node, "col_offset", 0) or 0)
     end_offset = getattr(node, "end_col_offset", None)
     end_column = column + 1 if end_offset is None else columns.column(end_line, end_offset)
-    fix = None
-    if report.replacement is not None:
-        edit = Edit(line, column + 1, end_line, end_column + 1, report.replacement)
-        fix = Fix(report.applicability, (edit,), report.fix_description)
     return Finding(
         path=path,
         line=line,
@@ -317,7 +295,6 @@ def _ast_finding(rule: AstRule, report: AstReport, columns: _CharacterColumns, p
         name=rule.name,
         message=report.message,
         severity=_severity_of(rule.code, config, rule.default_severity),
-        fix=fix,
         evidence=report.evidence,
         frames=report.frames,
     )
@@ -325,90 +302,6 @@ def _ast_finding(rule: AstRule, report: AstReport, columns: _CharacterColumns, p
 
 def finding_order(finding: Finding) -> tuple[int, int, str, int, int, str]:
     return (finding.line, finding.column, finding.code, finding.end_line, finding.end_column, finding.message)
-
-
-def _run_rules(module: cst.Module, path: str, config: Config, rule_classes: Sequence[type[Rule]]) -> list[Finding]:
-    """One batched traversal of `module` by every rule; reports become findings.
-
-    Positions are computed only when a rule reported something: libcst's PositionProvider
-    re-renders the whole module and costs more than parsing it, and most parsed files have no
-    finding. Every other metadata the rules declare is resolved up front, as libcst does.
-    """
-    import libcst as cst
-    from libcst.metadata import MetadataWrapper, PositionProvider
-
-    from geolint.rules import RuleContext
-
-    wrapper = MetadataWrapper(module, unsafe_skip_copy=True)
-    context = RuleContext(path=path, config=config)
-    instances = [rule_cls(context) for rule_cls in rule_classes]
-    wanted = set().union(*(type(rule).get_inherited_dependencies() for rule in instances))
-    resolved = dict(wrapper.resolve_many(wanted - {PositionProvider}))
-    resolved[PositionProvider] = _LazyMetadata(lambda: wrapper.resolve(PositionProvider))
-    for rule in instances:
-        rule.metadata = {key: resolved[key] for key in type(rule).get_inherited_dependencies()}
-    cst.visit_batched(wrapper.module, instances)
-    if not any(rule.reports for rule in instances):
-        return []
-    positions = wrapper.resolve(PositionProvider)
-    return [
-        _finding(rule, report, positions, wrapper.module, path, config)
-        for rule in instances
-        for report in rule.reports
-    ]
-
-
-class _LazyMetadata(Mapping):  # type: ignore[type-arg]
-    """A metadata mapping computed on first use (for a rule that asks for positions itself)."""
-
-    def __init__(self, compute) -> None:  # type: ignore[no-untyped-def]
-        self._compute = compute
-        self._value: Mapping | None = None  # type: ignore[type-arg]
-
-    def _mapping(self) -> Mapping:  # type: ignore[type-arg]
-        if self._value is None:
-            self._value = self._compute()
-        return self._value
-
-    def __getitem__(self, key: object) -> object:
-        return self._mapping()[key]
-
-    def __iter__(self):  # type: ignore[no-untyped-def]
-        return iter(self._mapping())
-
-    def __len__(self) -> int:
-        return len(self._mapping())
-
-
-def _finding(
-    rule: Rule,
-    report: Report,
-    positions: Mapping[cst.CSTNode, object],
-    module: cst.Module,
-    path: str,
-    config: Config,
-) -> Finding:
-    import libcst as cst
-
-    where = positions[report.node]
-    start, end = where.start, where.end  # type: ignore[attr-defined]
-    fix = None
-    if report.replacement is not None:
-        content = "" if isinstance(report.replacement, cst.RemovalSentinel) else module.code_for_node(report.replacement)
-        edit = Edit(start.line, start.column + 1, end.line, end.column + 1, content)
-        fix = Fix(report.applicability, (edit,), report.fix_description)
-    return Finding(
-        path=path,
-        line=start.line,
-        column=start.column + 1,
-        end_line=end.line,
-        end_column=end.column + 1,
-        code=rule.code,
-        name=rule.name,
-        message=report.message,
-        severity=_severity_of(rule.code, config, rule.default_severity),
-        fix=fix,
-    )
 
 
 def _severity_of(code: str, config: Config, default: Severity) -> Severity:
@@ -426,19 +319,8 @@ def _syntax_error(source: str) -> tuple[int, int, str] | None:
     return None
 
 
-def _libcst_parse(source: str) -> tuple[cst.Module | None, tuple[int, int, str]]:
-    import libcst as cst
-
-    try:
-        return cst.parse_module(source), (0, 0, "")
-    except cst.ParserSyntaxError as error:
-        return None, (error.raw_line, error.raw_column + 1, error.message)
-    except (RecursionError, ValueError) as error:
-        return None, (1, 1, str(error) or type(error).__name__)
-
-
 def _only_syntax_error(
-    path: str, config: Config, rules: Sequence[AnyRule] | None, line: int, column: int, message: str
+    path: str, config: Config, rules: Sequence[type[AstRule]] | None, line: int, column: int, message: str
 ) -> list[Finding]:
     candidates = (SYNTAX_ERROR,) if rules is None else tuple(rule.code for rule in rules)
     if SYNTAX_ERROR not in candidates or not enabled_codes(config, path, (SYNTAX_ERROR,)):

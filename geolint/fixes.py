@@ -3,8 +3,10 @@
 Guarantees, whatever the rules do:
 - only fixes whose applicability is allowed (`safe`, plus `unsafe` when asked) are applied;
 - overlapping fixes are never applied in the same pass (the first wins; the next pass re-lints);
+- fixes are applied as libcst transformations (`geolint.cst_fixes`): each edit's node is replaced in
+  the module's tree and the tree is written back, so nothing outside the fixed nodes changes;
 - the result always parses: a batch that breaks the module is retried fix by fix, and a fix
-  that breaks it alone is dropped for good;
+  that breaks it alone (or that is no node replacement) is dropped for good;
 - the result is a fixed point (re-running changes nothing), reached within `MAX_PASSES`.
 """
 
@@ -13,12 +15,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Collection, Sequence
 
-from geolint.engine import apply_edits, lint_source
-from geolint.lint_types import Config, Finding
+from geolint.engine import lint_source
+from geolint.lint_types import Config, Edit, Finding
 from geolint.parsing import parse_module
 
 if TYPE_CHECKING:
-    from geolint.rules import Rule
+    from geolint.rules import AstRule
 
 MAX_PASSES = 10
 
@@ -53,14 +55,18 @@ def fix_source(
     *,
     unsafe: bool = False,
     only: Collection[str] | None = None,
-    rules: Sequence[type[Rule]] | None = None,
+    rules: Sequence[type[AstRule]] | None = None,
+    findings: Sequence[Finding] | None = None,
 ) -> FixOutcome:
-    """Apply every allowed fix to `source`, pass after pass, until none is left or none applies."""
+    """Apply every allowed fix to `source`, pass after pass, until none is left or none applies.
+
+    `findings` are `source`'s own with this path, config and rules, when the caller has linted it
+    already (`geolint check --fix`): the first pass starts from them instead of linting again."""
     current = source
     fixed = 0
     fixed_codes: list[str] = []
     dropped: set[tuple[str, str, str]] = set()  # fixes that broke the module: (code, message, edit text)
-    findings = lint_source(current, path, config, rules)
+    findings = list(findings) if findings is not None else lint_source(current, path, config, rules)
     for _ in range(MAX_PASSES):
         candidates = [
             finding
@@ -70,20 +76,36 @@ def fix_source(
         if not candidates:
             break
         batch = _non_overlapping(candidates)
-        attempt = apply_edits(current, [edit for finding in batch for edit in finding.fix.edits])  # type: ignore[union-attr]
-        if attempt != current and parses(attempt):
+        attempt = _applied(current, [edit for finding in batch for edit in finding.fix.edits])  # type: ignore[union-attr]
+        if attempt is not None:
             current, fixed = attempt, fixed + len(batch)
             fixed_codes += [finding.code for finding in batch]
         else:  # something in the batch breaks the module: find the culprits one at a time
             for finding in batch:
-                attempt = apply_edits(current, finding.fix.edits)  # type: ignore[union-attr]
-                if attempt != current and parses(attempt):
+                attempt = _applied(current, finding.fix.edits)  # type: ignore[union-attr]
+                if attempt is not None:
                     current, fixed = attempt, fixed + 1
                     fixed_codes.append(finding.code)
                     break  # the other fixes' positions moved: re-lint before trying them
                 dropped.add(_identity(finding))
         findings = lint_source(current, path, config, rules)
     return FixOutcome(current, fixed, tuple(findings), tuple(fixed_codes))
+
+
+def _applied(source: str, edits: Sequence[Edit]) -> str | None:
+    """`source` with `edits` applied through its libcst tree, or None when that changes nothing, an edit
+    is no node replacement, or the result does not compile (libcst writes what CPython may reject,
+    e.g. a literal as an assignment target)."""
+    from geolint.cst_fixes import apply_edits
+
+    attempt = apply_edits(source, edits)
+    if attempt is None or attempt == source:
+        return None
+    try:
+        parse_module(attempt)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return None
+    return attempt
 
 
 def parses(source: str) -> bool:

@@ -17,9 +17,7 @@ place, analysing a file costs time proportional to its size.
 from __future__ import annotations
 
 import ast
-import io
 import sys
-import tokenize
 import functools
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Sequence, TypeVar, cast
@@ -29,7 +27,7 @@ from geolint.lint_types import Config, Finding, Severity
 from geolint.source_text import cached_ast
 
 if TYPE_CHECKING:
-    from geolint.rules.base import AnyRule
+    from geolint.rules.base import AstRule
 
 # The engine's `lint_source`, whose signature the wrapper keeps for type checkers.
 LintSource = TypeVar("LintSource", bound=Callable[..., "list[Finding]"])
@@ -39,9 +37,6 @@ TOO_COMPLEX_NAME = "too-complex-to-analyse"
 
 # What CPython's parser says when a limit of the parser (not the grammar) is what stopped it.
 _PARSER_LIMIT_MESSAGES = ("Exceeds the limit", "too complex", "maximum recursion depth")
-# Syntax errors that no CPython accepts (the tokenizer's own limits): reported as GEO000 as they
-# are, and libcst's parser is never asked to try (it would recurse until the process dies).
-_TOKENIZER_LIMIT_MESSAGES = ("too many nested parentheses", "too many levels of indentation")
 # Fields of `ast` nodes that never hold a child node (saves a getattr per node on the depth walk).
 _SCALAR_FIELDS = frozenset(
     {"ctx", "op", "id", "arg", "attr", "name", "level", "module", "kind", "type_comment", "is_async", "conversion", "simple"}
@@ -102,38 +97,6 @@ def past_depth_limit(at: ast.AST | None, limit: int) -> LimitExceeded:
     )
 
 
-def safe_for_libcst(source: str, syntax_error: str, config: Config) -> bool:
-    """Whether libcst may try to parse text that CPython rejected (newer syntax), without crashing.
-
-    Never after one of the tokenizer's nesting limits (no Python accepts such a file). Otherwise,
-    without a tree to measure, the tokens give an upper bound on the nesting depth: per logical
-    line, the brackets, operators and keywords that can open a level, plus the indentation.
-    Text the tokenizer itself cannot read is left to CPython's error message.
-    """
-    if any(text in syntax_error for text in _TOKENIZER_LIMIT_MESSAGES):
-        return False
-    limit = config.max_nesting_depth
-    try:
-        deepening = indentation = 0
-        for token in tokenize.generate_tokens(io.StringIO(source).readline):
-            if token.type == tokenize.INDENT:
-                indentation += 1
-            elif token.type == tokenize.DEDENT:
-                indentation -= 1
-            elif token.type == tokenize.NEWLINE:
-                deepening = 0
-            elif token.type == tokenize.OP and token.string not in (",", ";", ")", "]", "}") or token.string in _DEEPENING_KEYWORDS:
-                deepening += 1
-            if deepening + indentation > limit:
-                return False
-    except (tokenize.TokenError, SyntaxError, IndentationError):
-        return False
-    return True
-
-
-_DEEPENING_KEYWORDS = frozenset({"not", "and", "or", "if", "else", "lambda", "await", "in", "is", "yield", "for"})
-
-
 def make_room_for_recursion(config: Config) -> None:
     """Let the analysis recurse through a tree as deep as the configured limit allows.
 
@@ -173,7 +136,7 @@ def too_deep_becomes_a_finding(lint_source: LintSource) -> LintSource:
 
     @functools.wraps(lint_source)
     def guarded(
-        source: str, path: str = "<string>", config: Config = Config(), rules: Sequence[AnyRule] | None = None
+        source: str, path: str = "<string>", config: Config = Config(), rules: Sequence[type[AstRule]] | None = None
     ) -> list[Finding]:
         try:
             return lint_source(source, path, config, rules)

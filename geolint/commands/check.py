@@ -479,7 +479,10 @@ def _fix(
         try:
             data = result.location.read_bytes()
             source, encoding = _python_of(result.location, data)
-            outcome = fix_source(source, result.path, config_of[result.path], unsafe=unsafe)
+            # the findings this run just gave for these very bytes: the first fix pass needs no new lint
+            # (a notebook's are placed in its cells, not in the code the fix reads)
+            known = None if is_notebook(result.location) else result.findings
+            outcome = fix_source(source, result.path, config_of[result.path], unsafe=unsafe, findings=known)
             if outcome.changed:
                 fixed = write_back(data, outcome.source) if is_notebook(result.location) else encode_source(outcome.source, encoding)
                 if write:

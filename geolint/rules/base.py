@@ -1,28 +1,20 @@
-"""The base classes lint rules derive from, and the example types rules document themselves with.
+"""The base class lint rules derive from, and the example types rules document themselves with.
 
-Two kinds of rule share one set of class attributes (`RuleAttributes`):
+An `AstRule` runs on CPython's `ast` (the fast C parser) and the file's fact base: the engine calls
+`check(tree)` once per file; the rule reports with `self.report(node, message, replacement=...)`,
+where a replacement is the new source text of exactly the node's span.
 
-- `AstRule` runs on CPython's `ast` (the fast C parser) and the file's fact base: the engine calls
-  `check(tree)` once per file; the rule reports with `self.report(node, message, replacement=...)`,
-  where a replacement is the new source text for exactly the node's span. New rules are AstRules.
-- `Rule` is a libcst batchable visitor (the engine parses the file with libcst only when an
-  enabled `Rule` may fire on it). It lives in `geolint.rules.cst_base` and is imported from here on
-  first use, so code that only runs AstRules never imports libcst.
-
-The engine turns reports into `Finding`s (positions, severity, fix edits).
+The engine turns reports into `Finding`s (positions, severity), and a replacement into a fix that
+replaces the node in the module's libcst tree (`geolint.cst_fixes`).
 """
 
 from __future__ import annotations
 
 import ast
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar, Mapping, Protocol, Sequence, Union
+from typing import Any, ClassVar, Mapping, Protocol, Sequence
 
 from geolint.lint_types import Applicability, Config, Severity
-
-if TYPE_CHECKING:
-    from geolint.rules.cst_base import Report, Rule
-
 
 class RuleTrigger(Protocol):
     """What the engine's prefilter calls: truthy when the rule might fire on `source`."""
@@ -88,7 +80,7 @@ class RuleContext:
 
 
 class RuleAttributes:
-    """The class attributes every rule sets (both `AstRule` and the libcst `Rule`).
+    """The class attributes every rule sets (what the registry, the engine and the docs read).
 
     The class docstring is the rule's documentation, in ruff's sections:
     "What it does", "Why is this bad?", "Example", "Use instead", "Fix safety"
@@ -135,15 +127,3 @@ class AstRule(RuleAttributes):
         frames: tuple[str, str] | None = None,
     ) -> None:
         self.reports.append(AstReport(node, message, replacement, applicability, fix_description, tuple(evidence), frames))
-
-
-AnyRule = Union["type[Rule]", type[AstRule]]
-
-
-def __getattr__(name: str) -> object:
-    # `Rule` and `Report` need libcst: imported only when someone asks for them.
-    if name in ("Rule", "Report"):
-        from geolint.rules import cst_base
-
-        return getattr(cst_base, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

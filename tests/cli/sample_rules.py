@@ -6,14 +6,19 @@ and offers a safe fix (rename it `good_thing`); GEO191 flags `risky_thing` with 
 
 from __future__ import annotations
 
+import ast
 import re
+from collections.abc import Iterator
 
-import libcst as cst
-
-from geolint.rules.base import Invalid, Rule, Valid
+from geolint.rules.base import AstRule, Invalid, Valid
 
 
-class BadThingRule(Rule):
+def names(tree: ast.Module, name: str) -> Iterator[ast.Name]:
+    """Every use or binding of the name `name`."""
+    return (node for node in ast.walk(tree) if isinstance(node, ast.Name) and node.id == name)
+
+
+class BadThingRule(AstRule):
     """## What it does
     Flags the name `bad_thing` (a stand-in rule for the CLI tests).
 
@@ -38,14 +43,14 @@ class BadThingRule(Rule):
     name = "bad-thing"
     triggers = re.compile(r"\bbad_thing\b")
     VALID = (Valid("good_thing = 1\n"),)
-    INVALID = (Invalid("bad_thing = 1\n", "good_thing = 1\n"),)
+    INVALID = (Invalid("bad_thing = 1\n", "good_thing = 1\n", message="`bad_thing` is bad", range=(1, 1, 1, 10)),)
 
-    def visit_Name(self, node: cst.Name) -> None:
-        if node.value == "bad_thing":
-            self.report(node, "`bad_thing` is bad", replacement=node.with_changes(value="good_thing"))
+    def check(self, tree: ast.Module) -> None:
+        for node in names(tree, "bad_thing"):
+            self.report(node, "`bad_thing` is bad", replacement="good_thing")
 
 
-class RiskyThingRule(Rule):
+class RiskyThingRule(AstRule):
     """## What it does
     Flags the name `risky_thing` (a stand-in rule for the CLI tests).
 
@@ -70,16 +75,14 @@ class RiskyThingRule(Rule):
     name = "risky-thing"
     triggers = re.compile(r"\brisky_thing\b")
     VALID = (Valid("safe_thing = 1\n"),)
-    INVALID = (Invalid("risky_thing = 1\n", "safe_thing = 1\n"),)
+    INVALID = (Invalid("risky_thing = 1\n", "safe_thing = 1\n", message="`risky_thing` is risky", range=(1, 1, 1, 12)),)
 
-    def visit_Name(self, node: cst.Name) -> None:
-        if node.value == "risky_thing":
-            self.report(
-                node, "`risky_thing` is risky", replacement=node.with_changes(value="safe_thing"), applicability="unsafe"
-            )
+    def check(self, tree: ast.Module) -> None:
+        for node in names(tree, "risky_thing"):
+            self.report(node, "`risky_thing` is risky", replacement="safe_thing", applicability="unsafe")
 
 
-class BrokenFixRule(Rule):
+class BrokenFixRule(AstRule):
     """## What it does
     Flags the name `breaks_fix` and offers a fix that would not parse (tests that such fixes are dropped).
 
@@ -104,12 +107,12 @@ class BrokenFixRule(Rule):
     name = "broken-fix"
     triggers = re.compile(r"\bbreaks_fix\b")
 
-    def visit_Name(self, node: cst.Name) -> None:
-        if node.value == "breaks_fix":
-            self.report(node, "`breaks_fix` has a broken fix", replacement=cst.Integer("1"))  # `1 = 2` does not compile
+    def check(self, tree: ast.Module) -> None:
+        for node in names(tree, "breaks_fix"):
+            self.report(node, "`breaks_fix` has a broken fix", replacement="1")  # `1 = 2` does not compile
 
 
-class CrashingRule(Rule):
+class CrashingRule(AstRule):
     """## What it does
     Raises on the name `crash_here` (tests that an internal error in one file does not stop the run).
 
@@ -134,6 +137,6 @@ class CrashingRule(Rule):
     name = "crashing-rule"
     triggers = re.compile(r"\bcrash_here\b")
 
-    def visit_Name(self, node: cst.Name) -> None:
-        if node.value == "crash_here":
+    def check(self, tree: ast.Module) -> None:
+        for _ in names(tree, "crash_here"):
             raise RuntimeError("this rule crashed on purpose")

@@ -47,11 +47,12 @@ def test_encodings(cli):
     assert "empty.py" not in found
 
 
-def test_syntax_newer_than_this_python_is_read_by_libcst(cli):
-    # PEP 695 (Python 3.12) syntax: CPython 3.11's parser rejects it, libcst reads it.
-    cli.write("modern.py", "type Vec = list[float]\nx = bad_thing\n")
+def test_syntax_newer_than_this_python_is_read_and_fixed(cli):
+    # PEP 695 (Python 3.12) syntax: read under an older Python too, and its fix built by libcst
+    path = cli.write("modern.py", "type Vec = list[float]\nx = bad_thing\n")
     result = cli("check", "--format", "json")
-    assert [f["code"] for f in json.loads(result.stdout)] == ["GEO190"]
+    assert [(f["code"], f["fix"] is not None) for f in json.loads(result.stdout)] == [("GEO190", True)]
+    assert cli("check", "--fix").returncode == 0 and path.read_text() == "type Vec = list[float]\nx = good_thing\n"
 
 
 def test_crlf_form_feed_and_tabs_keep_positions_right(cli):

@@ -1,5 +1,6 @@
 """The `AstRule` contract: the engine runs `check` on the cached `ast`, turns reports into findings
-with character columns, applies replacement text over exactly the node's span, and never needs libcst."""
+with character columns, and turns replacement text into a fix over exactly the node's span, built
+through libcst only for a file that has one."""
 
 from __future__ import annotations
 
@@ -10,8 +11,9 @@ from collections.abc import Iterator
 
 import pytest
 
-from geolint import engine
+from geolint import cst_fixes
 from geolint.engine import apply_edits, lint_source
+from geolint.fixes import fix_source
 from geolint.lint_types import Severity
 from geolint.rules import all_rules
 from geolint.rules.base import AstRule, Invalid, RuleContext, Valid
@@ -99,12 +101,25 @@ def check_example(rule: type[AstRule], example: Valid | Invalid) -> None:
         assert len(found) == 1 and apply_edits(example.code, found[0].fix.edits) == example.expected_fix
 
 
-def test_only_ast_rules_never_parse_with_libcst(rule: type[AstRule], monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_file_without_a_fix_is_never_parsed_with_libcst(rule: type[AstRule], monkeypatch: pytest.MonkeyPatch) -> None:
     def refuse(source: str):  # type: ignore[no-untyped-def]
-        raise AssertionError("libcst parse for a file with only AstRules")
+        raise AssertionError("libcst parse for a file without a fix")
 
-    monkeypatch.setattr(engine, "_libcst_parse", refuse)
-    assert len(lint_source("q = p + p\n", "x.py", rules=[rule])) == 1
+    monkeypatch.setattr(cst_fixes, "_parse", refuse)
+    assert lint_source("q = p + r\n", "x.py", rules=[rule]) == []
+    pose_rule = next(registered for registered in all_rules() if registered.code == "GEO105")  # no fix
+    source = "import numpy as np\nR = np.eye(3)\nR[:3, 3] = t\n"
+    assert [(f.code, f.fix) for f in lint_source(source, "x.py", rules=[pose_rule])] == [("GEO105", None)]
+
+
+def test_a_fix_is_built_and_applied_on_one_libcst_parse(rule: type[AstRule], monkeypatch: pytest.MonkeyPatch) -> None:
+    parsed: list[str] = []
+    parse = cst_fixes._parse
+    monkeypatch.setattr(cst_fixes, "_parse", lambda source: parsed.append(source) or parse(source))
+    source = "".join(["q = p + p", "\n"])  # a text no earlier test left parsed
+    outcome = fix_source(source, "x.py", rules=[rule])
+    assert outcome.source == "q = 2 * p\n" and outcome.fixed == 1
+    assert parsed == [source]  # the fixed text has no finding left: not parsed again
 
 
 def test_a_test_rule_does_not_leak_into_the_registry() -> None:
@@ -115,3 +130,13 @@ def test_importing_the_ast_base_does_not_import_libcst() -> None:
     code = "import sys, geolint.rules.base, geolint.engine; print('libcst' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"
+
+
+def test_linting_findings_without_fixes_does_not_import_libcst() -> None:
+    code = (
+        "import sys, geolint.engine as e\n"
+        "found = e.lint_source('import numpy as np\\nR = np.eye(3)\\nR[:3, 3] = t\\n', 'x.py')\n"
+        "print([f.code for f in found], 'libcst' in sys.modules)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "['GEO105'] False"

@@ -2,8 +2,8 @@
 
 Adding a rule adds its cases here automatically (fixit's generic test builder): VALID code
 must give no finding of the rule; INVALID code exactly one, with the `message` and `range` an
-example pins; a fix must reproduce `expected_fix`, parse, and be idempotent; the rule's prefilter
-must let every INVALID through.
+example pins; a fix must reproduce `expected_fix` (as a text edit and as libcst's transformation
+alike), parse, and be idempotent; the rule's prefilter must let every INVALID through.
 """
 
 from __future__ import annotations
@@ -16,7 +16,8 @@ import pytest
 from geolint.config import config_from_table
 from geolint.engine import ENGINE_RULE_CODES, apply_edits, lint_source
 from geolint.lint_types import Config
-from geolint.rules import Invalid, Rule, Valid, all_rules
+from geolint import cst_fixes
+from geolint.rules import AstRule, Invalid, Valid, all_rules
 
 CASES = [
     pytest.param(rule, example, id=f"{rule.code}-{kind}-{index}")
@@ -26,11 +27,11 @@ CASES = [
 ]
 
 
-def findings_of(rule: type[Rule], source: str, config: Config = Config()):
+def findings_of(rule: type[AstRule], source: str, config: Config = Config()):
     return [finding for finding in lint_source(source, "example.py", config, rules=[rule]) if finding.code == rule.code]
 
 
-def example_config(rule: type[Rule], example: Valid | Invalid) -> Config:
+def example_config(rule: type[AstRule], example: Valid | Invalid) -> Config:
     """The example's `[tool.geolint]` table; an opt-in rule is selected by its code."""
     table = dict(example.options or {})
     if rule.opt_in:
@@ -39,7 +40,7 @@ def example_config(rule: type[Rule], example: Valid | Invalid) -> Config:
 
 
 @pytest.mark.parametrize(("rule", "example"), CASES)
-def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
+def test_example(rule: type[AstRule], example: Valid | Invalid) -> None:
     config = example_config(rule, example)
     found = findings_of(rule, example.code, config)
     if isinstance(example, Valid):
@@ -61,6 +62,8 @@ def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
         assert fixed == example.expected_fix
     if finding.fix is not None:
         fixed = apply_edits(example.code, finding.fix.edits)
+        # the edit an editor applies as text is what replacing the node in the libcst tree gives
+        assert cst_fixes.apply_edits(example.code, finding.fix.edits) == fixed
         ast.parse(fixed)  # a fix always produces code that parses
         again = [f for f in findings_of(rule, fixed, config) if f.fix is not None]
         refixed = apply_edits(fixed, [edit for f in again for edit in f.fix.edits])
@@ -68,13 +71,13 @@ def test_example(rule: type[Rule], example: Valid | Invalid) -> None:
 
 
 @pytest.mark.parametrize("rule", all_rules(), ids=lambda rule: rule.code)
-def test_rule_has_examples_both_ways(rule: type[Rule]) -> None:
+def test_rule_has_examples_both_ways(rule: type[AstRule]) -> None:
     assert rule.VALID, f"{rule.code} has no VALID examples"
     assert rule.INVALID, f"{rule.code} has no INVALID examples"
 
 
 @pytest.mark.parametrize("rule", all_rules(), ids=lambda rule: rule.code)
-def test_rule_pins_a_message_and_a_range(rule: type[Rule]) -> None:
+def test_rule_pins_a_message_and_a_range(rule: type[AstRule]) -> None:
     # fixit's `expected_message` and `range`: what a finding says and where, not only that it fires
     assert any(example.message is not None and example.range is not None for example in rule.INVALID), (
         f"{rule.code} has no INVALID example with both `message=` and `range=`"
@@ -98,7 +101,7 @@ SAFE_FIXES = {"GEO101", "GEO301", "GEO302"}  # the fixes issue 3 lists as safe
 
 
 @pytest.mark.parametrize("rule", [r for r in all_rules() if r.code[3] in "123"], ids=lambda rule: rule.code)
-def test_only_listed_fixes_are_safe(rule: type[Rule]) -> None:
+def test_only_listed_fixes_are_safe(rule: type[AstRule]) -> None:
     for example in rule.INVALID:
         for finding in findings_of(rule, example.code, example_config(rule, example)):
             if finding.fix is not None and finding.fix.applicability == "safe":
