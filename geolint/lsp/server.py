@@ -16,13 +16,16 @@
   `source.fixAll.geolint` (safe fixes, through `api.fix_text`), which is computed only when the
   client resolves it (`codeAction/resolve`) or asks for that kind explicitly.
 - Config: the pyproject.toml files that could apply are checked (modification time) on every
-  request and notification; when a config really changed, open documents are linted again
-  (pushing clients) or the client is asked to pull again (`workspace/diagnostic/refresh`).
+  request and notification, and every `configPollInterval` seconds while documents are open; a
+  client that can watch files is asked to report every `**/pyproject.toml` change
+  (`workspace/didChangeWatchedFiles`, registered dynamically). When a config really changed,
+  open documents are linted again and their diagnostics published (pushing clients), or the
+  client is asked to pull again (`workspace/diagnostic/refresh`), with no edit of a document.
 - Nothing the client sends can stop the server: a bad request gets an error answer, a file that
   does not parse gets geolint's GEO000 finding, an unknown URI gets no diagnostics.
 
-Initialization options (all optional): `{"debounce": seconds, "maxDelay": seconds}`
-(defaults 0.3 and 1.0).
+Initialization options (all optional): `{"debounce": seconds, "maxDelay": seconds,
+"configPollInterval": seconds}` (defaults 0.3, 1.0 and 2.0; a poll interval of 0 turns polling off).
 """
 
 from __future__ import annotations
@@ -60,6 +63,9 @@ logger = logging.getLogger(__name__)
 
 DEFAULT_DEBOUNCE_SECONDS = 0.3
 DEFAULT_MAX_DELAY_SECONDS = 1.0
+# How often the configs of open documents are checked without any message from the client: an
+# editor that does not watch files then still sees a pyproject.toml edit within this time.
+DEFAULT_CONFIG_POLL_SECONDS = 2.0
 # A request only tests use, to compare the server's copy of a document with the editor's.
 DOCUMENT_TEXT_REQUEST = "geolint/documentText"
 
@@ -101,6 +107,8 @@ class GeolintLanguageServer(LanguageServer):
         self.workers = WorkerPool(2)
         self.debounce = DEFAULT_DEBOUNCE_SECONDS
         self.max_delay = DEFAULT_MAX_DELAY_SECONDS
+        self.config_poll_interval = DEFAULT_CONFIG_POLL_SECONDS
+        self.config_poller: asyncio.Task[None] | None = None
         self.expose_document_text = False
         self.tracks: dict[str, _Track] = {}
         # uri -> (text, fixed text): computing fix-all is a full fix run.
@@ -386,7 +394,27 @@ class GeolintLanguageServer(LanguageServer):
             self.fixed[uri] = (source, fixed)
         return fixed  # type: ignore[no-any-return]
 
+    def start_config_polling(self) -> None:
+        """Check the open documents' configs every `config_poll_interval` seconds (0: never)."""
+        if self.config_poll_interval <= 0 or self.config_poller is not None:
+            return
+
+        async def poll() -> None:
+            while True:
+                await asyncio.sleep(self.config_poll_interval)
+                if not self.tracks:
+                    continue
+                try:
+                    self.check_configs()
+                except Exception as error:  # a config that cannot be read is reported when used
+                    logger.warning("config check failed: %r", error)
+
+        self.config_poller = asyncio.ensure_future(poll())
+
     def close(self) -> None:
+        if self.config_poller is not None:
+            self.config_poller.cancel()
+            self.config_poller = None
         for uri in list(self.tracks):
             self.stop(uri)
         self.workers.close()
@@ -408,12 +436,17 @@ def initialize(ls: GeolintLanguageServer, params: types.InitializeParams) -> Non
         if isinstance(max_delay, (int, float)) and 0 <= max_delay <= 60:
             ls.max_delay = float(max_delay)
         ls.expose_document_text = options.get("exposeDocumentText") is True
+        poll = options.get("configPollInterval")
+        if isinstance(poll, (int, float)) and 0 <= poll <= 600:
+            ls.config_poll_interval = float(poll)
     ls.workers.warm_up()
 
 
 @server.feature(types.INITIALIZED)
 async def initialized(ls: GeolintLanguageServer, params: types.InitializedParams) -> None:
-    # Ask the client to tell us when any pyproject.toml changes (configs are also checked by mtime).
+    # Ask the client to tell us when any pyproject.toml changes (configs are also checked by mtime,
+    # on every message and by the poller, for clients that cannot watch files or files outside the workspace).
+    ls.start_config_polling()
     workspace = ls.client_capabilities.workspace
     watched = workspace.did_change_watched_files if workspace else None
     if watched is not None and watched.dynamic_registration:
