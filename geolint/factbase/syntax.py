@@ -180,3 +180,18 @@ def statements_under(node: AST, into_definitions: bool = True) -> list[AST]:
         for field in statement_list_fields(statement):
             stack.extend(getattr(statement, field))
     return found
+
+
+def components_of_one_array(elements: list[ast.expr]) -> ast.expr | None:
+    """For `[x[0], x[1], x[2]]` or `[x.x, x.y, x.z]` (a ROS Vector3 or Point, a PyKDL Vector), the
+    expression x; else None."""
+    bases = []
+    for position, element in enumerate(elements):
+        if isinstance(element, Subscript) and is_index(element.slice, position):
+            bases.append(element.value)
+        elif isinstance(element, Attribute) and element.attr == "xyz"[position]:
+            bases.append(element.value)
+        else:
+            return None
+    codes = {ast.dump(base) for base in bases}
+    return bases[0] if len(codes) == 1 else None
