@@ -44,6 +44,11 @@ __all__ = [
     "VectorWithW1",
     "OriginOffset",
     "NegatedRotation",
+    "QuaternionXYZW",
+    "QuaternionWXYZ",
+    "RotationVector",
+    "Radians",
+    "Degrees",
     "as_points",
     "as_vectors",
     "as_directions",
@@ -109,6 +114,24 @@ if TYPE_CHECKING:
     class NegatedRotation(np.ndarray[Any, _Float], Generic[Dst, Src]):
         """``-R`` for a ``RotationMatrix[Dst, Src]``: not a rotation, but ``-R.T @ t`` is the inverse's translation."""
 
+    # Conventions without frames: the component order of a quaternion, the unit of angles. The
+    # knowledge base's stubs (``stubs/``) state library APIs with these, and typed code may too.
+    class QuaternionXYZW(np.ndarray[Any, _Float]):
+        """A quaternion (or a stack of them) stored scalar-last: x, y, z, w."""
+
+    class QuaternionWXYZ(np.ndarray[Any, _Float]):
+        """A quaternion (or a stack of them) stored scalar-first: w, x, y, z."""
+
+    class RotationVector(np.ndarray[Any, _Float]):
+        """An axis-angle rotation vector: the unit axis times the angle in radians."""
+
+    class Radians(np.ndarray[Any, _Float]):
+        """Angles in radians (one or several)."""
+
+    class Degrees(np.ndarray[Any, _Float]):
+        """Angles in degrees (one or several)."""
+
+
 else:
 
     class _FramedArrayAnnotation:
@@ -143,6 +166,7 @@ else:
     VectorWithW1 = _FramedArrayAnnotation("VectorWithW1", 1)
     OriginOffset = _FramedArrayAnnotation("OriginOffset", 3)
     NegatedRotation = _FramedArrayAnnotation("NegatedRotation", 2)
+    QuaternionXYZW = QuaternionWXYZ = RotationVector = Radians = Degrees = _FLOAT_ARRAY
 
 
 # The markers: identity at runtime, a frame for the type checker. With the plugin a string frame

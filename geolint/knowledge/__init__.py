@@ -1,0 +1,92 @@
+"""The geometry knowledge base: what library APIs do with points, vectors, rotations and frames.
+
+The facts are stubs in `stubs/<library>/` (typeshed's layout, geolint's typing vocabulary, a cited
+source on every entry), read once per process by `geolint.knowledge.reader`. The linter's fact base and
+the mypy plugin both ask `knowledge_base()`; no analysis module names a library.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+from geolint.knowledge.binding import Bound, agreed, bind
+from geolint.knowledge.model import DEGREES, RADIANS, SCALAR_FIRST, SCALAR_LAST, Api, Geometry, Library, Parameter, Signature
+from geolint.knowledge.reader import StubError, read_library
+
+__all__ = [
+    "DEGREES", "RADIANS", "SCALAR_FIRST", "SCALAR_LAST", "Api", "Bound", "Geometry", "KnowledgeBase", "Library",
+    "Parameter", "Signature", "StubError", "agreed", "bind", "knowledge_base", "stubs_folder",
+]  # fmt: skip
+
+_ALIAS_HOPS = 8  # re-exports of re-exports; more is a cycle
+
+
+class KnowledgeBase:
+    """Every library's APIs by qualified name, with re-exports resolved."""
+
+    def __init__(self, libraries: list[Library]) -> None:
+        self.libraries = {library.name: library for library in libraries}
+        self._apis: dict[str, Api] = {}
+        self._aliases: dict[str, str] = {}
+        self._by_method: dict[str, list[Api]] = {}
+        self._roots: dict[str, Library] = {}
+        for library in libraries:
+            self._apis.update(library.apis)
+            self._aliases.update(library.aliases)
+            for package in library.packages:
+                self._roots[package] = library
+            for api in library.apis.values():
+                if api.receiver is not None and not api.is_class:
+                    self._by_method.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
+
+    def api(self, qualified_name: str) -> Api | None:
+        """The API a qualified name means, through re-exports (`scipy.spatial.transform.Rotation.from_quat`)."""
+        name = qualified_name
+        for _ in range(_ALIAS_HOPS):
+            found = self._apis.get(name)
+            if found is not None:
+                return found
+            resolved = self._resolve_prefix(name)
+            if resolved is None or resolved == name:
+                return None
+            name = resolved
+        return None
+
+    def _resolve_prefix(self, name: str) -> str | None:
+        head, rest = name, ""
+        while head:
+            target = self._aliases.get(head)
+            if target is not None:
+                return target + rest
+            head, dot, tail = head.rpartition(".")
+            rest = f"{dot}{tail}{rest}" if head else rest
+        return None
+
+    def methods_named(self, name: str) -> list[Api]:
+        """APIs of `@any_receiver` classes with this method name (pybullet's client methods...)."""
+        return self._by_method.get(name, [])
+
+    def library_of_module(self, module: str) -> Library | None:
+        """The library whose import names include `module`'s top package."""
+        return self._roots.get(module.partition(".")[0])
+
+    def apis(self) -> list[Api]:
+        return list(self._apis.values())
+
+
+def stubs_folder() -> Path:
+    """Where the stubs are: shipped inside the wheel (`geolint/_stubs`), or the checkout's `stubs/`."""
+    package = Path(__file__).resolve().parent.parent
+    for candidate in (package / "_stubs", package.parent / "stubs"):
+        if candidate.is_dir():
+            return candidate
+    return package.parent / "stubs"
+
+
+@lru_cache(maxsize=None)
+def knowledge_base(folder: Path | None = None) -> KnowledgeBase:
+    """The knowledge base read from `folder` (default: `stubs_folder()`), once per process."""
+    root = folder or stubs_folder()
+    libraries = [read_library(path) for path in sorted(root.iterdir()) if (path / "METADATA.toml").is_file()] if root.is_dir() else []
+    return KnowledgeBase(libraries)

@@ -1,0 +1,54 @@
+"""Markers that the knowledge base's stubs (`stubs/<library>/...pyi`) use beside geolint's typing
+vocabulary. The stubs are read as data by `geolint.knowledge.reader`, never imported; these names
+exist so that a stub reads as valid, importable Python and so that each marker has one definition
+with its meaning.
+
+- ``@versions(">=1.14")`` on a function, an overload or a class: the fact holds only for those
+  versions of the library's distribution (a PEP 440 specifier). The linter uses it only when the
+  project's pinned versions all satisfy it, and says nothing when it cannot tell.
+- ``@any_receiver(when_imported=(...))`` on a class: its methods are recognised by their name on any
+  object (pybullet's ``BulletClient`` wraps the module's functions; Isaac Sim's pose setters exist on
+  every prim class), optionally only in modules that import one of the given modules.
+- ``Annotated[T, CameraAxes.OPENCV]``: the camera axes of a pose or of image coordinates (OpenCV: x
+  right, y down, z forward; OpenGL/Blender: x right, y up, z backward; PyTorch3D: x left, y up, z forward).
+- ``Annotated[T, ROW_VECTORS]``: the library applies its matrices to row vectors (``p @ R``), so a
+  matrix it is given or returns is the transpose of the column-vector one.
+- ``Annotated[T, STACKED]``: the parameter also accepts a stack (``(..., 4)`` quaternions, ``(N, 3)``
+  points).
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Final, TypeVar
+
+_Decorated = TypeVar("_Decorated")
+
+
+def versions(specifier: str) -> Callable[[_Decorated], _Decorated]:
+    """The fact below holds for these versions of the library (PEP 440, e.g. ``">=1.14"``)."""
+
+    def mark(decorated: _Decorated) -> _Decorated:
+        return decorated
+
+    return mark
+
+
+def any_receiver(*, when_imported: tuple[str, ...] = ()) -> Callable[[_Decorated], _Decorated]:
+    """The class's methods are recognised by name on any object (in modules importing `when_imported`)."""
+
+    def mark(decorated: _Decorated) -> _Decorated:
+        return decorated
+
+    return mark
+
+
+class CameraAxes:
+    """Camera axis conventions, as `Annotated` metadata."""
+
+    OPENCV: Final = "opencv"  # x right, y down, z forward (OpenCV, COLMAP, ROS optical frames)
+    OPENGL: Final = "opengl"  # x right, y up, z backward (OpenGL, Blender, nerfstudio, instant-ngp)
+    PYTORCH3D: Final = "pytorch3d"  # x left, y up, z forward
+
+
+ROW_VECTORS: Final = "row vectors"
+STACKED: Final = "stacked"

@@ -1,0 +1,95 @@
+"""What the knowledge base knows about one library API, as frozen values.
+
+A stub (`stubs/<library>/<package>/...pyi`) is read into one `Api` per qualified name. An `Api` has
+one `Signature` per overload; each parameter and each return carries the `Geometry` its annotation
+states (`QuaternionWXYZ`, `PointArray[F]`, `Degrees`, `Annotated[..., CameraAxes.OPENCV]` ...), and a
+parameter annotated `Literal[...]` is what tells overloads apart (`scalar_first: Literal[True]`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from geolint.algebra import Kind
+
+SCALAR_LAST = "xyzw"
+SCALAR_FIRST = "wxyz"
+RADIANS = "radians"
+DEGREES = "degrees"
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """What a value is, as far as the stub says: every field None/empty when it says nothing of it."""
+
+    kind: Kind | None = None
+    quaternion_order: str | None = None  # SCALAR_LAST or SCALAR_FIRST
+    angle_unit: str | None = None  # RADIANS or DEGREES
+    frames: tuple[str, ...] = ()  # (frame,) for points and vectors, (dst, src) for rotations and transforms
+    camera_axes: str | None = None  # markers.CameraAxes values
+    row_vectors: bool = False
+    stacked: bool = False
+    type_name: str | None = None  # the qualified class the value is an instance of (a library class)
+    items: tuple[Geometry, ...] = ()  # the parts of a returned tuple
+
+
+@dataclass(frozen=True)
+class Parameter:
+    name: str
+    positional: bool  # may be given by position
+    keyword: bool  # may be given by keyword
+    has_default: bool
+    geometry: Geometry | None = None
+    literal: tuple[object, ...] | None = None  # `Literal[...]`: the values this overload accepts
+    variadic: bool = False  # *args
+
+
+@dataclass(frozen=True)
+class Signature:
+    """One overload: its parameters (without `self`/`cls`), what it returns, the versions it holds for."""
+
+    parameters: tuple[Parameter, ...]
+    returns: Geometry | None
+    versions: str | None  # a PEP 440 specifier, or None: every version
+    line: int  # in the stub, for messages and citations
+
+    @property
+    def components(self) -> str | None:
+        """`wxyz` / `xyzw` when the parameters are a quaternion's four components by name, in order."""
+        letters = "".join(parameter.name for parameter in self.parameters if parameter.name in ("w", "x", "y", "z") and parameter.positional)
+        return letters if letters in (SCALAR_FIRST, SCALAR_LAST) else None
+
+    def parameter(self, name: str) -> Parameter | None:
+        return next((parameter for parameter in self.parameters if parameter.name == name), None)
+
+
+@dataclass(frozen=True)
+class Receiver:
+    """`@any_receiver`: the class's methods are recognised by name on any object."""
+
+    when_imported: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Api:
+    """A function, method or class (its constructor) of a library, by qualified name."""
+
+    qualified_name: str
+    signatures: tuple[Signature, ...]
+    library: str  # the stubs/ folder (the distribution) it comes from
+    stub: str  # the stub file, relative to stubs/
+    source: str  # the docstring's `Source:` citation
+    is_class: bool = False
+    receiver: Receiver | None = None
+
+
+@dataclass(frozen=True)
+class Library:
+    """A `stubs/<library>/` folder: METADATA.toml and what its stubs define."""
+
+    name: str  # the distribution's name on PyPI (or the project's, for what is not on PyPI)
+    packages: tuple[str, ...]  # import names it provides
+    checked: str  # the version the facts were checked against
+    upstream: str  # where the library's source or documentation is
+    apis: dict[str, Api] = field(default_factory=dict)
+    aliases: dict[str, str] = field(default_factory=dict)  # a re-export or second name -> what it names
