@@ -31,7 +31,9 @@ class KnowledgeBase:
         self._aliases: dict[str, str] = {}
         self._by_method: dict[str, list[Api]] = {}
         self._roots: dict[str, Library] = {}
+        self._conventional: dict[str, str] = {}
         for library in libraries:
+            self._conventional.update(library.conventional_names)
             self._apis.update(library.apis)
             self._aliases.update(library.aliases)
             for package in library.packages:
@@ -66,6 +68,10 @@ class KnowledgeBase:
     def methods_named(self, name: str) -> list[Api]:
         """APIs of `@any_receiver` classes with this method name (pybullet's client methods...)."""
         return self._by_method.get(name, [])
+
+    def conventional_name(self, name: str) -> str | None:
+        """The library class a bare local name means by convention (METADATA.toml's `conventional_names`)."""
+        return self._conventional.get(name)
 
     def library_of_module(self, module: str) -> Library | None:
         """The library whose import names include `module`'s top package."""

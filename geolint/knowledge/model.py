@@ -93,3 +93,5 @@ class Library:
     upstream: str  # where the library's source or documentation is
     apis: dict[str, Api] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)  # a re-export or second name -> what it names
+    # local names that mean one of its classes even where a file shows no import (`R` for scipy's Rotation)
+    conventional_names: dict[str, str] = field(default_factory=dict)

@@ -1,0 +1,188 @@
+"""Library calls, answered from the knowledge base (`geolint.knowledge`, the stubs in `stubs/`): which
+API a call is, what each argument is for it, and what it returns. No library is named here.
+
+A call is resolved to an API by its qualified name (through the module's imports), by the library
+class of the object it is called on (`r.as_quat()` where `r = Rotation.from_quat(q)`), by the one
+star-imported stub module that defines the name, or by the method name of an `@any_receiver` class
+in a module that imports what the class asks for. Then it is bound to the overloads it may be using;
+a question is answered only when all of them agree (`geolint.knowledge.agreed`).
+"""
+
+from __future__ import annotations
+
+import ast
+from ast import AST, Attribute, Call, Name
+from typing import Final
+
+from geolint.factbase.model import FactBase
+from geolint.knowledge import Api, Bound, Geometry, KnowledgeBase, agreed, bind, knowledge_base
+
+_TYPE_DEPTH: Final = 8  # a library object passed through this many names and calls
+
+
+def knowledge(facts: FactBase) -> KnowledgeBase:
+    del facts  # one knowledge base per process; the parameter keeps the door open for a project's own stubs
+    return knowledge_base()
+
+
+def called_api(facts: FactBase, call: Call) -> Api | None:
+    """The library API `call` calls, or None."""
+    return facts.memoised("library api", call, lambda: _called_api(facts, call))
+
+
+def library_call(facts: FactBase, call: Call) -> list[Bound]:
+    """The overloads of a library API that `call` may be using, with its arguments bound ([]: not a
+    known library call, or no overload fits)."""
+    return facts.memoised("library call", call, lambda: _library_call(facts, call))
+
+
+def _library_call(facts: FactBase, call: Call) -> list[Bound]:
+    api = called_api(facts, call)
+    return bind(api, call) if api is not None else []
+
+
+def quaternion_inputs(facts: FactBase, call: Call) -> list[tuple[ast.expr, str]]:
+    """(argument, component order) for each argument the call reads as a whole quaternion."""
+    bounds = library_call(facts, call)
+    if not bounds:
+        return []
+    found = []
+    for parameter in bounds[0].signature.parameters:
+        argument = bounds[0].arguments.get(parameter.name)
+        if argument is None:
+            continue
+        order = agreed(bounds, lambda bound, name=parameter.name: _parameter_geometry(bound, name, "quaternion_order"))
+        if order is not None and all(bound.arguments.get(parameter.name) is argument for bound in bounds):
+            found.append((argument, order))
+    return found
+
+
+def quaternion_output(facts: FactBase, call: Call) -> str | None:
+    """The component order of the quaternion the call returns, or None."""
+    return agreed(library_call(facts, call), lambda bound: _returned(bound).quaternion_order)
+
+
+def angle_inputs(facts: FactBase, call: Call) -> list[tuple[ast.expr, str]]:
+    """(argument, unit) for each argument the call reads as angles."""
+    bounds = library_call(facts, call)
+    if not bounds:
+        return []
+    found = []
+    for parameter in bounds[0].signature.parameters:
+        argument = bounds[0].arguments.get(parameter.name)
+        if argument is None:
+            continue
+        unit = agreed(bounds, lambda bound, name=parameter.name: _parameter_geometry(bound, name, "angle_unit"))
+        if unit is not None and all(bound.arguments.get(parameter.name) is argument for bound in bounds):
+            found.append((argument, unit))
+    return found
+
+
+def angle_output(facts: FactBase, call: Call) -> str | None:
+    """The unit of the angles the call returns, or None."""
+    return agreed(library_call(facts, call), lambda bound: _returned(bound).angle_unit)
+
+
+def library_type(facts: FactBase, node: AST) -> str | None:
+    """The qualified library class `node` is an instance of, when every way it gets its value says so."""
+    return _library_type(facts, node, _TYPE_DEPTH)
+
+
+def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
+    if depth <= 0:
+        return None
+    if isinstance(node, Call):
+        api = called_api(facts, node)
+        if api is None:
+            return None
+        if api.is_class:
+            return api.qualified_name
+        return agreed(library_call(facts, node), lambda bound: _returned(bound).type_name)
+    if isinstance(node, Name):
+        bound = facts.bindings(node) or []
+        values = [binding for binding in bound if isinstance(binding, ast.expr)]
+        if not values or len(values) != len(bound):
+            return None
+        types = {_library_type(facts, value, depth - 1) for value in values if value is not node}
+        return types.pop() if len(types) == 1 else None
+    return None
+
+
+def _called_api(facts: FactBase, call: Call) -> Api | None:
+    kb = knowledge(facts)
+    func = call.func
+    qualified = facts.qualified_name(func)
+    if qualified is not None:
+        found = kb.api(qualified)
+        if found is not None and _resolved_through_imports(facts, func):
+            return found
+    if isinstance(func, Attribute):
+        receiver = _library_type(facts, func.value, _TYPE_DEPTH)
+        if receiver is not None:
+            return kb.api(f"{receiver}.{func.attr}")
+        conventional = _conventional(facts, kb, func.value)
+        if conventional is not None:
+            return kb.api(f"{conventional}.{func.attr}")
+        return _any_receiver(facts, kb, func.attr)
+    if isinstance(func, Name) and func.id not in facts.index.imports:
+        return _star_imported(facts, kb, func)
+    return None
+
+
+def _resolved_through_imports(facts: FactBase, func: AST) -> bool:
+    """Whether the qualified name came from an import, not from the spelling alone (a local `Rotation`
+    class of the project is not scipy's)."""
+    node = func
+    while isinstance(node, Attribute):
+        node = node.value
+    return isinstance(node, Name) and node.id in facts.index.imports
+
+
+def _conventional(facts: FactBase, kb: KnowledgeBase, node: AST) -> str | None:
+    """A name that means a library class by convention when the module imports no such name
+    (`R.from_quat(q)` in a snippet): the stubs' `conventional_names`."""
+    if not isinstance(node, Name) or node.id in facts.index.imports:
+        return None
+    return kb.conventional_name(node.id)
+
+
+def _any_receiver(facts: FactBase, kb: KnowledgeBase, method: str) -> Api | None:
+    candidates = kb.methods_named(method)
+    if not candidates:
+        return None
+    imported = _imported_modules(facts)
+    fitting = [
+        api
+        for api in candidates
+        if api.receiver is not None
+        and (not api.receiver.when_imported or any(name.startswith(api.receiver.when_imported) for name in imported))
+    ]
+    return fitting[0] if len(fitting) == 1 else None
+
+
+def _star_imported(facts: FactBase, kb: KnowledgeBase, func: Name) -> Api | None:
+    if not facts.index.star_imports or facts.index.lookup(func.id, facts.index.scope_of(func)):
+        return None
+    found = {api for module in facts.index.star_imports if (api := kb.api(f"{module}.{func.id}")) is not None}
+    return found.pop() if len(found) == 1 else None
+
+
+def _imported_modules(facts: FactBase) -> list[str]:
+    return facts.module_fact(
+        "imported modules",
+        lambda: [
+            *facts.index.imports.values(),
+            *(node.module for node in facts.index.nodes(ast.ImportFrom) if node.module),  # type: ignore[attr-defined]
+            *(alias.name for node in facts.index.nodes(ast.Import) for alias in node.names),  # type: ignore[attr-defined]
+        ],
+    )
+
+
+def _parameter_geometry(bound: Bound, name: str, field: str) -> object:
+    parameter = bound.signature.parameter(name)
+    geometry = parameter.geometry if parameter is not None else None
+    return getattr(geometry, field) if geometry is not None else None
+
+
+def _returned(bound: Bound) -> Geometry:
+    return bound.signature.returns or Geometry()

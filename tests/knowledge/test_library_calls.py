@@ -1,0 +1,68 @@
+"""The fact base asks the knowledge base about library calls: by imports, by the receiver's library
+class, by convention; the answers come from stubs/ (here scipy's)."""
+
+from __future__ import annotations
+
+import ast
+import textwrap
+
+from geolint.config import Config
+from geolint.factbase import facts_for_module
+from geolint.factbase.library_calls import angle_inputs, angle_output, library_type, quaternion_inputs, quaternion_output
+from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST
+
+
+def _calls(source: str) -> tuple[object, dict[str, ast.Call]]:
+    source = textwrap.dedent(source)
+    tree = ast.parse(source)
+    facts = facts_for_module(tree, source, "module.py", Config())
+    calls = {ast.unparse(node): node for node in ast.walk(tree) if isinstance(node, ast.Call)}
+    return facts, calls
+
+
+def test_quaternion_order_of_scipy_calls_through_imports_and_receivers() -> None:
+    facts, calls = _calls(
+        """
+        from scipy.spatial.transform import Rotation as R
+        r = R.from_quat(q_xyzw)
+        s = R.from_quat(q_wxyz, scalar_first=True)
+        a = r.as_quat()
+        b = s.as_quat(scalar_first=True)
+        e = r.as_euler("xyz", degrees=True)
+        f = R.from_euler("xyz", angles)
+        """
+    )
+    (argument, order), = quaternion_inputs(facts, calls["R.from_quat(q_xyzw)"])  # type: ignore[arg-type]
+    assert ast.unparse(argument) == "q_xyzw" and order == SCALAR_LAST
+    assert [order for _, order in quaternion_inputs(facts, calls["R.from_quat(q_wxyz, scalar_first=True)"])] == [SCALAR_FIRST]  # type: ignore[arg-type]
+    receiver = calls["r.as_quat()"].func.value  # type: ignore[attr-defined]
+    assert library_type(facts, receiver) == "scipy.spatial.transform._rotation.Rotation"  # type: ignore[arg-type]
+    assert quaternion_output(facts, calls["r.as_quat()"]) == SCALAR_LAST  # type: ignore[arg-type]
+    assert quaternion_output(facts, calls["s.as_quat(scalar_first=True)"]) == SCALAR_FIRST  # type: ignore[arg-type]
+    assert angle_output(facts, calls["r.as_euler('xyz', degrees=True)"]) == "degrees"  # type: ignore[arg-type]
+    assert [unit for _, unit in angle_inputs(facts, calls["R.from_euler('xyz', angles)"])] == ["radians"]  # type: ignore[arg-type]
+
+
+def test_a_project_class_of_the_same_name_is_not_the_library_s() -> None:
+    facts, calls = _calls(
+        """
+        from mylib.rotations import Rotation
+        r = Rotation.from_quat(q)
+        """
+    )
+    assert quaternion_inputs(facts, calls["Rotation.from_quat(q)"]) == []  # type: ignore[arg-type]
+
+
+def test_a_conventional_name_without_an_import_means_the_library_class() -> None:
+    facts, calls = _calls("r = R.from_quat(q)\n")
+    assert [order for _, order in quaternion_inputs(facts, calls["R.from_quat(q)"])] == [SCALAR_LAST]  # type: ignore[arg-type]
+
+
+def test_a_keyword_decided_at_run_time_gives_no_answer() -> None:
+    facts, calls = _calls(
+        """
+        from scipy.spatial.transform import Rotation
+        r = Rotation.from_quat(q, scalar_first=flag)
+        """
+    )
+    assert quaternion_inputs(facts, calls["Rotation.from_quat(q, scalar_first=flag)"]) == []  # type: ignore[arg-type]
