@@ -94,7 +94,9 @@ class _ModuleReader:
                     if name.name == "*":
                         continue
                     self.local[name.asname or name.name] = f"{module}.{name.name}"
-                    if name.asname == name.name and not module.startswith("geolint"):  # `from x import Y as Y`: a re-export
+                    target = f"{module}.{name.name}"
+                    if name.asname == name.name and not module.startswith("geolint") and target != f"{prefix}.{name.name}":
+                        # `from x import Y as Y`: a re-export
                         self.library.aliases[f"{prefix}.{name.name}"] = f"{module}.{name.name}"
             elif isinstance(statement, ast.Import):
                 for name in statement.names:

@@ -1,0 +1,99 @@
+"""The knowledge base's rotation facts, checked against the libraries themselves where they install.
+
+Each check reads the component order or the unit from the stub (through the knowledge base), builds
+a quarter turn about z in that order or unit, and compares what the library computes with the matrix
+of that turn: a stub that says the wrong order fails here.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+
+import numpy as np
+import pytest
+
+from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST, agreed, bind, knowledge_base
+
+QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+_HALF = math.sqrt(0.5)
+
+
+def _quarter_turn(order: str) -> list[float]:
+    """A quarter turn about z, its components in `order`."""
+    components = {"w": _HALF, "x": 0.0, "y": 0.0, "z": _HALF}
+    assert order in (SCALAR_FIRST, SCALAR_LAST)
+    return [components[letter] for letter in order]
+
+
+def _stated(qualified: str, call: str, parameter: str, field: str = "quaternion_order") -> object:
+    """What the stub of `qualified` says of `parameter` (or of the return, for parameter "return") for `call`."""
+    api = knowledge_base().api(qualified)
+    assert api is not None, f"{qualified} is not in the knowledge base"
+    node = ast.parse(call, mode="eval").body
+    assert isinstance(node, ast.Call)
+    bounds = bind(api, node)
+
+    def answer(bound):  # type: ignore[no-untyped-def]
+        geometry = bound.signature.returns if parameter == "return" else bound.signature.parameter(parameter).geometry
+        return getattr(geometry, field) if geometry is not None else None
+
+    stated = agreed(bounds, answer)
+    assert stated is not None, f"the stub of {qualified} says nothing of {parameter} for {call}"
+    return stated
+
+
+def _quaternion_parts(value: object, order: str) -> dict[str, float]:
+    return dict(zip(order, np.asarray(value, dtype=float).ravel()))
+
+
+def _same_rotation(a: dict[str, float], b: dict[str, float]) -> bool:
+    sign = 1.0 if a["w"] * b["w"] + a["x"] * b["x"] + a["y"] * b["y"] + a["z"] * b["z"] >= 0 else -1.0
+    return all(abs(a[letter] - sign * b[letter]) < 1e-9 for letter in "wxyz")
+
+
+class TestScipy:
+    Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
+    NAME = "scipy.spatial.transform.Rotation"
+
+    @pytest.mark.parametrize("call", ["Rotation.from_quat(q)", "Rotation.from_quat(q, scalar_first=True)", "Rotation.from_quat(q, scalar_first=False)"])
+    def test_from_quat_reads_the_stated_order(self, call: str) -> None:
+        order = _stated(f"{self.NAME}.from_quat", call, "quat")
+        keywords = {"scalar_first": True} if "True" in call else {"scalar_first": False} if "False" in call else {}
+        matrix = self.Rotation.from_quat(_quarter_turn(order), **keywords).as_matrix()  # type: ignore[arg-type]
+        assert np.allclose(matrix, QUARTER_TURN_Z)
+
+    @pytest.mark.parametrize("call", ["r.as_quat()", "r.as_quat(scalar_first=True)"])
+    def test_as_quat_returns_the_stated_order(self, call: str) -> None:
+        order = _stated(f"{self.NAME}.as_quat", call, "return")
+        keywords = {"scalar_first": True} if "True" in call else {}
+        produced = self.Rotation.from_matrix(QUARTER_TURN_Z).as_quat(**keywords)
+        assert _same_rotation(_quaternion_parts(produced, order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
+
+    @pytest.mark.parametrize(("call", "angle"), [("Rotation.from_euler('z', a)", math.pi / 2), ("Rotation.from_euler('z', a, degrees=True)", 90.0)])
+    def test_from_euler_reads_the_stated_unit(self, call: str, angle: float) -> None:
+        unit = _stated(f"{self.NAME}.from_euler", call, "angles", "angle_unit")
+        assert unit == ("degrees" if "degrees=True" in call else "radians")
+        keywords = {"degrees": True} if unit == "degrees" else {}
+        assert np.allclose(self.Rotation.from_euler("z", angle, **keywords).as_matrix(), QUARTER_TURN_Z)
+
+
+class TestTransforms3d:
+    quaternions = pytest.importorskip("transforms3d.quaternions")
+    euler = pytest.importorskip("transforms3d.euler")
+
+    def test_quat2mat_reads_the_stated_order(self) -> None:
+        order = _stated("transforms3d.quaternions.quat2mat", "quat2mat(q)", "q")
+        assert np.allclose(self.quaternions.quat2mat(_quarter_turn(order)), QUARTER_TURN_Z)  # type: ignore[arg-type]
+
+    def test_mat2quat_and_euler2quat_return_the_stated_order(self) -> None:
+        for qualified, call, produced in (
+            ("transforms3d.quaternions.mat2quat", "mat2quat(M)", self.quaternions.mat2quat(QUARTER_TURN_Z)),
+            ("transforms3d.euler.euler2quat", "euler2quat(0, 0, a)", self.euler.euler2quat(0.0, 0.0, math.pi / 2)),
+        ):
+            order = _stated(qualified, call, "return")
+            assert _same_rotation(_quaternion_parts(produced, order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
+
+    def test_euler2mat_reads_the_stated_unit(self) -> None:
+        assert _stated("transforms3d.euler.euler2mat", "euler2mat(a, b, c)", "ak", "angle_unit") == "radians"
+        assert np.allclose(self.euler.euler2mat(0.0, 0.0, math.pi / 2), QUARTER_TURN_Z)
