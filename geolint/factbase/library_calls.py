@@ -116,6 +116,10 @@ def _called_api(facts: FactBase, call: Call) -> Api | None:
         found = kb.api(qualified)
         if found is not None and _resolved_through_imports(facts, func):
             return found
+        if found is None and _resolved_through_imports(facts, func):
+            extended = kb.extension(qualified, _imported_modules(facts))
+            if extended is not None:
+                return extended
     if isinstance(func, Attribute):
         receiver = _library_type(facts, func.value, _TYPE_DEPTH)
         if receiver is not None:

@@ -32,7 +32,10 @@ class KnowledgeBase:
         self._by_method: dict[str, list[Api]] = {}
         self._roots: dict[str, Library] = {}
         self._conventional: dict[str, str] = {}
+        self._extensions: dict[str, tuple[tuple[str, ...], str]] = {}
         for library in libraries:
+            for name, target in library.extends.items():
+                self._extensions[name] = (library.packages, target)
             self._conventional.update(library.conventional_names)
             self._apis.update(library.apis)
             self._aliases.update(library.aliases)
@@ -68,6 +71,17 @@ class KnowledgeBase:
     def methods_named(self, name: str) -> list[Api]:
         """APIs of `@any_receiver` classes with this method name (pybullet's client methods...)."""
         return self._by_method.get(name, [])
+
+    def extension(self, qualified_name: str, imported: list[str]) -> Api | None:
+        """A name another package gains once a library is imported (`numpy.quaternion` after `import
+        quaternion`), when one of `imported` (the module's imports) is that library."""
+        found = self._extensions.get(qualified_name)
+        if found is None:
+            return None
+        packages, target = found
+        if not any(name.partition(".")[0] in packages for name in imported):
+            return None
+        return self.api(target)
 
     def conventional_name(self, name: str) -> str | None:
         """The library class a bare local name means by convention (METADATA.toml's `conventional_names`)."""

@@ -60,6 +60,10 @@ def _bind_one(signature: Signature, call: ast.Call) -> Bound | None:
     if starred:
         if len(call.args) != 1:
             return None  # `f(a, *rest)`: positions unknown
+        if sum(1 for parameter in parameters if parameter.positional and not parameter.variadic) < 2 and not any(
+            parameter.variadic for parameter in parameters
+        ):
+            return None  # `f(*q)` spreads components: an overload of one positional parameter is not it
         spread = starred[0].value
     else:
         positional = [parameter for parameter in parameters if parameter.positional]

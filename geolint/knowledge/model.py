@@ -95,3 +95,5 @@ class Library:
     aliases: dict[str, str] = field(default_factory=dict)  # a re-export or second name -> what it names
     # local names that mean one of its classes even where a file shows no import (`R` for scipy's Rotation)
     conventional_names: dict[str, str] = field(default_factory=dict)
+    # names another package gains once this library is imported (`numpy.quaternion`) -> what they are
+    extends: dict[str, str] = field(default_factory=dict)

@@ -61,6 +61,7 @@ def read_library(folder: Path) -> Library:
         checked=str(metadata.get("checked", "")),
         upstream=str(metadata.get("upstream", "")),
         conventional_names={str(name): str(target) for name, target in metadata.get("conventional_names", {}).items()},
+        extends={str(name): str(target) for name, target in metadata.get("extends", {}).items()},
     )
     for stub in sorted(folder.rglob("*.pyi")):
         relative = stub.relative_to(folder).with_suffix("")

@@ -97,3 +97,54 @@ class TestTransforms3d:
     def test_euler2mat_reads_the_stated_unit(self) -> None:
         assert _stated("transforms3d.euler.euler2mat", "euler2mat(a, b, c)", "ak", "angle_unit") == "radians"
         assert np.allclose(self.euler.euler2mat(0.0, 0.0, math.pi / 2), QUARTER_TURN_Z)
+
+
+def _components(qualified: str, call: str) -> str:
+    api = knowledge_base().api(qualified)
+    assert api is not None, f"{qualified} is not in the knowledge base"
+    node = ast.parse(call, mode="eval").body
+    assert isinstance(node, ast.Call)
+    stated = agreed(bind(api, node), lambda bound: bound.signature.components)
+    assert stated is not None, f"the stub of {qualified} names no component order for {call}"
+    return stated
+
+
+class TestPyquaternion:
+    Quaternion = pytest.importorskip("pyquaternion").Quaternion
+    NAME = "pyquaternion.Quaternion"
+
+    def test_four_components_and_one_array_are_read_in_the_stated_order(self) -> None:
+        components = _components(self.NAME, "Quaternion(*q)")
+        assert np.allclose(self.Quaternion(*_quarter_turn(components)).rotation_matrix, QUARTER_TURN_Z)
+        order = _stated(self.NAME, "Quaternion(q)", "array")
+        assert np.allclose(self.Quaternion(_quarter_turn(order)).rotation_matrix, QUARTER_TURN_Z)  # type: ignore[arg-type]
+        order = _stated(self.NAME, "Quaternion(array=q)", "array")
+        assert np.allclose(self.Quaternion(array=_quarter_turn(order)).rotation_matrix, QUARTER_TURN_Z)  # type: ignore[arg-type]
+
+    def test_elements_and_angles(self) -> None:
+        order = _stated(f"{self.NAME}.elements", "q.elements()", "return")
+        quarter = self.Quaternion(matrix=QUARTER_TURN_Z)
+        assert _same_rotation(_quaternion_parts(quarter.elements, order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
+        assert _stated(self.NAME, "Quaternion(axis=a, angle=t)", "angle", "angle_unit") == "radians"
+        assert np.allclose(self.Quaternion(axis=[0, 0, 1], angle=math.pi / 2).rotation_matrix, QUARTER_TURN_Z)
+        assert _stated(self.NAME, "Quaternion(axis=a, degrees=t)", "degrees", "angle_unit") == "degrees"
+        assert np.allclose(self.Quaternion(axis=[0, 0, 1], degrees=90.0).rotation_matrix, QUARTER_TURN_Z)
+
+
+class TestNumpyQuaternion:
+    quaternion = pytest.importorskip("quaternion")
+
+    def test_constructor_and_float_arrays_use_the_stated_order(self) -> None:
+        components = _components("quaternion.quaternion", "quaternion(*q)")
+        turn = self.quaternion.quaternion(*_quarter_turn(components))
+        assert np.allclose(self.quaternion.as_rotation_matrix(turn), QUARTER_TURN_Z)
+        order = _stated("quaternion.from_float_array", "from_float_array(a)", "a")
+        assert np.allclose(self.quaternion.as_rotation_matrix(self.quaternion.from_float_array(_quarter_turn(order))), QUARTER_TURN_Z)
+        order = _stated("quaternion.as_float_array", "as_float_array(q)", "return")
+        produced = self.quaternion.as_float_array(self.quaternion.from_rotation_matrix(QUARTER_TURN_Z))
+        assert _same_rotation(_quaternion_parts(produced, order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
+
+    def test_numpy_gains_the_dtype_on_import(self) -> None:
+        assert np.quaternion is self.quaternion.quaternion  # what METADATA.toml's [extends] states
+        assert knowledge_base().extension("numpy.quaternion", ["quaternion"]) is knowledge_base().api("quaternion.quaternion")
+        assert knowledge_base().extension("numpy.quaternion", ["numpy"]) is None

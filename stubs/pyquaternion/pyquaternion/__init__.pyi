@@ -1,0 +1,1 @@
+from pyquaternion.quaternion import Quaternion as Quaternion
