@@ -11,7 +11,7 @@ a question is answered only when all of them agree (`geolint.knowledge.agreed`).
 from __future__ import annotations
 
 import ast
-from ast import AST, Attribute, Call, Name
+from ast import AST, Attribute, Call, If, ImportFrom, Name
 from typing import Final
 
 from geolint.factbase.model import FactBase
@@ -55,6 +55,26 @@ def quaternion_inputs(facts: FactBase, call: Call) -> list[tuple[ast.expr, str]]
         if order is not None and all(bound.arguments.get(parameter.name) is argument for bound in bounds):
             found.append((argument, order))
     return found
+
+
+def expected_quaternion_order(facts: FactBase, call: Call) -> tuple[str, ast.expr | None] | None:
+    """(order, argument) of the quaternion a known library call reads: a whole-quaternion argument, or
+    (order, None) for a constructor of the four components in that order. None: not known."""
+    inputs = quaternion_inputs(facts, call)
+    if inputs:
+        argument, order = inputs[0]
+        return order, argument
+    components = agreed(library_call(facts, call), lambda bound: bound.signature.components)
+    return (components, None) if components is not None else None
+
+
+def spread_quaternion(facts: FactBase, call: Call) -> ast.expr | None:
+    """`Quaternion(*q)` into a known constructor of four components: `q`."""
+    bounds = library_call(facts, call)
+    if not bounds or agreed(bounds, lambda bound: bound.signature.components) is None:
+        return None
+    spread = {id(bound.spread) for bound in bounds}
+    return bounds[0].spread if len(spread) == 1 else None
 
 
 def quaternion_output(facts: FactBase, call: Call) -> str | None:
@@ -111,7 +131,7 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
 def _called_api(facts: FactBase, call: Call) -> Api | None:
     kb = knowledge(facts)
     func = call.func
-    qualified = facts.qualified_name(func)
+    qualified = branch_qualified_name(facts, func)
     if qualified is not None:
         found = kb.api(qualified)
         if found is not None and _resolved_through_imports(facts, func):
@@ -131,6 +151,56 @@ def _called_api(facts: FactBase, call: Call) -> Api | None:
     if isinstance(func, Name) and func.id not in facts.index.imports:
         return _star_imported(facts, kb, func)
     return None
+
+
+class ImportBranches:
+    """Names the module imports in more than one arm of a module-level `if` (`if ROS_VERSION == 1: from
+    tf.transformations import quaternion_multiply` / `elif ROS_VERSION == 2: from transforms3d.quaternions
+    import qmult as quaternion_multiply`): local name -> [(qualified name, the `if`'s test, arm)]. The
+    index keeps the last import only; a call inside a function branch on the same test, in the same arm,
+    is resolved to that arm's import instead (`branch_qualified_name`)."""
+
+    def __init__(self, facts: FactBase) -> None:
+        found: dict[str, list[tuple[str, str, bool]]] = {}
+        for statement in facts.index.tree.body:
+            if isinstance(statement, If):
+                _collect_branch_imports(statement, found)
+        self.alternatives = {name: arms for name, arms in found.items() if len({qualified for qualified, _, _ in arms}) > 1}
+
+
+def _collect_branch_imports(node: If, found: dict[str, list[tuple[str, str, bool]]]) -> None:
+    test = ast.dump(node.test)
+    for arm, body in ((True, node.body), (False, node.orelse)):
+        for statement in body:
+            if isinstance(statement, ImportFrom) and statement.module and not statement.level:
+                for alias in statement.names:
+                    if alias.name != "*":
+                        found.setdefault(alias.asname or alias.name, []).append((f"{statement.module}.{alias.name}", test, arm))
+            elif isinstance(statement, If) and not arm and len(body) == 1:
+                _collect_branch_imports(statement, found)  # `elif`
+
+
+def branch_qualified_name(facts: FactBase, func: AST) -> str | None:
+    """`facts.qualified_name(func)`, except for a name imported in several arms of a module-level `if`
+    and called inside a branch on the same test: that arm's import."""
+    qualified = facts.qualified_name(func)
+    if not isinstance(func, Name) or not facts.index.imports.get(func.id):
+        return qualified
+    arms = facts.shared(ImportBranches).alternatives.get(func.id)
+    if not arms:
+        return qualified
+    child: AST = func
+    current = facts.parent(func)
+    while current is not None:
+        if isinstance(current, If):
+            test = ast.dump(current.test)
+            in_body = any(statement is child for statement in current.body)
+            for candidate, guard, arm in arms:
+                if guard == test and arm == in_body:
+                    return candidate
+        child = current
+        current = facts.parent(current)
+    return qualified
 
 
 def _resolved_through_imports(facts: FactBase, func: AST) -> bool:

@@ -12,7 +12,6 @@ from ast import (
     Attribute,
     Call,
     Constant,
-    If,
     Import,
     ImportFrom,
     ListComp,
@@ -21,6 +20,8 @@ from ast import (
     Subscript,
 )
 
+from geolint.factbase import library_calls
+from geolint.factbase.library_calls import ImportBranches, branch_qualified_name  # noqa: F401  (re-exported for the rules)
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.syntax import keyword, last_name, number
 
@@ -71,28 +72,16 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
         operation = _operation_order(facts, func)
         if operation is not None:
             return operation
-    if "uat" not in called and called != "from_float_array":
-        return None  # every API below says quat / Quat in its name, but numpy-quaternion's from_float_array
-    if is_scipy_rotation_method(facts, func, "from_quat"):
-        scalar_first = keyword(call, "scalar_first")
-        if scalar_first is not None:
-            value = scalar_first.value
-            if isinstance(value, Constant) and value.value is True:
-                return SCALAR_FIRST
-            if not (isinstance(value, Constant) and value.value is False):
-                return None  # decided at run time
-        return SCALAR_LAST
+    if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
+        known = library_calls.expected_quaternion_order(facts, call)
+        return known[0] if known is not None else None
+    if "uat" not in called:
+        return None  # every API below says quat / Quat in its name
     qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
-    if qualified.startswith("transforms3d.") and name.startswith("quat2"):
-        return SCALAR_FIRST
     if qualified.startswith("pytransform3d.") and (name.endswith("_from_quaternion") or name == "check_quaternion"):
         return SCALAR_FIRST
-    if qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion"):
-        return SCALAR_FIRST
     if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
-        return SCALAR_FIRST
-    if is_numpy_quaternion_constructor(facts, qualified):
         return SCALAR_FIRST
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and "quaternion" in name:
         return SCALAR_LAST
@@ -134,17 +123,12 @@ def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
     positional = [arg for arg in call.args if not isinstance(arg, Starred)]
     if len(positional) != len(call.args):
         return None
-    if is_scipy_rotation_method(facts, func, "from_quat"):
-        given = keyword(call, "quat")
-        return positional[0] if positional else given.value if given is not None else None
+    if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
+        known = library_calls.expected_quaternion_order(facts, call)
+        return known[1] if known is not None else None
     qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
-    if qualified in ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion"):
-        given = keyword(call, "array")
-        if given is not None and not positional:
-            return given.value
-        return positional[0] if len(positional) == 1 and not call.keywords else None
-    if qualified.startswith("geometry_msgs.") or qualified == _GTSAM_ROT3_QUATERNION or is_numpy_quaternion_constructor(facts, qualified):
+    if qualified.startswith("geometry_msgs.") or qualified == _GTSAM_ROT3_QUATERNION:
         return None  # takes its components one by one
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name not in _TF_QUATERNION_INPUTS:
         return None  # quaternion_from_euler & co take angles or matrices
@@ -181,12 +165,10 @@ def spread_argument(facts: FactBase, call: Call) -> ast.expr | None:
     components one by one (pyquaternion, numpy-quaternion, ROS messages), or None."""
     if len(call.args) != 1 or not isinstance(call.args[0], Starred) or call.keywords:
         return None
+    if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
+        return library_calls.spread_quaternion(facts, call)
     qualified = facts.qualified_name(call.func) or ""
-    if (
-        qualified in _COMPONENT_CONSTRUCTORS
-        or (qualified.startswith("geometry_msgs.") and qualified.endswith(".Quaternion"))
-        or is_numpy_quaternion_constructor(facts, qualified)
-    ):
+    if qualified in _COMPONENT_CONSTRUCTORS or (qualified.startswith("geometry_msgs.") and qualified.endswith(".Quaternion")):
         return call.args[0].value
     return None
 
@@ -225,6 +207,8 @@ def pybullet_quaternion_values(call: Call) -> list[tuple[str, ast.expr]]:
 def quaternion_producer(facts: FactBase, call: Call) -> str | None:
     """The component order of the quaternion a library call returns, or None if unknown."""
     func = call.func
+    if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
+        return library_calls.quaternion_output(facts, call)
     if isinstance(func, Attribute) and func.attr == "as_quat":
         scalar_first = keyword(call, "scalar_first")
         if scalar_first is not None:
@@ -240,8 +224,6 @@ def quaternion_producer(facts: FactBase, call: Call) -> str | None:
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if name in _PYBULLET_QUATERNIONS:  # camelCase pybullet names, on the module or a client object
         return SCALAR_LAST
-    if qualified.startswith("transforms3d.") and (name.endswith("2quat") or name in ("qmult", "qconjugate", "qinverse", "qeye")):
-        return SCALAR_FIRST
     if qualified.startswith("pytransform3d.") and name.startswith("quaternion_from_"):
         return SCALAR_FIRST
     if qualified.startswith("pytorch3d.") and (name.endswith("_to_quaternion") or name in _PYTORCH3D_QUATERNIONS):
@@ -305,8 +287,6 @@ _DATA_CONSUMERS: Final = {
     **{f"pytorch3d.{name}": SCALAR_FIRST for name in (
         "quaternion_to_matrix", "quaternion_to_axis_angle", "quaternion_apply", "quaternion_multiply",
         "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion")},
-    "quaternion.from_float_array": SCALAR_FIRST,  # numpy-quaternion
-    "quaternion.as_quat_array": SCALAR_FIRST,
     "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_FIRST,
     "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_LAST,
     "open3d.get_rotation_matrix_from_quaternion": SCALAR_FIRST,
@@ -343,7 +323,6 @@ _DATA_PRODUCERS: Final = {
     **{f"roma.{name}": SCALAR_LAST for name in (
         "rotmat_to_unitquat", "rotvec_to_unitquat", "euler_to_unitquat", "quat_product", "quat_conjugation",
         "quat_inverse", "random_unitquat", "unitquat_slerp")},
-    "quaternion.as_float_array": SCALAR_FIRST,  # numpy-quaternion
     "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_FIRST,
     "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_LAST,
 }
@@ -565,53 +544,3 @@ def component_writes_of_parameter(facts: FactBase, stores: list[tuple[Attribute,
         where = f"the fields of `{owner}` in {', '.join(order)} order (`{owner}.w = {facts.code_of(w_value)}`)"
         found.append((bases.pop(), order, where))
     return found
-
-
-class ImportBranches:
-    """Names the module imports in more than one arm of a module-level `if` (`if ROS_VERSION == 1: from
-    tf.transformations import quaternion_multiply` / `elif ROS_VERSION == 2: from transforms3d.quaternions
-    import qmult as quaternion_multiply`): local name -> [(qualified name, the `if`'s test, arm)]. The
-    index keeps the last import only; a call inside a function branch on the same test, in the same arm,
-    is resolved to that arm's import instead (`branch_qualified_name`)."""
-
-    def __init__(self, facts: FactBase) -> None:
-        found: dict[str, list[tuple[str, str, bool]]] = {}
-        for statement in facts.index.tree.body:
-            if isinstance(statement, If):
-                _collect_branch_imports(statement, found)
-        self.alternatives = {name: arms for name, arms in found.items() if len({qualified for qualified, _, _ in arms}) > 1}
-
-
-def _collect_branch_imports(node: If, found: dict[str, list[tuple[str, str, bool]]]) -> None:
-    test = ast.dump(node.test)
-    for arm, body in ((True, node.body), (False, node.orelse)):
-        for statement in body:
-            if isinstance(statement, ImportFrom) and statement.module and not statement.level:
-                for alias in statement.names:
-                    if alias.name != "*":
-                        found.setdefault(alias.asname or alias.name, []).append((f"{statement.module}.{alias.name}", test, arm))
-            elif isinstance(statement, If) and not arm and len(body) == 1:
-                _collect_branch_imports(statement, found)  # `elif`
-
-
-def branch_qualified_name(facts: FactBase, func: AST) -> str | None:
-    """`facts.qualified_name(func)`, except for a name imported in several arms of a module-level `if`
-    and called inside a branch on the same test: that arm's import."""
-    qualified = facts.qualified_name(func)
-    if not isinstance(func, Name) or not facts.index.imports.get(func.id):
-        return qualified
-    arms = facts.shared(ImportBranches).alternatives.get(func.id)
-    if not arms:
-        return qualified
-    child: AST = func
-    current = facts.parent(func)
-    while current is not None:
-        if isinstance(current, If):
-            test = ast.dump(current.test)
-            in_body = any(statement is child for statement in current.body)
-            for candidate, guard, arm in arms:
-                if guard == test and arm == in_body:
-                    return candidate
-        child = current
-        current = facts.parent(current)
-    return qualified

@@ -7,6 +7,7 @@ the mypy plugin both ask `knowledge_base()`; no analysis module names a library.
 
 from __future__ import annotations
 
+import os
 from functools import lru_cache
 from pathlib import Path
 
@@ -96,7 +97,11 @@ class KnowledgeBase:
 
 
 def stubs_folder() -> Path:
-    """Where the stubs are: shipped inside the wheel (`geolint/_stubs`), or the checkout's `stubs/`."""
+    """Where the stubs are: `$GEOLINT_STUBS` when set (a folder of the same layout, read instead of the
+    shipped one), else inside the wheel (`geolint/_stubs`), else the checkout's `stubs/`."""
+    chosen = os.environ.get("GEOLINT_STUBS")
+    if chosen:
+        return Path(chosen)
     package = Path(__file__).resolve().parent.parent
     for candidate in (package / "_stubs", package.parent / "stubs"):
         if candidate.is_dir():
@@ -104,9 +109,12 @@ def stubs_folder() -> Path:
     return package.parent / "stubs"
 
 
-@lru_cache(maxsize=None)
 def knowledge_base(folder: Path | None = None) -> KnowledgeBase:
-    """The knowledge base read from `folder` (default: `stubs_folder()`), once per process."""
-    root = folder or stubs_folder()
+    """The knowledge base read from `folder` (default: `stubs_folder()`), once per process and folder."""
+    return _read(folder or stubs_folder())
+
+
+@lru_cache(maxsize=None)
+def _read(root: Path) -> KnowledgeBase:
     libraries = [read_library(path) for path in sorted(root.iterdir()) if (path / "METADATA.toml").is_file()] if root.is_dir() else []
     return KnowledgeBase(libraries)

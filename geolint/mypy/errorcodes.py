@@ -24,4 +24,10 @@ GEO_TRANSLATION = ErrorCode(
     "geolint",
 )
 
-ALL = (GEO_FRAME, GEO_KIND, GEO_TRANSLATION)
+GEO_QUATERNION_ORDER = ErrorCode(
+    "geo-quaternion-order",
+    "A quaternion in one component order passed where a library reads the other (the knowledge base's stubs)",
+    "geolint",
+)
+
+ALL = (GEO_FRAME, GEO_KIND, GEO_TRANSLATION, GEO_QUATERNION_ORDER)

@@ -29,6 +29,7 @@ from geolint.mypy import (
     frame_names,
     fullnames as names,
     generic_calls,
+    knowledge_calls,
     markers,
     numpy_calls,
     operators,
@@ -153,7 +154,7 @@ class GeolintPlugin(Plugin):
         return self.type_analyze_hooks.get(fullname)
 
     def get_function_hook(self, fullname: str) -> Callable[[FunctionContext], Type] | None:
-        return FUNCTION_HOOKS.get(fullname)
+        return FUNCTION_HOOKS.get(fullname) or knowledge_calls.hook_for(fullname)
 
     def get_function_signature_hook(self, fullname: str) -> Callable[[FunctionSigContext], FunctionLike] | None:
         return generic_calls.check_frames  # any function may be frame-generic; the hook returns at once if not
@@ -162,7 +163,7 @@ class GeolintPlugin(Plugin):
         return METHOD_SIGNATURE_HOOKS.get(fullname)
 
     def get_method_hook(self, fullname: str) -> Callable[[MethodContext], Type] | None:
-        return METHOD_HOOKS.get(fullname)
+        return METHOD_HOOKS.get(fullname) or knowledge_calls.hook_for(fullname)
 
     def get_attribute_hook(self, fullname: str) -> Callable[[AttributeContext], Type] | None:
         return ATTRIBUTE_HOOKS.get(fullname)
@@ -195,7 +196,7 @@ class GeolintPluginForMypy1(GeolintPlugin):
     half of ``T @ array``), so a plain ndarray's forward operators need the hook there too."""
 
     def get_method_hook(self, fullname: str) -> Callable[[MethodContext], Type] | None:
-        return METHOD_HOOKS.get(fullname) or LEGACY_NDARRAY_HOOKS.get(fullname)
+        return METHOD_HOOKS.get(fullname) or LEGACY_NDARRAY_HOOKS.get(fullname) or knowledge_calls.hook_for(fullname)
 
 
 LEGACY_NDARRAY_HOOKS = {

@@ -1,0 +1,124 @@
+"""Library calls judged from the knowledge base (`stubs/`), the same entries the linter reads.
+
+For a call whose fully qualified name the knowledge base knows, the hook binds mypy's arguments to
+the stub's parameters (by the library's own parameter names), reports a quaternion typed in one
+component order (`QuaternionWXYZ`) passed where the stub says the other, and gives the call the
+return type the stub states (`Rotation.as_quat()` is a `QuaternionXYZW`). Nothing else changes:
+mypy has already checked the call against the library's own annotations.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from typing import Any, Callable
+
+from mypy.nodes import Expression, IntExpr, NameExpr, StrExpr
+from mypy.plugin import FunctionContext, MethodContext
+from mypy.types import CallableType, Instance, Overloaded, ProperType, Type, TypeType, get_proper_type
+
+from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST, Api, Bound, Signature, agreed, knowledge_base
+from geolint.knowledge.binding import UNDECIDED, CallShape, bind_shape
+from geolint.mypy.errorcodes import GEO_QUATERNION_ORDER
+from geolint.mypy.geometry import lookup_class
+
+_ORDER_CLASSES = {SCALAR_LAST: "geolint.typing.QuaternionXYZW", SCALAR_FIRST: "geolint.typing.QuaternionWXYZ"}
+_CLASS_ORDERS = {fullname: order for order, fullname in _ORDER_CLASSES.items()}
+_CallContext = FunctionContext | MethodContext
+
+
+@lru_cache(maxsize=None)
+def hook_for(fullname: str) -> Callable[[Any], Type] | None:
+    """The hook for a call of `fullname`, when its stub says something about quaternions. mypy names
+    an overloaded method called on its class `"from_quat of Rotation"`: the class then comes from the
+    call's receiver type."""
+    method, of, owner = fullname.partition(" of ")
+    if of:
+        if not any(api.qualified_name.endswith(f".{owner}.{method}") for api in _quaternion_apis()):
+            return None
+        return lambda ctx: _check_method_of_receiver(ctx, method)
+    api = knowledge_base().api(fullname)
+    if api is None or api not in _quaternion_apis():
+        return None
+    return lambda ctx: _check_call(ctx, api)
+
+
+@lru_cache(maxsize=1)
+def _quaternion_apis() -> frozenset[Api]:
+    return frozenset(api for api in knowledge_base().apis() if any(_states_quaternions(signature) for signature in api.signatures))
+
+
+def _check_method_of_receiver(ctx: MethodContext, method: str) -> Type:
+    found = (knowledge_base().api(name) for name in _receiver_names(get_proper_type(ctx.type), method))
+    api = next((api for api in found if api is not None), None)
+    return _check_call(ctx, api) if api is not None else ctx.default_return_type
+
+
+def _receiver_names(receiver: ProperType, method: str) -> list[str]:
+    """Qualified names the method may have: from the overload's definition, from the class it returns (a
+    `from_*` constructor), or from the class it is on."""
+    if isinstance(receiver, Overloaded):
+        first = receiver.items[0]
+        names = [first.definition.fullname] if first.definition is not None and first.definition.fullname.endswith(f".{method}") else []
+        returned = get_proper_type(first.ret_type)
+        return names + ([f"{returned.type.fullname}.{method}"] if isinstance(returned, Instance) else [])
+    if isinstance(receiver, TypeType) and isinstance(receiver.item, Instance):
+        return [f"{receiver.item.type.fullname}.{method}"]
+    if isinstance(receiver, CallableType) and receiver.is_type_obj():
+        return [f"{receiver.type_object().fullname}.{method}"]
+    if isinstance(receiver, Instance):
+        return [f"{receiver.type.fullname}.{method}"]
+    return []
+
+
+def _states_quaternions(signature: Signature) -> bool:
+    returns = signature.returns
+    if returns is not None and returns.quaternion_order is not None:
+        return True
+    return any(parameter.geometry is not None and parameter.geometry.quaternion_order for parameter in signature.parameters)
+
+
+def _check_call(ctx: _CallContext, api: Api) -> Type:
+    arguments = {
+        name: expressions[0]
+        for name, expressions in zip(ctx.callee_arg_names, ctx.args)
+        if name is not None and len(expressions) == 1
+    }
+    bounds = bind_shape(api, CallShape([], arguments), _literal)
+    for name, expression in arguments.items():
+        wanted = agreed(bounds, lambda bound, name=name: _parameter_order(bound, name))
+        given = _order_of_type(ctx.api.expr_checker.accept(expression)) if wanted is not None else None  # type: ignore[attr-defined]
+        if wanted is not None and given is not None and given != wanted:
+            ctx.api.fail(
+                f"{api.qualified_name.rsplit('.', 2)[-2] if api.qualified_name.count('.') > 1 else api.qualified_name}"
+                f".{api.qualified_name.rpartition('.')[2]} reads `{name}` as ({', '.join(wanted)}), "
+                f"but it is a quaternion in ({', '.join(given)}) order",
+                expression,
+                code=GEO_QUATERNION_ORDER,
+            )
+    produced = agreed(bounds, lambda bound: bound.signature.returns.quaternion_order if bound.signature.returns else None)
+    return _quaternion_type(ctx, produced) or ctx.default_return_type
+
+
+def _parameter_order(bound: Bound, name: str) -> str | None:
+    parameter = bound.signature.parameter(name)
+    return parameter.geometry.quaternion_order if parameter is not None and parameter.geometry is not None else None
+
+
+def _literal(expression: Expression) -> object:
+    if isinstance(expression, NameExpr) and expression.fullname in ("builtins.True", "builtins.False", "builtins.None"):
+        return {"builtins.True": True, "builtins.False": False, "builtins.None": None}[expression.fullname]
+    if isinstance(expression, (IntExpr, StrExpr)):
+        return expression.value
+    return UNDECIDED
+
+
+def _order_of_type(typ: Type) -> str | None:
+    proper = get_proper_type(typ)
+    return _CLASS_ORDERS.get(proper.type.fullname) if isinstance(proper, Instance) else None
+
+
+def _quaternion_type(ctx: _CallContext, order: str | None) -> Type | None:
+    if order is None:
+        return None
+    info = lookup_class(ctx.api, _ORDER_CLASSES[order])
+    return Instance(info, []) if info is not None else None  # None: geolint.typing is not part of this build
