@@ -207,6 +207,8 @@ class _ModuleReader:
         name = _last(node.value if isinstance(node, ast.Subscript) else node)
         if name in _PLAIN and not isinstance(node, ast.Subscript):
             return _PLAIN[name]
+        if name in _FRAMED and not isinstance(node, ast.Subscript):
+            return Geometry(kind=_FRAMED[name])  # no frames stated
         if isinstance(node, ast.Subscript):
             items = list(node.slice.elts) if isinstance(node.slice, ast.Tuple) else [node.slice]
             if name in _FRAMED:

@@ -134,6 +134,12 @@ def test_plain_install_gives_a_working_linter(base_install: Path, checkout: Path
     imported = subprocess.run([python, "-c", probe], cwd=tmp_path, env=env, capture_output=True, text=True)
     assert imported.stdout.split() == ["geolint", "numpy"], imported.stderr
 
+    # The knowledge base's stubs ship inside the package.
+    stubs = "from geolint.knowledge import knowledge_base, stubs_folder; print(stubs_folder().name, len(knowledge_base().libraries))"
+    shipped = subprocess.run([python, "-c", stubs], cwd=tmp_path, env=env, capture_output=True, text=True)
+    folder, count = shipped.stdout.split()
+    assert folder == "_stubs" and int(count) >= 4, shipped.stderr
+
 
 def test_the_missing_extra_hint_names_an_install_line_that_works(base_install: Path, tmp_path: Path) -> None:
     """`geolint lsp` without the extra says what to install, exit 2; running exactly that makes it work.

@@ -42,3 +42,12 @@ def test_stubs_compile_under_this_interpreter() -> None:
     for stub in stubs_folder().rglob("*.pyi"):
         compile(stub.read_text(encoding="utf-8"), str(stub), "exec")
     assert sys.version_info >= (3, 10)
+
+
+def test_the_committed_library_list_is_current() -> None:
+    from pathlib import Path
+
+    from geolint.knowledge.catalog import catalog_markdown
+
+    committed = (Path(__file__).resolve().parents[2] / "docs" / "libraries.md").read_text(encoding="utf-8")
+    assert committed == catalog_markdown(), "docs/libraries.md is stale: run `python -m geolint.knowledge.catalog > docs/libraries.md`"

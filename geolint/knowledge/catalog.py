@@ -1,0 +1,63 @@
+"""The list of libraries the knowledge base covers, generated from `stubs/` (never written by hand).
+
+    python -m geolint.knowledge.catalog > docs/libraries.md
+
+A test fails when the committed page is out of date.
+"""
+
+from __future__ import annotations
+
+from geolint.knowledge import Api, KnowledgeBase, knowledge_base
+
+_FACTS = (
+    ("quaternion order", lambda geometry: geometry.quaternion_order is not None),
+    ("angle unit", lambda geometry: geometry.angle_unit is not None),
+    ("points and vectors", lambda geometry: geometry.kind is not None and geometry.kind.value in ("point", "vector", "direction")),
+    ("rotations and poses", lambda geometry: geometry.kind is not None and geometry.kind.value in ("rotation", "transform", "translation")),
+    ("camera axes", lambda geometry: geometry.camera_axes is not None),
+)
+
+
+def _states(api: Api) -> set[str]:
+    geometries = [
+        geometry
+        for signature in api.signatures
+        for geometry in (signature.returns, *(parameter.geometry for parameter in signature.parameters))
+        if geometry is not None
+    ]
+    geometries += [item for geometry in list(geometries) for item in geometry.items]
+    stated = {label for label, test in _FACTS for geometry in geometries if test(geometry)}
+    if any(signature.components for signature in api.signatures):
+        stated.add("quaternion order")
+    return stated
+
+
+def catalog_markdown(kb: KnowledgeBase | None = None) -> str:
+    kb = kb or knowledge_base()
+    lines = [
+        "# Libraries geolint knows",
+        "",
+        "Generated from `stubs/` by `python -m geolint.knowledge.catalog`; do not edit by hand. Each library",
+        "is a folder of stubs stating what its APIs do with quaternions, angles, points and poses, each entry",
+        "with its source; the linter and the mypy plugin read the same files. How to add one:",
+        "[stubs/README.md](../stubs/README.md).",
+        "",
+        "The quaternion-order questions of the linter (GEO301 and the other quaternion rules) and of the mypy",
+        "plugin (`geo-quaternion-order`) are answered from these stubs for the libraries below; other facts of",
+        "the fact base still come from its older tables while their libraries move here.",
+        "",
+        "| library | import names | checked against | APIs | what the stubs state |",
+        "|---|---|---|---|---|",
+    ]
+    for name in sorted(kb.libraries, key=str.lower):
+        library = kb.libraries[name]
+        apis = [api for api in library.apis.values() if api.signatures or api.is_class]
+        stated = set().union(*(_states(api) for api in apis)) if apis else set()
+        facts = ", ".join(label for label, _ in _FACTS if label in stated) or "-"
+        packages = ", ".join(f"`{package}`" for package in library.packages)
+        lines.append(f"| [{library.name}]({library.upstream}) | {packages} | {library.checked} | {len(apis)} | {facts} |")
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    print(catalog_markdown(), end="")
