@@ -43,18 +43,7 @@ def _library_call(facts: FactBase, call: Call) -> list[Bound]:
 
 def quaternion_inputs(facts: FactBase, call: Call) -> list[tuple[ast.expr, str]]:
     """(argument, component order) for each argument the call reads as a whole quaternion."""
-    bounds = library_call(facts, call)
-    if not bounds:
-        return []
-    found = []
-    for parameter in bounds[0].signature.parameters:
-        argument = bounds[0].arguments.get(parameter.name)
-        if argument is None:
-            continue
-        order = agreed(bounds, lambda bound, name=parameter.name: _parameter_geometry(bound, name, "quaternion_order"))
-        if order is not None and all(bound.arguments.get(parameter.name) is argument for bound in bounds):
-            found.append((argument, order))
-    return found
+    return _argument_facts(facts, call, "quaternion_order")
 
 
 def expected_quaternion_order(facts: FactBase, call: Call) -> tuple[str, ast.expr | None] | None:
@@ -84,17 +73,24 @@ def quaternion_output(facts: FactBase, call: Call) -> str | None:
 
 def angle_inputs(facts: FactBase, call: Call) -> list[tuple[ast.expr, str]]:
     """(argument, unit) for each argument the call reads as angles."""
+    return _argument_facts(facts, call, "angle_unit")
+
+
+def _argument_facts(facts: FactBase, call: Call, field: str) -> list[tuple[ast.expr, str]]:
+    """(argument, the stub's `field` for its parameter), for the arguments every candidate overload
+    binds to the same parameter and states the same value for."""
     bounds = library_call(facts, call)
     if not bounds:
         return []
-    found = []
+    found: list[tuple[ast.expr, str]] = []
     for parameter in bounds[0].signature.parameters:
         argument = bounds[0].arguments.get(parameter.name)
-        if argument is None:
+        if argument is None or not all(bound.arguments.get(parameter.name) is argument for bound in bounds):
             continue
-        unit = agreed(bounds, lambda bound, name=parameter.name: _parameter_geometry(bound, name, "angle_unit"))
-        if unit is not None and all(bound.arguments.get(parameter.name) is argument for bound in bounds):
-            found.append((argument, unit))
+        values = {_parameter_geometry(bound, parameter.name, field) for bound in bounds}
+        value = values.pop() if len(values) == 1 else None
+        if isinstance(value, str):
+            found.append((argument, value))
     return found
 
 
