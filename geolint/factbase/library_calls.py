@@ -11,7 +11,7 @@ a question is answered only when all of them agree (`geolint.knowledge.agreed`).
 from __future__ import annotations
 
 import ast
-from ast import AST, Attribute, Call, If, ImportFrom, Name
+from ast import AST, Attribute, Call, If, Import, ImportFrom, Name
 from typing import Final
 
 from geolint.factbase.model import FactBase
@@ -242,8 +242,8 @@ def _imported_modules(facts: FactBase) -> list[str]:
         "imported modules",
         lambda: [
             *facts.index.imports.values(),
-            *(node.module for node in facts.index.nodes(ast.ImportFrom) if node.module),  # type: ignore[attr-defined]
-            *(alias.name for node in facts.index.nodes(ast.Import) for alias in node.names),  # type: ignore[attr-defined]
+            *(node.module for node in facts.index.nodes(ImportFrom) if node.module),  # type: ignore[attr-defined]
+            *(alias.name for node in facts.index.nodes(Import) for alias in node.names),  # type: ignore[attr-defined]
         ],
     )
 
