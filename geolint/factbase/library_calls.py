@@ -133,7 +133,7 @@ def _called_api(facts: FactBase, call: Call) -> Api | None:
         if found is not None and _resolved_through_imports(facts, func):
             return found
         if found is None and _resolved_through_imports(facts, func):
-            extended = kb.extension(qualified, _imported_modules(facts))
+            extended = kb.extension(qualified, imported_modules(facts))
             if extended is not None:
                 return extended
     if isinstance(func, Attribute):
@@ -220,7 +220,7 @@ def _any_receiver(facts: FactBase, kb: KnowledgeBase, method: str) -> Api | None
     candidates = kb.methods_named(method)
     if not candidates:
         return None
-    imported = _imported_modules(facts)
+    imported = imported_modules(facts)
     fitting = [
         api
         for api in candidates
@@ -237,7 +237,8 @@ def _star_imported(facts: FactBase, kb: KnowledgeBase, func: Name) -> Api | None
     return found.pop() if len(found) == 1 else None
 
 
-def _imported_modules(facts: FactBase) -> list[str]:
+def imported_modules(facts: FactBase) -> list[str]:
+    """Every module and name the module imports, dotted in full (`import omni.isaac.core.prims` too)."""
     return facts.module_fact(
         "imported modules",
         lambda: [

@@ -12,8 +12,6 @@ from ast import (
     Attribute,
     Call,
     Constant,
-    Import,
-    ImportFrom,
     ListComp,
     Name,
     Starred,
@@ -21,7 +19,7 @@ from ast import (
 )
 
 from geolint.factbase import library_calls
-from geolint.factbase.library_calls import ImportBranches, branch_qualified_name  # noqa: F401  (re-exported for the rules)
+from geolint.factbase.library_calls import ImportBranches, branch_qualified_name, imported_modules  # noqa: F401  (re-exported for the rules)
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.syntax import keyword, last_name, number
 
@@ -385,26 +383,17 @@ def isaac_orientation_arguments(facts: FactBase, call: Call) -> list[ast.expr]:
     return [given.value for given in call.keywords if given.arg in ("orientation", "orientations")]
 
 
-def _imported_modules(facts: FactBase) -> list[str]:
-    """Every module and name the module imports, dotted in full (`import omni.isaac.core.prims` too)."""
-    return [
-        *facts.index.imports.values(),
-        *(node.module for node in facts.index.nodes(ImportFrom) if node.module),  # type: ignore[attr-defined]
-        *(alias.name for node in facts.index.nodes(Import) for alias in node.names),  # type: ignore[attr-defined]
-    ]
-
-
 def mentions_isaac_core(facts: FactBase) -> bool:
     """Whether the module imports something of Isaac Sim's core: without it `isaac_orientation_arguments`
     is [] for every call (a rule asking of every call may test this once per module)."""
-    return facts.module_fact("mentions isaac core", lambda: any(name.startswith(_ISAAC_CORE) for name in _imported_modules(facts)))
+    return facts.module_fact("mentions isaac core", lambda: any(name.startswith(_ISAAC_CORE) for name in imported_modules(facts)))
 
 
 def _imports_isaac_core(facts: FactBase) -> bool:
     """Isaac Sim's core, and not OmniGibson (whose prims take x, y, z, w)."""
 
     def compute() -> bool:
-        return mentions_isaac_core(facts) and not any(name.startswith("omnigibson") for name in _imported_modules(facts))
+        return mentions_isaac_core(facts) and not any(name.startswith("omnigibson") for name in imported_modules(facts))
 
     return facts.module_fact("imports isaac core", compute)
 
