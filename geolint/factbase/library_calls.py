@@ -12,10 +12,12 @@ from __future__ import annotations
 
 import ast
 from ast import AST, Attribute, Call, If, Import, ImportFrom, Name
-from typing import Final
+from typing import TYPE_CHECKING, Final
 
-from geolint.factbase.model import FactBase
 from geolint.knowledge import Api, Bound, Geometry, KnowledgeBase, agreed, bind, knowledge_base
+
+if TYPE_CHECKING:  # the fact base asks this module; it needs the class only for its annotations
+    from geolint.factbase.model import FactBase
 
 _TYPE_DEPTH: Final = 8  # a library object passed through this many names and calls
 
