@@ -26,19 +26,16 @@ import re
 from ast import (
     AST,
     Add,
-    Assign,
     Attribute,
     BinOp,
     Call,
     ClassDef,
     Constant,
     Div,
-    FunctionDef,
     Global,
     Load,
     Mult,
     Name,
-    Starred,
     Sub,
     Subscript,
     UAdd,
@@ -57,6 +54,7 @@ from geolint.factbase.angles import (
     RETURNED_EULER_METHODS,
     ROTATION_VECTOR_READERS,
 )
+from geolint.factbase.classes import enclosing_class, project_class
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
@@ -68,7 +66,6 @@ from geolint.factbase.summaries import (
     SummaryFamily,
     agreed,
     chain,
-    only_bound_as_parameter,
     plain_parameters,
     settled_returns,
     shifted,
@@ -335,11 +332,11 @@ class AngleUnits:
             return _instance_or_class_literal(facts, enclosing_class(facts, node), node.attr, "")
         located = _class_of(facts, owner)
         if located is None:
-            if isinstance(owner, Name) and facts.cross_module and owner.id in facts.index.imports and not _attribute_stores(facts)[node.attr]:
+            if isinstance(owner, Name) and facts.cross_module and owner.id in facts.index.imports and not attribute_stores(facts)[node.attr]:
                 return _module_constant(facts, f"{facts.index.imports[owner.id]}.{node.attr}")  # `config.TILT`
             return None
         other, cls, instance = located
-        if other is not facts and _attribute_stores(facts)[node.attr]:
+        if other is not facts and attribute_stores(facts)[node.attr]:
             return None  # stored here too (`cfg.tilt = ...`)
         where = "" if other is facts else f"in {_short_path(other.path)}"
         if instance:
@@ -362,7 +359,7 @@ class AngleUnits:
         return qualified in ("numpy.pi", "math.pi", "torch.pi")
 
 
-class _LibraryUnits(AngleUnits):
+class LibraryUnits(AngleUnits):
     """`unit_of` from this module's code and libraries only: no project helper's summary, no constant of
     another module (a cheap first look that reads no other module)."""
 
@@ -398,7 +395,7 @@ def _declared_global(facts: FactBase) -> frozenset[str]:
     return facts.module_fact("global names", lambda: frozenset(name for node in facts.index.nodes(Global) for name in node.names))  # type: ignore[attr-defined]
 
 
-def _attribute_stores(facts: FactBase) -> Counter[str]:
+def attribute_stores(facts: FactBase) -> Counter[str]:
     """How many times the module stores (or deletes) each attribute name, on any object."""
 
     def count() -> Counter[str]:
@@ -416,25 +413,13 @@ def _attribute_stores(facts: FactBase) -> Counter[str]:
     return counted if not counted["*"] else Counter({name: 1 << 20 for name in counted})  # a computed `setattr`: anything
 
 
-def enclosing_class(facts: FactBase, node: AST) -> ClassDef | None:
-    current = facts.parent(node)
-    while current is not None and not isinstance(current, ClassDef):
-        current = facts.parent(current)
-    return current
-
-
-def _top_level_class(facts: FactBase, name: str) -> ClassDef | None:
-    """The module's one top-level class of that name (None when there is none, or two)."""
-    return _top_level_classes(facts).get(name)
-
-
 def _instance_or_class_literal(facts: FactBase, cls: ClassDef | None, attr: str, where: str) -> tuple[float, str] | None:
     """`self.<attr> = <literal>`, the module's only store of `.attr`, inside `cls`; else `cls`'s class attribute."""
     if cls is None or cls.bases and not all(isinstance(base, Name) and base.id == "object" for base in cls.bases):
         return None  # a base class (here or in a library) may set it too
     stores = facts.index.self_attribute_stores.get(attr, [])
     if stores:
-        if len(stores) != 1 or _attribute_stores(facts)[attr] != 1 or enclosing_class(facts, stores[0]) is not cls:
+        if len(stores) != 1 or attribute_stores(facts)[attr] != 1 or enclosing_class(facts, stores[0]) is not cls:
             return None
         return _literal_at(stores[0], where)
     return _class_literal(facts, cls, attr, where)
@@ -442,7 +427,7 @@ def _instance_or_class_literal(facts: FactBase, cls: ClassDef | None, attr: str,
 
 def _class_literal(facts: FactBase, cls: ClassDef, attr: str, where: str) -> tuple[float, str] | None:
     """`class Config: TILT = 30`, bound once in the class body and stored nowhere in the module."""
-    if _attribute_stores(facts)[attr] or (cls.bases and not all(isinstance(base, Name) and base.id == "object" for base in cls.bases)):
+    if attribute_stores(facts)[attr] or (cls.bases and not all(isinstance(base, Name) and base.id == "object" for base in cls.bases)):
         return None
     scope: Scope | None = facts.index.scopes.get(cls)
     bound = [] if scope is None else scope.bindings.get(attr, [])
@@ -528,32 +513,20 @@ def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
     if not may_read_radians(facts.called_name(func) or ""):
         return None  # named like none of the APIs below (asked of every call of a module)
     positional = positional_args(node)
-    name = last_name(func) or ""
     if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
-        degrees = keyword(node, "degrees")
-        if degrees is not None and not (isinstance(degrees.value, Constant) and degrees.value.value is False):
-            return None
-        if name == "from_euler":
-            angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
-        else:
-            angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
-        return [angles] if angles is not None else None
+        return _scipy_angles(node, last_name(func) or "", positional)
     qualified = facts.qualified_name(func) or ""
-    name = qualified.rsplit(".", 1)[-1] if qualified else name  # through `import ... as`
+    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
     if qualified.startswith("transforms3d."):
-        if name.startswith("euler2"):
-            return positional[:3]
-        if name.startswith("axangle2") and len(positional) > 1:
-            return [positional[1]]
+        found = _transforms3d_angles(name, positional)
+        if found is not None:
+            return found
     if qualified.startswith("pytransform3d."):
-        if name.endswith("_from_euler") and positional:
-            return [positional[0]]
-        if name.endswith("_from_angle") and len(positional) > 1:
-            return [positional[1]]
+        found = _pytransform3d_angles(name, positional)
+        if found is not None:
+            return found
     if qualified.startswith("spatialmath") and name in _SPATIALMATH_ANGLE_CALLS:
-        if keyword(node, "unit") is not None or any(string(value) is not None for value in positional[1:]):
-            return None
-        return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
+        return _spatialmath_angles(node, name, positional)
     if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
         return positional[:3]
     if qualified in ROTATION_VECTOR_READERS:
@@ -564,6 +537,43 @@ def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
     if is_trig_or_conversion(facts, node):
         return positional[:1]
     return None
+
+
+def _scipy_angles(node: Call, name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
+    """scipy's `from_euler(seq, angles)` / `from_rotvec(rotvec)` without `degrees=True`: the angles."""
+    degrees = keyword(node, "degrees")
+    if degrees is not None and not (isinstance(degrees.value, Constant) and degrees.value.value is False):
+        return None
+    if name == "from_euler":
+        angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
+    else:
+        angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
+    return [angles] if angles is not None else None
+
+
+def _transforms3d_angles(name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
+    """transforms3d's `euler2*(ai, aj, ak)` and `axangle2*(axis, angle)`."""
+    if name.startswith("euler2"):
+        return positional[:3]
+    if name.startswith("axangle2") and len(positional) > 1:
+        return [positional[1]]
+    return None
+
+
+def _pytransform3d_angles(name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
+    """pytransform3d's `*_from_euler(e, ...)` and `*_from_angle(basis, angle)`."""
+    if name.endswith("_from_euler") and positional:
+        return [positional[0]]
+    if name.endswith("_from_angle") and len(positional) > 1:
+        return [positional[1]]
+    return None
+
+
+def _spatialmath_angles(node: Call, name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
+    """spatialmath's `SE3.Rx(theta)`, `rpy2r(r, p, y)`... unless a `unit` says otherwise."""
+    if keyword(node, "unit") is not None or any(string(value) is not None for value in positional[1:]):
+        return None
+    return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
 
 
 def is_trig_or_conversion(facts: FactBase, node: Call) -> bool:
@@ -650,217 +660,6 @@ def _angle_elements(node: ast.expr) -> list[ast.expr]:
     if isinstance(node, (ast.List, ast.Tuple)):
         return list(node.elts)
     return [node]
-
-
-# the expressions `AngleUnits.unit_of` can know a unit of; for any other (a constant, a list, a
-# comparison...) it is None, found without following anything
-_MAY_HAVE_UNIT: Final = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript})
-
-
-def helper_reads(facts: FactBase, call: Call, unit: str, units: AngleUnits | None = None) -> list[tuple[ast.expr, str, bool]]:
-    """The arguments of a call to a project helper that passes them, unchanged and unconditionally,
-    to an API reading `unit` (directly or through further helpers), or names its parameter in that
-    unit, each with how it gets there and whether only a name says so; and the arguments of a
-    project class's constructor that stores them for a method to read in `unit` (`constructor_reads`)."""
-    args = call.args
-    if args and facts.may_have_summary(call):
-        if any(isinstance(arg, Starred) for arg in args):
-            return []
-        units = facts.shared(AngleUnits) if units is None else units
-        other = RADIANS if unit == DEGREES else DEGREES
-        if any(type(arg) in _MAY_HAVE_UNIT and (given := units.unit_of(arg)) is not None and given.unit == other for arg in args):
-            summary = facts.summary_of(call, ANGLE_UNITS)
-            if summary is not None:
-                return _summary_reads(facts, call, unit, summary)
-        return _class_reads(facts, call, unit, None)
-    if not args and not call.keywords:
-        return []
-    func = call.func
-    if type(func) is Name and func.id in _top_level_classes(facts):  # type: ignore[attr-defined]
-        local = _top_level_class(facts, func.id)  # type: ignore[attr-defined]
-        if local is None or not constructor_reads(facts, local)[1] or any(isinstance(arg, Starred) for arg in args):
-            return []  # a class of this module whose constructor reads no unit
-        return _class_reads(facts, call, unit, local)
-    if not args and facts.may_have_summary(call):
-        return _class_reads(facts, call, unit, None)
-    return []
-
-
-def _class_reads(facts: FactBase, call: Call, unit: str, local: ClassDef | None) -> list[tuple[ast.expr, str, bool]]:
-    """`_constructor_reads_of` for a call of a class of this module (`local`) or, named in CapWords, of
-    a project module, when an argument is in the other unit by this module's own evidence or a
-    library's (asked before the class is looked up: not through a project helper's summary or another
-    module's constant, which would read more modules)."""
-    if local is None:
-        if unit == RADIANS:
-            return []  # a class of another module is asked for its degrees only (GEO305's files, which its trigger narrows)
-        func = call.func
-        name = func.id if isinstance(func, Name) else func.attr if isinstance(func, Attribute) else ""
-        if not name[:1].isupper():
-            return []  # a class is named in CapWords
-    other = RADIANS if unit == DEGREES else DEGREES
-    cheap = facts.shared(_LibraryUnits)
-    given = [*call.args, *(keyword.value for keyword in call.keywords if keyword.arg)]
-    if not any((found := cheap.unit_of(arg)) is not None and found.unit == other for arg in given):
-        return []
-    return _constructor_reads_of(facts, call, unit, cheap)
-
-
-def _summary_reads(facts: FactBase, call: Call, unit: str, summary: AngleSummary) -> list[tuple[ast.expr, str, bool]]:
-    helper = facts.code_of(call.func)
-    found = []
-    for index, (read, where, by_name) in sorted(summary.reads_unit.items()):
-        if read == unit and index < len(call.args):
-            parameter = summary.parameters[index]
-            if by_name and not where:
-                how = f"`{helper}` names its parameter `{parameter}` in {unit_word(unit)}"
-            else:
-                how = f"`{helper}` passes its parameter `{parameter}` to {where}, which reads {unit_word(unit)}"
-            found.append((call.args[index], how, by_name))
-    return found
-
-
-def _top_level_classes(facts: FactBase) -> dict[str, ClassDef | None]:
-    """The module's top-level classes by name; None for a name defined twice (read once per module)."""
-
-    def find() -> dict[str, ClassDef | None]:
-        classes = [node for node in facts.index.tree.body if isinstance(node, ClassDef)]
-        counts = Counter(node.name for node in classes)
-        return {node.name: node if counts[node.name] == 1 else None for node in classes}
-
-    return facts.module_fact("top-level classes", find)
-
-
-def _constructor_reads_of(facts: FactBase, call: Call, unit: str, units: AngleUnits) -> list[tuple[ast.expr, str, bool]]:
-    """The arguments of a project class's constructor call that it reads in `unit` (`constructor_reads`),
-    when one of them is in the other unit: the class first (its module is one the call's kind already
-    asked for), the arguments' units only for the parameters it reads."""
-    located = _project_class(facts, call.func)
-    if located is None:
-        return []
-    other, cls = located
-    parameters, reads = constructor_reads(other, cls)
-    if not reads:
-        return []
-    wrong = RADIANS if unit == DEGREES else DEGREES
-    found = []
-    for index, (read, where) in sorted(reads.items()):
-        if read != unit:
-            continue
-        parameter = parameters[index]
-        if index < len(call.args):
-            argument: ast.expr | None = call.args[index]
-        else:
-            argument = getattr(keyword(call, parameter), "value", None)
-        given = None if argument is None else units.unit_of(argument)
-        if argument is not None and given is not None and given.unit == wrong:
-            how = f"`{facts.code_of(call.func)}` stores its parameter `{parameter}` for {where}, which reads {unit_word(unit)}"
-            found.append((argument, how, False))
-    return found
-
-
-def _project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ClassDef] | None:
-    return facts.memoised("project class", func, lambda: project_class(facts, func))
-
-
-def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ClassDef] | None:
-    """The top-level class a called name is: of this module, or of the project module it is imported from."""
-    if isinstance(func, Name):
-        local = _top_level_class(facts, func.id)
-        if local is not None:
-            return facts, local
-        if func.id not in facts.index.imports:
-            return None
-    elif not isinstance(func, Attribute):
-        return None
-    if not facts.cross_module:
-        return None
-    found = facts.defining_module(facts.qualified_name(func) or "", facts.path)
-    if found is None:
-        return None
-    other, name = found
-    cls = _top_level_class(other, name)
-    return None if cls is None else (other, cls)
-
-
-def constructor_reads(facts: FactBase, cls: ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
-    """What a class's constructor reads its parameters in: `__init__`'s parameters (without `self`) and,
-    by index, the unit and where, for a parameter stored as it is (`self.yaw = yaw`, the class's only
-    store of `self.yaw`, unconditionally in `__init__`) that a method of the class hands unconditionally
-    to an API reading a unit (`np.radians(self.yaw)`, `carla.Rotation(self.pitch, ...)`), or that
-    `__init__` itself hands to one. Read in both units: nothing."""
-    return facts.memoised("constructor reads", cls, lambda: _constructor_reads(facts, cls))
-
-
-def _constructor_reads(facts: FactBase, cls: ClassDef) -> tuple[tuple[str, ...], dict[int, tuple[str, str]]]:
-    init = next((node for node in cls.body if isinstance(node, FunctionDef) and node.name == "__init__"), None)
-    if init is None or init.decorator_list:
-        return (), {}
-    every = (*init.args.posonlyargs, *init.args.args)
-    if not every:
-        return (), {}
-    parameters = tuple(arg.arg for arg in every[1:])
-    scope = facts.index.scopes.get(init)
-    if scope is None or not parameters:
-        return parameters, {}
-    plain = {name for name in parameters if only_bound_as_parameter(scope, name)}
-    loads, stores = _self_attributes(facts)
-    held: dict[str, int] = {}  # `self.<attr> = <parameter>`, the class's one store of `self.attr` -> the parameter's index
-    direct: list[tuple[Call, Name]] = []  # `np.radians(yaw)` in `__init__` itself
-    for node in walk_within(init):
-        if isinstance(node, Call):
-            direct.extend((node, arg) for arg in node.args if isinstance(arg, Name) and arg.id in plain)
-            continue
-        if not (isinstance(node, Assign) and len(node.targets) == 1 and isinstance(node.value, Name) and node.value.id in plain):
-            continue
-        target = node.targets[0]
-        if not (isinstance(target, Attribute) and isinstance(target.value, Name) and target.value.id == "self"):
-            continue
-        if [store for store in stores.get(target.attr, ()) if enclosing_class(facts, store) is cls] == [target] and runs_unconditionally(facts, node.value):
-            held[target.attr] = parameters.index(node.value.id)
-    found: dict[int, tuple[str, str]] = {}
-    conflicting: set[int] = set()
-
-    def add(index: int, unit: str, where: str) -> None:
-        known = found.get(index)
-        if known is None:
-            found[index] = (unit, where)
-        elif known[0] != unit:
-            conflicting.add(index)
-
-    for attr, index in held.items():
-        for node in loads.get(attr, ()):
-            call = facts.parent(node)
-            if isinstance(call, (ast.List, ast.Tuple, ast.keyword)):
-                call = facts.parent(call)  # `from_euler("xyz", [self.roll, ...], degrees=True)`, `Rotation(yaw=self.yaw)`
-            if not isinstance(call, Call) or enclosing_class(facts, node) is not cls:
-                continue
-            read = unit_read_by(facts, call, node)
-            if read is not None:
-                method = facts.index.scope_of(node).node
-                add(index, read, f"`{facts.code_of(call.func)}` (as `self.{attr}`, in `{getattr(method, 'name', '?')}`)")
-    for call, argument in direct:
-        read = unit_read_by(facts, call, argument)
-        if read is not None:
-            add(parameters.index(argument.id), read, f"`{facts.code_of(call.func)}` (in `__init__`)")
-    return parameters, {index: value for index, value in found.items() if index not in conflicting}
-
-
-def _self_attributes(facts: FactBase) -> tuple[dict[str, list[Attribute]], dict[str, list[Attribute]]]:
-    """The module's reads and its stores (or deletions) of `self.<attr>`, by attribute name; with a
-    `setattr` of a computed name anywhere, every attribute counts as stored once more."""
-
-    def collect() -> tuple[dict[str, list[Attribute]], dict[str, list[Attribute]]]:
-        loads: dict[str, list[Attribute]] = {}
-        stores: dict[str, list[Attribute]] = {}
-        for node in facts.index.nodes(Attribute):
-            if isinstance(node.value, Name) and node.value.id == "self":  # type: ignore[attr-defined]
-                (loads if isinstance(node.ctx, Load) else stores).setdefault(node.attr, []).append(node)  # type: ignore[attr-defined,arg-type]
-        if "setattr" in facts.index.source and (_attribute_stores(facts)["*"] or any(count >= 1 << 20 for count in _attribute_stores(facts).values())):
-            stores = {attr: [*found, *found] for attr, found in stores.items()}  # `setattr(self, key, value)`: anything
-        return loads, stores
-
-    return facts.module_fact("self attributes", collect)
 
 
 # --- the summaries of angle units: what a helper returns and what it reads its parameters in ------

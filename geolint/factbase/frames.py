@@ -73,53 +73,70 @@ def _frames(facts: FactBase, node: AST, order: str) -> FrameFact | None:
     if isinstance(node, Name):
         return _frames_of_variable(facts, node, order)
     if isinstance(node, Attribute):
-        if node.attr in ("T", "mT"):
-            inner = frame_fact(facts, node.value, order)
-            if inner is not None and inner.frames.is_operator:
-                return FrameFact(inner.frames.inverted(), inner.evidence, inner.declared)
-            return inner
-        if facts.is_module_like(node.value):
-            return None
-        declared = vocab.DECLARING_ATTRIBUTES.get(node.attr)
-        if declared is not None:
-            return FrameFact(declared, (f"`.{node.attr}` ({vocab.DECLARING_ATTRIBUTE_SOURCES[node.attr]})",), True)
-        return name_frames(facts, node.attr, order)
+        return _frames_of_attribute(facts, node, order)
     if isinstance(node, Subscript):
-        key = string(node.slice)
-        if key is not None:  # `meta["c2w"]`, `info["cam_R_w2c"]`: the key states the convention
-            if key in vocab.DECLARING_ATTRIBUTES:
-                return _extrinsics_frames(facts, key)
-            return name_frames(facts, key, order) if key.isidentifier() else None
-        inner = frame_fact(facts, node.value, order)
-        if inner is None:
-            return None
-        frames = inner.frames
-        if frames.is_operator:
-            if facts.rotation_block_of(node) is not None:
-                return FrameFact(NameFrames(dst=frames.dst, src=frames.src, operator="rotation"), inner.evidence, inner.declared)
-            if facts.translation_of(node) is not None:
-                return FrameFact(NameFrames(frame=frames.dst), inner.evidence, inner.declared)
-            return None
-        return inner
+        return _frames_of_subscript(facts, node, order)
     if isinstance(node, UnaryOp) and isinstance(node.op, USub):
         inner = frame_fact(facts, node.operand, order)
         return inner if inner is not None and not inner.frames.is_operator else None
     if isinstance(node, Call):
         return _frames_of_call(facts, node, order)
     if isinstance(node, BinOp):
-        if isinstance(node.op, (Add, Sub)):
-            left, right = frame_fact(facts, node.left, order), frame_fact(facts, node.right, order)
-            if left is not None and not left.frames.is_operator and (right is None or right.frames == left.frames):
-                return left
-            if right is not None and not right.frames.is_operator and left is None:
-                return right
-            return None
-        if isinstance(node.op, MatMult):
+        return _frames_of_binary(facts, node, order)
+    return None
+
+
+def _frames_of_attribute(facts: FactBase, node: Attribute, order: str) -> FrameFact | None:
+    """`T.T` (the inverse of a rotation), a declaring attribute (`.cam_from_world`), or the attribute's name."""
+    if node.attr in ("T", "mT"):
+        inner = frame_fact(facts, node.value, order)
+        if inner is not None and inner.frames.is_operator:
+            return FrameFact(inner.frames.inverted(), inner.evidence, inner.declared)
+        return inner
+    if facts.is_module_like(node.value):
+        return None
+    declared = vocab.DECLARING_ATTRIBUTES.get(node.attr)
+    if declared is not None:
+        return FrameFact(declared, (f"`.{node.attr}` ({vocab.DECLARING_ATTRIBUTE_SOURCES[node.attr]})",), True)
+    return name_frames(facts, node.attr, order)
+
+
+def _frames_of_subscript(facts: FactBase, node: Subscript, order: str) -> FrameFact | None:
+    """`meta["c2w"]` (the key states the convention), `T[:3, :3]` (the rotation of T), `T[:3, 3]` (a
+    point in T's dst), `points[i]` (the frame of the points)."""
+    key = string(node.slice)
+    if key is not None:
+        if key in vocab.DECLARING_ATTRIBUTES:
+            return _extrinsics_frames(facts, key)
+        return name_frames(facts, key, order) if key.isidentifier() else None
+    inner = frame_fact(facts, node.value, order)
+    if inner is None:
+        return None
+    frames = inner.frames
+    if frames.is_operator:
+        if facts.rotation_block_of(node) is not None:
+            return FrameFact(NameFrames(dst=frames.dst, src=frames.src, operator="rotation"), inner.evidence, inner.declared)
+        if facts.translation_of(node) is not None:
+            return FrameFact(NameFrames(frame=frames.dst), inner.evidence, inner.declared)
+        return None
+    return inner
+
+
+def _frames_of_binary(facts: FactBase, node: BinOp, order: str) -> FrameFact | None:
+    """`p + v` (a value keeps its frame), `A @ B` and `T * x` (a product)."""
+    if isinstance(node.op, (Add, Sub)):
+        left, right = frame_fact(facts, node.left, order), frame_fact(facts, node.right, order)
+        if left is not None and not left.frames.is_operator and (right is None or right.frames == left.frames):
+            return left
+        if right is not None and not right.frames.is_operator and left is None:
+            return right
+        return None
+    if isinstance(node.op, MatMult):
+        return _frames_of_product(facts, node.left, node.right, order)
+    if isinstance(node.op, Mult):
+        left = frame_fact(facts, node.left, order)
+        if left is not None and left.frames.is_operator and left.frames.operator == "transform":
             return _frames_of_product(facts, node.left, node.right, order)
-        if isinstance(node.op, Mult):
-            left = frame_fact(facts, node.left, order)
-            if left is not None and left.frames.is_operator and left.frames.operator == "transform":
-                return _frames_of_product(facts, node.left, node.right, order)
     return None
 
 

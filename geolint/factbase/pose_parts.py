@@ -531,6 +531,34 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
     there are batch axes ahead of them (`np.zeros((n, 4, 4))`, `torch.eye(4).repeat(n, 1, 1)`)."""
     if depth <= 0:
         return None
+    reshaped = _square_of_reshape(node, index, depth)
+    if reshaped != _UNDECIDED:
+        return reshaped
+    same = _square_of_same_value(node, index, depth)
+    if same != _UNDECIDED:
+        return same
+    if isinstance(node, (ast.List, ast.Tuple)):
+        size = _literal_square(node)
+        return (size, False) if size is not None else None
+    if isinstance(node, Subscript):
+        return _square_of_block(node)
+    if isinstance(node, Attribute):
+        if _quaternion_of(node.value) is not None and node.attr in ("rotation_matrix", "transformation_matrix"):
+            return (3 if node.attr == "rotation_matrix" else 4, False)
+        return None
+    if isinstance(node, Call):
+        return _square_of_maker(node)
+    return None
+
+
+# What the steps of `square_shape` answer when they do not decide, and the next step asks (no shape has size 0;
+# compared by value: the compiled build may box a tuple anew).
+_UNDECIDED: Final = (0, False)
+
+
+def _square_of_reshape(node: ast.expr, index: ModuleIndex, depth: int) -> tuple[int, bool] | None:
+    """`.reshape(n, 4, 4)`, `.view(3, 3)`; `np.tile(R, ...)`, `.repeat(...)`, `.expand(...)`, `.unsqueeze(0)`,
+    `R[None]`: the shape they give (batched when they add axes); `_UNDECIDED` for anything else."""
     if isinstance(node, Call) and isinstance(node.func, Attribute):
         method = node.func.attr
         if method in ("reshape", "view") and node.args:
@@ -539,14 +567,21 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
                 sizes = [int_value(element) for element in node.args[0].elts]
             return _square_of_sizes(sizes)
         if method in ("tile", "repeat", "broadcast_to") and node.args and dotted_name(node.func.value) in ("np", "numpy", "torch"):
-            inner = square_shape(node.args[0], index, depth - 1)
-            return (inner[0], True) if inner is not None else None
+            return _batched(square_shape(node.args[0], index, depth - 1))
         if method in ("repeat", "expand") or (method == "unsqueeze" and int_value(node.args[0] if node.args else None) == 0):
-            inner = square_shape(node.func.value, index, depth - 1)
-            return (inner[0], True) if inner is not None else None
+            return _batched(square_shape(node.func.value, index, depth - 1))
     if isinstance(node, Subscript) and _is_broadcast_index(node) and int_value(subscript_parts(node)[0]) is None:
-        inner = square_shape(node.value, index, depth - 1)
-        return (inner[0], True) if inner is not None else None
+        return _batched(square_shape(node.value, index, depth - 1))
+    return _UNDECIDED
+
+
+def _batched(inner: tuple[int, bool] | None) -> tuple[int, bool] | None:
+    return (inner[0], True) if inner is not None else None
+
+
+def _square_of_same_value(node: ast.expr, index: ModuleIndex, depth: int) -> tuple[int, bool] | None:
+    """The shape of what `node` is the same array as: a copy, a transpose, the value a name is bound
+    to; `_UNDECIDED` when it is none of these."""
     peeled = peel_same_value(node)
     if peeled is not node and not _reshapes(node):
         return square_shape(peeled, index, depth - 1)
@@ -558,38 +593,38 @@ def square_shape(node: ast.expr, index: ModuleIndex, depth: int = 8) -> tuple[in
         if isinstance(value, Unpacked) or value is node:
             return None
         return square_shape(value, index, depth - 1)
-    if isinstance(node, (ast.List, ast.Tuple)):
-        size = _literal_square(node)
-        return (size, False) if size is not None else None
-    if isinstance(node, Subscript):
-        indices = matrix_indices(node)
-        if indices is not None and is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3):
-            return (3, bool(indices[0]))
-        if call_name(node.value) == "Rodrigues" and int_value(node.slice) == 0:
-            return (3, False)
-        return None
-    if isinstance(node, Attribute):
-        if _quaternion_of(node.value) is not None and node.attr in ("rotation_matrix", "transformation_matrix"):
-            return (3 if node.attr == "rotation_matrix" else 4, False)
-        return None
-    if isinstance(node, Call):
-        name = call_name(node)
-        if name in (_SIZE_MAKERS | _FILLED_MAKERS) and not _array_module_call(node):
-            return None  # sympy's `eye(3)` / `zeros(3, 3)` make matrices with flat indexing (`s[3]`)
-        if name in _SIZE_MAKERS and len(node.args) == 1:
-            size = int_value(node.args[0])
-            return (size, False) if size in (3, 4) else None
-        if name in _FILLED_MAKERS and node.args:
-            shape = node.args[0]
-            if isinstance(shape, (ast.Tuple, ast.List)):
-                return _square_of_sizes([int_value(element) for element in shape.elts])
-            if (dotted_name(node.func) or "").split(".")[0] != "torch":
-                return None  # sizes as separate arguments: torch's signature, not numpy's
-            return _square_of_sizes([int_value(argument) for argument in node.args])
-        if name in ROTATION_MAKERS:
-            return (3, False) if not _stacks(node) else None
-        if name in _POSE_MAKERS and _is_tf_style_maker(node):
-            return (4, False)
+    return _UNDECIDED
+
+
+def _square_of_block(node: Subscript) -> tuple[int, bool] | None:
+    """`T[:3, :3]` (3, batched when indexed past a batch axis), `cv2.Rodrigues(r)[0]` (3)."""
+    indices = matrix_indices(node)
+    if indices is not None and is_slice_upto(indices[1], 3) and is_slice_upto(indices[2], 3):
+        return (3, bool(indices[0]))
+    if call_name(node.value) == "Rodrigues" and int_value(node.slice) == 0:
+        return (3, False)
+    return None
+
+
+def _square_of_maker(node: Call) -> tuple[int, bool] | None:
+    """`np.eye(4)`, `np.zeros((n, 3, 3))`, `torch.zeros(4, 4)`, `quat2mat(q)`, tf's `quaternion_matrix(q)`."""
+    name = call_name(node)
+    if name in (_SIZE_MAKERS | _FILLED_MAKERS) and not _array_module_call(node):
+        return None  # sympy's `eye(3)` / `zeros(3, 3)` make matrices with flat indexing (`s[3]`)
+    if name in _SIZE_MAKERS and len(node.args) == 1:
+        size = int_value(node.args[0])
+        return (size, False) if size in (3, 4) else None
+    if name in _FILLED_MAKERS and node.args:
+        shape = node.args[0]
+        if isinstance(shape, (ast.Tuple, ast.List)):
+            return _square_of_sizes([int_value(element) for element in shape.elts])
+        if (dotted_name(node.func) or "").split(".")[0] != "torch":
+            return None  # sizes as separate arguments: torch's signature, not numpy's
+        return _square_of_sizes([int_value(argument) for argument in node.args])
+    if name in ROTATION_MAKERS:
+        return (3, False) if not _stacks(node) else None
+    if name in _POSE_MAKERS and _is_tf_style_maker(node):
+        return (4, False)
     return None
 
 

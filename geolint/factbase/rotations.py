@@ -77,15 +77,9 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
         return None  # every API below says quat / Quat in its name
     qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
-    if qualified.startswith("pytransform3d.") and (name.endswith("_from_quaternion") or name == "check_quaternion"):
+    if _reads_scalar_first(qualified, name):
         return SCALAR_FIRST
-    if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
-        return SCALAR_FIRST
-    if qualified.startswith(("tf.transformations.", "tf_transformations.")) and "quaternion" in name:
-        return SCALAR_LAST
-    if qualified.startswith("geometry_msgs.") and name == "Quaternion":
-        return SCALAR_LAST  # ROS 1 messages take positional fields in declaration order: x, y, z, w
-    if name in _PYBULLET_CONSUMERS:  # on the module or on a BulletClient
+    if _reads_scalar_last(qualified, name):
         return SCALAR_LAST
     if qualified in _EIGEN_QUATERNIONS:
         if any(isinstance(arg, Starred) for arg in call.args):
@@ -96,6 +90,23 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
     if qualified == _GTSAM_ROT3_QUATERNION:
         return SCALAR_FIRST
     return _DATA_CONSUMERS.get(_library_key(qualified, name))
+
+
+def _reads_scalar_first(qualified: str, name: str) -> bool:
+    """pytransform3d's `*_from_quaternion` and spatialmath's quaternions read w first."""
+    return (qualified.startswith("pytransform3d.") and (name.endswith("_from_quaternion") or name == "check_quaternion")) or (
+        qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion")
+    )
+
+
+def _reads_scalar_last(qualified: str, name: str) -> bool:
+    """tf.transformations, ROS 1 messages (positional fields in declaration order: x, y, z, w) and
+    pybullet (on the module or on a BulletClient) read w last."""
+    return (
+        (qualified.startswith(("tf.transformations.", "tf_transformations.")) and "quaternion" in name)
+        or (qualified.startswith("geometry_msgs.") and name == "Quaternion")
+        or name in _PYBULLET_CONSUMERS
+    )
 
 
 # transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion) and the ROS

@@ -259,41 +259,61 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
             yield tform_frames(name)
         return  # Boston Dynamics' `a_tform_b` is read that way or not at all
     if naming.monogram:
-        match = _MONOGRAM_OPERATOR.match(name)
-        if match:
-            letter, dst, src = match.groups()
-            yield NameFrames(dst=dst.lower(), src=src.lower(), operator=_operator(letter))
+        monogram = _monogram_reading(name)
+        if monogram is not None:
+            yield monogram
             return  # `X_WB` is never also `X_<W>_<B>`
-        match = _MONOGRAM_VALUE.match(name)
-        if match:
-            yield NameFrames(frame=match.group(2).lower())
-            return
     if len(raw) == 3:
-        first, middle, last = raw
-        if naming.dst_first and first in TRANSFORM_LETTERS | ROTATION_LETTERS:
-            if is_frame(middle) and is_frame(last):
-                yield NameFrames(dst=middle.lower(), src=last.lower(), operator=_operator(first))
-        if naming.prefix_t and middle in TRANSFORM_LETTERS | ROTATION_LETTERS:
-            if is_frame(first) and is_frame(last):
-                yield NameFrames(dst=first.lower(), src=last.lower(), operator=_operator(middle))
-        lowered = [part.lower() for part in raw]
-        both_known = _is_known_frame(first, known) and _is_known_frame(last, known)
-        if naming.from_style and lowered[1] == "from" and both_known:
-            yield NameFrames(dst=lowered[0], src=lowered[2], operator="unknown")
-        if naming.to_style and lowered[1] == "to" and both_known:
-            yield NameFrames(dst=lowered[2], src=lowered[0], operator="unknown")
-        if naming.from_style and lowered[1] == "in" and lowered[0] in _VALUE_HEADS and _is_known_frame(last, known):
-            yield NameFrames(frame=lowered[2])
+        yield from _three_word_readings(raw, naming, known)
     if len(raw) == 1 and naming.to_style:
         match = _TO_STYLE_COMPACT.match(name)
         if match and _is_known_frame(match.group(1), known) and _is_known_frame(match.group(2), known):
             yield NameFrames(dst=match.group(2).lower(), src=match.group(1).lower(), operator="unknown")
     if len(raw) == 2 and naming.suffix:
-        head, frame = raw[0].lower(), raw[1]
-        # One capital letter is a frame in Drake's two-letter `p_BQ`, not in `v_T` (tendon speed).
-        word_frame = not re.fullmatch(_MONOGRAM_FRAME, frame)
-        if head in _VALUE_HEADS and frame.lower() not in _VALUE_HEADS and word_frame and _is_known_frame(frame, known):
-            yield NameFrames(frame=frame.lower())
+        suffix = _suffix_reading(raw, known)
+        if suffix is not None:
+            yield suffix
+
+
+def _monogram_reading(name: str) -> NameFrames | None:
+    """Drake's monogram names: `X_WB` (an operator), `p_BQ` (a value in frame B)."""
+    match = _MONOGRAM_OPERATOR.match(name)
+    if match:
+        letter, dst, src = match.groups()
+        return NameFrames(dst=dst.lower(), src=src.lower(), operator=_operator(letter))
+    match = _MONOGRAM_VALUE.match(name)
+    if match:
+        return NameFrames(frame=match.group(2).lower())
+    return None
+
+
+def _three_word_readings(raw: list[str], naming, known: frozenset[str]):  # type: ignore[no-untyped-def]
+    """`T_world_cam` (dst-first), `world_T_cam` (prefix T), `world_from_cam`, `cam_to_world`, `points_in_cam`."""
+    first, middle, last = raw
+    if naming.dst_first and first in TRANSFORM_LETTERS | ROTATION_LETTERS:
+        if is_frame(middle) and is_frame(last):
+            yield NameFrames(dst=middle.lower(), src=last.lower(), operator=_operator(first))
+    if naming.prefix_t and middle in TRANSFORM_LETTERS | ROTATION_LETTERS:
+        if is_frame(first) and is_frame(last):
+            yield NameFrames(dst=first.lower(), src=last.lower(), operator=_operator(middle))
+    lowered = [part.lower() for part in raw]
+    both_known = _is_known_frame(first, known) and _is_known_frame(last, known)
+    if naming.from_style and lowered[1] == "from" and both_known:
+        yield NameFrames(dst=lowered[0], src=lowered[2], operator="unknown")
+    if naming.to_style and lowered[1] == "to" and both_known:
+        yield NameFrames(dst=lowered[2], src=lowered[0], operator="unknown")
+    if naming.from_style and lowered[1] == "in" and lowered[0] in _VALUE_HEADS and _is_known_frame(last, known):
+        yield NameFrames(frame=lowered[2])
+
+
+def _suffix_reading(raw: list[str], known: frozenset[str]) -> NameFrames | None:
+    """`p_cam`, `normal_world`: a value word and a frame."""
+    head, frame = raw[0].lower(), raw[1]
+    # One capital letter is a frame in Drake's two-letter `p_BQ`, not in `v_T` (tendon speed).
+    word_frame = not re.fullmatch(_MONOGRAM_FRAME, frame)
+    if head in _VALUE_HEADS and frame.lower() not in _VALUE_HEADS and word_frame and _is_known_frame(frame, known):
+        return NameFrames(frame=frame.lower())
+    return None
 
 
 _VALUE_HEADS = DIRECTION_WORDS | POINT_WORDS | POINT_PREFIXES | FRAMED_VALUE_PREFIXES

@@ -7,7 +7,8 @@ from __future__ import annotations
 import ast
 from ast import BinOp, Call, Div, Mult
 
-from geolint.factbase.angle_units import DEGREES, RADIANS, AngleUnits, helper_reads, unit_word
+from geolint.factbase.angle_units import DEGREES, RADIANS, AngleUnits, unit_word
+from geolint.factbase.helper_units import helper_reads
 from geolint.factbase.model import FactBase
 
 
