@@ -50,6 +50,7 @@ COVERED: dict[tuple[str, str, int], str] = {
     ("docs/ci.md", "pre-commit", 1): f"{INSTALL}::test_pre_commit_hook_from_a_clone_at_a_commit",
     ("docs/ci.md", "pre-commit", 2): f"{INSTALL}::test_pre_commit_try_repo",
     ("docs/frames.md", "Picture the frames: `geolint frames`", 0): "test_command_lines_run",
+    ("docs/linter.md", "Architecture", 0): "tests/engine/test_layers.py::test_the_architecture_section_names_modules_that_exist",
     ("docs/linter.md", "`geolint check`: command line and configuration", 0): "test_command_lines_run",
     ("docs/linter.md", "text", 0): ILLUSTRATION,  # sample output of the text format
     ("docs/linter.md", "text", 1): "test_evidence_sample_is_what_geolint_prints",

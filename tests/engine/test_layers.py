@@ -5,6 +5,7 @@ inside functions included), so a lazy import cannot hide a dependency the wrong 
 from __future__ import annotations
 
 import ast
+import re
 from functools import lru_cache
 from pathlib import Path
 
@@ -129,3 +130,18 @@ def test_the_checks_read_the_real_edges() -> None:
     assert "geolint.factbase.model" in _imports(run_time_only=False)["geolint.factbase.bosdyn"]
     assert "geolint.factbase.model" not in _imports(run_time_only=True)["geolint.factbase.bosdyn"]
     assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [{"a", "b", "c"}]
+
+
+def test_the_architecture_section_names_modules_that_exist() -> None:
+    """docs/linter.md's Architecture section (the layers' diagram and the fact base by question) names
+    files that are there: a module moved or renamed must move in the page too."""
+    page = (PACKAGE.parent / "docs" / "linter.md").read_text(encoding="utf-8")
+    section = page.split("## Architecture", 1)[1].split("\n## ", 1)[0]
+    named = set(re.findall(r"[\w/]+\.py", section))
+    assert len(named) > 30
+    missing = sorted(
+        name
+        for name in named
+        if not any((folder / name).is_file() for folder in (PACKAGE, PACKAGE / "factbase", PACKAGE / "rules", PACKAGE.parent))
+    )
+    assert missing == []
