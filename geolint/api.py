@@ -161,7 +161,7 @@ def lint_paths(
             naming = conventions.project_key(str(source.path)) + ros_packages.package_key(str(source.path))
             if naming:
                 digest = hashlib.blake2b(f"{digest}:{naming}".encode(), digest_size=16).hexdigest()
-            cached = cache.get(source.real_path(), digest, source.display)
+            cached = cache.get(source.real_path(), digest, source.display) if cache is not None else None
             if cached is not None:
                 results[source.display] = FileResult(source.display, tuple(cached), cached=True, location=source.path)
             else:

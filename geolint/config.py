@@ -76,7 +76,9 @@ def _nearest_pyproject(folder: str) -> str | None:
     return None if parent == folder else _nearest_pyproject(parent)
 
 
-nearest_pyproject.cache_clear = _nearest_pyproject.cache_clear  # type: ignore[attr-defined]
+def forget_pyprojects() -> None:
+    """Forget the answers of `nearest_pyproject` (a watching run's configs may have changed)."""
+    _nearest_pyproject.cache_clear()
 
 
 def _has_geolint_table(pyproject: Path) -> bool:

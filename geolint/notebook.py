@@ -18,6 +18,7 @@ import json
 import re
 from dataclasses import dataclass
 from functools import lru_cache
+from json.decoder import scanstring  # type: ignore[attr-defined]  # the decoder's own string scanner; typeshed leaves it out
 from typing import Any
 
 from geolint.lint_types import Config, Finding, Severity
@@ -240,7 +241,7 @@ def _source_spans(raw: str) -> dict[int, tuple[int, int]]:
             if raw[at] == "}":
                 yield None, at + 1, at + 1
                 return
-            key, at = json.decoder.scanstring(raw, at + 1)
+            key, at = scanstring(raw, at + 1)
             begin = skip(skip(at) + 1)  # past ":"
             _, end = decoder.raw_decode(raw, begin)
             yield key, begin, end
@@ -292,7 +293,7 @@ def _json_like(value: str | list[str], old: str, raw: str) -> str:
 
 def _string_spans(array: str) -> list[tuple[int, int, str]] | None:
     """(start, end, value) of each string in a JSON array of strings; None if it holds anything else."""
-    spans = []
+    spans: list[tuple[int, int, str]] = []
     at = 1
     while True:
         at = re.compile(r"[ \t\n\r,]*").match(array, at).end()  # type: ignore[union-attr]
@@ -300,6 +301,6 @@ def _string_spans(array: str) -> list[tuple[int, int, str]] | None:
             return spans
         if array[at] != '"':
             return None
-        text, end = json.decoder.scanstring(array, at + 1)
+        text, end = scanstring(array, at + 1)
         spans.append((at, end, text))
         at = end

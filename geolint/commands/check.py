@@ -263,14 +263,17 @@ def _lint_groups(
     done_before = 0
     for config, sources in groups:
         group_stats: dict[str, int] = {}
-        offset = done_before
+
+        def advanced(done: int, _: int, offset: int = done_before) -> None:
+            progress(offset + done, total)
+
         for result in api.lint_paths(
             [],
             config,
             jobs=args.jobs,
             use_cache=not args.no_cache,
             cache_dir=args.cache_dir,
-            progress=lambda done, _, offset=offset: progress(offset + done, total),
+            progress=advanced,
             stats=group_stats,
             sources=sources,
         ):

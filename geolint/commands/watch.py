@@ -101,10 +101,10 @@ def _run(args: argparse.Namespace, check_once: Callable[[argparse.Namespace], in
 
 def _forget_reads() -> None:
     """Clear what an in-process run remembers of files and configs (no fork to start clean)."""
-    from geolint.config import nearest_pyproject
+    from geolint.config import forget_pyprojects
     from geolint.engine import read_source_lines
 
-    nearest_pyproject.cache_clear()
+    forget_pyprojects()
     read_source_lines.cache_clear()
 
 

@@ -103,8 +103,8 @@ def _bind_one(signature: Signature, shape: CallShape, constant: Callable[[Any], 
                 break
             arguments[parameter.name] = value
     for name, value in shape.keywords.items():
-        parameter = signature.parameter(name)
-        if parameter is None or not parameter.keyword or name in arguments:
+        named = signature.parameter(name)
+        if named is None or not named.keyword or name in arguments:
             return None
         arguments[name] = value
     open_keywords = shape.open_keywords

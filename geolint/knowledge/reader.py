@@ -105,9 +105,9 @@ class _ModuleReader:
             elif isinstance(statement, (ast.ClassDef, ast.FunctionDef)):
                 self.local[statement.name] = f"{prefix}.{statement.name}"
             elif isinstance(statement, ast.Assign) and len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Name):
-                target = _dotted(statement.value)
-                if target is not None:  # `quat2mat = quaternion_matrix`: the same API under a second name
-                    head, _, rest = target.partition(".")
+                aliased = _dotted(statement.value)
+                if aliased is not None:  # `quat2mat = quaternion_matrix`: the same API under a second name
+                    head, _, rest = aliased.partition(".")
                     resolved = self.local.get(head, f"{prefix}.{head}")
                     self.library.aliases[f"{prefix}.{statement.targets[0].id}"] = f"{resolved}.{rest}" if rest else resolved
 
@@ -152,7 +152,7 @@ class _ModuleReader:
 
     def _signature(self, node: ast.FunctionDef, in_class: bool) -> Signature:
         decorators = {_last(decorator.func if isinstance(decorator, ast.Call) else decorator) for decorator in node.decorator_list}
-        unknown = decorators - _KEPT_DECORATORS - {None}
+        unknown = {decorator for decorator in decorators if decorator is not None} - _KEPT_DECORATORS
         if unknown:
             raise StubError(f"{self.label}:{node.lineno}: unknown decorator {sorted(unknown)} (see geolint.knowledge.markers)")
         arguments = node.args

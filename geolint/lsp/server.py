@@ -117,13 +117,13 @@ class GeolintLanguageServer(LanguageServer):
 
     def _start_io_async(self, stdin: BinaryIO | None = None, stdout: BinaryIO | None = None) -> None:
         """pygls' stdio loop, with frames read by `framing.FrameReader` (a bad frame costs only itself)."""
-        self._stop_event = threading.Event()
+        stop = self._stop_event = threading.Event()
         self.protocol.set_writer(StdoutWriter(stdout or sys.stdout.buffer))
         stdin_fd = (stdin or sys.stdin.buffer).fileno()
 
         async def serve() -> None:
             frames = FrameReader(stdin_chunks(stdin_fd))
-            while not self._stop_event.is_set():
+            while not stop.is_set():
                 body = await frames.next_body()
                 if body is None:
                     break

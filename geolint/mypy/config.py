@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import configparser
 import hashlib
+import sys
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -77,10 +78,10 @@ def load(config_file: str | None) -> PluginConfig:
 
 
 def _from_toml(path: Path) -> PluginConfig:
-    try:
+    if sys.version_info >= (3, 11):
         import tomllib
-    except ImportError:  # Python 3.10
-        import tomli as tomllib  # type: ignore[no-redef]
+    else:
+        import tomli as tomllib
     with path.open("rb") as stream:
         data = tomllib.load(stream)  # mypy has parsed this file already: a syntax error never gets here
     section_name = f"tool.{SECTION}"

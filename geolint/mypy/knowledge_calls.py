@@ -9,7 +9,7 @@ mypy has already checked the call against the library's own annotations.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import lru_cache, partial
 from typing import Any, Callable
 
 from mypy.nodes import Expression, IntExpr, NameExpr, StrExpr
@@ -85,7 +85,7 @@ def _check_call(ctx: _CallContext, api: Api) -> Type:
     }
     bounds = bind_shape(api, CallShape([], arguments), _literal)
     for name, expression in arguments.items():
-        wanted = agreed(bounds, lambda bound, name=name: _parameter_order(bound, name))
+        wanted = agreed(bounds, partial(_parameter_order, name=name))
         given = _order_of_type(ctx.api.expr_checker.accept(expression)) if wanted is not None else None  # type: ignore[attr-defined]
         if wanted is not None and given is not None and given != wanted:
             ctx.api.fail(

@@ -58,7 +58,7 @@ def pytransform3d_vector_to_point(ctx: FunctionContext) -> Type:
     outcome = algebra.homogenize(value, 1) if value is not None else None
     if outcome is None or outcome.result is None:
         return ctx.default_return_type
-    if outcome.result.kind == geometry.VECTOR_WITH_W1:
+    if value is not None and outcome.result.kind == geometry.VECTOR_WITH_W1:
         outcome = Outcome(outcome.result, Problem(GEO_TRANSLATION, messages.vector_made_point("vector_to_point", value)))
     return report_and_build(ctx, outcome)
 
