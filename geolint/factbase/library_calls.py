@@ -29,7 +29,7 @@ def knowledge(facts: FactBase) -> KnowledgeBase:
 
 def called_api(facts: FactBase, call: Call) -> Api | None:
     """The library API `call` calls, or None."""
-    return facts.memoised("library api", call, lambda: _called_api(facts, call))
+    return facts.cached("library api", call, _called_api)  # guarded: `x = x.step()` asks for its own receiver
 
 
 def library_call(facts: FactBase, call: Call) -> list[Bound]:

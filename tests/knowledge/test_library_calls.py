@@ -66,3 +66,27 @@ def test_a_keyword_decided_at_run_time_gives_no_answer() -> None:
         """
     )
     assert quaternion_inputs(facts, calls["Rotation.from_quat(q, scalar_first=flag)"]) == []  # type: ignore[arg-type]
+
+
+def test_a_name_rebound_from_its_own_method_call_in_a_loop_has_no_library_type() -> None:
+    """`pose = pose.detach()` in a loop: the receiver's value is the call itself. The question of its
+    type is a cycle, answered "unknown" (it once recursed until Python gave up: the file was lost)."""
+    facts, calls = _calls(
+        """
+        from scipy.spatial.transform import Rotation
+        def refine(pose, steps):
+            current = pose
+            for _ in range(steps):
+                current = current.detach()
+                current = Rotation.from_quat(current.as_quat())
+            return current
+        """
+    )
+    from geolint.factbase.library_calls import called_api
+
+    call = calls["current.detach()"]
+    receiver = call.func.value  # type: ignore[attr-defined]
+    assert library_type(facts, receiver) is None  # type: ignore[arg-type]
+    assert called_api(facts, call) is None  # type: ignore[arg-type]
+    as_quat = calls["current.as_quat()"]
+    assert called_api(facts, as_quat) is None  # type: ignore[arg-type]  # `current` may be anything on the first pass
