@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import ast
 import codecs
-import io
 import re
 import tokenize
 from functools import lru_cache

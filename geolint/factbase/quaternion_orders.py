@@ -29,7 +29,8 @@ from geolint.factbase.memo import NodeMemo
 from geolint.factbase.messages import QUATERNION_FIELD_NAMES, MessageTypes, field_label, field_order
 from geolint.factbase.syntax import is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts, walk_within
 from geolint.factbase.quaternion_formulas import formula_reads_within
-from geolint.factbase.quaternion_components import is_ellipsis, same_base, spelled_components
+from geolint.factbase.reaching import value_of
+from geolint.factbase.quaternion_components import is_ellipsis, named_order, same_base, spelled_components
 from geolint.factbase.rotations import (
     SCALAR_FIRST,
     SCALAR_LAST,
@@ -46,7 +47,6 @@ from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHO
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
 
-COMPONENTS: Final = "wxyz"
 STANDARD_ORDERS: Final = (SCALAR_FIRST, SCALAR_LAST)
 # mujoco's quaternion arrays (w, x, y, z), one row per body/geom/site/camera.
 _MUJOCO_ATTRIBUTES: Final = frozenset({"xquat", "body_xquat", "body_quat", "geom_quat", "site_quat", "cam_quat", "body_iquat"})
@@ -267,7 +267,8 @@ class QuaternionFlow:
 
     def _order_of_spelled(self, node: ast.expr, elements: list[ast.expr]) -> Order | None:
         """`[qw, qx, qy, qz]`, `[o.x, o.y, o.z, o.w]`, or `[q[0], q[1], q[2], q[3]]` of a quaternion `q`."""
-        order = _spelled_order(elements)
+        order = named_order(elements)
+        order = order if order in STANDARD_ORDERS else None
         if order is not None:
             return Order(order, f"from components spelled out at line {node.lineno}")
         spelled = same_base(self.facts, elements)
@@ -521,35 +522,6 @@ def _index_list(facts: FactBase, node: AST) -> tuple[int, ...] | None:
     return permutation
 
 
-def _spelled_order(elements: list[ast.expr]) -> str | None:
-    """'wxyz' for `[q.w, q.x, q.y, q.z]` or `[qw, qx, qy, qz]` (one owner, each component once)."""
-    letters = []
-    owners = set()
-    for element in elements:
-        if isinstance(element, Attribute) and element.attr in COMPONENTS:
-            letters.append(element.attr)
-            owners.add(ast.dump(element.value))
-        elif isinstance(element, Subscript) and (key := string(element.slice)) is not None and key in tuple(COMPONENTS):
-            letters.append(key)
-            owners.add(ast.dump(element.value))
-        elif isinstance(element, Name):
-            lowered = element.id.lower()
-            for prefix in ("q_", "quat_", "q", "quat", "rot_", "orientation_", "ori_", ""):
-                rest = lowered[len(prefix) :]
-                if lowered.startswith(prefix) and len(rest) == 1 and rest in COMPONENTS:
-                    letters.append(rest)
-                    owners.add(prefix)
-                    break
-            else:
-                return None
-        else:
-            return None
-    order = "".join(letters)  # type: ignore[arg-type]
-    if len(owners) != 1 or sorted(order) != sorted(COMPONENTS) or order not in STANDARD_ORDERS:
-        return None
-    return order
-
-
 def convention(order: str) -> str:
     return "scalar-first (w, x, y, z)" if order == SCALAR_FIRST else "scalar-last (x, y, z, w)" if order == SCALAR_LAST else label(order)
 
@@ -691,3 +663,38 @@ def _bound_quaternion_summary(summary: QuaternionSummary) -> QuaternionSummary:
 
 
 QUATERNIONS: Final = SummaryFamily("quaternions", QuaternionSummary, _summarize_quaternions, _bound_quaternion_summary)
+
+
+# --- flags that name an order: `def quat_mul(a, b, w_last)` ----------------------------------------
+
+ORDER_FLAGS: Final = frozenset({"w_last", "w_first", "scalar_first", "scalar_last", "wxyz", "xyzw", "is_wxyz", "is_xyzw"})
+_ORDER_FLAG_WORDS: Final = ("w_last", "w_first", "scalar_first", "scalar_last", "is_wxyz", "is_xyzw")
+_ORDER_FLAG_TEXT: Final = re.compile(rf"\b(?:{'|'.join(_ORDER_FLAG_WORDS)})\b")
+
+
+def mentions_order_flag(source: str) -> bool:
+    """`_ORDER_FLAG_TEXT` in `source`, its words looked for first (a regex led by an alternation has no
+    literal to scan for, and this runs on every module)."""
+    return any(word in source for word in _ORDER_FLAG_WORDS) and _ORDER_FLAG_TEXT.search(source) is not None
+# project operations that return a quaternion in the order their flag names (isaacgym-style
+# `quat_mul(a, b, w_last)`), as opposed to ones returning vectors or angles (`quat_rotate`, `calc_heading`)
+_QUATERNION_RESULT: Final = re.compile(
+    r"^(?:quat_(?:mul|mul_norm|multiply|product|conjugate|inv|inverse|unit|normalize|pos|identity(?:_like)?|from_\w+)|"
+    r"\w+_to_quat(?:ernion)?|quaternion_(?:multiply|product|invert|conjugate|raw_multiply))$"
+)
+
+
+def flag_ordered_producer(facts: FactBase, node: ast.expr, flag: str) -> Call | None:
+    """The call `node` certainly holds when it is a quaternion operation handed the order flag."""
+    for _ in range(4):
+        if isinstance(node, Name):
+            bound = value_of(facts.index, node)
+            if not isinstance(bound, ast.expr):
+                return None
+            node = bound
+            continue
+        break
+    if not isinstance(node, Call) or not _QUATERNION_RESULT.match(last_name(node.func) or ""):
+        return None
+    passed = [*node.args, *(given.value for given in node.keywords)]
+    return node if any(isinstance(arg, Name) and arg.id == flag for arg in passed) else None

@@ -22,7 +22,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from mypy.errorcodes import ErrorCode
-from mypy.types import ProperType
 
 from geolint import algebra as shared
 from geolint.algebra import Kind

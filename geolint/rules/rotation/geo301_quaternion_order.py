@@ -6,8 +6,8 @@ from typing import Final
 
 import ast
 from ast import (
-    AST, Assign, AsyncFunctionDef, Attribute, BinOp, Call, Constant, FunctionDef, If, IfExp, Load, Match, Name,
-    Slice, Starred, Subscript, UnaryOp, While,
+    AST, Assign, AsyncFunctionDef, Attribute, BinOp, Call, FunctionDef, If, IfExp, Load, Match, Name,
+    Starred, Subscript, UnaryOp, While,
 )
 import re
 from dataclasses import dataclass
@@ -37,7 +37,9 @@ from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.factbase.quaternion_formulas import formula_reads
 from geolint.factbase.quaternion_orders import (
     QUATERNIONS,
-    COMPONENTS,
+    ORDER_FLAGS,
+    flag_ordered_producer,
+    mentions_order_flag,
     STANDARD_ORDERS,
     QuaternionFlow,
     Reorder,
@@ -47,9 +49,17 @@ from geolint.factbase.quaternion_orders import (
     permutation_between,
     permuted,
 )
-from geolint.factbase.quaternion_components import same_base, spelled_components, unwrapped_scalar
+from geolint.factbase.quaternion_components import (
+    COMPONENTS,
+    component_name,
+    literal_components,
+    named_order,
+    order_dependent_part,
+    same_base,
+    spelled_components,
+    unwrapped_scalar,
+)
 
-_COMPONENTS: Final = "wxyz"
 
 
 @dataclass(frozen=True)
@@ -101,7 +111,7 @@ _GATE_OR_ORDER_NAME: Final = _GateOrOrderName()
 # the expressions `QuaternionFlow.order_of` / `reorder_of` can know something of; for any other (a
 # constant, an f-string, a comparison...) both are None, found without following anything
 _MAY_HAVE_ORDER: Final = frozenset({UnaryOp, BinOp, Call, Name, Attribute, Subscript, ast.List, ast.Tuple})
-_LETTERS: Final = frozenset(_COMPONENTS)
+_LETTERS: Final = frozenset(COMPONENTS)
 
 
 class QuaternionOrder(FactRule):
@@ -463,7 +473,7 @@ class QuaternionOrder(FactRule):
             self._check(node, flow, isaac)  # type: ignore[arg-type]
         self._check_component_writes(flow)
         self._check_formula_reads(flow)
-        if _mentions_order_flag(facts.index.source):
+        if mentions_order_flag(facts.index.source):
             self._check_order_flag_slices()
         named_reads: dict[tuple[int, str, str], dict[str, tuple[Name, Subscript]]] = {}
         for node in facts.index.nodes(Assign):
@@ -483,7 +493,7 @@ class QuaternionOrder(FactRule):
         one value of the flag only."""
         facts = self.facts
         for function in facts.index.nodes(FunctionDef, AsyncFunctionDef):
-            flags = {arg.arg for arg in (*function.args.posonlyargs, *function.args.args, *function.args.kwonlyargs)} & _ORDER_FLAGS  # type: ignore[attr-defined]
+            flags = {arg.arg for arg in (*function.args.posonlyargs, *function.args.args, *function.args.kwonlyargs)} & ORDER_FLAGS  # type: ignore[attr-defined]
             if len(flags) != 1:
                 continue
             (flag,) = flags
@@ -492,10 +502,10 @@ class QuaternionOrder(FactRule):
                     continue
                 if facts.index.scope_of(node).node is not function:
                     continue
-                where = _order_dependent_part(node)
+                where = order_dependent_part(node)
                 if where is None:
                     continue
-                producer = _flag_ordered_producer(facts, node.value, flag)
+                producer = flag_ordered_producer(facts, node.value, flag)
                 if producer is None or _under_branch_on(facts, node, function):  # type: ignore[arg-type]
                     continue
                 other = {"vector": "the scalar", "scalar": "a vector component"}[where]
@@ -575,7 +585,7 @@ class QuaternionOrder(FactRule):
         field = _MessageField(target, cls)
         elements = spelled_components(self.facts, node.value)
         if elements is not None:
-            order = _order(self.facts, elements)
+            order = named_order(elements)
             if order is not None:
                 if order != expected and _is_other_convention(order, expected):
                     self._report(node.value, field, elements, order, expected)
@@ -594,24 +604,31 @@ class QuaternionOrder(FactRule):
         return False
 
     def _check(self, node: Call, flow: QuaternionFlow, isaac: bool) -> None:
-        facts = self.facts
         self._check_helper(node, flow)
+        self._check_stated_parameters(node, flow, isaac)
+        expected = quaternion_order(self.facts, node)
+        if expected is not None:
+            self._check_arguments(node, expected, flow)
+
+    def _check_stated_parameters(self, node: Call, flow: QuaternionFlow, isaac: bool) -> None:
+        """Arguments whose order the simulator's API or the parameter's own name states."""
         if last_name(node.func) in PYBULLET_ORIENTATION_CALLS:
             for orientation in pybullet_orientation_arguments(node):
                 self._check_value(node, orientation, SCALAR_LAST, flow)
         if isaac:
-            for orientation in isaac_orientation_arguments(facts, node):
+            for orientation in isaac_orientation_arguments(self.facts, node):
                 self._check_value(node, orientation, SCALAR_FIRST, flow)
         for given in node.keywords:  # `PoseTrajectory3D(orientations_quat_wxyz=q)`: the parameter states its order
             stated = name_order(given.arg) if given.arg is not None else None
             if given.arg is not None and stated in STANDARD_ORDERS:
                 self._check_value(_Keyword(node, given.arg), given.value, stated, flow)  # type: ignore[arg-type]
-        expected = quaternion_order(facts, node)
-        if expected is None:
-            return
+
+    def _check_arguments(self, node: Call, expected: str, flow: QuaternionFlow) -> None:
+        """The quaternion handed to an API that expects `expected`: four components, a spelled list, or a value."""
+        facts = self.facts
         positional = positional_args(node)
         if len(positional) == 4 and len(node.args) == 4 and not node.keywords:
-            order = _order(facts, positional)
+            order = named_order(positional)
             if order is not None and _names_mislabel_unpacked(facts, flow, positional):
                 return  # `w, x, y, z = as_quat()`: the names lie about the components, the positions decide
             if order is not None and order != expected and _is_other_convention(order, expected):
@@ -624,7 +641,7 @@ class QuaternionOrder(FactRule):
         if positional and isinstance(positional[0], (ast.List, ast.Tuple)):
             elements = list(positional[0].elts)
             if len(elements) == 4 and not any(isinstance(element, Starred) for element in elements):
-                order = _order(facts, elements)
+                order = named_order(elements)
                 if order is not None:
                     if _names_mislabel_unpacked(facts, flow, elements):
                         return  # `w, x, y, z = as_quat()`: the names lie about the components, the positions decide
@@ -709,7 +726,7 @@ class QuaternionOrder(FactRule):
             literal, shown = argument, f"`{self.code_of(argument)}` is commented as the identity and is"
         else:
             return
-        values = _numbers(self.facts, literal)
+        values = literal_components(self.facts, literal)
         if not (values == [0, 0, 0, 1] and expected == SCALAR_FIRST or values == [1, 0, 0, 0] and expected == SCALAR_LAST):
             return
         written = SCALAR_LAST if values[3] == 1 else SCALAR_FIRST
@@ -838,7 +855,7 @@ class QuaternionOrder(FactRule):
         self, reported: AST, mapping: dict[str, ast.expr], flow: QuaternionFlow, shape: str, fixable: bool = True
     ) -> None:
         facts = self.facts
-        named = {letter: _component(facts, value) for letter, value in mapping.items()}
+        named = {letter: component_name(value) for letter, value in mapping.items()}
         if all(found is not None and found[1] for found in named.values()) and len({found[1] for found in named.values()}) == 1:  # type: ignore[index]
             source = named["w"][0]  # type: ignore[index]
             if sorted(found[0] for found in named.values()) == sorted(COMPONENTS) and source != "w":  # type: ignore[index]
@@ -885,56 +902,6 @@ class QuaternionOrder(FactRule):
         )
 
 
-_ORDER_FLAGS: Final = frozenset({"w_last", "w_first", "scalar_first", "scalar_last", "wxyz", "xyzw", "is_wxyz", "is_xyzw"})
-_ORDER_FLAG_WORDS: Final = ("w_last", "w_first", "scalar_first", "scalar_last", "is_wxyz", "is_xyzw")
-_ORDER_FLAG_TEXT: Final = re.compile(rf"\b(?:{'|'.join(_ORDER_FLAG_WORDS)})\b")
-
-
-def _mentions_order_flag(source: str) -> bool:
-    """`_ORDER_FLAG_TEXT` in `source`, its words looked for first (a regex led by an alternation has no
-    literal to scan for, and this runs on every module)."""
-    return any(word in source for word in _ORDER_FLAG_WORDS) and _ORDER_FLAG_TEXT.search(source) is not None
-# project operations that return a quaternion in the order their flag names (isaacgym-style
-# `quat_mul(a, b, w_last)`), as opposed to ones returning vectors or angles (`quat_rotate`, `calc_heading`)
-_QUATERNION_RESULT: Final = re.compile(
-    r"^(?:quat_(?:mul|mul_norm|multiply|product|conjugate|inv|inverse|unit|normalize|pos|identity(?:_like)?|from_\w+)|"
-    r"\w+_to_quat(?:ernion)?|quaternion_(?:multiply|product|invert|conjugate|raw_multiply))$"
-)
-
-
-def _order_dependent_part(node: Subscript) -> str | None:
-    """`x[:, 1:]` / `x[..., :3]`: 'vector' (the vector part of one order); `x[..., 0]` / `x[:, 3]`: 'scalar'."""
-    parts = subscript_parts(node)
-    if len(parts) < 2 or not all(isinstance(part, Slice) and part.lower is part.upper is part.step is None or (isinstance(part, Constant) and part.value is Ellipsis) for part in parts[:-1]):
-        return None  # a lone `q[0]` may be a row of a stack: only indexing after leading `:` / `...` is judged
-    last = parts[-1]
-    if isinstance(last, Slice) and last.step is None:
-        bounds = (number(last.lower) if last.lower is not None else 0, number(last.upper) if last.upper is not None else 4)
-        if bounds in ((1, 4), (0, 3), (0, -1)):
-            return "vector"
-        if bounds in ((0, 1), (3, 4), (-1, 4)):
-            return "scalar"
-        return None
-    value = number(last)
-    return "scalar" if value in (0, 3, -1) and not isinstance(value, bool) else None
-
-
-def _flag_ordered_producer(facts: FactBase, node: ast.expr, flag: str) -> Call | None:
-    """The call `node` certainly holds when it is a quaternion operation handed the order flag."""
-    for _ in range(4):
-        if isinstance(node, Name):
-            bound = value_of(facts.index, node)
-            if not isinstance(bound, ast.expr):
-                return None
-            node = bound
-            continue
-        break
-    if not isinstance(node, Call) or not _QUATERNION_RESULT.match(last_name(node.func) or ""):
-        return None
-    passed = [*node.args, *(given.value for given in node.keywords)]
-    return node if any(isinstance(arg, Name) and arg.id == flag for arg in passed) else None
-
-
 def _under_branch_on(facts: FactBase, node: AST, function: AST) -> bool:
     """Whether a branch encloses `node` (one on the flag picks the positions; any other, to be safe)."""
     current = facts.parent(node)
@@ -953,7 +920,7 @@ def _collect_named_read(facts: FactBase, node: Assign, groups: dict[tuple[int, s
     target, value = node.targets[0], node.value
     if not isinstance(value.value, Name) or type(number(value.slice)) is not int:
         return
-    component = _component(facts, target)
+    component = component_name(target)
     if component is None or component[1] == "":
         return  # a bare `x = q[0]` may be anything; `qx`, `ori_x`, `quat_w` say a quaternion component
     key = (id(facts.index.scope_of(node).node), value.value.id, component[1])
@@ -962,18 +929,6 @@ def _collect_named_read(facts: FactBase, node: Assign, groups: dict[tuple[int, s
 
 def _is_other_convention(order: str, expected: str) -> bool:
     return {order, expected} == {SCALAR_FIRST, SCALAR_LAST}
-
-
-def _order(facts: FactBase, values: list[ast.expr]) -> str | None:
-    """'wxyz' for `[q.w, q.x, q.y, q.z]` (attributes of one object, or names like qw/q_w/w)."""
-    components = [_component(facts, value) for value in values]
-    if any(component is None for component in components):
-        return None
-    letters = "".join(component[0] for component in components)  # type: ignore[index]
-    owners = {component[1] for component in components}  # type: ignore[index]
-    if sorted(letters) != sorted(_COMPONENTS) or len(owners) != 1:
-        return None
-    return letters
 
 
 def _names_mislabel_unpacked(facts: FactBase, flow: QuaternionFlow, values: list[ast.expr]) -> bool:
@@ -987,32 +942,12 @@ def _names_mislabel_unpacked(facts: FactBase, flow: QuaternionFlow, values: list
         if not isinstance(bound, Unpacked) or len(bound.names) != 4:
             continue
         source = flow.order_of(bound.value)
-        component = _component(facts, value)
+        component = component_name(value)
         if source is None or source.batch or component is None or len(source.order) != 4:
             continue
         if source.order[bound.index] != component[0]:
             return True
     return False
-
-
-def _component(facts: FactBase, value: ast.expr) -> tuple[str, str] | None:
-    """The quaternion component a value names, with what it belongs to."""
-    if isinstance(value, Attribute) and value.attr in _COMPONENTS:
-        return value.attr, ast.dump(value.value)
-    if isinstance(value, Subscript):
-        key = string(value.slice)
-        if key is not None and key in _COMPONENTS and len(key) == 1:
-            return key, ast.dump(value.value)
-    if not isinstance(value, Name):
-        return None
-    lowered = value.id.lower()
-    if lowered in _COMPONENTS and len(lowered) == 1:
-        return lowered, ""
-    for prefix in ("q", "q_", "quat_", "quat", "rot_", "orientation_", "ori_"):
-        rest = lowered[len(prefix) :]
-        if lowered.startswith(prefix) and len(rest) == 1 and rest in _COMPONENTS:
-            return rest, prefix
-    return None
 
 
 def _takes_stacks(facts: FactBase, call: Call | _MessageField | _Helper | _Keyword) -> bool:
@@ -1040,15 +975,6 @@ def _identity_comment(source: str, node: ast.expr) -> bool:
 
 
 _IDENTITY_COMMENT: Final = re.compile(r"(?i)\b(?:identity|no rotation|unrotated)\b")
-
-
-def _numbers(facts: FactBase, node: ast.expr) -> list[float] | None:
-    """`[0, 0, 0, 1]`, `(0., 0., 0., 1.)`, `np.array([...])`, `torch.tensor([...])`: four literal numbers."""
-    elements = spelled_components(facts, node)
-    if elements is None:
-        return None
-    values = [number(element) for element in elements]
-    return None if any(value is None or isinstance(value, bool) for value in values) else values  # type: ignore[return-value]
 
 
 def _last_index(node: AST) -> ast.expr:

@@ -19,7 +19,7 @@ from geolint.rules.fact_rule import FactRule
 from geolint.factbase.vocabulary import any_match_at
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.quaternion_components import same_base, unwrapped_scalar
-from geolint.factbase.quaternion_orders import COMPONENTS
+from geolint.factbase.quaternion_components import COMPONENTS
 from geolint.rules.triggers import AllOf
 
 # Words that make a name a quaternion on their own, and `q`, which needs a second witness
