@@ -232,25 +232,31 @@ class FreeVectorsLeftBehind(FactRule):
     def _is_operator(self, node: AST, depth: int = 0) -> bool:
         """Whether a product with `node` rotates what it multiplies (a rotation or a pose, maybe inverted)."""
         facts = self.facts
-        node = _peel(node)
-        if isinstance(node, Call) and last_name(node.func) in ("inv", "inverse", "pinv") and node.args:
-            node = _peel(node.args[0])
-        if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in ("inv", "inverse", "inverted"):
-            node = _peel(node.func.value)
+        node = _uninverted(node)
         qualified = facts.qualified_name(node.func) if isinstance(node, Call) else None
         if qualified and qualified.endswith("translation_matrix"):
             return False
         if facts.rotation_block_of(node) is not None:
             return True
+        said = self._named_operator(node)
+        return said if said is not None else self._built_operator(node, depth)
+
+    def _named_operator(self, node: AST) -> bool | None:
+        """What the name (or string key) of `node` says: an operator, not one, or nothing (None)."""
         word = string(node.slice) if isinstance(node, Subscript) else last_name(node)
-        if word is not None:
-            parts = set(tokens(word))
-            if parts & _NOT_OPERATOR_TOKENS:
-                return False
-            if word == "T" or word.startswith("T_") or word == "rotation_matrix" or parts & _OPERATOR_TOKENS:
-                return True
-            if facts.kind_of(node) in OPERATORS:
-                return True
+        if word is None:
+            return None
+        parts = set(tokens(word))
+        if parts & _NOT_OPERATOR_TOKENS:
+            return False
+        if word == "T" or word.startswith("T_") or word == "rotation_matrix" or parts & _OPERATOR_TOKENS:
+            return True
+        return True if self.facts.kind_of(node) in OPERATORS else None
+
+    def _built_operator(self, node: AST, depth: int) -> bool:
+        """A rotation made by a call (`Rz(a)`, `np.array([[cos, -sin], ...])`), or a product or a name
+        of operators only."""
+        facts = self.facts
         if isinstance(node, Call):
             if _ROTATION_MAKER.search(last_name(node.func) or ""):
                 return True
@@ -346,20 +352,33 @@ class FreeVectorsLeftBehind(FactRule):
     ) -> list[str]:
         written = [m for m in (self._written_member(target) for target, _ in stores) if m is not None and m.owner == moved.owner]
         touched = self._touched(body)
-        found: list[str] = []
         if moved.name is not None:
-            candidates = self._named_members(moved, function, body)
-            for name, role in candidates:
-                # `self.normals = ...` (a property) writes `self.normals_`/`self._normals` too
-                if any(m.name is not None and m.name.strip("_") == name.strip("_") for m in written):
-                    continue
-                if any(owner == moved.owner and isinstance(member, str) and member.strip("_") == name.strip("_") for owner, member in touched):
-                    continue
-                if moved.name in ("points",) and name in ("normals", "vertex_normals"):
-                    continue  # GEO104's case
-                spelled = f"{moved.owner}[{name!r}]" if isinstance(moved.node, Subscript) else f"{moved.owner}.{name}"
-                found.append(f"`{spelled}` ({'free vector' if role == 'free' else 'orientation'})")
-            return found
+            return self._members_left_behind(moved, function, body, written, touched)
+        return self._columns_left_behind(moved, how, function, written, touched, layouts)
+
+    def _members_left_behind(
+        self, moved: _Member, function: AST, body: list[AST], written: list[_Member], touched: set[tuple[str, str | int | None]]
+    ) -> list[str]:
+        """`self.normals` when `self.points` moved: the named members that are free vectors or orientations."""
+        found: list[str] = []
+        candidates = self._named_members(moved, function, body)
+        for name, role in candidates:
+            # `self.normals = ...` (a property) writes `self.normals_`/`self._normals` too
+            if any(m.name is not None and m.name.strip("_") == name.strip("_") for m in written):
+                continue
+            if any(owner == moved.owner and isinstance(member, str) and member.strip("_") == name.strip("_") for owner, member in touched):
+                continue
+            if moved.name in ("points",) and name in ("normals", "vertex_normals"):
+                continue  # GEO104's case
+            spelled = f"{moved.owner}[{name!r}]" if isinstance(moved.node, Subscript) else f"{moved.owner}.{name}"
+            found.append(f"`{spelled}` ({'free vector' if role == 'free' else 'orientation'})")
+        return found
+
+    def _columns_left_behind(
+        self, moved: _Member, how: str, function: AST, written: list[_Member], touched: set[tuple[str, str | int | None]], layouts: _Layouts
+    ) -> list[str]:
+        """The velocity and heading columns of a box array whose position columns moved."""
+        found: list[str] = []
         layout = layouts.of(moved.owner, self.facts, function)
         if layout is None:
             return []
@@ -544,33 +563,9 @@ class FreeVectorsLeftBehind(FactRule):
 
     # -- returned (or stacked) together ----------------------------------------------------------
     def _check_returned_together(self, function: AST, body: list[AST], scope) -> None:  # type: ignore[no-untyped-def]
-        groups: list[list[ast.expr]] = []
-        for value in scope.returns:
-            if isinstance(value, (ast.Tuple, ast.List)):
-                groups.append(list(value.elts))
-            elif isinstance(value, ast.Dict):
-                groups.append([v for v in value.values if v is not None])
-        for node in body:
-            if isinstance(node, Call) and last_name(node.func) in _STACKERS and self.facts.is_array_call(node.func, *_STACKERS):
-                arguments = positional_args(node)
-                if arguments and isinstance(arguments[0], (ast.List, ast.Tuple)):
-                    groups.append(list(arguments[0].elts))
-        # stored into members of one object: `pcd.points = Vector3dVector(pts_world)`, `pcd.normals = ...`
-        wrappers: set[int] = set()
-        by_owner: dict[str, list[ast.expr]] = {}
-        for node in body:
-            if isinstance(node, Assign) and len(node.targets) == 1 and isinstance(node.targets[0], (Attribute, Subscript)):
-                word = node.targets[0].attr if isinstance(node.targets[0], Attribute) else string(node.targets[0].slice)
-                if word is None or _role(word) not in ("position", "free"):
-                    continue
-                member = self._member(node.targets[0])
-                if member is None or member.columns is not None:
-                    continue
-                value, wrapper = self._unwrapped(node.value)
-                if wrapper is not None:
-                    wrappers.add(id(wrapper))
-                by_owner.setdefault(member.owner, []).append(value)
-        groups += [values for values in by_owner.values() if len(values) > 1]
+        groups = self._returned_or_stacked_together(body, scope)
+        stored, wrappers = self._stored_together(body)
+        groups += stored
         touched: set | None = None  # type: ignore[type-arg]
         for group in groups:
             names = [element for element in group if isinstance(element, Name)]
@@ -591,6 +586,40 @@ class FreeVectorsLeftBehind(FactRule):
                     "passed on with; rotate that too",
                 )
                 return
+
+    def _returned_or_stacked_together(self, body: list[AST], scope) -> list[list[ast.expr]]:  # type: ignore[no-untyped-def]
+        """Values returned together (`return pts, normals`) or stacked together (`np.hstack([pts, normals])`)."""
+        groups: list[list[ast.expr]] = []
+        for value in scope.returns:
+            if isinstance(value, (ast.Tuple, ast.List)):
+                groups.append(list(value.elts))
+            elif isinstance(value, ast.Dict):
+                groups.append([v for v in value.values if v is not None])
+        for node in body:
+            if isinstance(node, Call) and last_name(node.func) in _STACKERS and self.facts.is_array_call(node.func, *_STACKERS):
+                arguments = positional_args(node)
+                if arguments and isinstance(arguments[0], (ast.List, ast.Tuple)):
+                    groups.append(list(arguments[0].elts))
+        return groups
+
+    def _stored_together(self, body: list[AST]) -> tuple[list[list[ast.expr]], set[int]]:
+        """Values stored into position and free-vector members of one object (`pcd.points =
+        Vector3dVector(pts_world)`, `pcd.normals = ...`), and the wrapping calls (not rotations)."""
+        wrappers: set[int] = set()
+        by_owner: dict[str, list[ast.expr]] = {}
+        for node in body:
+            if isinstance(node, Assign) and len(node.targets) == 1 and isinstance(node.targets[0], (Attribute, Subscript)):
+                word = node.targets[0].attr if isinstance(node.targets[0], Attribute) else string(node.targets[0].slice)
+                if word is None or _role(word) not in ("position", "free"):
+                    continue
+                member = self._member(node.targets[0])
+                if member is None or member.columns is not None:
+                    continue
+                value, wrapper = self._unwrapped(node.value)
+                if wrapper is not None:
+                    wrappers.add(id(wrapper))
+                by_owner.setdefault(member.owner, []).append(value)
+        return [values for values in by_owner.values() if len(values) > 1], wrappers
 
     def _moved_position(self, name: Name, scope) -> AST | None:  # type: ignore[no-untyped-def]
         """Where a local name is bound to a rotated position (`pts = (T @ pts_h.T).T[:, :3]`)."""
@@ -681,6 +710,17 @@ def _may_hold_positions(target: AST) -> bool:
         columns = _columns(target)
         return columns is not None and columns <= {0, 1, 2}
     return False
+
+
+
+def _uninverted(node: AST) -> AST:
+    """`inv(T)`, `T.inverse()`, `T.inv()`: T (an inverse rotates as much as what it inverts)."""
+    node = _peel(node)
+    if isinstance(node, Call) and last_name(node.func) in ("inv", "inverse", "pinv") and node.args:
+        node = _peel(node.args[0])
+    if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr in ("inv", "inverse", "inverted"):
+        node = _peel(node.func.value)
+    return node
 
 
 def _peel(node: AST) -> AST:

@@ -292,16 +292,7 @@ class MisplacedTranslation(AstRule):
                 reads_translation_column = reads_translation_column or (part is not None and part.kind == "translation")
                 if _writes_projective_corner(node, index):
                     return False  # M[3, 3] = d: a projection, whose bottom row is meant to be full
-            if not computed_translation and _writes_transposed_rotation(node, base, index):
-                row_layout = True  # [R^T 0; t 1]: the transpose of a pose, laid out for row vectors
-            transposed = transposed_operand(node) if isinstance(node, ast.expr) else None
-            if transposed is not None and same_code(transposed, base) and not (read_side and _inverts(node)):
-                row_layout = True  # built transposed (row-vector layout), then transposed into place
-            operands = matmul_operands(node)
-            if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], index):
-                row_layout = True  # points_h @ T: the row-vector convention
-            if _row_vector_consumer(node, base, index):
-                row_layout = True  # vispy's MatrixTransform(T) applies T to row vectors
+            row_layout = row_layout or _says_row_layout(node, base, index, computed_translation, read_side)
         if read_side:
             return reads_translation_column and not row_layout
         return states_pose and (reads_translation_column or not row_layout)
@@ -325,6 +316,19 @@ class MisplacedTranslation(AstRule):
 _TRANSLATION_KEYS: Final = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
 # Words of a name that holds a translation (`cam_location`, `obj.position`, `t_w2c`).
 _TRANSLATION_WORDS: Final = frozenset({"location", "position", "translation", "trans", "tvec", "t"})
+
+
+def _says_row_layout(node: AST, base: ast.expr, index: ModuleIndex, computed_translation: bool, read_side: bool) -> bool:
+    """Whether `node` shows the 4x4 `base` laid out for row vectors (its transpose is the pose)."""
+    if not computed_translation and _writes_transposed_rotation(node, base, index):
+        return True  # [R^T 0; t 1]: the transpose of a pose, laid out for row vectors
+    transposed = transposed_operand(node) if isinstance(node, ast.expr) else None
+    if transposed is not None and same_code(transposed, base) and not (read_side and _inverts(node)):
+        return True  # built transposed (row-vector layout), then transposed into place
+    operands = matmul_operands(node)
+    if operands is not None and same_code(operands[1], base) and not _is_pose_like(operands[0], index):
+        return True  # points_h @ T: the row-vector convention
+    return _row_vector_consumer(node, base, index)  # vispy's MatrixTransform(T) applies T to row vectors
 
 
 def _inverts(node: AST) -> bool:

@@ -302,7 +302,6 @@ class EulerAnglesInQuaternion(FactRule):
         """Why `node` is an Euler angle, or None."""
         if depth > _MAX_DEPTH:
             return None
-        facts = self.facts
         if isinstance(node, UnaryOp) and isinstance(node.op, (USub, UAdd)):
             return self._angle(node.operand, depth + 1)
         if isinstance(node, BinOp) and isinstance(node.op, (Add, Sub)):
@@ -310,7 +309,7 @@ class EulerAnglesInQuaternion(FactRule):
                 return self._angle(node.left, depth + 1)  # `yaw + 0.1`, still an angle (not `yaw / 2`)
             return None
         if isinstance(node, Call):
-            called = facts.called_name(node.func)
+            called = self.facts.called_name(node.func)
             arguments = positional_args(node)
             if len(arguments) == 1 and not node.keywords and (called == "float" or called in _UNIT_CALLS):
                 return self._angle(arguments[0], depth + 1)
@@ -321,24 +320,33 @@ class EulerAnglesInQuaternion(FactRule):
                 return None
             return self._element(node.value, int(position), depth + 1)
         if isinstance(node, Name):
-            if node.id in facts.index.scope_of(node).augmented:
-                return None
-            bound = facts.bindings(node) or []
-            found = [self._bound_angle(binding, depth + 1) for binding in bound]
+            return self._angle_of_name(node, depth)
+        if isinstance(node, Attribute):
+            return self._angle_of_attribute(node, depth)
+        return None
+
+    def _angle_of_name(self, node: Name, depth: int) -> _Angle | None:
+        """Every binding an angle a library returned, or (weak) a name that says roll, pitch or yaw."""
+        facts = self.facts
+        if node.id in facts.index.scope_of(node).augmented:
+            return None
+        bound = facts.bindings(node) or []
+        found = [self._bound_angle(binding, depth + 1) for binding in bound]
+        if found and all(angle is not None and angle.strong for angle in found):
+            return found[0]
+        return self._named(node.id, bound)
+
+    def _angle_of_attribute(self, node: Attribute, depth: int) -> _Angle | None:
+        """`self.yaw` as its stores say; `rpy.z`, a component of named angles; or the attribute's name."""
+        if isinstance(node.value, Name) and node.value.id == "self":
+            stores = self.facts.index.self_attribute_stores.get(node.attr, [])
+            found = [self._angle(store, depth + 1) for store in stores]
             if found and all(angle is not None and angle.strong for angle in found):
                 return found[0]
-            return self._named(node.id, bound)
-        if isinstance(node, Attribute):
-            if isinstance(node.value, Name) and node.value.id == "self":
-                stores = facts.index.self_attribute_stores.get(node.attr, [])
-                found = [self._angle(store, depth + 1) for store in stores]
-                if found and all(angle is not None and angle.strong for angle in found):
-                    return found[0]
-                return self._named(node.attr, stores)
-            if node.attr in _COMPONENTS[:3]:
-                return self._component_of_angles(node)
-            return self._named(node.attr, [])
-        return None
+            return self._named(node.attr, stores)
+        if node.attr in _COMPONENTS[:3]:
+            return self._component_of_angles(node)
+        return self._named(node.attr, [])
 
     @staticmethod
     def _component_of_angles(node: Attribute) -> _Angle | None:
@@ -368,39 +376,43 @@ class EulerAnglesInQuaternion(FactRule):
         """The angles' names when known, why, and whether a library says so, for a value holding Euler angles."""
         if depth > _MAX_DEPTH:
             return None
-        facts = self.facts
         if isinstance(node, Call):
-            qualified = facts.qualified_name(node.func) or ""
-            if qualified in RETURNED_ANGLES:
-                return _Source((), f"`{qualified}` returns Euler angles", True)
-            func = node.func
-            if isinstance(func, Attribute):
-                method = EULER_METHOD_NAMES.get(func.attr)
-                if method is not None and not node.args:
-                    _, names, twin = RETURNED_EULER_METHODS[method]
-                    return _Source(names, f"`{method}` returns them", True, twin)
-                if func.attr == "as_euler" and is_scipy_rotation_value(facts, func.value):
-                    return _Source((), "scipy's `as_euler` returns Euler angles", True)
-            return None
+            return self._euler_source_of_call(node)
         if isinstance(node, Name):
-            bound = facts.bindings(node) or []
+            bound = self.facts.bindings(node) or []
             values = [binding for binding in bound if isinstance(binding, ast.expr)]
-            found = [self._euler_source(value, depth + 1) for value in values]
-            if found and len(values) == len(bound) and all(source is not None and source.strong for source in found):
-                return found[0]
-            words = _words(node.id)
-            if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(value) for value in values):
-                return _Source((), f"the name `{node.id}` says Euler angles", False)
-            return None
-        if isinstance(node, Attribute):
+            return self._euler_source_of_values(node.id, values, len(values) == len(bound), depth)
+        if isinstance(node, Attribute):  # `self.rpy` as its stores say, or another object's (`visual.origin_rpy`)
             is_self = isinstance(node.value, Name) and node.value.id == "self"
-            stores = facts.index.self_attribute_stores.get(node.attr, []) if is_self else []
-            found = [self._euler_source(store, depth + 1) for store in stores]
-            if found and all(source is not None and source.strong for source in found):
-                return found[0]
-            words = _words(node.attr)  # `self.rpy`, or another object's (`visual.origin_rpy`)
-            if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(store) for store in stores):
-                return _Source((), f"the name `{node.attr}` says Euler angles", False)
+            stores = self.facts.index.self_attribute_stores.get(node.attr, []) if is_self else []
+            return self._euler_source_of_values(node.attr, stores, True, depth)
+        return None
+
+    def _euler_source_of_call(self, node: Call) -> _Source | None:
+        """A library call that returns Euler angles (`euler_from_quaternion(q)`, `r.as_euler("xyz")`)."""
+        facts = self.facts
+        qualified = facts.qualified_name(node.func) or ""
+        if qualified in RETURNED_ANGLES:
+            return _Source((), f"`{qualified}` returns Euler angles", True)
+        func = node.func
+        if isinstance(func, Attribute):
+            method = EULER_METHOD_NAMES.get(func.attr)
+            if method is not None and not node.args:
+                _, names, twin = RETURNED_EULER_METHODS[method]
+                return _Source(names, f"`{method}` returns them", True, twin)
+            if func.attr == "as_euler" and is_scipy_rotation_value(facts, func.value):
+                return _Source((), "scipy's `as_euler` returns Euler angles", True)
+        return None
+
+    def _euler_source_of_values(self, name: str, values: Sequence[ast.expr], every_value_known: bool, depth: int) -> _Source | None:
+        """Values that all hold angles a library returned, or (weak) a name that says Euler angles
+        and is never bound to a trigonometric formula."""
+        found = [self._euler_source(value, depth + 1) for value in values]
+        if found and every_value_known and all(source is not None and source.strong for source in found):
+            return found[0]
+        words = _words(name)
+        if words & _SEQUENCE_WORDS and not words & _NOT_AN_ANGLE and not any(_trig(value) for value in values):
+            return _Source((), f"the name `{name}` says Euler angles", False)
         return None
 
     @staticmethod
