@@ -96,7 +96,7 @@ def bash(script: str, cwd: Path) -> subprocess.CompletedProcess[str]:
 def test_readme_test_command_is_what_ci_runs() -> None:
     command = block("README.md", "Contributing", 0).body.strip()
     assert "--config-settings editable_mode=compat" in command  # type checkers must see the editable install
-    assert command.endswith('python -m pytest -q -m "not slow"')  # the fast subset; .ci/run adds the slow tests
+    assert command.endswith('python -m pytest -q -n auto -m "not slow"')  # the fast subset; .ci/run adds the slow tests
     ci_run = (REPO_ROOT / ".ci" / "run").read_text(encoding="utf-8")
     # .ci/run creates and activates the venv itself; the rest of the line is the same text.
     assert command.split(" && ", 2)[2] in ci_run
