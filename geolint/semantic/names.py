@@ -159,6 +159,17 @@ def tokens(name: str) -> tuple[str, ...]:
     return tuple(token.lower() for token in name.strip("_").split("_") if token)
 
 
+
+# Plural point and direction words: as the first word of a two-word name they are not a modifier
+# (`vertex_normals`, normals at vertices) but a head noun of their own (`VERTICES_AXIS`).
+PLURAL_WORDS: Final = frozenset(
+    {
+        "centroids", "landmarks", "points", "positions", "pts", "vertices", "verts", "binormals",
+        "directions", "dirs", "forces", "normals", "nrms", "tangents", "torques", "velocities", "vels",
+    }
+)  # fmt: skip
+
+
 # --- kind --------------------------------------------------------------------------------
 
 
@@ -207,6 +218,8 @@ def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None: 
     other = points if kind == Kind.DIRECTION else directions
     if len(parts) > 2 and any(part in other for part in parts):
         return None
+    if any(part in other and part in PLURAL_WORDS for part in parts[:-1]):
+        return None  # a modifier is singular (`vertex_normals`); `vertices_axis` may be the axis's vertices
     return kind
 
 

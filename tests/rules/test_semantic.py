@@ -21,6 +21,8 @@ from geolint.semantic.names import Kind, NameFrames, frames_of_name, kind_of_nam
         ("surface_normal", Kind.DIRECTION),
         ("ray_dir", Kind.DIRECTION),
         ("vertex_normals", Kind.DIRECTION),
+        ("VERTICES_AXIS", None),  # the vertices of a drawn axis, or an axis: a plural word is no modifier
+        ("points_normal", None),
         ("v_cam", None),  # a vector, a velocity or a mesh's vertices: the frame is stated, the kind is not
         ("points", Kind.POINT),
         ("p_world", Kind.POINT),
