@@ -213,14 +213,18 @@ def _kind_of_name(name, extra_directions, extra_points, naming) -> Kind | None: 
     if len(kinds) != 1:
         return None
     kind = kinds.pop()
-    # `vertex_normals` and `point_velocity` are a modifier and a head noun; in a longer name
-    # (`origin_projected_on_screw_axis`) a word of the other kind means we cannot tell.
     other = points if kind == Kind.DIRECTION else directions
+    return None if _other_kind_spoils(parts, other) else kind
+
+
+def _other_kind_spoils(parts: tuple[str, ...], other: frozenset[str] | set[str]) -> bool:
+    """Whether a word of the other kind leaves the name's kind in doubt. `vertex_normals` and
+    `point_velocity` are a modifier and a head noun; in a longer name (`origin_projected_on_screw_axis`)
+    a word of the other kind means we cannot tell, and a modifier is singular: `vertices_axis` may be
+    the axis's vertices."""
     if len(parts) > 2 and any(part in other for part in parts):
-        return None
-    if any(part in other and part in PLURAL_WORDS for part in parts[:-1]):
-        return None  # a modifier is singular (`vertex_normals`); `vertices_axis` may be the axis's vertices
-    return kind
+        return True
+    return any(part in other and part in PLURAL_WORDS for part in parts[:-1])
 
 
 # --- frames ------------------------------------------------------------------------------
