@@ -143,3 +143,32 @@ def test_the_architecture_section_names_modules_that_exist() -> None:
         if not any((folder / name).is_file() for folder in (PACKAGE, PACKAGE / "factbase", PACKAGE / "rules", PACKAGE.parent))
     )
     assert missing == []
+
+
+# The analysis: what a new fact or rule is added to. Its functions stay small enough to read and
+# its modules short enough to find one's way in (radon's cyclomatic complexity, as `radon cc`).
+ANALYSIS = ("factbase", "rules", "semantic")
+MOST_COMPLEX_BLOCK = 30
+LONGEST_MODULE = 1000
+
+
+def test_no_analysis_block_is_too_complex():
+    from radon.complexity import cc_visit
+
+    offenders = []
+    for folder in ANALYSIS:
+        for path in sorted((PACKAGE / folder).rglob("*.py")):
+            for block in cc_visit(path.read_text(encoding="utf-8")):
+                for inner in (block, *getattr(block, "methods", ()), *getattr(block, "closures", ())):
+                    if inner.complexity > MOST_COMPLEX_BLOCK:
+                        offenders.append(f"{path.relative_to(PACKAGE)}:{inner.lineno} {inner.name} ({inner.complexity})")
+    assert not offenders, offenders
+
+
+def test_no_analysis_module_is_too_long():
+    lengths = {
+        str(path.relative_to(PACKAGE)): len(path.read_text(encoding="utf-8").splitlines())
+        for folder in ANALYSIS
+        for path in (PACKAGE / folder).rglob("*.py")
+    }
+    assert all(length <= LONGEST_MODULE for length in lengths.values()), {p: n for p, n in lengths.items() if n > LONGEST_MODULE}
