@@ -118,11 +118,16 @@ def _as_python(lines: tuple[str, ...]) -> list[str]:
             return ["\n"] * len(lines)  # %%bash, %%html, %%writefile: not Python
         return ["\n", *_as_python(lines[1:])]
     python = []
+    continued = False  # a `!cmd \` or `%magic \` line continues on the next one, which is not Python either
     for line in lines:
         stripped = line.lstrip(" \t")
         indent = line[: len(line) - len(stripped)]
-        if _is_magic(stripped) or _HELP.match(line):
+        if continued:
+            python.append("\n")
+            continued = line.rstrip("\r\n").endswith("\\")
+        elif _is_magic(stripped) or _HELP.match(line):
             python.append(f"{indent}pass\n" if indent else "\n")
+            continued = _is_magic(stripped) and line.rstrip("\r\n").endswith("\\")
         elif _SHELL_ASSIGNMENT.match(line):
             python.append(_SHELL_ASSIGNMENT.match(line).group(1) + "None\n")  # type: ignore[union-attr]
         else:

@@ -135,12 +135,14 @@ def test_magics_become_python_line_for_line() -> None:
             ("code", "%%bash\nls -l\n"),
             ("code", "%%time\nx = 1\n"),
             ("code", "if x:\n    !echo yes\n    y = (x\n         % 2)\nz = %env HOME\n"),
+            ("code", "!colmap feature_extractor \\\n--use_gpu 0 \\\n--image_path \"{x}\"\nw = 2 \\\n  + 1\n"),
         ).encode()
     )
     assert [cell.python for cell in read.cells] == [
         ("\n", "\n"),
         ("\n", "x = 1\n"),
         ("if x:\n", "    pass\n", "    y = (x\n", "         % 2)\n", "z = None\n"),  # `% 2` is Python's modulo
+        ("\n", "\n", "\n", "w = 2 \\\n", "  + 1\n"),  # a shell line continued with `\`; then Python's own `\`
     ]
     compile(read.python, "lab.ipynb", "exec")
 
