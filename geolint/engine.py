@@ -25,7 +25,8 @@ from typing import TYPE_CHECKING, Iterable, Sequence
 
 from geolint import guards, suppression
 from geolint.config import enabled_codes
-from geolint.lint_types import Config, Edit, Finding, Fix, Severity
+from geolint.lint_types import SYNTAX_ERROR, SYNTAX_ERROR_NAME, Config, Edit, Finding, Fix, Severity
+from geolint.notebook import BOUNDARY as CELL_BOUNDARY, NOTEBOOK_SUFFIX
 from geolint.parsing import SUPPORTED_GRAMMARS
 from geolint.source_text import cached_ast, remember_tree, split_lines
 
@@ -34,8 +35,6 @@ if TYPE_CHECKING:
     from geolint.factbase.index import ModuleIndex
     from geolint.rules.base import AstReport, AstRule
 
-SYNTAX_ERROR = "GEO000"
-SYNTAX_ERROR_NAME = "syntax-error"
 # Pseudo-rules: documented like rules, but detected here rather than by visiting the tree.
 ENGINE_RULE_CODES = frozenset({SYNTAX_ERROR, guards.TOO_COMPLEX, suppression.UNUSED_SUPPRESSION})
 
@@ -135,6 +134,9 @@ def lint_source(
         guards.make_room_for_recursion(config)
         syntax_error = _syntax_error(source)
         if syntax_error is not None:
+            cells = _lint_parseable_cells(source, path, config, rules) if path.endswith(NOTEBOOK_SUFFIX) else None
+            if cells is not None:
+                return cells
             line, column, message = syntax_error
             return _only_syntax_error(path, config, rules, line, column, f"syntax error for {SUPPORTED_GRAMMARS}: {message}")
         limit = _depth_limit(source, config, bool(active), guards.TOO_COMPLEX in on or (
@@ -161,6 +163,29 @@ def lint_source(
                 severity=_severity_of(suppression.UNUSED_SUPPRESSION, config, Severity.WARNING),
             )
     return sorted(findings, key=finding_order)
+
+
+def _lint_parseable_cells(source: str, path: str, config: Config, rules: Sequence[type[AstRule]] | None) -> list[Finding] | None:
+    """A notebook's cells, joined, that do not parse: IPython compiles each cell alone, so a cell that
+    does not parse (a pasted table, a doctest) is one GEO000 and the other cells are linted, with the
+    broken ones blanked line for line. None when the joined text is no notebook's or still does not parse."""
+    lines = source.splitlines(keepends=True)
+    starts = [number for number, line in enumerate(lines) if line == CELL_BOUNDARY]
+    if not starts:
+        return None
+    kept = list(lines)
+    findings: list[Finding] = []
+    for position, start in enumerate(starts):
+        end = starts[position + 1] if position + 1 < len(starts) else len(lines)
+        error = _syntax_error("".join(lines[start + 1 : end]))
+        if error is not None:
+            line, column, message = error
+            findings += _only_syntax_error(path, config, rules, start + 1 + line, column, f"syntax error for {SUPPORTED_GRAMMARS}: {message}")
+            kept[start + 1 : end] = ["\n"] * (end - start - 1)
+    blanked = "".join(kept)
+    if blanked == source or _syntax_error(blanked) is not None:
+        return None
+    return sorted(findings + lint_source(blanked, path, config, rules), key=finding_order)
 
 
 def _depth_limit(source: str, config: Config, analysed: bool, verdict_needed: bool) -> guards.LimitExceeded | None:

@@ -12,6 +12,11 @@ from pathlib import Path
 from typing import Literal, Mapping
 
 
+# A file that does not parse (or decode, or is no notebook): the code every layer reports it under.
+SYNTAX_ERROR = "GEO000"
+SYNTAX_ERROR_NAME = "syntax-error"
+
+
 class Severity(str, Enum):
     """How loudly a finding is reported (the LSP severities, in the same order)."""
 

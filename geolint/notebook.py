@@ -21,7 +21,7 @@ from functools import lru_cache
 from json.decoder import scanstring  # type: ignore[attr-defined]  # the decoder's own string scanner; typeshed leaves it out
 from typing import Any
 
-from geolint.lint_types import Config, Finding, Severity
+from geolint.lint_types import SYNTAX_ERROR, SYNTAX_ERROR_NAME, Config, Finding, Severity
 
 NOTEBOOK_SUFFIX = ".ipynb"
 # Starts each code cell in the joined text: a comment, so no analysis sees it.
@@ -44,7 +44,6 @@ def unreadable_notebook(path: str, config: Config, error: NotebookError) -> list
     """What a `.ipynb` that is not a notebook (empty, a Git LFS pointer, broken JSON) gives: one
     GEO000 finding at 1:1, as a file that does not parse does (ruff's `invalid-syntax`)."""
     from geolint.config import enabled_codes
-    from geolint.engine import SYNTAX_ERROR, SYNTAX_ERROR_NAME
 
     if not enabled_codes(config, path, (SYNTAX_ERROR,)):
         return []

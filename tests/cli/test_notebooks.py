@@ -57,6 +57,19 @@ def test_findings_are_reported_by_cell(cli):
     assert {f["path"] for f in json.loads(cli("check", "--output-format", "json").stdout)} == {"lab.ipynb"}
 
 
+def test_a_cell_that_does_not_parse_costs_only_itself(cli):
+    """IPython compiles each cell alone: a pasted table or a doctest in a code cell is one GEO000,
+    and the other cells are still linted."""
+    cli.write("lab.ipynb", notebook(
+        ("code", "| joint | angle |\n|---|---|\n"),
+        ("code", "def step():\n    return bad_thing\n"),
+        ("code", ">>> step()\n"),
+    ))  # fmt: skip
+    as_json = json.loads(cli("check", "lab.ipynb", "--output-format", "json").stdout)
+    assert [(f["cell"], f["line"], f["code"]) for f in as_json] == [(1, 1, "GEO000"), (2, 2, "GEO190"), (3, 1, "GEO000")]
+    assert as_json[0]["message"] == "syntax error for Python 3.10-3.13: invalid syntax"
+
+
 def test_real_rules_read_a_notebook(cli_real):
     cli_real.write(
         "lab.ipynb",
