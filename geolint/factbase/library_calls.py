@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import ast
 from ast import AST, Attribute, Call, If, Import, ImportFrom, Name
+from pathlib import Path
 from typing import TYPE_CHECKING, Final
 
 from geolint.knowledge import Api, Bound, Geometry, KnowledgeBase, agreed, bind, knowledge_base
@@ -130,7 +131,7 @@ def _called_api(facts: FactBase, call: Call) -> Api | None:
     kb = knowledge(facts)
     func = call.func
     qualified = branch_qualified_name(facts, func)
-    if qualified is not None:
+    if qualified is not None and not shadowed_by_project(facts, qualified):
         found = kb.api(qualified)
         if found is not None and _resolved_through_imports(facts, func):
             return found
@@ -201,6 +202,20 @@ def branch_qualified_name(facts: FactBase, func: AST) -> str | None:
     return qualified
 
 
+def shadowed_by_project(facts: FactBase, qualified: str) -> bool:
+    """Whether the top package of `qualified` is a module of the project beside the analysed file
+    (`transformations.py` next to a ROS node that runs `from transformations import ...`: a vendored copy,
+    which Python imports first from the script's folder, not the library the stubs describe)."""
+    if facts.path.startswith("<"):
+        return False
+    return _beside(str(Path(facts.path).resolve().parent), qualified.partition(".")[0])
+
+
+def _beside(folder: str, package: str) -> bool:
+    here = Path(folder)
+    return (here / f"{package}.py").is_file() or (here / package / "__init__.py").is_file()
+
+
 def _resolved_through_imports(facts: FactBase, func: AST) -> bool:
     """Whether the qualified name came from an import, not from the spelling alone (a local `Rotation`
     class of the project is not scipy's)."""
@@ -235,7 +250,11 @@ def _any_receiver(facts: FactBase, kb: KnowledgeBase, method: str) -> Api | None
 def _star_imported(facts: FactBase, kb: KnowledgeBase, func: Name) -> Api | None:
     if not facts.index.star_imports or facts.index.lookup(func.id, facts.index.scope_of(func)):
         return None
-    found = {api for module in facts.index.star_imports if (api := kb.api(f"{module}.{func.id}")) is not None}
+    found = {
+        api
+        for module in facts.index.star_imports
+        if not shadowed_by_project(facts, module) and (api := kb.api(f"{module}.{func.id}")) is not None
+    }
     return found.pop() if len(found) == 1 else None
 
 

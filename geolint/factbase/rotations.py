@@ -66,7 +66,7 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
     consumed = _simulator_order(facts, call, _CONSUMED) if called in _SIMULATOR_NAMES else None
     if consumed is not None:
         return consumed
-    if called in _TRANSFORMS3D_OPERATIONS or called in _TF_OPERATIONS:
+    if called in _TRANSFORMS3D_OPERATIONS:
         operation = _operation_order(facts, func)
         if operation is not None:
             return operation
@@ -100,19 +100,15 @@ def _reads_scalar_first(qualified: str, name: str) -> bool:
 
 
 def _reads_scalar_last(qualified: str, name: str) -> bool:
-    """tf.transformations, ROS 1 messages (positional fields in declaration order: x, y, z, w) and
-    pybullet (on the module or on a BulletClient) read w last."""
-    return (
-        (qualified.startswith(("tf.transformations.", "tf_transformations.")) and "quaternion" in name)
-        or (qualified.startswith("geometry_msgs.") and name == "Quaternion")
-        or name in _PYBULLET_CONSUMERS
-    )
+    """ROS 1 messages (positional fields in declaration order: x, y, z, w) and pybullet (on the module
+    or on a BulletClient) read w last. (tf.transformations and tf_transformations: stubs/tf,
+    stubs/tf_transformations.)"""
+    return (qualified.startswith("geometry_msgs.") and name == "Quaternion") or name in _PYBULLET_CONSUMERS
 
 
-# transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion) and the ROS
-# names they are imported under when a module supports ROS 1 (`tf.transformations`) and ROS 2
+# transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion), also under the
+# ROS names they are imported as when a module supports ROS 1 (`tf.transformations`) and ROS 2
 _TRANSFORMS3D_OPERATIONS: Final = frozenset({"qmult", "qconjugate", "qinverse"})
-_TF_OPERATIONS: Final = frozenset({"quaternion_multiply", "quaternion_conjugate", "quaternion_inverse"})
 
 
 def _operation_order(facts: FactBase, func: ast.expr) -> str | None:
@@ -120,8 +116,6 @@ def _operation_order(facts: FactBase, func: ast.expr) -> str | None:
     module, _, name = qualified.rpartition(".")
     if module.startswith("transforms3d") and name in _TRANSFORMS3D_OPERATIONS:
         return SCALAR_FIRST
-    if module in ("tf.transformations", "tf_transformations") and name in _TF_OPERATIONS:
-        return SCALAR_LAST
     return None
 
 
@@ -139,8 +133,6 @@ def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if qualified.startswith("geometry_msgs.") or qualified == _GTSAM_ROT3_QUATERNION:
         return None  # takes its components one by one
-    if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name not in _TF_QUATERNION_INPUTS:
-        return None  # quaternion_from_euler & co take angles or matrices
     if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
         return positional[0] if len(positional) == 1 and not call.keywords else None
     if qualified in _EIGEN_QUATERNIONS:
@@ -237,10 +229,6 @@ def quaternion_producer(facts: FactBase, call: Call) -> str | None:
         return SCALAR_FIRST
     if qualified.startswith("pytorch3d.") and (name.endswith("_to_quaternion") or name in _PYTORCH3D_QUATERNIONS):
         return SCALAR_FIRST
-    if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name in _GOHLKE_PRODUCERS:
-        return SCALAR_LAST
-    if qualified.startswith("trimesh.transformations.") and name in _GOHLKE_PRODUCERS:
-        return SCALAR_FIRST
     if qualified.startswith("spatialmath") and name == "r2q" and keyword(call, "order") is None:
         return SCALAR_FIRST
     return _DATA_PRODUCERS.get(_library_key(qualified, name))
@@ -278,21 +266,13 @@ _SCIPY_CONSTRUCTORS: Final = (
 )  # fmt: skip
 # pybullet (x, y, z, w) quaternions, called on the module or on a BulletClient.
 _PYBULLET_QUATERNIONS: Final = frozenset({"getQuaternionFromEuler", "getQuaternionFromAxisAngle", "getDifferenceQuaternion"})
-# Christoph Gohlke's transformations.py: (w, x, y, z) as trimesh ships it, (x, y, z, w) in ROS tf.
-_GOHLKE_PRODUCERS: Final = frozenset(
-    {"quaternion_from_matrix", "quaternion_from_euler", "quaternion_about_axis", "random_quaternion",
-     "quaternion_multiply", "quaternion_conjugate", "quaternion_inverse", "quaternion_slerp"}
-)  # fmt: skip
-_TF_QUATERNION_INPUTS: Final = frozenset(
-    {"quaternion_matrix", "euler_from_quaternion", "quaternion_multiply", "quaternion_conjugate",
-     "quaternion_inverse", "quaternion_slerp", "quaternion_real", "quaternion_imag"}
-)  # fmt: skip
+# (Christoph Gohlke's transformations.py, as PyPI's transformations, trimesh.transformations, ROS tf.transformations
+# and tf_transformations ship it: stubs/transformations, stubs/trimesh, stubs/tf, stubs/tf_transformations.)
 _PYTORCH3D_QUATERNIONS: Final = frozenset(
     {"quaternion_multiply", "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion", "random_quaternions"}
 )
 # Consumers and producers keyed by `<top package>.<function>` (any submodule).
 _DATA_CONSUMERS: Final = {
-    **{f"trimesh.{name}": SCALAR_FIRST for name in _TF_QUATERNION_INPUTS},
     **{f"pytorch3d.{name}": SCALAR_FIRST for name in (
         "quaternion_to_matrix", "quaternion_to_axis_angle", "quaternion_apply", "quaternion_multiply",
         "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion")},

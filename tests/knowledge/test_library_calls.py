@@ -90,3 +90,20 @@ def test_a_name_rebound_from_its_own_method_call_in_a_loop_has_no_library_type()
     assert called_api(facts, call) is None  # type: ignore[arg-type]
     as_quat = calls["current.as_quat()"]
     assert called_api(facts, as_quat) is None  # type: ignore[arg-type]  # `current` may be anything on the first pass
+
+
+def test_a_module_of_the_project_beside_the_file_shadows_the_library(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """`from transformations import quaternion_from_euler` in a ROS node folder that holds its own copy of
+    tf's transformations.py (x, y, z, w) is that copy, not the PyPI transformations the stubs describe."""
+    source = "from transformations import quaternion_from_euler, quaternion_matrix\nq = quaternion_from_euler(0, 0, 1)\nm = quaternion_matrix(q)\n"
+    node = tmp_path / "node.py"
+    node.write_text(source)
+    for shadowed in (False, True):
+        if shadowed:
+            (tmp_path / "transformations.py").write_text("# a vendored copy\n")
+        tree = ast.parse(source)
+        facts = facts_for_module(tree, source, str(node), Config())
+        calls = {ast.unparse(call): call for call in ast.walk(tree) if isinstance(call, ast.Call)}
+        produced = quaternion_output(facts, calls["quaternion_from_euler(0, 0, 1)"])  # type: ignore[arg-type]
+        read = quaternion_inputs(facts, calls["quaternion_matrix(q)"])  # type: ignore[arg-type]
+        assert (produced, [order for _, order in read]) == ((None, []) if shadowed else (SCALAR_FIRST, [SCALAR_FIRST]))
