@@ -12,10 +12,18 @@ from __future__ import annotations
 
 import ast
 from ast import AST, Attribute, Call, If, Import, ImportFrom, Name
-from pathlib import Path
 from typing import TYPE_CHECKING, Final
 
-from geolint.knowledge import Api, Bound, Geometry, KnowledgeBase, agreed, bind, knowledge_base
+from geolint.factbase.project_files import module_path
+from geolint.knowledge import (
+    Api,
+    Bound,
+    Geometry,
+    KnowledgeBase,
+    agreed,
+    bind,
+    knowledge_base,
+)
 
 if TYPE_CHECKING:  # the fact base asks this module; it needs the class only for its annotations
     from geolint.factbase.model import FactBase
@@ -203,17 +211,12 @@ def branch_qualified_name(facts: FactBase, func: AST) -> str | None:
 
 
 def shadowed_by_project(facts: FactBase, qualified: str) -> bool:
-    """Whether the top package of `qualified` is a module of the project beside the analysed file
-    (`transformations.py` next to a ROS node that runs `from transformations import ...`: a vendored copy,
-    which Python imports first from the script's folder, not the library the stubs describe)."""
+    """Whether the top package of `qualified` is a module of the project, as its imports resolve
+    (`transformations.py` beside a ROS node that runs `from transformations import ...`: a vendored
+    copy, which Python imports first, not the library the stubs describe)."""
     if facts.path.startswith("<"):
         return False
-    return _beside(str(Path(facts.path).resolve().parent), qualified.partition(".")[0])
-
-
-def _beside(folder: str, package: str) -> bool:
-    here = Path(folder)
-    return (here / f"{package}.py").is_file() or (here / package / "__init__.py").is_file()
+    return module_path(qualified.partition(".")[0], facts.path) is not None
 
 
 def _resolved_through_imports(facts: FactBase, func: AST) -> bool:

@@ -96,11 +96,14 @@ def test_a_module_of_the_project_beside_the_file_shadows_the_library(tmp_path) -
     """`from transformations import quaternion_from_euler` in a ROS node folder that holds its own copy of
     tf's transformations.py (x, y, z, w) is that copy, not the PyPI transformations the stubs describe."""
     source = "from transformations import quaternion_from_euler, quaternion_matrix\nq = quaternion_from_euler(0, 0, 1)\nm = quaternion_matrix(q)\n"
-    node = tmp_path / "node.py"
-    node.write_text(source)
     for shadowed in (False, True):
+        folder = tmp_path / ("vendored" if shadowed else "plain")
+        folder.mkdir()
+        (folder / "setup.py").write_text("")  # a project: its imports resolve within it
+        node = folder / "node.py"
+        node.write_text(source)
         if shadowed:
-            (tmp_path / "transformations.py").write_text("# a vendored copy\n")
+            (folder / "transformations.py").write_text("# a vendored copy\n")
         tree = ast.parse(source)
         facts = facts_for_module(tree, source, str(node), Config())
         calls = {ast.unparse(call): call for call in ast.walk(tree) if isinstance(call, ast.Call)}
