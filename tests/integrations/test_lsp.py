@@ -369,6 +369,7 @@ async def test_survives_unknown_uris_and_garbage(client: RecordingClient, tmp_pa
     assert diagnostic_codes(client.diagnostics[uri]) == expected_codes(BUGGY, tmp_path / "after.py")
 
 
+@pytest.mark.slow  # a 5,000-line module linted while the server answers
 @needs_rules
 @pytest.mark.asyncio
 async def test_a_large_file_is_linted_off_the_main_loop(client: RecordingClient, tmp_path: Path) -> None:

@@ -68,6 +68,7 @@ def _installed(distribution: str) -> bool:
     return True
 
 
+@pytest.mark.slow  # two real mypy runs
 @pytest.mark.skipif(not _installed("scipy-stubs"), reason="scipy-stubs is not installed")
 def test_the_plugin_reads_the_same_stub(tmp_path: Path) -> None:
     (tmp_path / "typed.py").write_text(TYPED)
