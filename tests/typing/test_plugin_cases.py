@@ -15,6 +15,16 @@ BUG_FIXTURES = sorted((FIXTURES / "bugs").glob("*.py"))
 CLEAN_FIXTURES = sorted((FIXTURES / "clean").glob("*.py"))
 
 
+# Cases whose expected reveals spell numpy's own array types, which numpy 2.3 changed.
+NUMPY_SPELLED_CASES = frozenset({"arrays.py", "bridge_and_third_party.py"})
+
+
+def _numpy_below(major: int, minor: int) -> bool:
+    import numpy
+
+    return tuple(int(part) for part in numpy.__version__.split(".")[:2]) < (major, minor)
+
+
 def test_mypy_did_not_crash(checked: tuple[str, str, int]) -> None:
     stdout, stderr, status = checked
     assert "INTERNAL ERROR" not in stdout + stderr, stdout + stderr
@@ -23,6 +33,8 @@ def test_mypy_did_not_crash(checked: tuple[str, str, int]) -> None:
 
 @pytest.mark.parametrize("path", CASES + BUG_FIXTURES + CLEAN_FIXTURES, ids=lambda p: f"{p.parent.name}/{p.name}")
 def test_expectations_hold(path: Path, checked: tuple[str, str, int], expectations: ModuleType) -> None:
+    if path.name in NUMPY_SPELLED_CASES and _numpy_below(2, 3):
+        pytest.skip("the revealed array types are spelled as numpy >= 2.3 spells them (Python 3.10 gets numpy 2.2)")
     reported = expectations.parse_mypy_output(checked[0]).get(path.name, [])
     problems = expectations.mismatches(path, reported)
     assert not problems, "\n".join(problems)
