@@ -54,6 +54,8 @@ from geolint.factbase.angles import (
     RETURNED_EULER_METHODS,
     ROTATION_VECTOR_READERS,
 )
+from geolint import knowledge
+from geolint.factbase import library_calls
 from geolint.factbase.classes import enclosing_class, project_class
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
@@ -95,6 +97,7 @@ _RADIAN_API_NAMES: Final = frozenset(
     {"from_euler", "from_rotvec", *_SPATIALMATH_ANGLE_CALLS, "quaternion_from_euler", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
     | {qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS}
 )
+_KNOWLEDGE_UNITS: Final = {knowledge.RADIANS: RADIANS, knowledge.DEGREES: DEGREES}  # the stubs' unit words -> these
 _ROTATION_VECTOR_NAMES: Final = frozenset({"from_rotvec", *(qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS)})
 
 
@@ -254,6 +257,10 @@ class AngleUnits:
         module, _, name = qualified.rpartition(".")
         if module in _INVERSE_TRIG_MODULES and name in _INVERSE_TRIG:
             return Unit(RADIANS, f"`{facts.code_of(call.func)}` returns radians", False)
+        known = _KNOWLEDGE_UNITS.get(library_calls.angle_output(facts, call) or "")
+        if known is not None:  # the knowledge base (stubs/)
+            api = library_calls.called_api(facts, call)
+            return Unit(known, f"`{api.qualified_name if api else qualified}` returns its angles in {unit_word(known)}", False)
         returned = RETURNED_ANGLES.get(qualified)
         if returned is not None:
             return Unit(returned, f"`{qualified}` returns its angles in {unit_word(returned)}", False)
@@ -500,35 +507,35 @@ def unit_word(unit: str | None) -> str:
     return "degrees" if unit == DEGREES else "radians"
 
 
-def may_read_radians(called: str) -> bool:
+def may_read_radians(facts: FactBase, called: str) -> bool:
     """Whether a call named `called` (`FactBase.called_name`) can be one `radian_arguments` knows
     (trig and `degrees` / `rad2deg` included): the cheap first test, asked of every call of a module.
     For any other name `radian_arguments` is None and `is_trig_or_conversion` is False."""
-    return called in _RADIAN_API_NAMES or called.startswith(("euler2", "axangle2")) or called.endswith(("_from_euler", "_from_angle"))
+    return (
+        called in _RADIAN_API_NAMES
+        or called.endswith(("_from_euler", "_from_angle"))
+        or library_calls.may_read_angles(facts, called, knowledge.RADIANS)
+    )
 
 
 def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
     """The angle arguments of a call to a radian API, or None when the call is not one (or opted into degrees)."""
     func = node.func
-    if not may_read_radians(facts.called_name(func) or ""):
+    if not may_read_radians(facts, facts.called_name(func) or ""):
         return None  # named like none of the APIs below (asked of every call of a module)
+    if library_calls.called_api(facts, node) is not None:  # the knowledge base (stubs/) knows the call
+        return library_calls.angle_arguments(facts, node, knowledge.RADIANS) or None
     positional = positional_args(node)
     if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
         return _scipy_angles(node, last_name(func) or "", positional)
     qualified = facts.qualified_name(func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
-    if qualified.startswith("transforms3d."):
-        found = _transforms3d_angles(name, positional)
-        if found is not None:
-            return found
     if qualified.startswith("pytransform3d."):
         found = _pytransform3d_angles(name, positional)
         if found is not None:
             return found
     if qualified.startswith("spatialmath") and name in _SPATIALMATH_ANGLE_CALLS:
         return _spatialmath_angles(node, name, positional)
-    if qualified.startswith(("tf.transformations.", "tf_transformations.")) and name == "quaternion_from_euler":
-        return positional[:3]
     if qualified in ROTATION_VECTOR_READERS:
         return positional[:1]
     if name == "getQuaternionFromEuler" and (qualified.startswith("pybullet") or isinstance(func, Attribute)):
@@ -549,15 +556,6 @@ def _scipy_angles(node: Call, name: str, positional: list[ast.expr]) -> list[ast
     else:
         angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
     return [angles] if angles is not None else None
-
-
-def _transforms3d_angles(name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
-    """transforms3d's `euler2*(ai, aj, ak)` and `axangle2*(axis, angle)`."""
-    if name.startswith("euler2"):
-        return positional[:3]
-    if name.startswith("axangle2") and len(positional) > 1:
-        return [positional[1]]
-    return None
 
 
 def _pytransform3d_angles(name: str, positional: list[ast.expr]) -> list[ast.expr] | None:

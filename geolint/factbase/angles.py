@@ -12,18 +12,11 @@ DEGREES, RADIANS = "deg", "rad"
 
 # Library calls whose every returned angle (a tuple or array of Euler angles) is in one unit.
 RETURNED_ANGLES: Final[dict[str, str]] = {
-    # tf's transformations.py (Gohlke's, also shipped as tf_transformations and tf_conversions.transformations):
+    # tf_conversions.transformations: Gohlke's transformations.py as ROS 1's tf_conversions ships it;
     # euler_from_matrix computes each angle with math.atan2, and its doctest reads
-    # euler_from_quaternion([0.06146124, 0, 0, 0.99810947]) back as [0.123, 0, 0]: radians
-    **{
-        f"{module}.{name}": RADIANS
-        for module in ("tf.transformations", "tf_transformations", "tf_conversions.transformations")
-        for name in ("euler_from_quaternion", "euler_from_matrix")
-    },
-    # transforms3d.euler.quat2euler / mat2euler: the inverse of euler2quat / euler2mat (which take
-    # radians, math.cos(ai)); each angle computed with math.atan2 (transforms3d/euler.py)
-    "transforms3d.euler.quat2euler": RADIANS,
-    "transforms3d.euler.mat2euler": RADIANS,
+    # euler_from_quaternion([0.06146124, 0, 0, 0.99810947]) back as [0.123, 0, 0]: radians. (tf.transformations,
+    # tf_transformations, transforms3d: stubs/.)
+    **{f"tf_conversions.transformations.{name}": RADIANS for name in ("euler_from_quaternion", "euler_from_matrix")},
     # pytransform3d.rotations.euler_from_matrix / euler_from_quaternion: "Extracted rotation angles in
     # radians about the axes i, j, k in this order" (pytransform3d/rotations/_conversions.py docstrings)
     "pytransform3d.rotations.euler_from_matrix": RADIANS,

@@ -105,9 +105,34 @@ def _argument_facts(facts: FactBase, call: Call, field: str) -> list[tuple[ast.e
     return found
 
 
+def angle_arguments(facts: FactBase, call: Call, unit: str) -> list[ast.expr]:
+    """The arguments a known library call reads as angles in `unit` (`geolint.knowledge.RADIANS` or
+    `DEGREES`); [] when the stub says none, or its overloads disagree (`degrees=flag`)."""
+    return [argument for argument, stated in angle_inputs(facts, call) if stated == unit]
+
+
+def may_read_angles(facts: FactBase, called: str, unit: str) -> bool:
+    """Whether a call named `called` (`FactBase.called_name`) may be a known API that reads angles in
+    `unit`: the cheap first test, before the call is resolved."""
+    return called in knowledge(facts).names_reading("angle_unit", unit)
+
+
 def angle_output(facts: FactBase, call: Call) -> str | None:
-    """The unit of the angles the call returns, or None."""
-    return agreed(library_call(facts, call), lambda bound: _returned(bound).angle_unit)
+    """The unit of the angles the call returns: an angle or an array of them, or a tuple of nothing but
+    angles in one unit (`mat2euler`'s three). None: not angles, or not known."""
+    return agreed(library_call(facts, call), lambda bound: _angle_unit(_returned(bound)))
+
+
+def returns_euler_angles(facts: FactBase, call: Call) -> bool:
+    """Whether the call returns a tuple of three angles in one unit (`euler_from_quaternion(q)`)."""
+    return agreed(library_call(facts, call), lambda bound: len(_returned(bound).items) == 3 and _angle_unit(_returned(bound)) is not None) is True
+
+
+def _angle_unit(geometry: Geometry) -> str | None:
+    if geometry.angle_unit is not None or not geometry.items:
+        return geometry.angle_unit
+    units = {part.angle_unit for part in geometry.items}
+    return units.pop() if len(units) == 1 else None  # a None among them: not every part is an angle
 
 
 def library_type(facts: FactBase, node: AST) -> str | None:

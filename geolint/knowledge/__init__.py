@@ -34,6 +34,7 @@ class KnowledgeBase:
         self._roots: dict[str, Library] = {}
         self._conventional: dict[str, str] = {}
         self._extensions: dict[str, tuple[tuple[str, ...], str]] = {}
+        self._names_reading: dict[tuple[str, str], frozenset[str]] = {}
         for library in libraries:
             for name, target in library.extends.items():
                 self._extensions[name] = (library.packages, target)
@@ -94,6 +95,25 @@ class KnowledgeBase:
 
     def apis(self) -> list[Api]:
         return list(self._apis.values())
+
+    def names_reading(self, field: str, value: str) -> frozenset[str]:
+        """The last parts of the qualified names of APIs with a parameter whose geometry states `value`
+        for `field` (`names_reading("angle_unit", RADIANS)`: `euler2mat`, `from_euler`...): a cheap first
+        test by called name, before a call is resolved."""
+        key = (field, value)
+        found = self._names_reading.get(key)
+        if found is None:
+            found = frozenset(
+                api.qualified_name.rpartition(".")[2]
+                for api in self._apis.values()
+                if any(
+                    parameter.geometry is not None and getattr(parameter.geometry, field) == value
+                    for signature in api.signatures
+                    for parameter in signature.parameters
+                )
+            )
+            self._names_reading[key] = found
+        return found
 
 
 def stubs_folder() -> Path:

@@ -8,7 +8,15 @@ import textwrap
 
 from geolint.config import Config
 from geolint.factbase import facts_for_module
-from geolint.factbase.library_calls import angle_inputs, angle_output, library_type, quaternion_inputs, quaternion_output
+from geolint.factbase.library_calls import (
+    angle_arguments,
+    angle_inputs,
+    angle_output,
+    library_type,
+    quaternion_inputs,
+    quaternion_output,
+    returns_euler_angles,
+)
 from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST
 
 
@@ -110,3 +118,28 @@ def test_a_module_of_the_project_beside_the_file_shadows_the_library(tmp_path) -
         produced = quaternion_output(facts, calls["quaternion_from_euler(0, 0, 1)"])  # type: ignore[arg-type]
         read = quaternion_inputs(facts, calls["quaternion_matrix(q)"])  # type: ignore[arg-type]
         assert (produced, [order for _, order in read]) == ((None, []) if shadowed else (SCALAR_FIRST, [SCALAR_FIRST]))
+
+
+def test_angle_units_of_calls_come_from_the_stubs() -> None:
+    facts, calls = _calls(
+        """
+        from transforms3d.taitbryan import euler2mat, mat2euler
+        from transforms3d.quaternions import quat2axangle
+        from tf.transformations import euler_from_quaternion
+        from scipy.spatial.transform import Rotation
+        M = euler2mat(yaw, pitch, roll)
+        angles = mat2euler(M)
+        axis, angle = quat2axangle(q)
+        rpy = euler_from_quaternion(q)
+        r = Rotation.from_euler("xyz", angles_deg, degrees=flag)
+        """
+    )
+    read = angle_arguments(facts, calls["euler2mat(yaw, pitch, roll)"], "radians")  # type: ignore[arg-type]
+    assert [ast.unparse(argument) for argument in read] == ["yaw", "pitch", "roll"]
+    assert angle_arguments(facts, calls["euler2mat(yaw, pitch, roll)"], "degrees") == []  # type: ignore[arg-type]
+    # `degrees=flag`: the overloads disagree, so nothing is said
+    assert angle_arguments(facts, calls["Rotation.from_euler('xyz', angles_deg, degrees=flag)"], "radians") == []  # type: ignore[arg-type]
+    assert angle_output(facts, calls["mat2euler(M)"]) == "radians"  # type: ignore[arg-type]
+    assert returns_euler_angles(facts, calls["mat2euler(M)"]) and returns_euler_angles(facts, calls["euler_from_quaternion(q)"])  # type: ignore[arg-type]
+    # an axis and an angle: not every part is an angle
+    assert angle_output(facts, calls["quat2axangle(q)"]) is None and not returns_euler_angles(facts, calls["quat2axangle(q)"])  # type: ignore[arg-type]

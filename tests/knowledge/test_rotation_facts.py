@@ -59,6 +59,14 @@ class TestTransforms3d:
             order = _stated(qualified, call, "return")
             assert _same_rotation(_quaternion_parts(produced, order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
 
+    def test_taitbryan_reads_and_returns_the_stated_units(self) -> None:
+        taitbryan = pytest.importorskip("transforms3d.taitbryan")
+        assert _stated("transforms3d.taitbryan.euler2mat", "euler2mat(z, y, x)", "z", "angle_unit") == "radians"
+        assert np.allclose(taitbryan.euler2mat(math.pi / 2, 0.0, 0.0), QUARTER_TURN_Z)
+        order = _stated("transforms3d.taitbryan.euler2quat", "euler2quat(z, y, x)", "return")
+        assert _same_rotation(_quaternion_parts(taitbryan.euler2quat(math.pi / 2, 0.0, 0.0), order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
+        assert np.allclose(taitbryan.mat2euler(QUARTER_TURN_Z), (math.pi / 2, 0.0, 0.0))  # radians, z first
+
     def test_euler2mat_reads_the_stated_unit(self) -> None:
         assert _stated("transforms3d.euler.euler2mat", "euler2mat(a, b, c)", "ak", "angle_unit") == "radians"
         assert np.allclose(self.euler.euler2mat(0.0, 0.0, math.pi / 2), QUARTER_TURN_Z)

@@ -378,7 +378,7 @@ class DegreesAsRadians(FactRule):
     def _check(self, node: Call, units: AngleUnits, consumers: bool) -> None:
         # one cheap name test first: a call named like no radian API (most calls) has no radian
         # arguments, so only the helper and shared-value checks can say anything about it
-        if may_read_radians(self.facts.called_name(node.func) or "") and self._check_radian_api(node, units):
+        if may_read_radians(self.facts, self.facts.called_name(node.func) or "") and self._check_radian_api(node, units):
             return
         if self._check_helper(node, units):
             return

@@ -11,6 +11,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from geolint.factbase import library_calls
 from geolint.factbase.angles import (
     EULER_METHOD_NAMES,
     RETURNED_ANGLES,
@@ -392,6 +393,9 @@ class EulerAnglesInQuaternion(FactRule):
         """A library call that returns Euler angles (`euler_from_quaternion(q)`, `r.as_euler("xyz")`)."""
         facts = self.facts
         qualified = facts.qualified_name(node.func) or ""
+        api = library_calls.called_api(facts, node)
+        if api is not None and library_calls.returns_euler_angles(facts, node):  # the knowledge base (stubs/)
+            return _Source((), f"`{api.qualified_name}` returns Euler angles", True)
         if qualified in RETURNED_ANGLES:
             return _Source((), f"`{qualified}` returns Euler angles", True)
         func = node.func

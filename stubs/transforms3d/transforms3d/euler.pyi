@@ -1,5 +1,7 @@
 from geolint.typing import QuaternionWXYZ, Radians, RotationMatrix, VectorArray
 
+from transforms3d.axangles import axangle2mat as axangle2mat
+
 def euler2mat(ai: Radians, aj: Radians, ak: Radians, axes: str = ...) -> RotationMatrix:
     """Source: transforms3d/euler.py (0.4.2), euler2mat: "ai : float, First rotation angle (according
     to `axes`)", radians (`math.sin(ai)` and friends)."""
