@@ -88,13 +88,9 @@ _ANGLE_MODULES: Final = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"
 _INVERSE_TRIG_MODULES = _ANGLE_MODULES | {"tensorflow", "tensorflow.math"}
 _MAX_DEPTH: Final = 10
 _TWO_PI: Final = 2 * math.pi
-_SPATIALMATH_ANGLE_CALLS: Final = frozenset(
-    {"Rx", "Ry", "Rz", "RPY", "Eul", "rotx", "roty", "rotz", "trotx", "troty", "trotz", "rpy2r", "eul2r", "rpy2tr", "eul2tr"}
-)
-# The names `radian_arguments` knows exactly (beside transforms3d's `euler2*` / `axangle2*` and
-# pytransform3d's `*_from_euler` / `*_from_angle`).
+# The names `radian_arguments` knows without the knowledge base (whose own names it asks for).
 _RADIAN_API_NAMES: Final = frozenset(
-    {"from_euler", "from_rotvec", *_SPATIALMATH_ANGLE_CALLS, "quaternion_from_euler", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
+    {"from_euler", "from_rotvec", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
     | {qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS}
 )
 _KNOWLEDGE_UNITS: Final = {knowledge.RADIANS: RADIANS, knowledge.DEGREES: DEGREES}  # the stubs' unit words -> these
@@ -511,11 +507,7 @@ def may_read_radians(facts: FactBase, called: str) -> bool:
     """Whether a call named `called` (`FactBase.called_name`) can be one `radian_arguments` knows
     (trig and `degrees` / `rad2deg` included): the cheap first test, asked of every call of a module.
     For any other name `radian_arguments` is None and `is_trig_or_conversion` is False."""
-    return (
-        called in _RADIAN_API_NAMES
-        or called.endswith(("_from_euler", "_from_angle"))
-        or library_calls.may_read_angles(facts, called, knowledge.RADIANS)
-    )
+    return called in _RADIAN_API_NAMES or library_calls.may_read_angles(facts, called, knowledge.RADIANS)
 
 
 def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
@@ -530,12 +522,6 @@ def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
         return _scipy_angles(node, last_name(func) or "", positional)
     qualified = facts.qualified_name(func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
-    if qualified.startswith("pytransform3d."):
-        found = _pytransform3d_angles(name, positional)
-        if found is not None:
-            return found
-    if qualified.startswith("spatialmath") and name in _SPATIALMATH_ANGLE_CALLS:
-        return _spatialmath_angles(node, name, positional)
     if qualified in ROTATION_VECTOR_READERS:
         return positional[:1]
     if name == "getQuaternionFromEuler" and (qualified.startswith("pybullet") or isinstance(func, Attribute)):
@@ -556,22 +542,6 @@ def _scipy_angles(node: Call, name: str, positional: list[ast.expr]) -> list[ast
     else:
         angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
     return [angles] if angles is not None else None
-
-
-def _pytransform3d_angles(name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
-    """pytransform3d's `*_from_euler(e, ...)` and `*_from_angle(basis, angle)`."""
-    if name.endswith("_from_euler") and positional:
-        return [positional[0]]
-    if name.endswith("_from_angle") and len(positional) > 1:
-        return [positional[1]]
-    return None
-
-
-def _spatialmath_angles(node: Call, name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
-    """spatialmath's `SE3.Rx(theta)`, `rpy2r(r, p, y)`... unless a `unit` says otherwise."""
-    if keyword(node, "unit") is not None or any(string(value) is not None for value in positional[1:]):
-        return None
-    return positional[:1] if name not in ("RPY", "Eul", "rpy2r", "eul2r", "rpy2tr", "eul2tr") else positional[:3]
 
 
 def is_trig_or_conversion(facts: FactBase, node: Call) -> bool:

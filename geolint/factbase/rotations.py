@@ -77,8 +77,6 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
         return None  # every API below says quat / Quat in its name
     qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
-    if _reads_scalar_first(qualified, name):
-        return SCALAR_FIRST
     if _reads_scalar_last(qualified, name):
         return SCALAR_LAST
     if qualified in _EIGEN_QUATERNIONS:
@@ -89,14 +87,7 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
         return SCALAR_FIRST
     if qualified == _GTSAM_ROT3_QUATERNION:
         return SCALAR_FIRST
-    return _DATA_CONSUMERS.get(_library_key(qualified, name))
-
-
-def _reads_scalar_first(qualified: str, name: str) -> bool:
-    """pytransform3d's `*_from_quaternion` and spatialmath's quaternions read w first."""
-    return (qualified.startswith("pytransform3d.") and (name.endswith("_from_quaternion") or name == "check_quaternion")) or (
-        qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion")
-    )
+    return None
 
 
 def _reads_scalar_last(qualified: str, name: str) -> bool:
@@ -133,8 +124,6 @@ def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if qualified.startswith("geometry_msgs.") or qualified == _GTSAM_ROT3_QUATERNION:
         return None  # takes its components one by one
-    if qualified.startswith("spatialmath") and name in ("UnitQuaternion", "Quaternion"):
-        return positional[0] if len(positional) == 1 and not call.keywords else None
     if qualified in _EIGEN_QUATERNIONS:
         return positional[0] if len(positional) == 1 and not call.keywords else None  # four scalars are spelled out
     if qualified.startswith(("mujoco.", "mujoco_py.")) and name in _MUJOCO_QUATERNION_POSITIONS:
@@ -225,13 +214,7 @@ def quaternion_producer(facts: FactBase, call: Call) -> str | None:
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if name in _PYBULLET_QUATERNIONS:  # camelCase pybullet names, on the module or a client object
         return SCALAR_LAST
-    if qualified.startswith("pytransform3d.") and name.startswith("quaternion_from_"):
-        return SCALAR_FIRST
-    if qualified.startswith("pytorch3d.") and (name.endswith("_to_quaternion") or name in _PYTORCH3D_QUATERNIONS):
-        return SCALAR_FIRST
-    if qualified.startswith("spatialmath") and name == "r2q" and keyword(call, "order") is None:
-        return SCALAR_FIRST
-    return _DATA_PRODUCERS.get(_library_key(qualified, name))
+    return None
 
 
 def is_scipy_rotation_value(facts: FactBase, node: AST) -> bool:
@@ -255,11 +238,6 @@ def is_scipy_rotation_value(facts: FactBase, node: AST) -> bool:
     return False
 
 
-def _library_key(qualified: str, name: str) -> str:
-    """`pytorch3d.transforms.rotation_conversions.quaternion_to_matrix` -> `pytorch3d.quaternion_to_matrix`."""
-    return f"{qualified.split('.', 1)[0]}.{name}" if qualified else ""
-
-
 _SCIPY_CONSTRUCTORS: Final = (
     "from_quat", "from_matrix", "from_euler", "from_rotvec", "from_mrp", "from_davenport", "from_dcm",
     "random", "identity", "concatenate",
@@ -268,21 +246,6 @@ _SCIPY_CONSTRUCTORS: Final = (
 _PYBULLET_QUATERNIONS: Final = frozenset({"getQuaternionFromEuler", "getQuaternionFromAxisAngle", "getDifferenceQuaternion"})
 # (Christoph Gohlke's transformations.py, as PyPI's transformations, trimesh.transformations, ROS tf.transformations
 # and tf_transformations ship it: stubs/transformations, stubs/trimesh, stubs/tf, stubs/tf_transformations.)
-_PYTORCH3D_QUATERNIONS: Final = frozenset(
-    {"quaternion_multiply", "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion", "random_quaternions"}
-)
-# Consumers and producers keyed by `<top package>.<function>` (any submodule).
-_DATA_CONSUMERS: Final = {
-    **{f"pytorch3d.{name}": SCALAR_FIRST for name in (
-        "quaternion_to_matrix", "quaternion_to_axis_angle", "quaternion_apply", "quaternion_multiply",
-        "quaternion_raw_multiply", "quaternion_invert", "standardize_quaternion")},
-    "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_FIRST,
-    "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_LAST,
-    "open3d.get_rotation_matrix_from_quaternion": SCALAR_FIRST,
-    **{f"roma.{name}": SCALAR_LAST for name in (
-        "unitquat_to_rotmat", "unitquat_to_rotvec", "unitquat_to_euler", "quat_product", "quat_action",
-        "quat_conjugation", "quat_inverse", "unitquat_slerp")},
-}  # fmt: skip
 _PYBULLET_ORIENTATION_ARGUMENTS: Final[dict[str, tuple[tuple[int, ...], frozenset[str]]]] = {
     "resetBasePositionAndOrientation": ((2,), frozenset({"ornObj"})),
     "loadURDF": ((2,), frozenset({"baseOrientation"})),
@@ -308,13 +271,6 @@ _PYBULLET_FRAME_ORIENTATIONS: Final[dict[str, tuple[frozenset[str], frozenset[st
 # the names `pybullet_quaternion_values` reads
 PYBULLET_QUATERNION_CALLS = PYBULLET_ORIENTATION_CALLS | frozenset(_PYBULLET_FRAME_ORIENTATIONS)
 _PYBULLET_CONSUMERS: Final = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
-_DATA_PRODUCERS: Final = {
-    **{f"roma.{name}": SCALAR_LAST for name in (
-        "rotmat_to_unitquat", "rotvec_to_unitquat", "euler_to_unitquat", "quat_product", "quat_conjugation",
-        "quat_inverse", "random_unitquat", "unitquat_slerp")},
-    "pytransform3d.quaternion_wxyz_from_xyzw": SCALAR_FIRST,
-    "pytransform3d.quaternion_xyzw_from_wxyz": SCALAR_LAST,
-}
 
 
 def simulator_function(facts: FactBase, func: AST) -> tuple[str, str] | None:

@@ -78,6 +78,7 @@ class _ModuleReader:
     def __init__(self, library: Library, module: str, path: Path, label: str) -> None:
         self.library, self.module, self.path, self.label = library, module, path, label
         self.local: dict[str, str] = {}  # names bound in the stub -> qualified names
+        self.type_aliases: dict[str, ast.expr] = {}  # `_Q = Annotated[QuaternionXYZW, STACKED]` -> its annotation
 
     def read(self) -> None:
         try:
@@ -104,6 +105,8 @@ class _ModuleReader:
                     self.local[name.asname or name.name.partition(".")[0]] = name.name if name.asname else name.name.partition(".")[0]
             elif isinstance(statement, (ast.ClassDef, ast.FunctionDef)):
                 self.local[statement.name] = f"{prefix}.{statement.name}"
+            elif isinstance(statement, ast.Assign) and len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Name) and isinstance(statement.value, ast.Subscript):
+                self.type_aliases[statement.targets[0].id] = statement.value  # a type alias, used as an annotation
             elif isinstance(statement, ast.Assign) and len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Name):
                 aliased = _dotted(statement.value)
                 if aliased is not None:  # `quat2mat = quaternion_matrix`: the same API under a second name
@@ -196,6 +199,12 @@ class _ModuleReader:
 
     def geometry(self, node: ast.expr) -> Geometry | None:
         """What an annotation states, or None."""
+        if isinstance(node, ast.Name) and node.id in self.type_aliases:
+            aliased = self.type_aliases.pop(node.id)  # out while it is read: an alias of itself states nothing
+            try:
+                return self.geometry(aliased)
+            finally:
+                self.type_aliases[node.id] = aliased
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.BitOr):  # `X | None`
             sides = [side for side in (node.left, node.right) if not (isinstance(side, ast.Constant) and side.value is None)]
             return self.geometry(sides[0]) if len(sides) == 1 else None

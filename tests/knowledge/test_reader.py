@@ -9,7 +9,14 @@ from pathlib import Path
 import pytest
 
 from geolint.algebra import Kind
-from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST, KnowledgeBase, StubError, agreed, bind
+from geolint.knowledge import (
+    SCALAR_FIRST,
+    SCALAR_LAST,
+    KnowledgeBase,
+    StubError,
+    agreed,
+    bind,
+)
 from geolint.knowledge.reader import read_library
 
 
@@ -92,7 +99,7 @@ def test_versioned_overloads_count_only_when_the_versions_hold(tmp_path: Path) -
     api = kb.api("rotlib.core.euler")
     assert api is not None
     call = _call("euler(a)")
-    unit = lambda bound: bound.signature.parameter("angles").geometry.angle_unit  # type: ignore[union-attr]  # noqa: E731
+    unit = lambda bound: bound.signature.parameter("angles").geometry.angle_unit  # type: ignore[union-attr]
     assert agreed(bind(api, call), unit) is None  # version unknown: no overload counts
     assert agreed(bind(api, call, lambda spec: spec == ">=2"), unit) == "degrees"
     assert agreed(bind(api, call, lambda spec: spec == "<2"), unit) == "radians"
@@ -122,3 +129,30 @@ def test_aliases_classes_components_and_receivers(tmp_path: Path) -> None:
 def test_a_bad_stub_is_a_clear_error_naming_the_file(tmp_path: Path, text: str, problem: str) -> None:
     with pytest.raises(StubError, match=problem):
         _library(tmp_path, {"rotlib/core.pyi": text})
+
+
+def test_a_type_alias_states_what_its_annotation_states(tmp_path: Path) -> None:
+    kb = _library(
+        tmp_path,
+        {
+            "rotlib/__init__.pyi": '''
+            from geolint.knowledge.markers import STACKED
+            from geolint.typing import QuaternionXYZW
+            from typing_extensions import Annotated
+            _Q = Annotated[QuaternionXYZW, STACKED]
+            _Loop = Annotated[_Loop, STACKED]
+            def normalize(q: _Q) -> _Q:
+                """Source: rotlib/core.py, normalize."""
+            def looped(q: _Loop) -> None:
+                """Source: rotlib/core.py, looped."""
+            '''
+        },
+    )
+    api = kb.api("rotlib.normalize")
+    assert api is not None
+    (signature,) = api.signatures
+    returned = signature.returns
+    assert returned is not None and returned.quaternion_order == SCALAR_LAST and returned.stacked
+    assert signature.parameters[0].geometry == returned
+    looped = kb.api("rotlib.looped")
+    assert looped is not None and looped.signatures[0].parameters[0].geometry is not None  # read once, then nothing more

@@ -1,0 +1,1 @@
+from open3d import geometry as geometry

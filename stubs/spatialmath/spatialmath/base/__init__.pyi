@@ -1,0 +1,26 @@
+from spatialmath.base.quaternions import (
+    q2r as q2r,
+    q2v as q2v,
+    qconj as qconj,
+    qqmul as qqmul,
+    qslerp as qslerp,
+    qunit as qunit,
+    qvmul as qvmul,
+    r2q as r2q,
+    v2q as v2q,
+)
+from spatialmath.base.transforms3d import (
+    angvec2r as angvec2r,
+    eul2r as eul2r,
+    eul2tr as eul2tr,
+    rotx as rotx,
+    roty as roty,
+    rotz as rotz,
+    rpy2r as rpy2r,
+    rpy2tr as rpy2tr,
+    tr2eul as tr2eul,
+    tr2rpy as tr2rpy,
+    trotx as trotx,
+    troty as troty,
+    trotz as trotz,
+)
