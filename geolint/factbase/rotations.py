@@ -77,24 +77,7 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
         return None  # every API below says quat / Quat in its name
     qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
-    if _reads_scalar_last(qualified, name):
-        return SCALAR_LAST
-    if qualified in _EIGEN_QUATERNIONS:
-        if any(isinstance(arg, Starred) for arg in call.args):
-            return SCALAR_FIRST  # `pin.Quaternion(*q)`: four coefficients
-        return SCALAR_FIRST if len(call.args) == 4 else SCALAR_LAST if len(call.args) == 1 and not call.keywords else None
-    if qualified.startswith(("mujoco.", "mujoco_py.")) and name in _MUJOCO_QUATERNION_POSITIONS:
-        return SCALAR_FIRST
-    if qualified == _GTSAM_ROT3_QUATERNION:
-        return SCALAR_FIRST
-    return None
-
-
-def _reads_scalar_last(qualified: str, name: str) -> bool:
-    """ROS 1 messages (positional fields in declaration order: x, y, z, w) and pybullet (on the module
-    or on a BulletClient) read w last. (tf.transformations and tf_transformations: stubs/tf,
-    stubs/tf_transformations.)"""
-    return (qualified.startswith("geometry_msgs.") and name == "Quaternion") or name in _PYBULLET_CONSUMERS
+    return SCALAR_LAST if name in _PYBULLET_CONSUMERS else None  # pybullet, on the module or on a BulletClient
 
 
 # transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion), also under the
@@ -113,22 +96,12 @@ def _operation_order(facts: FactBase, func: ast.expr) -> str | None:
 def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
     """The one argument of a quaternion consumer that holds the whole quaternion (a 4-vector or a
     stack of them), or None: the call spells components out, or the API takes no quaternion first."""
-    func = call.func
     positional = [arg for arg in call.args if not isinstance(arg, Starred)]
     if len(positional) != len(call.args):
         return None
     if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
         known = library_calls.expected_quaternion_order(facts, call)
         return known[1] if known is not None else None
-    qualified = branch_qualified_name(facts, func) or ""
-    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
-    if qualified.startswith("geometry_msgs.") or qualified == _GTSAM_ROT3_QUATERNION:
-        return None  # takes its components one by one
-    if qualified in _EIGEN_QUATERNIONS:
-        return positional[0] if len(positional) == 1 and not call.keywords else None  # four scalars are spelled out
-    if qualified.startswith(("mujoco.", "mujoco_py.")) and name in _MUJOCO_QUATERNION_POSITIONS:
-        position = _MUJOCO_QUATERNION_POSITIONS[name]
-        return positional[position] if position < len(positional) else None
     return positional[0] if positional else None
 
 
@@ -157,9 +130,6 @@ def spread_argument(facts: FactBase, call: Call) -> ast.expr | None:
         return None
     if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
         return library_calls.spread_quaternion(facts, call)
-    qualified = facts.qualified_name(call.func) or ""
-    if qualified in _COMPONENT_CONSTRUCTORS or (qualified.startswith("geometry_msgs.") and qualified.endswith(".Quaternion")):
-        return call.args[0].value
     return None
 
 
@@ -411,22 +381,6 @@ _SIMULATOR_ALIASES: Final = {"omni.isaac.core.utils.torch": "omni.isaac.core.uti
 _SIMULATOR_NAMES: Final = frozenset(
     {name for consumers, producers in _SIMULATOR_TABLES.values() for name in (*consumers, *producers)} | {"convert_quat"}
 )
-# Eigen's quaternion as eigenpy binds it (pinocchio's `pin.Quaternion`): "Initialize from coefficients. The
-# order of coefficients is *w*, *x*, *y*, *z*" for four scalars, but "vec4: a 4D vector representing quaternion
-# coefficients in the order xyzw" for one vector (eigenpy's Quaternion.__init__ docstrings, as pinocchio's
-# stubs list them).
-_EIGEN_QUATERNIONS: Final = ("pinocchio.Quaternion", "eigenpy.Quaternion")
-# GTSAM: `Rot3.Quaternion(w, x, y, z)` "Create from Quaternion coefficients" (gtsam/geometry/Rot3.h; C++
-# `Rot3::quaternion(double w, double x, double y, double z)` in older releases, `Quaternion` in the wrapper)
-_GTSAM_ROT3_QUATERNION: Final = "gtsam.Rot3.Quaternion"
-# constructors taking the four components one by one (geometry_msgs and numpy-quaternion are tested apart)
-_COMPONENT_CONSTRUCTORS: Final = frozenset(
-    {"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", _GTSAM_ROT3_QUATERNION, *_EIGEN_QUATERNIONS}
-)
-# MuJoCo's quaternions are (w, x, y, z) (its own tests expect the identity `{1, 0, 0, 0}` from mju_mat2Rot);
-# the utility functions write into their first argument: `mju_quat2Mat(res, quat)`, `mju_quat2Vel(res, quat,
-# dt)`, `mju_quatIntegrate(quat, vel, scale)`. Name -> position of the quaternion read.
-_MUJOCO_QUATERNION_POSITIONS: Final = {"mju_quat2Mat": 1, "mju_quat2Vel": 1, "mju_quatIntegrate": 0}
 # Isaac Sim core (`omni.isaac.core` up to 4.2, `isaacsim.core.api` / `isaacsim.core.prims` from 4.5): prims,
 # objects and views take `orientation(s)` "quaternion is scalar-first (w, x, y, z)" (docstrings of
 # XFormPrim, XFormPrimView and DynamicCuboid in Isaac Sim 4.1; the isaacsim.core.api 4.8.0 API page).

@@ -1,0 +1,1 @@
+from geometry_msgs import msg as msg

@@ -1,0 +1,1 @@
+from geometry_msgs.msg import Quaternion as Quaternion

@@ -1,0 +1,1 @@
+from mujoco_py import functions as functions

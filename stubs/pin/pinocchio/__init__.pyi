@@ -1,0 +1,2 @@
+from eigenpy import Quaternion as Quaternion
+from pinocchio import rpy as rpy
