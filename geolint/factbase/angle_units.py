@@ -44,8 +44,10 @@ from ast import (
 )
 from collections import Counter
 from dataclasses import dataclass, field
-from typing import Final, TYPE_CHECKING
+from typing import TYPE_CHECKING, Final
 
+from geolint import knowledge
+from geolint.factbase import library_calls
 from geolint.factbase.angles import (
     DEGREES,
     EULER_METHOD_NAMES,
@@ -54,13 +56,10 @@ from geolint.factbase.angles import (
     RETURNED_EULER_METHODS,
     ROTATION_VECTOR_READERS,
 )
-from geolint import knowledge
-from geolint.factbase import library_calls
 from geolint.factbase.classes import enclosing_class, project_class
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.syntax import keyword, last_name, number, positional_args, string, walk_within
 from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
 from geolint.factbase.summaries import (
     Function,
@@ -71,6 +70,14 @@ from geolint.factbase.summaries import (
     plain_parameters,
     settled_returns,
     shifted,
+)
+from geolint.factbase.syntax import (
+    keyword,
+    last_name,
+    number,
+    positional_args,
+    string,
+    walk_within,
 )
 
 if TYPE_CHECKING:
@@ -95,30 +102,6 @@ _RADIAN_API_NAMES: Final = frozenset(
 )
 _KNOWLEDGE_UNITS: Final = {knowledge.RADIANS: RADIANS, knowledge.DEGREES: DEGREES}  # the stubs' unit words -> these
 _ROTATION_VECTOR_NAMES: Final = frozenset({"from_rotvec", *(qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS)})
-
-
-# Library calls that read angles in DEGREES, by qualified name: each angle's position and keyword.
-DEGREE_CONSUMERS: Final[dict[str, tuple[tuple[int, str], ...]]] = {
-    # glRotatef/glRotated(angle, x, y, z): "The angle of rotation, in degrees" (OpenGL reference,
-    # learn.microsoft.com/en-us/windows/win32/OpenGL/glrotatef); PyOpenGL and pyglet.gl bind the C call
-    **{f"{module}.{name}": ((0, "angle"),) for module in ("OpenGL.GL", "pyglet.gl") for name in ("glRotatef", "glRotated")},
-    # getRotationMatrix2D(center, angle, scale): "Rotation angle in degrees. Positive values mean
-    # counter-clockwise rotation" (OpenCV imgproc reference, docs.opencv.org group__imgproc__transform)
-    "cv2.getRotationMatrix2D": ((1, "angle"),),
-    # rotate(input, angle, axes=(1, 0), ...): "angle : float The rotation angle in degrees"
-    # (docs.scipy.org/doc/scipy/reference/generated/scipy.ndimage.rotate.html)
-    "scipy.ndimage.rotate": ((1, "angle"),),
-    "scipy.ndimage.interpolation.rotate": ((1, "angle"),),
-    # rotate(img, angle, ...): "angle (number) - rotation angle value in degrees, counter-clockwise"
-    # (docs.pytorch.org/vision/stable/generated/torchvision.transforms.functional.rotate.html)
-    "torchvision.transforms.functional.rotate": ((1, "angle"),),
-    # carla.Rotation(pitch=0.0, yaw=0.0, roll=0.0): "pitch (float - degrees) Y-axis rotation angle",
-    # yaw and roll likewise (CARLA Python API reference, Docs/python_api.md, carla.Rotation)
-    "carla.Rotation": ((0, "pitch"), (1, "yaw"), (2, "roll")),
-}
-DEGREE_CONSUMER_NAMES: Final = frozenset(qualified.rpartition(".")[2] for qualified in DEGREE_CONSUMERS)  # by `called_name`
-_GL_ROTATE: Final = frozenset({"glRotatef", "glRotated"})
-_GL_PACKAGES: Final = frozenset({"OpenGL", "pyglet"})  # `from pyglet.gl import *`: the usual way GL is imported
 
 
 @dataclass(frozen=True)
@@ -559,55 +542,38 @@ def is_trig_or_conversion(facts: FactBase, node: Call) -> bool:
     return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
 
 
-def degree_arguments(facts: FactBase, call: Call) -> list[ast.expr]:
-    """The angle arguments of a library call that reads degrees (`DEGREE_CONSUMERS`), else [].
-    `glRotatef` also counts under a star import of OpenGL or pyglet (the name is OpenGL's own)."""
-    if facts.called_name(call.func) not in DEGREE_CONSUMER_NAMES:
+def may_read_degrees(facts: FactBase, called: str) -> bool:
+    """Whether a call named `called` (`FactBase.called_name`) may be a library API that reads degrees
+    (`degree_arguments`): the cheap first test, asked of every call of a module."""
+    return library_calls.may_read_angles(facts, called, knowledge.DEGREES)
+
+
+def degree_arguments(facts: FactBase, call: Call, *, whatever_the_keywords: bool = False) -> list[ast.expr]:
+    """The arguments a library call reads in degrees, as its stub says (`glRotatef(angle, ...)`,
+    `carla.Rotation(pitch=...)`, `from_euler(seq, angles, degrees=True)`), else []. With
+    `whatever_the_keywords`, only those the API reads in degrees however it is called (not
+    `from_euler`'s, which `degrees=True` chose)."""
+    if not may_read_degrees(facts, facts.called_name(call.func) or ""):
         return []  # the cheap test first: asked of every call
-    qualified = facts.qualified_name(call.func) or ""
-    found = DEGREE_CONSUMERS.get(qualified)
-    if (
-        found is None
-        and qualified in _GL_ROTATE
-        and qualified not in facts.index.functions
-        and any(module.split(".")[0] in _GL_PACKAGES for module in facts.index.star_imports)
-    ):
-        found = ((0, "angle"),)
-    if found is None:
-        return []
-    positional = positional_args(call)
-    arguments = []
-    for position, name in found:
-        given = keyword(call, name)
-        if len(positional) > position:
-            arguments.append(positional[position])
-        elif given is not None:
-            arguments.append(given.value)
-    return arguments
+    return library_calls.angle_arguments(facts, call, knowledge.DEGREES, whatever_the_keywords=whatever_the_keywords)
 
 
 def unit_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str | None:
     """The unit `call` reads its argument `argument` in, when the call always runs with it (not under
     a condition of its function): RADIANS for a radian API (`np.cos(theta)`, `from_euler` without
     `degrees=True`), DEGREES for a conversion from degrees (`np.radians(a)`) or `from_euler(...,
-    degrees=True)` or a library call in `DEGREE_CONSUMERS` (`glRotatef(a, 0, 1, 0)`); None otherwise."""
+    degrees=True)` or a library call that reads degrees (`glRotatef(a, 0, 1, 0)`); None otherwise."""
     if not runs_unconditionally(facts, call):
         return None
-    if any(element is argument for found in radian_arguments(facts, call) or () for element in _angle_elements(found)):
+    if any(element is argument for found in radian_arguments(facts, call) or () for element in angle_elements(found)):
         return RADIANS
     if any(factor is argument for factor in rotation_vector_factors(facts, call)):
         return RADIANS
-    if any(found is argument for found in degree_arguments(facts, call)):
+    if any(element is argument for found in degree_arguments(facts, call) for element in angle_elements(found)):
         return DEGREES
     positional = positional_args(call)
     if facts.shared(AngleUnits).converts(call) == RADIANS and positional and positional[0] is argument:
         return DEGREES
-    if is_scipy_rotation_method(facts, call.func, "from_euler"):
-        degrees = keyword(call, "degrees")
-        if degrees is not None and isinstance(degrees.value, Constant) and degrees.value.value is True:
-            angles = positional[1] if len(positional) > 1 else getattr(keyword(call, "angles"), "value", None)
-            if angles is not None and any(element is argument for element in _angle_elements(angles)):
-                return DEGREES
     return None
 
 
@@ -624,7 +590,8 @@ def rotation_vector_factors(facts: FactBase, call: Call) -> list[ast.expr]:
     return [factor for factor in (product.left, product.right) if number(factor) is None]
 
 
-def _angle_elements(node: ast.expr) -> list[ast.expr]:
+def angle_elements(node: ast.expr) -> list[ast.expr]:
+    """The angles an angle argument holds: a list or tuple literal's items, or the argument itself."""
     if isinstance(node, (ast.List, ast.Tuple)):
         return list(node.elts)
     return [node]

@@ -20,6 +20,7 @@ from geolint.knowledge import (
     Bound,
     Geometry,
     KnowledgeBase,
+    Signature,
     agreed,
     bind,
     knowledge_base,
@@ -105,10 +106,37 @@ def _argument_facts(facts: FactBase, call: Call, field: str) -> list[tuple[ast.e
     return found
 
 
-def angle_arguments(facts: FactBase, call: Call, unit: str) -> list[ast.expr]:
+def angle_arguments(facts: FactBase, call: Call, unit: str, *, whatever_the_keywords: bool = False) -> list[ast.expr]:
     """The arguments a known library call reads as angles in `unit` (`geolint.knowledge.RADIANS` or
-    `DEGREES`); [] when the stub says none, or its overloads disagree (`degrees=flag`)."""
-    return [argument for argument, stated in angle_inputs(facts, call) if stated == unit]
+    `DEGREES`); [] when the stub says none, or its overloads disagree (`degrees=flag`). With
+    `whatever_the_keywords`, only parameters in that unit in every overload of the API (`glRotatef`'s
+    angle, not `from_euler(..., degrees=True)`'s, which a keyword chose)."""
+    found = [argument for argument, stated in angle_inputs(facts, call) if stated == unit]
+    if not whatever_the_keywords or not found:
+        return found
+    bounds = library_call(facts, call)
+    api = called_api(facts, call)
+    names = {name for name, argument in bounds[0].arguments.items() if any(argument is chosen for chosen in found)} if bounds else set()
+    fixed = {name for name in names if api is not None and all(_states_unit(signature, name, unit) for signature in api.signatures)}
+    return [argument for name, argument in bounds[0].arguments.items() if name in fixed] if bounds else []
+
+
+def choosing_keywords(facts: FactBase, call: Call) -> list[str]:
+    """The keywords of a known library call that choose its overload (`degrees=True`), as written."""
+    bounds = library_call(facts, call)
+    if not bounds:
+        return []
+    chosen = {
+        given.arg for given in call.keywords
+        for bound in bounds
+        if given.arg is not None and (parameter := bound.signature.parameter(given.arg)) is not None and parameter.literal is not None
+    }  # fmt: skip
+    return [f"{given.arg}={ast.unparse(given.value)}" for given in call.keywords if given.arg in chosen]
+
+
+def _states_unit(signature: Signature, name: str, unit: str) -> bool:
+    parameter = signature.parameter(name)
+    return parameter is None or (parameter.geometry is not None and parameter.geometry.angle_unit == unit)
 
 
 def may_read_angles(facts: FactBase, called: str, unit: str) -> bool:

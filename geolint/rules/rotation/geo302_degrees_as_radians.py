@@ -37,11 +37,11 @@ from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.base import Invalid, Valid
 from geolint.factbase.angle_units import (
     ANGLE_UNITS,
-    DEGREE_CONSUMER_NAMES,
     DEGREES,
     RADIANS,
     AngleUnits,
     degree_arguments,
+    may_read_degrees,
     enclosing_class,
     format_angle,
     is_trig_or_conversion,
@@ -518,15 +518,16 @@ class DegreesAsRadians(FactRule):
         return self.facts.module_fact("dict literals", lambda: self.facts.index.nodes(ast.Dict))  # type: ignore[arg-type,return-value]
 
     def _degree_consumers(self) -> list[tuple[ast.expr, Call]]:
-        """The module's calls to a library reading degrees (`DEGREE_CONSUMERS`), with their angle argument."""
+        """The module's calls to a library that reads degrees however it is called (`glRotatef`, not
+        `from_euler(..., degrees=True)`, whose keyword may be a test's round trip), with their angle argument."""
 
         def collect() -> list[tuple[ast.expr, Call]]:
             found: list[tuple[ast.expr, Call]] = []
             facts = self.facts
             for call in facts.index.nodes(Call):
                 assert isinstance(call, Call)
-                if facts.called_name(call.func) in DEGREE_CONSUMER_NAMES:  # `degree_arguments`' own first test
-                    found.extend((argument, call) for argument in degree_arguments(facts, call))
+                if may_read_degrees(facts, facts.called_name(call.func) or ""):  # `degree_arguments`' own first test
+                    found.extend((argument, call) for argument in degree_arguments(facts, call, whatever_the_keywords=True))
             return found
 
         return self.facts.module_fact("degree consumers", collect)

@@ -2,25 +2,28 @@
 
 from __future__ import annotations
 
+import ast
+import re
+from ast import BinOp, Call
 from typing import Final
 
-import ast
-from ast import BinOp, Call, Constant
-import re
-
-from geolint.factbase.model import keyword, positional_args, string
-from geolint.factbase.rotations import is_scipy_rotation_method
-from geolint.rules.fact_rule import FactRule
-from geolint.rules.base import Invalid, Valid
+from geolint.factbase import library_calls
 from geolint.factbase.angle_units import (
     DEGREES,
     RADIANS,
     AngleUnits,
+    angle_elements,
     degree_arguments,
 )
-from geolint.rules.rotation.angle_findings import report_conversion_of_converted, report_hand_conversion_of_converted, wrong_unit_passed
+from geolint.factbase.model import positional_args, string
+from geolint.rules.base import Invalid, Valid
+from geolint.rules.fact_rule import FactRule
+from geolint.rules.rotation.angle_findings import (
+    report_conversion_of_converted,
+    report_hand_conversion_of_converted,
+    wrong_unit_passed,
+)
 from geolint.rules.triggers import AllOf
-
 
 # `angle_units="degrees"`, `unit="deg"`: a keyword that states the unit of the call's angles
 _UNIT_KEYWORD: Final = re.compile(r"(?:^|_)units?$")
@@ -201,35 +204,19 @@ class RadiansAsDegrees(FactRule):
         if node.keywords and self._check_unit_keyword(node, units):
             return
         angles = degree_arguments(facts, node)
-        if angles:
-            for angle in angles:
-                unit = units.unit_of(angle)
-                if unit is not None and unit.unit == RADIANS and not unit.by_name:
-                    self.report(
-                        angle,
-                        f"`{self.code_of(node.func)}` reads its angle in degrees, but `{self.code_of(angle)}` is in radians ({unit.evidence})",
-                        evidence=(unit.evidence,),
-                    )
-                    break
+        if not angles:
             return
-        if not is_scipy_rotation_method(facts, node.func, "from_euler"):
-            return
-        degrees = keyword(node, "degrees")
-        if degrees is None or not (isinstance(degrees.value, Constant) and degrees.value.value is True):
-            return
-        positional = positional_args(node)
-        given = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
-        if given is None:
-            return
-        elements = list(given.elts) if isinstance(given, (ast.List, ast.Tuple)) else [given]
-        judged = [(element, units.unit_of(element)) for element in elements]
-        in_radians = [(element, unit) for element, unit in judged if unit is not None and unit.unit == RADIANS]
-        if not in_radians or any(unit is not None and unit.unit == DEGREES for _, unit in judged):
-            return
-        element, unit = in_radians[0]
-        self.report(
-            element,
-            f"`{self.code_of(node.func)}(..., degrees=True)` reads degrees, but `{self.code_of(element)}` is in radians "
-            f"({unit.evidence})",
-            evidence=(unit.evidence,),
-        )
+        told = library_calls.choosing_keywords(facts, node)  # `degrees=True`: the call itself says degrees
+        reads = f"`{self.code_of(node.func)}(..., {', '.join(told)})` reads degrees" if told else f"`{self.code_of(node.func)}` reads its angle in degrees"
+        for angle in angles:
+            judged = [(element, units.unit_of(element)) for element in angle_elements(angle)]
+            if any(unit is not None and unit.unit == DEGREES for _, unit in judged):
+                continue  # radians beside degrees in one list: which one is wrong is not clear
+            # a name that says radians contradicts a call that says degrees itself; an API that always reads
+            # degrees needs the code's evidence
+            in_radians = [(element, unit) for element, unit in judged if unit is not None and unit.unit == RADIANS and (told or not unit.by_name)]
+            if in_radians:
+                element, unit = in_radians[0]
+                self.report(element, f"{reads}, but `{self.code_of(element)}` is in radians ({unit.evidence})", evidence=(unit.evidence,))
+                return
+
