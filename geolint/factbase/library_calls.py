@@ -78,6 +78,23 @@ def spread_quaternion(facts: FactBase, call: Call) -> ast.expr | None:
     return bounds[0].spread if len(spread) == 1 else None
 
 
+def quaternion_stacks(facts: FactBase, call: Call) -> bool:
+    """Whether the quaternion a known library call reads may be an (N, 4) stack (`STACKED` in its stub)."""
+    inputs = quaternion_inputs(facts, call)
+    if not inputs:
+        return False
+    argument = inputs[0][0]
+    return agreed(
+        library_call(facts, call),
+        lambda bound: next((_stacked(bound, name) for name, given in bound.arguments.items() if given is argument), False),
+    ) is True
+
+
+def _stacked(bound: Bound, name: str) -> bool:
+    parameter = bound.signature.parameter(name)
+    return parameter is not None and parameter.geometry is not None and parameter.geometry.stacked
+
+
 def quaternion_output(facts: FactBase, call: Call) -> str | None:
     """The component order of the quaternion the call returns, or None."""
     return agreed(library_call(facts, call), lambda bound: _returned(bound).quaternion_order)

@@ -44,28 +44,10 @@ def is_scipy_rotation_method(facts: FactBase, func: AST, *methods: str) -> bool:
     return isinstance(func.value, Name) and func.value.id in _SCIPY_ROTATION_ALIASES and func.value.id not in facts.index.imports
 
 
-_CONSUMED, _PRODUCED = 0, 1  # the two tables of each simulator module
-
-
-def _simulator_order(facts: FactBase, call: Call, side: int) -> str | None:
-    """The order a simulator API (Isaac Gym, Isaac Sim, Isaac Lab) reads (`_CONSUMED`) or returns
-    (`_PRODUCED`); `convert_quat` says both in its arguments."""
-    found = simulator_function(facts, call.func)
-    if found is None:
-        return None
-    module, name = found
-    if name == "convert_quat":
-        return _convert_quat_orders(call)[side]
-    return _SIMULATOR_TABLES[module][side].get(name)
-
-
 def quaternion_order(facts: FactBase, call: Call) -> str | None:
     """The component order the called API expects for its quaternion argument, or None if unknown."""
     func = call.func
     called = facts.called_name(func) or ""
-    consumed = _simulator_order(facts, call, _CONSUMED) if called in _SIMULATOR_NAMES else None
-    if consumed is not None:
-        return consumed
     if called in _TRANSFORMS3D_OPERATIONS:
         operation = _operation_order(facts, func)
         if operation is not None:
@@ -177,9 +159,6 @@ def quaternion_producer(facts: FactBase, call: Call) -> str | None:
                 return SCALAR_FIRST if value.value else SCALAR_LAST
             return None
         return SCALAR_LAST if is_scipy_rotation_value(facts, func.value) else None
-    produced = _simulator_order(facts, call, _PRODUCED) if facts.called_name(func) in _SIMULATOR_NAMES else None
-    if produced is not None:
-        return produced
     qualified = branch_qualified_name(facts, func) or ""
     name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
     if name in _PYBULLET_QUATERNIONS:  # camelCase pybullet names, on the module or a client object
@@ -243,42 +222,6 @@ PYBULLET_QUATERNION_CALLS = PYBULLET_ORIENTATION_CALLS | frozenset(_PYBULLET_FRA
 _PYBULLET_CONSUMERS: Final = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
 
 
-def simulator_function(facts: FactBase, func: AST) -> tuple[str, str] | None:
-    """(module, name) of an Isaac Gym / Isaac Sim / Isaac Lab quaternion function in `_SIMULATOR_TABLES`,
-    through imports or through the one star import of such a module (`from isaacgym.torch_utils import *`,
-    as most Isaac Gym tasks write it) when the module binds no name of its own that shadows it."""
-    qualified = facts.qualified_name(func) or ""
-    module, _, name = qualified.rpartition(".")
-    module = _SIMULATOR_ALIASES.get(module, module)
-    if module in _SIMULATOR_TABLES:
-        return module, name
-    if not isinstance(func, Name) or func.id in facts.index.imports:
-        return None
-    starred = _star_imported_tables(facts)
-    if len(starred) != 1 or facts.index.lookup(func.id, facts.index.scope_of(func)):
-        return None  # none, or two tables that may disagree (`quat_mul` is x, y, z, w in one, w, x, y, z in the other)
-    (module,) = starred
-    tables = _SIMULATOR_TABLES[module]
-    return (module, func.id) if func.id in tables[0] or func.id in tables[1] or func.id == "convert_quat" else None
-
-
-def _star_imported_tables(facts: FactBase) -> frozenset[str]:
-    return frozenset(
-        module for module in (_SIMULATOR_ALIASES.get(module, module) for module in facts.index.star_imports) if module in _SIMULATOR_TABLES
-    )
-
-
-def _convert_quat_orders(call: Call) -> tuple[str | None, str | None]:
-    """Isaac Lab's `convert_quat(q, to="xyzw")`: (the order it reads, the order it returns). The same in
-    every Isaac Lab version, whatever the library's own convention."""
-    given = keyword(call, "to")
-    target = given.value if given is not None else call.args[1] if len(call.args) > 1 else None
-    to = SCALAR_LAST if target is None else target.value if isinstance(target, Constant) else None
-    if to not in (SCALAR_LAST, SCALAR_FIRST):
-        return None, None
-    return (SCALAR_FIRST if to == SCALAR_LAST else SCALAR_LAST), to  # type: ignore[return-value]
-
-
 def isaac_orientation_arguments(facts: FactBase, call: Call) -> list[ast.expr]:
     """The (w, x, y, z) orientation arguments of an Isaac Sim core call: `orientation=` / `orientations=`
     of a prim, object or view constructor (`XFormPrim(path, orientation=q)`, `DynamicCuboid(...)`,
@@ -316,71 +259,11 @@ def _imports_isaac_core(facts: FactBase) -> bool:
 
 
 def accepts_stacks(facts: FactBase, call: Call) -> bool:
-    """Isaac Gym / Isaac Sim quaternion functions and prim views take (N, 4) stacks as well as one quaternion."""
-    return simulator_function(facts, call.func) is not None or bool(isaac_orientation_arguments(facts, call))
+    """Whether the call takes (N, 4) stacks as well as one quaternion: its stub says so (`STACKED`), or it
+    is an Isaac Sim prim or view with orientations."""
+    return library_calls.quaternion_stacks(facts, call) or bool(isaac_orientation_arguments(facts, call))
 
 
-def _quaternion_functions(order: str, *names: str) -> dict[str, str]:
-    return {name: order for name in names}
-
-
-# Isaac Gym, Isaac Sim and Isaac Lab quaternion functions: module -> (consumers, producers), each name ->
-# the order of the quaternion it reads first / returns. Read in each library's source:
-# - isaacgym/python/isaacgym/torch_utils.py (Isaac Gym Preview 4): `quat_mul` unpacks `x1, y1, z1, w1`,
-#   `quat_from_euler_xyz` stacks `[qx, qy, qz, qw]`, `quat_rotate` takes `q_w = q[:, -1]`;
-# - omni.isaac.core/omni/isaac/core/utils/rotations.py (Isaac Sim 4.1): docstrings "quaternion (w, x, y, z)";
-# - omni.isaac.core/omni/isaac/core/utils/torch/rotations.py: `quat_mul` unpacks `w1, x1, y1, z1`,
-#   `euler_angles_to_quats` returns "scalar first", `xyzw2wxyz` is `torch.roll(q, 1, -1)`;
-# - IsaacLab source/extensions/omni.isaac.lab/omni/isaac/lab/utils/math.py: every docstring "(w, x, y, z)".
-#   Its successor `isaaclab.utils.math` is left out: newer Isaac Lab releases switched it to (x, y, z, w)
-#   (same function names), so only its convention-free `convert_quat` is read.
-_ISAACGYM_QUATERNIONS: Final = ("quat_mul", "quat_conjugate", "quat_unit")
-_OMNI_TORCH_QUATERNIONS: Final = ("quat_mul", "quat_conjugate", "quat_unit")
-_OMNI_LAB_QUATERNIONS: Final = ("quat_mul", "quat_conjugate", "quat_inv", "quat_unique", "yaw_quat")
-_SIMULATOR_TABLES: Final[dict[str, tuple[dict[str, str], dict[str, str]]]] = {
-    "isaacgym.torch_utils": (
-        _quaternion_functions(
-            SCALAR_LAST, *_ISAACGYM_QUATERNIONS, "quat_apply", "quat_rotate", "quat_rotate_inverse", "get_euler_xyz",
-            "get_basis_vector", "tf_inverse", "tf_apply", "tf_vector", "tf_combine",
-        ),
-        _quaternion_functions(SCALAR_LAST, *_ISAACGYM_QUATERNIONS, "quat_from_angle_axis", "quat_from_euler_xyz"),
-    ),
-    "omni.isaac.core.utils.rotations": (
-        _quaternion_functions(SCALAR_FIRST, "quat_to_rot_matrix", "quat_to_euler_angles"),
-        _quaternion_functions(
-            SCALAR_FIRST, "euler_angles_to_quat", "rot_matrix_to_quat", "gf_quat_to_np_array", "gf_rotation_to_np_array"
-        ),
-    ),
-    "omni.isaac.core.utils.torch.rotations": (
-        {
-            **_quaternion_functions(
-                SCALAR_FIRST, *_OMNI_TORCH_QUATERNIONS, "quat_apply", "quat_rotate", "quat_rotate_inverse", "quat_axis",
-                "quats_to_rot_matrices", "get_euler_xyz", "get_basis_vector", "quat_diff_rad", "wxyz2xyzw",
-            ),
-            "xyzw2wxyz": SCALAR_LAST,
-        },
-        {
-            **_quaternion_functions(
-                SCALAR_FIRST, *_OMNI_TORCH_QUATERNIONS, "quat_from_angle_axis", "quat_from_euler_xyz",
-                "euler_angles_to_quats", "rot_matrices_to_quats", "gf_quat_to_tensor", "xyzw2wxyz",
-            ),
-            "wxyz2xyzw": SCALAR_LAST,
-        },
-    ),
-    "omni.isaac.lab.utils.math": (
-        _quaternion_functions(
-            SCALAR_FIRST, *_OMNI_LAB_QUATERNIONS, "matrix_from_quat", "euler_xyz_from_quat", "quat_apply",
-            "quat_apply_yaw", "quat_rotate", "quat_rotate_inverse", "axis_angle_from_quat", "quat_box_minus",
-        ),
-        _quaternion_functions(SCALAR_FIRST, *_OMNI_LAB_QUATERNIONS, "quat_from_euler_xyz", "quat_from_matrix", "quat_from_angle_axis"),
-    ),
-    "isaaclab.utils.math": ({}, {}),  # `convert_quat` only (above)
-}  # fmt: skip
-# `from omni.isaac.core.utils.torch import *` re-exports the rotations module
-_SIMULATOR_ALIASES: Final = {"omni.isaac.core.utils.torch": "omni.isaac.core.utils.torch.rotations"}
-_SIMULATOR_NAMES: Final = frozenset(
-    {name for consumers, producers in _SIMULATOR_TABLES.values() for name in (*consumers, *producers)} | {"convert_quat"}
-)
 # Isaac Sim core (`omni.isaac.core` up to 4.2, `isaacsim.core.api` / `isaacsim.core.prims` from 4.5): prims,
 # objects and views take `orientation(s)` "quaternion is scalar-first (w, x, y, z)" (docstrings of
 # XFormPrim, XFormPrimView and DynamicCuboid in Isaac Sim 4.1; the isaacsim.core.api 4.8.0 API page).

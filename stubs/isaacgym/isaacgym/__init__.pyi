@@ -1,0 +1,1 @@
+from isaacgym import torch_utils as torch_utils

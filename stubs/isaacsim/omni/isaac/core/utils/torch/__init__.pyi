@@ -1,0 +1,21 @@
+# `from omni.isaac.core.utils.torch import *` re-exports the rotations module
+from omni.isaac.core.utils.torch.rotations import (
+    euler_angles_to_quats as euler_angles_to_quats,
+    get_basis_vector as get_basis_vector,
+    get_euler_xyz as get_euler_xyz,
+    gf_quat_to_tensor as gf_quat_to_tensor,
+    quat_apply as quat_apply,
+    quat_axis as quat_axis,
+    quat_conjugate as quat_conjugate,
+    quat_diff_rad as quat_diff_rad,
+    quat_from_angle_axis as quat_from_angle_axis,
+    quat_from_euler_xyz as quat_from_euler_xyz,
+    quat_mul as quat_mul,
+    quat_rotate as quat_rotate,
+    quat_rotate_inverse as quat_rotate_inverse,
+    quat_unit as quat_unit,
+    quats_to_rot_matrices as quats_to_rot_matrices,
+    rot_matrices_to_quats as rot_matrices_to_quats,
+    wxyz2xyzw as wxyz2xyzw,
+    xyzw2wxyz as xyzw2wxyz,
+)
