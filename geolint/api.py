@@ -26,6 +26,7 @@ from geolint.cache import DiscoveryCache, FindingsCache, ImportsCache, VotesCach
 from geolint.config import ConfigError, config_root
 from geolint.factbase import conventions, ros_packages
 from geolint.factbase.project_files import ImportGraph, consulted_folders, folder_listings, project_root
+from geolint.factbase.project_pins import pins_key
 from geolint.files import DiscoveryError, SourceFile, discover
 from geolint.lint_types import Config, Finding
 from geolint.notebook import NotebookError, is_notebook, read_notebook, unreadable_notebook
@@ -158,7 +159,7 @@ def lint_paths(
             # the file's bytes and those of the project modules it imports, directly or not (their summaries feed its findings)
             digest = imports.file_digest(key, own)
             # and what its project's declarations say about names: one added elsewhere changes its findings
-            naming = conventions.project_key(str(source.path)) + ros_packages.package_key(str(source.path))
+            naming = conventions.project_key(str(source.path)) + ros_packages.package_key(str(source.path)) + pins_key(str(source.path))
             if naming:
                 digest = hashlib.blake2b(f"{digest}:{naming}".encode(), digest_size=16).hexdigest()
             cached = cache.get(source.real_path(), digest, source.display) if cache is not None else None

@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Iterable
 
 from geolint._version import __version__
+from geolint.knowledge import stubs_folder
 from geolint.lint_types import Config, Edit, Finding, Fix, Severity
 
 if TYPE_CHECKING:
@@ -41,33 +42,39 @@ def content_hash(data: bytes) -> str:
 
 # The parts of the package whose code decides what a file's findings are.
 FINDINGS_SOURCES = (
-    "rules", "semantic", "factbase", "algebra.py", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py",
+    "rules", "semantic", "factbase", "knowledge", "algebra.py", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py",
     "files.py",  # which files a folder holds
 )  # fmt: skip
 
 
 @lru_cache(maxsize=1)
 def package_fingerprint() -> str:
-    """A hash of the names, sizes and mtimes of the geolint sources that decide findings (stats only).
+    """A hash of the names, sizes and mtimes of the geolint sources that decide findings, and of the
+    knowledge base's stubs (stats only).
 
-    Editing a rule invalidates the cache during development; editing the language server does not.
+    Editing a rule or a stub invalidates the cache during development; editing the language server does not.
     """
     package_dir = Path(__file__).resolve().parent
     digest = hashlib.blake2b(digest_size=16)
     for entry in FINDINGS_SOURCES:
         top = package_dir / entry
-        walked = os.walk(top) if top.is_dir() else [(str(package_dir), [], [entry])]
-        for folder, dirnames, filenames in walked:
-            dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
-            for name in sorted(filenames):
-                if name.endswith((".py", ".pyi")):
-                    try:
-                        stat = os.stat(os.path.join(folder, name))
-                    except OSError:
-                        continue
-                    relative = os.path.relpath(os.path.join(folder, name), package_dir)
-                    digest.update(f"{relative}:{stat.st_size}:{stat.st_mtime_ns}\n".encode())
+        _fingerprint(digest, os.walk(top) if top.is_dir() else [(str(package_dir), [], [entry])], package_dir, (".py", ".pyi"))
+    stubs = stubs_folder()
+    _fingerprint(digest, os.walk(stubs), stubs, (".pyi", ".toml"))
     return digest.hexdigest()
+
+
+def _fingerprint(digest: Any, walked: Iterable[tuple[str, list[str], list[str]]], base: Path, suffixes: tuple[str, ...]) -> None:
+    for folder, dirnames, filenames in walked:
+        dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
+        for name in sorted(filenames):
+            if name.endswith(suffixes):
+                try:
+                    stat = os.stat(os.path.join(folder, name))
+                except OSError:
+                    continue
+                relative = os.path.relpath(os.path.join(folder, name), base)
+                digest.update(f"{relative}:{stat.st_size}:{stat.st_mtime_ns}\n".encode())
 
 
 def settings_key(config: Config | None) -> str:

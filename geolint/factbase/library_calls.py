@@ -15,6 +15,7 @@ from ast import AST, Attribute, Call, If, Import, ImportFrom, Name
 from typing import TYPE_CHECKING, Final
 
 from geolint.factbase.project_files import module_path
+from geolint.factbase.project_pins import Pins, pins_for
 from geolint.knowledge import (
     Api,
     Bound,
@@ -50,7 +51,11 @@ def library_call(facts: FactBase, call: Call) -> list[Bound]:
 
 def _library_call(facts: FactBase, call: Call) -> list[Bound]:
     api = called_api(facts, call)
-    return bind(api, call) if api is not None else []
+    if api is None:
+        return []
+    pins = pins_for(facts.path) if not facts.path.startswith("<") else Pins()
+    # a fact marked `@versions(...)` counts only when the project's declared versions all satisfy it
+    return bind(api, call, lambda specifier: pins.allow_only(api.library, specifier))
 
 
 def quaternion_inputs(facts: FactBase, call: Call) -> list[tuple[ast.expr, str]]:

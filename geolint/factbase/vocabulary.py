@@ -8,9 +8,11 @@ module holds what libraries mean. The gate (`may_hold_geometry`) is a regex buil
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from typing import Callable, Final, Iterable
 
 from geolint.algebra import Kind
+from geolint.knowledge import knowledge_base
 from geolint.semantic import names
 from geolint.semantic.names import NameFrames
 
@@ -293,11 +295,28 @@ def gate_matches(source: str) -> bool:
     )
 
 
+@lru_cache(maxsize=1)
+def _knowledge_words() -> WordSet:
+    """The names of the knowledge base's APIs (`getRotationMatrix2D`, `rpyToMatrix`...): a call to one
+    is something the rules reason about. Built on first use, from stubs/."""
+    return WordSet(sorted({api.qualified_name.rpartition(".")[2] for api in knowledge_base().apis()}))
+
+
+def _knowledge_call_named(source: str) -> bool:
+    """A call of a knowledge-base API by its name (`name(` after a word boundary or a dot)."""
+    return _knowledge_words().any_in(source, lambda word: any_match_at(_call_of(word), source, _starts_a_word))
+
+
+@lru_cache(maxsize=None)
+def _call_of(word: str) -> re.Pattern[str]:
+    return re.compile(re.escape(word) + r"\s*\(")
+
+
 class Gate:
     """The rules' prefilter: a file the gate does not match holds nothing any fact rule reasons about.
 
-    Derived from the vocabulary above and `geolint.semantic.names` (never a second hand-synced list);
-    the config's extra point/direction names and frame aliases widen it.
+    Derived from the vocabulary above, `geolint.semantic.names` and the knowledge base's API names (never
+    a second hand-synced list); the config's extra point/direction names and frame aliases widen it.
     """
 
     description = "mentions geometry: a product, a transpose, a frame-naming shape or a geometry word"
@@ -309,7 +328,7 @@ class Gate:
         last = self._last
         if last is not None and last[0] is source:
             return last[1]
-        found = gate_matches(source)
+        found = gate_matches(source) or _knowledge_call_named(source)
         self._last = (source, found)
         return found
 

@@ -1,0 +1,1 @@
+from kornia import geometry as geometry

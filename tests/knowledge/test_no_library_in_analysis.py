@@ -1,0 +1,77 @@
+"""Library knowledge lives in stubs/: once a library has a folder there, the analysis code (rules, fact
+base, semantic names, mypy plugin) must not name it in a table key or an import test. The modules that
+still do are listed below, each with the stubbed packages it names; the list may only shrink (a pair
+that disappears must be struck from it, so the ratchet stays tight)."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import geolint
+from geolint.knowledge import knowledge_base
+
+PACKAGE = Path(geolint.__file__).parent
+ANALYSIS = ("rules", "factbase", "semantic", "mypy")
+
+# module -> stubbed packages it still names in code (not in docstrings): what is left to move to stubs/
+STILL_NAMED: dict[str, set[str]] = {
+    "factbase/angles.py": {"quaternion"},
+    "factbase/extrinsics.py": {"open3d"},
+    "factbase/kinds.py": {"spatialmath"},
+    "factbase/messages.py": {"geometry_msgs"},
+    "factbase/pose_parts.py": {"scipy", "tf", "transformations"},
+    "factbase/quaternion_orders.py": {"mujoco", "mujoco_py", "pyquaternion"},
+    "factbase/rotations.py": {"omni", "pyquaternion", "quaternion", "scipy", "transforms3d"},
+    "factbase/vocabulary.py": {
+        "cv2", "geometry_msgs", "kornia", "open3d", "pyquaternion", "pytorch3d", "pytransform3d", "quaternion", "scipy",
+        "spatialmath", "tf", "tf_transformations", "transforms3d", "trimesh",
+    },  # fmt: skip
+    "mypy/fullnames.py": {"pytransform3d", "trimesh"},
+    "mypy/third_party.py": {"trimesh"},
+    "rules/frames/geo207_invalid_tf_frame_id.py": {"tf", "transformations"},
+    "rules/kind/geo101_direction_translated.py": {"pytransform3d"},
+    "rules/kind/geo102_point_not_translated.py": {"pytransform3d"},
+    "rules/kind/geo107_free_vectors_left_behind.py": {"quaternion", "tf"},
+    "rules/rotation/geo304_quaternion_component_reused.py": {"pyquaternion", "quaternion"},
+    "rules/rotation/geo306_quaternion_component_unset.py": {"geometry_msgs", "quaternion"},
+    "rules/rotation/geo307_euler_angles_in_quaternion.py": {"geometry_msgs", "quaternion"},
+    "semantic/names.py": {"quaternion", "tf"},
+}
+
+
+def _docstrings(tree: ast.Module) -> set[int]:
+    found = set()
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if isinstance(body, list) and body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+            found.add(id(body[0].value))
+    return found
+
+
+def _named_packages() -> dict[str, set[str]]:
+    """module -> the stubbed packages its string constants name (`"scipy.spatial..."`, `"tf"`)."""
+    packages = {package for library in knowledge_base().libraries.values() for package in library.packages}
+    found: dict[str, set[str]] = {}
+    for folder in ANALYSIS:
+        for path in sorted((PACKAGE / folder).rglob("*.py")):
+            tree = ast.parse(path.read_text(encoding="utf-8"))
+            docstrings = _docstrings(tree)
+            for node in ast.walk(tree):
+                if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in docstrings:
+                    head = node.value.split(".")[0]
+                    if head in packages:
+                        found.setdefault(path.relative_to(PACKAGE).as_posix(), set()).add(head)
+    return found
+
+
+def test_no_analysis_module_names_a_stubbed_library_anew() -> None:
+    named = _named_packages()
+    new = {module: packages - STILL_NAMED.get(module, set()) for module, packages in named.items()}
+    assert {module: packages for module, packages in new.items() if packages} == {}, "library knowledge belongs in stubs/"
+
+
+def test_the_list_of_what_is_left_only_shrinks() -> None:
+    named = _named_packages()
+    stale = {module: packages - named.get(module, set()) for module, packages in STILL_NAMED.items()}
+    assert {module: packages for module, packages in stale.items() if packages} == {}, "strike these from STILL_NAMED"
