@@ -97,7 +97,7 @@ _MAX_DEPTH: Final = 10
 _TWO_PI: Final = 2 * math.pi
 # The names `radian_arguments` knows without the knowledge base (whose own names it asks for).
 _RADIAN_API_NAMES: Final = frozenset(
-    {"from_euler", "from_rotvec", "getQuaternionFromEuler", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
+    {"from_euler", "from_rotvec", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
     | {qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS}
 )
 _KNOWLEDGE_UNITS: Final = {knowledge.RADIANS: RADIANS, knowledge.DEGREES: DEGREES}  # the stubs' unit words -> these
@@ -504,12 +504,8 @@ def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
     if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
         return _scipy_angles(node, last_name(func) or "", positional)
     qualified = facts.qualified_name(func) or ""
-    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
     if qualified in ROTATION_VECTOR_READERS:
         return positional[:1]
-    if name == "getQuaternionFromEuler" and (qualified.startswith("pybullet") or isinstance(func, Attribute)):
-        # pybullet, on the module or on a BulletClient: one (roll, pitch, yaw) sequence in radians
-        return positional[:1] or [given.value for given in node.keywords if given.arg == "eulerAngles"]
     if is_trig_or_conversion(facts, node):
         return positional[:1]
     return None

@@ -15,11 +15,8 @@ RETURNED_ANGLES: Final[dict[str, str]] = {
     # tf_conversions.transformations: Gohlke's transformations.py as ROS 1's tf_conversions ships it;
     # euler_from_matrix computes each angle with math.atan2, and its doctest reads
     # euler_from_quaternion([0.06146124, 0, 0, 0.99810947]) back as [0.123, 0, 0]: radians. (tf.transformations,
-    # tf_transformations, transforms3d, pytransform3d: stubs/.)
+    # tf_transformations, transforms3d, pytransform3d, pybullet: stubs/.)
     **{f"tf_conversions.transformations.{name}": RADIANS for name in ("euler_from_quaternion", "euler_from_matrix")},
-    # pybullet.getEulerFromQuaternion: the inverse of getQuaternionFromEuler (radians), "a list of 3
-    # floating point values, a vec3" (PyBullet Quickstart Guide, getEulerFromQuaternion)
-    "pybullet.getEulerFromQuaternion": RADIANS,
 }
 
 # Library methods that return Euler angles, by qualified `module.Class.method`: (unit, the angles in

@@ -55,11 +55,7 @@ def quaternion_order(facts: FactBase, call: Call) -> str | None:
     if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
         known = library_calls.expected_quaternion_order(facts, call)
         return known[0] if known is not None else None
-    if "uat" not in called:
-        return None  # every API below says quat / Quat in its name
-    qualified = branch_qualified_name(facts, func) or ""
-    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")  # through `import ... as`
-    return SCALAR_LAST if name in _PYBULLET_CONSUMERS else None  # pybullet, on the module or on a BulletClient
+    return None
 
 
 # transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion), also under the
@@ -159,10 +155,6 @@ def quaternion_producer(facts: FactBase, call: Call) -> str | None:
                 return SCALAR_FIRST if value.value else SCALAR_LAST
             return None
         return SCALAR_LAST if is_scipy_rotation_value(facts, func.value) else None
-    qualified = branch_qualified_name(facts, func) or ""
-    name = qualified.rsplit(".", 1)[-1] if qualified else (last_name(func) or "")
-    if name in _PYBULLET_QUATERNIONS:  # camelCase pybullet names, on the module or a client object
-        return SCALAR_LAST
     return None
 
 
@@ -191,8 +183,6 @@ _SCIPY_CONSTRUCTORS: Final = (
     "from_quat", "from_matrix", "from_euler", "from_rotvec", "from_mrp", "from_davenport", "from_dcm",
     "random", "identity", "concatenate",
 )  # fmt: skip
-# pybullet (x, y, z, w) quaternions, called on the module or on a BulletClient.
-_PYBULLET_QUATERNIONS: Final = frozenset({"getQuaternionFromEuler", "getQuaternionFromAxisAngle", "getDifferenceQuaternion"})
 # (Christoph Gohlke's transformations.py, as PyPI's transformations, trimesh.transformations, ROS tf.transformations
 # and tf_transformations ship it: stubs/transformations, stubs/trimesh, stubs/tf, stubs/tf_transformations.)
 _PYBULLET_ORIENTATION_ARGUMENTS: Final[dict[str, tuple[tuple[int, ...], frozenset[str]]]] = {
@@ -219,7 +209,6 @@ _PYBULLET_FRAME_ORIENTATIONS: Final[dict[str, tuple[frozenset[str], frozenset[st
 }
 # the names `pybullet_quaternion_values` reads
 PYBULLET_QUATERNION_CALLS = PYBULLET_ORIENTATION_CALLS | frozenset(_PYBULLET_FRAME_ORIENTATIONS)
-_PYBULLET_CONSUMERS: Final = frozenset({"getMatrixFromQuaternion", "getEulerFromQuaternion", "getAxisAngleFromQuaternion"})
 
 
 def isaac_orientation_arguments(facts: FactBase, call: Call) -> list[ast.expr]:

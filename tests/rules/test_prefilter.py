@@ -165,13 +165,3 @@ def test_geo304_trigger_lets_through_every_name_the_rule_accepts() -> None:
     assert len(accepted) > 1000  # the generator does reach the words
     assert [name for name in accepted if not test.search(f" {name} ")] == []
     assert not test.search("def summarize(table):\n    return request.equal(unique)\n")
-
-
-def test_quaternion_apis_pass_the_called_name_test() -> None:
-    """`quaternion_order` turns a call away unless its called name says quat / Quat (or is numpy-quaternion's
-    `from_float_array`): every API name its tables know must pass that first test."""
-    from geolint.factbase import rotations
-
-    names = set(rotations._PYBULLET_CONSUMERS)  # (what stubs/ knows is answered before this test)
-    names |= {"quaternion", "Quaternion"}
-    assert [name for name in names if "uat" not in name and name != "from_float_array"] == []

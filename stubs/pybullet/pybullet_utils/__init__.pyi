@@ -1,0 +1,1 @@
+from pybullet_utils import bullet_client as bullet_client
