@@ -399,3 +399,14 @@ def test_a_loop_over_its_own_name_ends_the_class_search():
     facts = facts_for_module(tree, source, "indent.py", Config())
     read = next(node for node in ast.walk(tree) if isinstance(node, ast.Attribute) and node.attr == "solver")
     assert facts.shared(QuaternionFlow).order_of(read) is None
+
+
+def test_literal_angles_in_a_test_module_are_test_data(tmp_path: Path) -> None:
+    """pyquaternion reads `angle=` in radians (stubs/): `angle=90` is a degree slip in a module, test data
+    in a test (a translation test may rotate by any number)."""
+    source = "from pyquaternion import Quaternion\nq = Quaternion(axis=(0.0, 0.0, 1.0), angle=90)\n"
+    (tmp_path / "boxes.py").write_text(source)
+    (tmp_path / "tests").mkdir()
+    (tmp_path / "tests" / "test_boxes.py").write_text(source)
+    found = check(["boxes.py", "tests/test_boxes.py"], cwd=tmp_path)
+    assert [(finding["path"], finding["code"]) for finding in found] == [("boxes.py", "GEO302")]

@@ -143,7 +143,8 @@ class DegreesAsRadians(FactRule):
     A constant is followed only when nothing else in its module stores that attribute or name
     (`global`, `+=`, `setattr` with a computed name, a class with base classes all make it silent),
     and only one step (`cfg = Configuration()` or `cfg: Configuration` then `cfg.phi`; not a `cfg`
-    received as an unannotated parameter). A constant tuned in radians that happens to exceed 2 pi (`self.k = 40` given to
+    received as an unannotated parameter). Literal angles in a test module (`test_*.py`, `*_test.py`,
+    a `tests/` folder) are test data and are not judged. A constant tuned in radians that happens to exceed 2 pi (`self.k = 40` given to
     `np.cos`) would be read as degrees. The library that reads degrees must be named in the call
     (`cv2.getRotationMatrix2D`); PIL's `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are
     methods of values geolint does not type and are not known. The parse table's converters must be
@@ -393,6 +394,8 @@ class DegreesAsRadians(FactRule):
             too_big = [value for value in angles if abs(value) > _TWO_PI]
             if too_big and last_name(node.func) == "getQuaternionFromEuler" and not all(_round_degrees(value) for value in too_big):
                 too_big = []  # pybullet scene constants tuned by eye (FP20): only round angles are a degree slip
+            if too_big and _is_test_module(self.facts.path):
+                too_big = []  # a test's literal angles are data: any number is a rotation
             if too_big:
                 shown = format_angle(too_big[0])
                 fix = self._degrees_keyword_fix(node)
@@ -740,3 +743,10 @@ def _elements(node: ast.expr) -> list[ast.expr]:
     if isinstance(node, (ast.List, ast.Tuple)):
         return [found for element in node.elts for found in _elements(element)]
     return [node]
+
+
+def _is_test_module(path: str) -> bool:
+    """Whether `path` is a test module: `test_*.py`, `*_test.py`, or a file in a `test` / `tests` folder."""
+    parts = path.replace("\\", "/").split("/")
+    name = parts[-1]
+    return name.startswith("test_") or name.endswith("_test.py") or any(part in ("test", "tests") for part in parts[:-1])
