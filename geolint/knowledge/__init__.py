@@ -119,7 +119,11 @@ class KnowledgeBase:
 def stubs_folder() -> Path:
     """Where the stubs are: `$GEOLINT_STUBS` when set (a folder of the same layout, read instead of the
     shipped one), else inside the wheel (`geolint/_stubs`), else the checkout's `stubs/`."""
-    chosen = os.environ.get("GEOLINT_STUBS")
+    return _stubs_folder(os.environ.get("GEOLINT_STUBS") or None)
+
+
+@lru_cache(maxsize=8)
+def _stubs_folder(chosen: str | None) -> Path:  # asked for every library call: stat the folders once
     if chosen:
         return Path(chosen)
     package = Path(__file__).resolve().parent.parent
