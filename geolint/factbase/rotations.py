@@ -22,6 +22,7 @@ from geolint.factbase import library_calls
 from geolint.factbase.library_calls import ImportBranches, branch_qualified_name, imported_modules  # noqa: F401  (re-exported for the rules)
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.syntax import keyword, last_name, number
+from geolint.knowledge import knowledge_base
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
@@ -83,11 +84,19 @@ def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
     return positional[0] if positional else None
 
 
-# pyquaternion's Quaternion class, and a module that re-exports it: the nuScenes devkit's
-# eval/common/utils.py imports it, and BEVFormer-style dataset code imports it from there.
-PYQUATERNION_CLASSES: Final = frozenset(
-    {"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion", "nuscenes.eval.common.utils.Quaternion"}
-)
+# pyquaternion's Quaternion class (a module that re-exports it, as the nuScenes devkit does, is in stubs/)
+PYQUATERNION_CLASSES: Final = frozenset({"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion"})
+
+
+def means_pyquaternion(qualified: str | None) -> bool:
+    """Whether a qualified name is pyquaternion's Quaternion, directly or through a re-export the knowledge
+    base knows (`nuscenes.eval.common.utils.Quaternion`)."""
+    if qualified is None:
+        return False
+    if qualified in PYQUATERNION_CLASSES:
+        return True
+    api = knowledge_base().api(qualified)
+    return api is not None and api.qualified_name in PYQUATERNION_CLASSES
 # pyquaternion Quaternion properties and methods that return another Quaternion
 PYQUATERNION_RETURNS_QUATERNION: Final = frozenset({"inverse", "conjugate", "normalised", "unit"})
 

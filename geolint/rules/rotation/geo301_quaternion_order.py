@@ -607,8 +607,16 @@ class QuaternionOrder(FactRule):
         self._check_helper(node, flow)
         self._check_stated_parameters(node, flow, isaac)
         expected = quaternion_order(self.facts, node)
-        if expected is not None:
+        if expected is not None and not self._stated_by_its_keyword(node, expected):
             self._check_arguments(node, expected, flow)
+
+    def _stated_by_its_keyword(self, node: Call, expected: str) -> bool:
+        """`PoseTrajectory3D(orientations_quat_wxyz=q)`: the API's quaternion is a keyword whose name states
+        the same order, which `_check_stated_parameters` has checked (one finding, not two)."""
+        argument = quaternion_argument(self.facts, node)
+        return argument is not None and any(
+            given.value is argument and given.arg is not None and name_order(given.arg) == expected for given in node.keywords
+        )
 
     def _check_stated_parameters(self, node: Call, flow: QuaternionFlow, isaac: bool) -> None:
         """Arguments whose order the simulator's API or the parameter's own name states."""

@@ -14,7 +14,7 @@ import re
 import string
 
 from geolint.factbase.model import replace_span, subscript_parts
-from geolint.factbase.rotations import PYQUATERNION_CLASSES, PYQUATERNION_RETURNS_QUATERNION, quaternion_argument, quaternion_order
+from geolint.factbase.rotations import PYQUATERNION_RETURNS_QUATERNION, means_pyquaternion, quaternion_argument, quaternion_order
 from geolint.rules.fact_rule import FactRule
 from geolint.factbase.vocabulary import any_match_at
 from geolint.rules.base import Invalid, Valid
@@ -143,7 +143,7 @@ class QuaternionComponentReused(FactRule):
             if len(elements) != 4 or any(isinstance(element, Starred) for element in elements):
                 continue
             self._check(node, elements)  # type: ignore[arg-type]
-        if any(name in PYQUATERNION_CLASSES or name == "pyquaternion" for name in facts.index.imports.values()):
+        if any(means_pyquaternion(name) or name == "pyquaternion" for name in facts.index.imports.values()):
             for assign in facts.index.nodes(Assign):
                 if isinstance(assign, Assign):
                     self._check_slice_broadcast(assign)
@@ -169,7 +169,7 @@ class QuaternionComponentReused(FactRule):
         if depth > 4:
             return False
         if isinstance(node, Call):
-            return facts.qualified_name(node.func) in PYQUATERNION_CLASSES
+            return means_pyquaternion(facts.qualified_name(node.func))
         if isinstance(node, Attribute):
             return node.attr in PYQUATERNION_RETURNS_QUATERNION and self._is_pyquaternion(node.value, depth + 1)
         if isinstance(node, Name):

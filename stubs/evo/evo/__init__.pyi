@@ -1,0 +1,1 @@
+from evo import core as core

@@ -1,0 +1,1 @@
+from evo.core import trajectory as trajectory, transformations as transformations
