@@ -33,8 +33,7 @@ else:  # pragma: no cover - exercised by the lowest supported Python
     import tomli as tomllib
 
 _REQUIREMENT_FILES: Final = ("requirements*.txt", "requirements/*.txt", "requirements*.in")
-_LOCK_FILES: Final = ("uv.lock", "poetry.lock", "Pipfile.lock")
-_DECLARATIONS: Final = ("pyproject.toml", "setup.py")
+_TOML_LOCKS: Final = ("uv.lock", "poetry.lock")  # and Pipfile.lock, which is JSON
 _MAX_BYTES: Final = 2_000_000  # a declaration file larger than this is not one a person wrote
 
 
@@ -196,7 +195,7 @@ def _add_requirement(pins: Pins, line: str) -> None:
 
 
 def _read_locks(folder: Path, pins: Pins) -> None:
-    for name in ("uv.lock", "poetry.lock"):
+    for name in _TOML_LOCKS:
         packages = _toml(folder / name).get("package", [])
         for package in packages if isinstance(packages, list) else []:
             if isinstance(package, dict):

@@ -114,6 +114,15 @@ def label(order: str) -> str:
     return f"({', '.join(order)})"
 
 
+def keyword_states_order(facts: FactBase, call: Call, order: str) -> bool:
+    """`PoseTrajectory3D(orientations_quat_wxyz=q)`: the quaternion the API reads (`quaternion_argument`) is
+    given by a keyword whose name states `order` (GEO301 checks such a keyword by its name, so once)."""
+    argument = quaternion_argument(facts, call)
+    return argument is not None and any(
+        given.value is argument and given.arg is not None and name_order(given.arg) == order for given in call.keywords
+    )
+
+
 def name_order(name: str) -> str | None:
     """`quat_wxyz`, `orientations_quat_xyzw`: the order a name states in so many words."""
     lowered = name.lower()

@@ -45,6 +45,7 @@ from geolint.factbase.quaternion_orders import (
     Reorder,
     convention,
     label,
+    keyword_states_order,
     name_order,
     permutation_between,
     permuted,
@@ -607,16 +608,8 @@ class QuaternionOrder(FactRule):
         self._check_helper(node, flow)
         self._check_stated_parameters(node, flow, isaac)
         expected = quaternion_order(self.facts, node)
-        if expected is not None and not self._stated_by_its_keyword(node, expected):
+        if expected is not None and not keyword_states_order(self.facts, node, expected):  # else checked above
             self._check_arguments(node, expected, flow)
-
-    def _stated_by_its_keyword(self, node: Call, expected: str) -> bool:
-        """`PoseTrajectory3D(orientations_quat_wxyz=q)`: the API's quaternion is a keyword whose name states
-        the same order, which `_check_stated_parameters` has checked (one finding, not two)."""
-        argument = quaternion_argument(self.facts, node)
-        return argument is not None and any(
-            given.value is argument and given.arg is not None and name_order(given.arg) == expected for given in node.keywords
-        )
 
     def _check_stated_parameters(self, node: Call, flow: QuaternionFlow, isaac: bool) -> None:
         """Arguments whose order the simulator's API or the parameter's own name states."""
@@ -959,8 +952,7 @@ def _names_mislabel_unpacked(facts: FactBase, flow: QuaternionFlow, values: list
 
 
 def _takes_stacks(facts: FactBase, call: Call | _MessageField | _Helper | _Keyword) -> bool:
-    """APIs that accept an (N, 4) stack as well as one quaternion (scipy, pytorch3d, numpy-quaternion,
-    Isaac Gym and Isaac Sim)."""
+    """APIs that accept an (N, 4) stack as well as one quaternion (`STACKED` in their stubs, and a few by name)."""
     if isinstance(call, _Keyword):
         return True  # the parameter's own name states the order, for one quaternion or a stack
     if isinstance(call, (_MessageField, _Helper)):
