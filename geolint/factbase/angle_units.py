@@ -52,9 +52,7 @@ from geolint.factbase.angles import (
     DEGREES,
     EULER_METHOD_NAMES,
     RADIANS,
-    RETURNED_ANGLES,
     RETURNED_EULER_METHODS,
-    ROTATION_VECTOR_READERS,
 )
 from geolint.factbase.classes import enclosing_class, project_class
 from geolint.factbase.control_flow import runs_unconditionally
@@ -96,12 +94,8 @@ _INVERSE_TRIG_MODULES = _ANGLE_MODULES | {"tensorflow", "tensorflow.math"}
 _MAX_DEPTH: Final = 10
 _TWO_PI: Final = 2 * math.pi
 # The names `radian_arguments` knows without the knowledge base (whose own names it asks for).
-_RADIAN_API_NAMES: Final = frozenset(
-    {"from_euler", "from_rotvec", *TRIG_FUNCTIONS, "degrees", "rad2deg"}
-    | {qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS}
-)
+_RADIAN_API_NAMES: Final = frozenset({"from_euler", "from_rotvec", *TRIG_FUNCTIONS, "degrees", "rad2deg"})
 _KNOWLEDGE_UNITS: Final = {knowledge.RADIANS: RADIANS, knowledge.DEGREES: DEGREES}  # the stubs' unit words -> these
-_ROTATION_VECTOR_NAMES: Final = frozenset({"from_rotvec", *(qualified.rpartition(".")[2] for qualified in ROTATION_VECTOR_READERS)})
 
 
 @dataclass(frozen=True)
@@ -240,9 +234,6 @@ class AngleUnits:
         if known is not None:  # the knowledge base (stubs/)
             api = library_calls.called_api(facts, call)
             return Unit(known, f"`{api.qualified_name if api else qualified}` returns its angles in {unit_word(known)}", False)
-        returned = RETURNED_ANGLES.get(qualified)
-        if returned is not None:
-            return Unit(returned, f"`{qualified}` returns its angles in {unit_word(returned)}", False)
         method = EULER_METHOD_NAMES.get(call.func.attr) if isinstance(call.func, Attribute) and not call.args else None
         if method is not None:  # `imu.getRollPitchYaw()`: matched by its camelCase name on any receiver
             returned = RETURNED_EULER_METHODS[method][0]
@@ -503,9 +494,6 @@ def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
     positional = positional_args(node)
     if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
         return _scipy_angles(node, last_name(func) or "", positional)
-    qualified = facts.qualified_name(func) or ""
-    if qualified in ROTATION_VECTOR_READERS:
-        return positional[:1]
     if is_trig_or_conversion(facts, node):
         return positional[:1]
     return None
@@ -577,9 +565,9 @@ def rotation_vector_factors(facts: FactBase, call: Call) -> list[ast.expr]:
     """For a call reading a rotation vector in radians written as a product (`from_rotvec(theta * axis)`,
     numpy-quaternion's `from_rotation_vector(angle * axis)`): the product's factors that are no number
     literal (the angle among them); [] for any other call."""
-    if facts.called_name(call.func) not in _ROTATION_VECTOR_NAMES:
-        return []
-    arguments = radian_arguments(facts, call)
+    if not library_calls.may_read_angles(facts, facts.called_name(call.func) or "", knowledge.RADIANS):
+        return []  # the cheap test first: asked of every call
+    arguments = library_calls.rotation_vector_arguments(facts, call)
     if not arguments or not isinstance(arguments[0], BinOp) or not isinstance(arguments[0].op, Mult):
         return []
     product = arguments[0]

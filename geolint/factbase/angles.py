@@ -1,5 +1,5 @@
-"""Angle units of library calls, by qualified name: what unit a call returns its angles in, and which
-calls read an angle as the length of a rotation vector.
+"""Angle units of device methods matched by name on any receiver (Webots' `InertialUnit`). Library
+calls state their units in stubs/ (`geolint.knowledge`).
 
 Each entry names where its unit was checked (the library's documentation or source).
 """
@@ -9,15 +9,6 @@ from __future__ import annotations
 from typing import Final
 
 DEGREES, RADIANS = "deg", "rad"
-
-# Library calls whose every returned angle (a tuple or array of Euler angles) is in one unit.
-RETURNED_ANGLES: Final[dict[str, str]] = {
-    # tf_conversions.transformations: Gohlke's transformations.py as ROS 1's tf_conversions ships it;
-    # euler_from_matrix computes each angle with math.atan2, and its doctest reads
-    # euler_from_quaternion([0.06146124, 0, 0, 0.99810947]) back as [0.123, 0, 0]: radians. (tf.transformations,
-    # tf_transformations, transforms3d, pytransform3d, pybullet: stubs/.)
-    **{f"tf_conversions.transformations.{name}": RADIANS for name in ("euler_from_quaternion", "euler_from_matrix")},
-}
 
 # Library methods that return Euler angles, by qualified `module.Class.method`: (unit, the angles in
 # order, the method of the same object that returns the orientation as a quaternion instead, with its
@@ -32,9 +23,3 @@ RETURNED_EULER_METHODS: Final[dict[str, tuple[str, tuple[str, ...], str]]] = {
     "controller.InertialUnit.getRollPitchYaw": (RADIANS, ("roll", "pitch", "yaw"), "getQuaternion()` (x, y, z, w"),
 }
 EULER_METHOD_NAMES: Final = {qualified.rpartition(".")[2]: qualified for qualified in RETURNED_EULER_METHODS}
-
-# Library calls that read a rotation vector (axis times angle) as their first argument, in radians:
-# numpy-quaternion's from_rotation_vector "Each vector represents the axis of the rotation, with norm
-# proportional to the angle of the rotation in radians" (moble/quaternion, quaternion/__init__.py).
-# (scipy's `Rotation.from_rotvec` is known through `is_scipy_rotation_method`.)
-ROTATION_VECTOR_READERS: Final = frozenset({"quaternion.from_rotation_vector"})

@@ -16,7 +16,9 @@ from typing import TYPE_CHECKING, Final
 
 from geolint.factbase.project_files import module_path
 from geolint.factbase.project_pins import Pins, pins_for
+from geolint.algebra import Kind
 from geolint.knowledge import (
+    RADIANS,
     Api,
     Bound,
     Geometry,
@@ -141,6 +143,25 @@ def angle_arguments(facts: FactBase, call: Call, unit: str, *, whatever_the_keyw
     names = {name for name, argument in bounds[0].arguments.items() if any(argument is chosen for chosen in found)} if bounds else set()
     fixed = {name for name in names if api is not None and all(_states_unit(signature, name, unit) for signature in api.signatures)}
     return [argument for name, argument in bounds[0].arguments.items() if name in fixed] if bounds else []
+
+
+def rotation_vector_arguments(facts: FactBase, call: Call) -> list[ast.expr]:
+    """The arguments a known library call reads as rotation vectors (an axis times an angle in radians:
+    `RotationVector` in its stub)."""
+    bounds = library_call(facts, call)
+    if not bounds:
+        return []
+    return [
+        argument
+        for argument, _ in angle_inputs(facts, call)
+        if agreed(bounds, lambda bound: next((_is_rotation_vector(bound, name) for name, given in bound.arguments.items() if given is argument), False))
+    ]
+
+
+def _is_rotation_vector(bound: Bound, name: str) -> bool:
+    parameter = bound.signature.parameter(name)
+    geometry = parameter.geometry if parameter is not None else None
+    return geometry is not None and geometry.kind is Kind.ROTATION and geometry.angle_unit == RADIANS
 
 
 def choosing_keywords(facts: FactBase, call: Call) -> list[str]:

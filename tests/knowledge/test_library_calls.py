@@ -16,6 +16,7 @@ from geolint.factbase.library_calls import (
     quaternion_inputs,
     quaternion_output,
     returns_euler_angles,
+    rotation_vector_arguments,
 )
 from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST
 
@@ -143,3 +144,22 @@ def test_angle_units_of_calls_come_from_the_stubs() -> None:
     assert returns_euler_angles(facts, calls["mat2euler(M)"]) and returns_euler_angles(facts, calls["euler_from_quaternion(q)"])  # type: ignore[arg-type]
     # an axis and an angle: not every part is an angle
     assert angle_output(facts, calls["quat2axangle(q)"]) is None and not returns_euler_angles(facts, calls["quat2axangle(q)"])  # type: ignore[arg-type]
+
+
+def test_re_exported_modules_and_rotation_vectors_come_from_the_stubs() -> None:
+    facts, calls = _calls(
+        """
+        import quaternion
+        import tf_conversions
+        from scipy.spatial.transform import Rotation
+        rpy = tf_conversions.transformations.euler_from_quaternion(q)
+        a = quaternion.from_rotation_vector(angle * axis)
+        b = Rotation.from_rotvec(theta * axis)
+        c = Rotation.from_euler("z", theta)
+        """
+    )
+    assert angle_output(facts, calls["tf_conversions.transformations.euler_from_quaternion(q)"]) == "radians"  # type: ignore[arg-type]
+    assert returns_euler_angles(facts, calls["tf_conversions.transformations.euler_from_quaternion(q)"])  # type: ignore[arg-type]
+    for call in ("quaternion.from_rotation_vector(angle * axis)", "Rotation.from_rotvec(theta * axis)"):
+        assert [ast.unparse(argument) for argument in rotation_vector_arguments(facts, calls[call])] == [call.partition("(")[2][:-1]]  # type: ignore[arg-type]
+    assert rotation_vector_arguments(facts, calls["Rotation.from_euler('z', theta)"]) == []  # type: ignore[arg-type]  # angles, not a rotation vector

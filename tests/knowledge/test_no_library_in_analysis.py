@@ -16,7 +16,6 @@ ANALYSIS = ("rules", "factbase", "semantic", "mypy")
 
 # module -> stubbed packages it still names in code (not in docstrings): what is left to move to stubs/
 STILL_NAMED: dict[str, set[str]] = {
-    "factbase/angles.py": {"quaternion"},
     "factbase/conventions.py": {"pydrake"},
     "factbase/extrinsics.py": {"open3d"},
     "factbase/kinds.py": {"PyKDL", "spatialmath"},

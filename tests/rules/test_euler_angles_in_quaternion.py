@@ -11,7 +11,6 @@ import textwrap
 from geolint.engine import lint_source
 from geolint.factbase.angles import (
     EULER_METHOD_NAMES,
-    RETURNED_ANGLES,
     RETURNED_EULER_METHODS,
 )
 from geolint.rules import rule_by_code
@@ -177,7 +176,6 @@ def test_the_tables_name_their_methods_once() -> None:
     assert EULER_METHOD_NAMES == {"getRollPitchYaw": "controller.InertialUnit.getRollPitchYaw"}
     unit, names, _ = RETURNED_EULER_METHODS["controller.InertialUnit.getRollPitchYaw"]
     assert (unit, names) == ("rad", ("roll", "pitch", "yaw"))
-    assert not set(RETURNED_EULER_METHODS) & set(RETURNED_ANGLES)
 
 
 def test_three_elements_in_a_row_with_w_unset_are_geo306() -> None:

@@ -19,7 +19,7 @@ from ast import (
 )
 
 from geolint.factbase import library_calls
-from geolint.factbase.angles import EULER_METHOD_NAMES, RETURNED_ANGLES
+from geolint.factbase.angles import EULER_METHOD_NAMES
 from geolint.factbase.index import FUNCTION_NODES
 from geolint.factbase.messages import MessageTypes
 from geolint.factbase.model import FactBase, dotted_name, number, walk_within
@@ -372,12 +372,9 @@ def _euler_angles(facts: FactBase, sequence: ast.expr) -> str | None:
     bound = facts.bindings(sequence) if isinstance(sequence, Name) else None
     if bound is not None and len(bound) == 1 and isinstance(bound[0], Call):
         call = bound[0]
-        qualified = facts.qualified_name(call.func) or ""
         api = library_calls.called_api(facts, call)
         if api is not None and library_calls.returns_euler_angles(facts, call):  # the knowledge base (stubs/)
             return f"`{api.qualified_name}` returns Euler angles"
-        if qualified in RETURNED_ANGLES:
-            return f"`{qualified}` returns Euler angles"
         method = EULER_METHOD_NAMES.get(call.func.attr) if isinstance(call.func, Attribute) and not call.args else None
         if method is not None:
             return f"`{method}` returns them"

@@ -14,7 +14,6 @@ from dataclasses import dataclass
 from geolint.factbase import library_calls
 from geolint.factbase.angles import (
     EULER_METHOD_NAMES,
-    RETURNED_ANGLES,
     RETURNED_EULER_METHODS,
 )
 from geolint.factbase.index import Scope, UnpackBinding
@@ -392,12 +391,9 @@ class EulerAnglesInQuaternion(FactRule):
     def _euler_source_of_call(self, node: Call) -> _Source | None:
         """A library call that returns Euler angles (`euler_from_quaternion(q)`, `r.as_euler("xyz")`)."""
         facts = self.facts
-        qualified = facts.qualified_name(node.func) or ""
         api = library_calls.called_api(facts, node)
         if api is not None and library_calls.returns_euler_angles(facts, node):  # the knowledge base (stubs/)
             return _Source((), f"`{api.qualified_name}` returns Euler angles", True)
-        if qualified in RETURNED_ANGLES:
-            return _Source((), f"`{qualified}` returns Euler angles", True)
         func = node.func
         if isinstance(func, Attribute):
             method = EULER_METHOD_NAMES.get(func.attr)
