@@ -199,6 +199,72 @@ def returns_euler_angles(facts: FactBase, call: Call) -> bool:
     return agreed(library_call(facts, call), lambda bound: len(_returned(bound).items) == 3 and _angle_unit(_returned(bound)) is not None) is True
 
 
+_MOVED_KINDS: Final = (Kind.POINT, Kind.VECTOR, Kind.DIRECTION)
+_HOMOGENEOUS: Final = (Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR)
+
+
+def moved_arguments(facts: FactBase, call: Call) -> list[tuple[ast.expr, Kind]]:
+    """(argument, kind) for each argument a known library call moves by a rigid transform, as the kind it
+    moves it as: a point is translated (`transform_points(x, T)`, `vector_to_point(x)`, w = 1), a vector
+    or direction only rotated (`translate=False`, `transform_normals(x)`, w = 0). [] when the overloads
+    the call may be using disagree (`translate=flag`)."""
+    bounds = library_call(facts, call)
+    if not bounds or not all(_applies_transform(bound.signature) for bound in bounds):
+        return []
+    return [(argument, Kind(kind)) for argument, kind in _argument_facts(facts, call, "kind") if kind in _MOVED_KINDS]
+
+
+def moving_as(facts: FactBase, call: Call, argument: ast.expr, wanted: frozenset[Kind]) -> tuple[str, str] | None:
+    """How to make a known library call move `argument` as one of `wanted`, from the stubs: `("keyword",
+    "translate=False")`, a keyword value that picks an overload that does, or `("name", "transform_normals")`,
+    the API beside it (same module or class, the argument in the same place) that does. None: neither."""
+    bounds = library_call(facts, call)
+    api = called_api(facts, call)
+    name = next((name for name, given in bounds[0].arguments.items() if given is argument), None) if bounds else None
+    if api is None or name is None:
+        return None
+    given = {keyword.arg for keyword in call.keywords}
+    for signature in api.signatures:
+        parameter = signature.parameter(name)
+        if parameter is None or parameter.geometry is None or parameter.geometry.kind not in wanted:
+            continue
+        choices = [other for other in signature.parameters if other.literal is not None and other.keyword and other.name not in given]
+        if len(choices) == 1 and len(choices[0].literal or ()) == 1:
+            return "keyword", f"{choices[0].name}={choices[0].literal[0]!r}"  # type: ignore[index]
+    position = [parameter.name for parameter in bounds[0].signature.parameters].index(name)
+    owner = api.qualified_name.rpartition(".")[0]
+    twins = [other for other in knowledge(facts).apis() if other is not api and other.qualified_name.rpartition(".")[0] == owner and _moves_at(other, position, wanted)]
+    if len(twins) > 1:  # `vector_to_direction(v)` over `vectors_to_directions(V)`: the same parameter name too
+        twins = [other for other in twins if all(signature.parameters[position].name == name for signature in other.signatures)]
+    return ("name", twins[0].qualified_name.rpartition(".")[2]) if len(twins) == 1 else None
+
+
+def homogenizes(facts: FactBase, call: Call) -> bool:
+    """Whether a known library call returns its input made homogeneous (`vector_to_point`: w = 1)."""
+    return agreed(library_call(facts, call), lambda bound: _returned(bound).kind in _HOMOGENEOUS) is True
+
+
+def _moves_at(api: Api, position: int, wanted: frozenset[Kind]) -> bool:
+    """Whether every overload of `api` applies a transform to its parameter at `position` as one of `wanted`."""
+    def moves(signature: Signature) -> bool:
+        parameters = signature.parameters
+        geometry = parameters[position].geometry if position < len(parameters) else None
+        return _applies_transform(signature) and geometry is not None and geometry.kind in wanted
+
+    return bool(api.signatures) and all(moves(signature) for signature in api.signatures)
+
+
+def _applies_transform(signature: Signature) -> bool:
+    """Whether the overload applies a rigid transform to what it is given: it takes one, is a method of
+    one, or makes its input homogeneous (w = 1 or 0, for a 4x4 to be applied to)."""
+    kinds = [parameter.geometry.kind for parameter in signature.parameters if parameter.geometry is not None]
+    return (
+        Kind.TRANSFORM in kinds
+        or (signature.receiver is not None and signature.receiver.kind is Kind.TRANSFORM)
+        or (signature.returns is not None and signature.returns.kind in _HOMOGENEOUS)
+    )
+
+
 def _angle_unit(geometry: Geometry) -> str | None:
     if geometry.angle_unit is not None or not geometry.items:
         return geometry.angle_unit

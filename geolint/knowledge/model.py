@@ -52,6 +52,7 @@ class Signature:
     returns: Geometry | None
     versions: str | None  # a PEP 440 specifier, or None: every version
     line: int  # in the stub, for messages and citations
+    receiver: Geometry | None = None  # a method's annotated `self`: what the object it is called on is
 
     @property
     def components(self) -> str | None:

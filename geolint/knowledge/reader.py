@@ -161,7 +161,9 @@ class _ModuleReader:
         arguments = node.args
         positional = [*arguments.posonlyargs, *arguments.args]
         drop_first = in_class and "staticmethod" not in decorators
+        receiver = None
         if drop_first and positional:
+            receiver = self.geometry(positional[0].annotation) if positional[0].annotation is not None else None
             positional = positional[1:]
         defaults = [None] * (len([*arguments.posonlyargs, *arguments.args]) - len(arguments.defaults)) + list(arguments.defaults)
         if drop_first and defaults:
@@ -178,7 +180,7 @@ class _ModuleReader:
             for argument, default in zip(arguments.kwonlyargs, arguments.kw_defaults)
         ]
         returns = self.geometry(node.returns) if node.returns is not None else None
-        return Signature(tuple(parameters), returns, _versions(node.decorator_list), node.lineno)
+        return Signature(tuple(parameters), returns, _versions(node.decorator_list), node.lineno, receiver)
 
     def _parameter(self, argument: ast.arg, positional: bool, keyword: bool, has_default: bool) -> Parameter:
         annotation = argument.annotation
@@ -277,7 +279,7 @@ def _versions(decorators: list[ast.expr]) -> str | None:
 
 def _with_versions(signature: Signature, versions: str) -> Signature:
     combined = versions if signature.versions is None else f"{versions},{signature.versions}"
-    return Signature(signature.parameters, signature.returns, combined, signature.line)
+    return Signature(signature.parameters, signature.returns, combined, signature.line, signature.receiver)
 
 
 def _source_of(node: ast.FunctionDef | ast.ClassDef) -> str:

@@ -31,8 +31,6 @@ STILL_NAMED: dict[str, set[str]] = {
     "mypy/fullnames.py": {"pytransform3d", "trimesh"},
     "mypy/third_party.py": {"trimesh"},
     "rules/frames/geo207_invalid_tf_frame_id.py": {"tf", "transformations"},
-    "rules/kind/geo101_direction_translated.py": {"pytransform3d"},
-    "rules/kind/geo102_point_not_translated.py": {"pytransform3d"},
     "rules/kind/geo107_free_vectors_left_behind.py": {"quaternion", "tf"},
     "rules/rotation/geo304_quaternion_component_reused.py": {"pyquaternion", "quaternion"},
     "rules/rotation/geo306_quaternion_component_unset.py": {"geometry_msgs", "quaternion"},

@@ -10,6 +10,7 @@ from ast import (
 
 from geolint.rules.base import Invalid, Valid
 from geolint.algebra import FREE, Kind, Problem
+from geolint.factbase import library_calls
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.index import ParamBinding, UnpackBinding
 from geolint.factbase.model import (
@@ -30,8 +31,10 @@ class DirectionTranslated(FactRule):
     `F.pad(normals, (0, 1), value=1.0)`, a `np.ones(4)` buffer filled with it), a rotation
     followed by `+ t` (`R @ n + t`, `n @ R.T + t`, `T[:3, :3] @ n + T[:3, 3]`,
     `np.einsum("ij,nj->ni", R, normals) + t`), or a library call that translates
-    (`trimesh.transform_points(normals, T)` without `translate=False`, pytransform3d
-    `vector_to_point(direction)`, Blender `obj.matrix_world @ normal`, pybullet
+    (an argument its stub in `stubs/` types as points next to a transform, on a transform, or made
+    homogeneous: `trimesh.transform_points(normals, T)` without `translate=False`, pytransform3d
+    `vector_to_point(direction)`, PyTorch3D `t.transform_points(normals)`), Blender
+    `obj.matrix_world @ normal`, pybullet
     `multiplyTransforms(pos, orn, velocity, [0, 0, 0, 1])` with a position that is not zero).
 
     ## Why is this bad?
@@ -53,7 +56,9 @@ class DirectionTranslated(FactRule):
 
     ## Fix safety
     Changing w from 1 to 0 on a direction and dropping `+ t` after rotating a direction are
-    safe. Adding `translate=False` to a library call is marked unsafe (it changes the call).
+    safe. The fix of a library call is the one its stub offers, marked unsafe (it changes the
+    call): the keyword value that picks an overload moving the argument as a vector
+    (`translate=False`), or the API beside it that does (`vector_to_direction`, `transform_normals`).
 
     ## Known problems
     Directions are mostly recognised by name (`normal`, `axis`, `velocity`, `dir`). What the code
@@ -66,7 +71,9 @@ class DirectionTranslated(FactRule):
     `auto_orient_and_center_poses(..., center_method="none")`, or a parameter of a private helper
     (`_name`) whose calls in the module all pass such; a private helper its module never calls is
     reached by no matrix and is not reported either (a subclass elsewhere calling it is missed).
-    A public function's parameter may be given any matrix, so it is reported.
+    A public function's parameter may be given any matrix, so it is reported. A method called on an
+    object of no library the stubs know (`pose.transform_points(normals)` on a project's own class)
+    is not reported.
     """
 
     code = "GEO101"
@@ -85,6 +92,9 @@ class DirectionTranslated(FactRule):
         Valid("v = R @ velocity + omega_cross_r\n"),
         Valid("tip_point = R @ approach + t\n"),  # a point built from a direction on purpose
         Valid("import trimesh\nn2 = trimesh.transform_points(normals, T, translate=False)\n"),
+        Valid("import trimesh\nn2 = trimesh.transform_points(normals, T, flag)\n"),  # either overload: say nothing
+        Valid("import numpy as np\nn2 = pose.transform_points(normals)\n"),  # no library the stubs know: say nothing
+        Valid("from pytorch3d.transforms import Transform3d\nn = Transform3d(matrix=M).transform_normals(normals)\n"),
         Valid('direction = "left"\nx = np.append(direction, 1)\n'),
         Valid("import torch.nn.functional as F\nnormals_h = F.pad(normals, (0, 1))\nworld = normals_h @ c2w.T\n"),
         Valid("import numpy as np\nn = 3\nout = np.append(n, 1)\n"),
@@ -96,9 +106,9 @@ class DirectionTranslated(FactRule):
         ),  # a zero position: a pure rotation, the idiom for vectors
         Valid("import pybullet as p\nwp, wo = p.multiplyTransforms(base_pos, base_orn, tip_offset, [0, 0, 0, 1])\n"),  # a point
         Valid(
-            "import numpy as np\ndef axis_tips(pose, length):\n"
+            "import numpy as np\nimport trimesh\ndef axis_tips(pose, length):\n"
             "    sensor_axis = np.array([[0, 0, 0], [length, 0, 0], [0, length, 0], [0, 0, length]])\n"
-            "    return pose.transform_points(sensor_axis)\n"
+            "    return trimesh.transform_points(sensor_axis, pose)\n"
         ),  # the origin and the axis tips: points to draw
         # the only matrix the w = 1 normals meet is a literal identity: nothing is translated
         Valid("import torch\nT = torch.eye(4)[:3, :4]\nn_h = torch.cat((normals, torch.ones_like(normals[..., :1])), -1) @ T.T\n"),
@@ -137,11 +147,23 @@ class DirectionTranslated(FactRule):
         ),
         Invalid("import trimesh\nmoved = trimesh.transform_points(mesh.vertex_normals, T)\n"),
         Invalid(
-            "import numpy as np\ndef axes(pose, length):\n"
+            "import numpy as np\nimport trimesh\ndef axes(pose, length):\n"
             "    sensor_axis = np.array([[length, 0, 0], [0, length, 0], [0, 0, length]])\n"
-            "    return pose.transform_points(sensor_axis)\n"
+            "    return trimesh.transform_points(sensor_axis, pose)\n"
         ),
         Invalid("from pytransform3d.transformations import vector_to_point\nn_h = vector_to_point(approach)\n"),
+        Invalid(
+            "from pytorch3d.transforms import Transform3d\nt = Transform3d(matrix=M)\nn = t.transform_points(vertex_normals)\n",
+            expected_fix="from pytorch3d.transforms import Transform3d\nt = Transform3d(matrix=M)\nn = t.transform_normals(vertex_normals)\n",
+            message="`transform_points` translates its input, but `vertex_normals` holds directions; use `transform_normals`",
+            range=(3, 5, 3, 39),
+        ),  # the fix is the one its stub offers: pytorch3d has no `translate=False`
+        Invalid(
+            "import trimesh\nn = trimesh.transform_points(face_normals, T)\n",
+            expected_fix="import trimesh\nn = trimesh.transform_points(face_normals, T, translate=False)\n",
+            message="`transform_points` translates its input, but `face_normals` holds directions; pass `translate=False`",
+            range=(2, 5, 2, 46),
+        ),
         Invalid("world_normal = obj.matrix_world @ face.normal\n"),
         Invalid(
             "import torch\nfrom nerfstudio.cameras.camera_utils import auto_orient_and_center_poses\n"
@@ -394,37 +416,37 @@ class DirectionTranslated(FactRule):
 
     def _check_library_call(self, node: Call) -> None:
         facts = self.facts
-        name = last_name(node.func)
-        if name == "multiplyTransforms":
+        if last_name(node.func) == "multiplyTransforms":
             self._check_pybullet_multiply(node)
             return
-        if name not in ("transform_points", "vector_to_point"):
-            return
-        positional = positional_args(node)
-        if not positional or not facts.is_free(positional[0]):
-            return
-        if name == "transform_points":
-            if keyword(node, "translate") is not None or len(positional) > 2:
-                return
+        for argument, moved_as in library_calls.moved_arguments(facts, node):  # the knowledge base (stubs/)
+            if moved_as is Kind.POINT and facts.is_free(argument):
+                self._report_translated(node, argument)
+
+    def _report_translated(self, node: Call, argument: ast.expr) -> None:
+        """A library call that moves `argument`, a direction, as a point; the fix the stubs offer, if any."""
+        facts, called = self.facts, last_name(node.func)
+        makes_homogeneous = "gives w = 1" if library_calls.homogenizes(facts, node) else "translates its input"
+        held = "is a direction" if makes_homogeneous == "gives w = 1" else "holds directions"
+        fix = library_calls.moving_as(facts, node, argument, FREE)
+        if fix is None:
+            self.report(node, f"`{called}` {makes_homogeneous}, but `{self.code_of(argument)}` {held}")
+        elif fix[0] == "keyword":
             self.report(
                 node,
-                f"`transform_points` translates its input, but `{self.code_of(positional[0])}` holds directions; "
-                "pass `translate=False`",
-                replacement=with_keyword(facts.index.segment(node), "translate=False"),
+                f"`{called}` {makes_homogeneous}, but `{self.code_of(argument)}` {held}; pass `{fix[1]}`",
+                replacement=with_keyword(facts.index.segment(node), fix[1]),
                 applicability="unsafe",
-                fix_description="pass translate=False",
+                fix_description=f"pass {fix[1]}",
             )
-        elif name == "vector_to_point":
-            qualified = facts.qualified_name(node.func) or ""
-            if qualified.startswith("pytransform3d") or qualified == "vector_to_point":
-                self.report(
-                    node,
-                    f"`vector_to_point` gives w = 1, but `{self.code_of(positional[0])}` is a direction; "
-                    "use `vector_to_direction`",
-                    replacement=replace_span(facts.index, node, [(last_name_target(node.func), "vector_to_direction")]),
-                    applicability="unsafe",
-                    fix_description="use vector_to_direction",
-                )
+        else:
+            self.report(
+                node,
+                f"`{called}` {makes_homogeneous}, but `{self.code_of(argument)}` {held}; use `{fix[1]}`",
+                replacement=replace_span(facts.index, node, [(last_name_target(node.func), fix[1])]),
+                applicability="unsafe",
+                fix_description=f"use {fix[1]}",
+            )
 
     def _check_pybullet_multiply(self, node: Call) -> None:
         """pybullet's `multiplyTransforms(posA, ornA, posB, ornB)` moves posB as a point: posA is added.

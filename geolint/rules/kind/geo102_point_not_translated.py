@@ -11,7 +11,8 @@ from ast import AST, Add, AnnAssign, Assign, BinOp, Call, Constant, Module, Name
 
 from geolint.rules.base import Invalid, Valid
 from geolint import algebra
-from geolint.algebra import Kind, Problem
+from geolint.algebra import FREE, LOCATED, Kind, Problem
+from geolint.factbase import library_calls
 from geolint.factbase.model import keyword, last_name, positional_args, transposed_value
 from geolint.rules.fact_rule import FactRule
 
@@ -96,7 +97,16 @@ class PointNotTranslated(FactRule):
         Invalid("p_world = T_world_cam[:3, :3] @ p_cam\n"),
         Invalid("pts_w = points @ pose[:3, :3].T\n"),
         Invalid("import trimesh\nv = trimesh.transform_points(mesh.vertices, T, translate=False)\n"),
-        Invalid("from pytransform3d.transformations import vector_to_direction\nd = vector_to_direction(centroid)\n"),
+        Invalid(
+            "from pytransform3d.transformations import vector_to_direction\nd = vector_to_direction(centroid)\n",
+            message="`vector_to_direction` gives w = 0, but `centroid` is a point; use `vector_to_point`",
+            range=(2, 5, 2, 34),
+        ),
+        Invalid(
+            "from pytorch3d.transforms import Transform3d\nv = Transform3d(matrix=M).transform_normals(mesh.vertices)\n",
+            message="`transform_normals` drops the translation, but `mesh.vertices` holds points; use `transform_points`",
+            range=(2, 5, 2, 59),
+        ),
     ]
 
     def run(self) -> None:
@@ -203,27 +213,21 @@ class PointNotTranslated(FactRule):
 
     def _check_library_call(self, node: Call) -> None:
         facts = self.facts
-        name = last_name(node.func)
-        if name not in ("transform_points", "vector_to_direction"):
-            return
-        positional = positional_args(node)
-        if not positional or facts.kind_of(positional[0]) != Kind.POINT:
-            return
-        if name == "transform_points":
-            translate = keyword(node, "translate")
-            if translate is not None and isinstance(translate.value, Constant) and translate.value.value is False:
-                self.report(
-                    node,
-                    f"`{self.code_of(positional[0])}` holds points, but `translate=False` drops the translation",
-                )
-        elif name == "vector_to_direction":
-            qualified = facts.qualified_name(node.func) or ""
-            if qualified.startswith("pytransform3d") or qualified == "vector_to_direction":
-                self.report(
-                    node,
-                    f"`vector_to_direction` gives w = 0, but `{self.code_of(positional[0])}` is a point; "
-                    "use `vector_to_point`",
-                )
+        for argument, moved_as in library_calls.moved_arguments(facts, node):  # the knowledge base (stubs/)
+            if moved_as in FREE and facts.kind_of(argument) == Kind.POINT:
+                self._report_untranslated(node, argument)
+
+    def _report_untranslated(self, node: Call, argument: ast.expr) -> None:
+        """A library call that moves `argument`, a point, as a free vector: say what drops the translation."""
+        facts, called, code = self.facts, last_name(node.func), self.code_of(argument)
+        chosen = library_calls.choosing_keywords(facts, node)
+        fix = library_calls.moving_as(facts, node, argument, LOCATED - FREE)
+        if chosen:
+            self.report(node, f"`{code}` holds points, but `{chosen[0]}` drops the translation")
+        elif library_calls.homogenizes(facts, node):
+            self.report(node, f"`{called}` gives w = 0, but `{code}` is a point" + (f"; use `{fix[1]}`" if fix else ""))
+        else:
+            self.report(node, f"`{called}` drops the translation, but `{code}` holds points" + (f"; use `{fix[1]}`" if fix else ""))
 
 
 _TRANSLATION_COLUMN: Final = re.compile(r"([\w.]+)\s*\[\s*(?:0\s*)?:\s*3\s*,\s*(?:3|-1)\s*\]")

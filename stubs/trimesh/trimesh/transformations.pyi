@@ -2,7 +2,9 @@
 ("Quaternions w+ix+jy+kz are represented as [w, x, y, z]", its module docstring), angles in radians.
 """
 
-from geolint.typing import PointArray, QuaternionWXYZ, Radians, TransformMatrix, Translation, VectorArray
+from typing import Literal, overload
+
+from geolint.typing import Dst, PointArray, QuaternionWXYZ, Radians, Src, TransformMatrix, Translation, VectorArray
 
 def identity_matrix() -> TransformMatrix:
     """Source: trimesh/transformations.py (trimesh 5.2.0), identity_matrix: the 4x4 identity."""
@@ -71,3 +73,11 @@ def random_quaternion(rand: object = ..., num: int = ..., seed: object = ...) ->
 
 def random_rotation_matrix(rand: object = ...) -> TransformMatrix:
     """Source: trimesh/transformations.py (trimesh 5.2.0), random_rotation_matrix: `quaternion_matrix(random_quaternion(rand))`."""
+
+@overload
+def transform_points(points: PointArray[Src], matrix: TransformMatrix[Dst, Src], translate: Literal[True] = ...) -> PointArray[Dst]: ...
+@overload
+def transform_points(points: VectorArray[Src], matrix: TransformMatrix[Dst, Src], translate: Literal[False]) -> VectorArray[Dst]:
+    """Source: trimesh/transformations.py (trimesh 5.2.0), transform_points(points, matrix, translate=True): "translate : bool
+    If True points will be translated, if False only the rotation is applied"; with a translation of
+    (1, 0, 0), (0, 0, 1) becomes (1, 0, 1), and (0, 0, 1) with translate=False (checked numerically)."""

@@ -13,3 +13,4 @@ from pytorch3d.transforms.rotation_conversions import (
     random_quaternions as random_quaternions,
     standardize_quaternion as standardize_quaternion,
 )
+from pytorch3d.transforms.transform3d import Transform3d as Transform3d
