@@ -209,7 +209,7 @@ def moved_arguments(facts: FactBase, call: Call) -> list[tuple[ast.expr, Kind]]:
     or direction only rotated (`translate=False`, `transform_normals(x)`, w = 0). [] when the overloads
     the call may be using disagree (`translate=flag`)."""
     bounds = library_call(facts, call)
-    if not bounds or not all(_applies_transform(bound.signature) for bound in bounds):
+    if not bounds or not all(bound.signature.applies_transform for bound in bounds):
         return []
     return [(argument, Kind(kind)) for argument, kind in _argument_facts(facts, call, "kind") if kind in _MOVED_KINDS]
 
@@ -249,20 +249,9 @@ def _moves_at(api: Api, position: int, wanted: frozenset[Kind]) -> bool:
     def moves(signature: Signature) -> bool:
         parameters = signature.parameters
         geometry = parameters[position].geometry if position < len(parameters) else None
-        return _applies_transform(signature) and geometry is not None and geometry.kind in wanted
+        return signature.applies_transform and geometry is not None and geometry.kind in wanted
 
     return bool(api.signatures) and all(moves(signature) for signature in api.signatures)
-
-
-def _applies_transform(signature: Signature) -> bool:
-    """Whether the overload applies a rigid transform to what it is given: it takes one, is a method of
-    one, or makes its input homogeneous (w = 1 or 0, for a 4x4 to be applied to)."""
-    kinds = [parameter.geometry.kind for parameter in signature.parameters if parameter.geometry is not None]
-    return (
-        Kind.TRANSFORM in kinds
-        or (signature.receiver is not None and signature.receiver.kind is Kind.TRANSFORM)
-        or (signature.returns is not None and signature.returns.kind in _HOMOGENEOUS)
-    )
 
 
 def _angle_unit(geometry: Geometry) -> str | None:

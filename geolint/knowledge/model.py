@@ -60,6 +60,17 @@ class Signature:
         letters = "".join(parameter.name for parameter in self.parameters if parameter.name in ("w", "x", "y", "z") and parameter.positional)
         return letters if letters in (SCALAR_FIRST, SCALAR_LAST) else None
 
+    @property
+    def applies_transform(self) -> bool:
+        """Whether the overload applies a rigid transform to what it is given: it takes one, is a method
+        of one, or makes its input homogeneous (w = 1 or 0, for a 4x4 to be applied to)."""
+        kinds = [parameter.geometry.kind for parameter in self.parameters if parameter.geometry is not None]
+        return (
+            Kind.TRANSFORM in kinds
+            or (self.receiver is not None and self.receiver.kind is Kind.TRANSFORM)
+            or (self.returns is not None and self.returns.kind in (Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR))
+        )
+
     def parameter(self, name: str) -> Parameter | None:
         return next((parameter for parameter in self.parameters if parameter.name == name), None)
 

@@ -8,7 +8,7 @@ annotated with `geolint.typing`.
 Layout: `plugin` (the dispatch tables, nothing else), `fullnames` and `errorcodes` (defined once), `config`
 (settings and the cache key), `geometry` (a mypy type read as kind + frames), `algebra` (the rules),
 `messages`; one module per feature: `string_frames` with its `string_frame_prepass`, `operators`,
-`numpy_calls`, `markers`, `third_party`. docs/typing.md is the user guide.
+`numpy_calls`, `markers`, `knowledge_calls` (library calls, from `stubs/`). docs/typing.md is the user guide.
 """
 
 from geolint.mypy.plugin import GeolintPlugin, plugin

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any, Mapping
 
 from geolint._version import __version__
+from geolint.knowledge import stubs_folder
 
 # Bump when the plugin's inference or messages change in a way cached results would not show.
 PLUGIN_VERSION = "1"
@@ -59,9 +60,13 @@ class PluginConfig:
 
 @lru_cache(maxsize=1)
 def plugin_source_digest() -> str:
-    """A digest of the plugin's own source: an edited plugin (an editable install) also invalidates the cache."""
+    """A digest of the plugin's own source and of the knowledge base it reads (`stubs/`, or the folder
+    GEOLINT_STUBS names): an edited plugin or stub also invalidates the cache."""
     digest = hashlib.sha256()
-    for path in sorted(Path(__file__).parent.glob("*.py")):
+    knowledge = Path(__file__).parent.parent / "knowledge"
+    stubs = stubs_folder()
+    for path in [*sorted(Path(__file__).parent.glob("*.py")), *sorted(knowledge.glob("*.py")), *sorted(stubs.rglob("*.py*")), *sorted(stubs.rglob("*.toml"))]:
+        digest.update(str(path.relative_to(stubs) if path.is_relative_to(stubs) else path.name).encode())
         digest.update(path.read_bytes())
     return digest.hexdigest()[:16]
 

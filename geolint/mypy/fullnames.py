@@ -2,7 +2,7 @@
 
 mypy names a method call after the class of the receiver (``geolint.typing.PointArray.__add__`` even though
 the method is inherited from ``numpy.ndarray``), and a function after the module that defines it (not the one
-that re-exports it), which is why the numpy and third-party names below point at private modules.
+that re-exports it), which is why the numpy names below point at private modules.
 """
 
 from __future__ import annotations
@@ -50,12 +50,6 @@ NP_LINALG_INV = "numpy.linalg._linalg.inv"
 # np.matmul is a ufunc object: the call is a method call on its class, told apart by the callee's name.
 NP_GUFUNC_CALL = "numpy._typing._ufunc._GUFunc_Nin2_Nout1.__call__"
 NP_MATMUL_NAMES = frozenset({"numpy.matmul", "numpy._core.umath.matmul"})
-
-# --- third-party calls that move points and vectors ---
-TRIMESH_TRANSFORM_POINTS = "trimesh.transformations.transform_points"
-PT3D_VECTOR_TO_POINT = "pytransform3d.transformations._transform_operations.vector_to_point"
-PT3D_VECTOR_TO_DIRECTION = "pytransform3d.transformations._transform_operations.vector_to_direction"
-PT3D_TRANSFORM = "pytransform3d.transformations._transform_operations.transform"
 
 # Binary operators the plugin gives frame-aware results.
 # The reflected ones matter too: when ``a.__matmul__`` reports a problem, mypy tries ``b.__rmatmul__`` and

@@ -12,18 +12,23 @@ from __future__ import annotations
 from functools import lru_cache, partial
 from typing import Any, Callable
 
-from mypy.nodes import Expression, IntExpr, NameExpr, StrExpr
+from mypy.nodes import Expression, IntExpr, MemberExpr, NameExpr, StrExpr
 from mypy.plugin import FunctionContext, MethodContext
 from mypy.types import CallableType, Instance, Overloaded, ProperType, Type, TypeType, get_proper_type
 
 from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST, Api, Bound, Signature, agreed, knowledge_base
 from geolint.knowledge.binding import UNDECIDED, CallShape, bind_shape
-from geolint.mypy.errorcodes import GEO_QUATERNION_ORDER
-from geolint.mypy.geometry import lookup_class
+from geolint.algebra import Kind
+from geolint.mypy import algebra, geometry, messages
+from geolint.mypy.algebra import Outcome, Problem
+from geolint.mypy.errorcodes import GEO_QUATERNION_ORDER, GEO_TRANSLATION
+from geolint.mypy.geometry import ARRAY, DIRECTION, ROTATION, TRANSFORM, VECTOR, VECTOR_WITH_W1, Geo, lookup_class
+from geolint.mypy.plugin_api import report_and_build
 
 _ORDER_CLASSES = {SCALAR_LAST: "geolint.typing.QuaternionXYZW", SCALAR_FIRST: "geolint.typing.QuaternionWXYZ"}
 _CLASS_ORDERS = {fullname: order for order, fullname in _ORDER_CLASSES.items()}
 _CallContext = FunctionContext | MethodContext
+_HOMOGENEOUS = (Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR)
 
 
 @lru_cache(maxsize=None)
@@ -37,6 +42,8 @@ def hook_for(fullname: str) -> Callable[[Any], Type] | None:
             return None
         return lambda ctx: _check_method_of_receiver(ctx, method)
     api = knowledge_base().api(fullname)
+    if api is not None and api.signatures and all(signature.applies_transform for signature in api.signatures):
+        return lambda ctx: _check_moving_call(ctx, api)
     if api is None or api not in _quaternion_apis():
         return None
     return lambda ctx: _check_call(ctx, api)
@@ -78,11 +85,7 @@ def _states_quaternions(signature: Signature) -> bool:
 
 
 def _check_call(ctx: _CallContext, api: Api) -> Type:
-    arguments = {
-        name: expressions[0]
-        for name, expressions in zip(ctx.callee_arg_names, ctx.args)
-        if name is not None and len(expressions) == 1
-    }
+    arguments = _arguments(ctx)
     bounds = bind_shape(api, CallShape([], arguments), _literal)
     for name, expression in arguments.items():
         wanted = agreed(bounds, partial(_parameter_order, name=name))
@@ -97,6 +100,70 @@ def _check_call(ctx: _CallContext, api: Api) -> Type:
             )
     produced = agreed(bounds, lambda bound: bound.signature.returns.quaternion_order if bound.signature.returns else None)
     return _quaternion_type(ctx, produced) or ctx.default_return_type
+
+
+def _check_moving_call(ctx: _CallContext, api: Api) -> Type:
+    """A call that moves points or vectors (`Signature.applies_transform`), as GEO101/GEO102 read it: a free
+    vector where the stub moves a point is `geo-translation`; otherwise the result is the argument made
+    homogeneous, or moved by the transform argument into its frame."""
+    arguments = _arguments(ctx)
+    bounds = bind_shape(api, CallShape([], arguments), _literal)
+    values = {name: geometry.read(types[0]) for name, types in zip(ctx.callee_arg_names, ctx.arg_types) if name is not None and len(types) == 1}
+    matrix = values.get(agreed(bounds, _transform_parameter) or "")
+    homogeneous = agreed(bounds, lambda bound: bound.signature.returns.kind if bound.signature.returns and bound.signature.returns.kind in _HOMOGENEOUS else None)
+    called = _callee_text(ctx)
+    for name, value in values.items():
+        moved_as = agreed(bounds, partial(_parameter_kind, name=name))
+        if value is None or value.family != ARRAY or value is matrix or (moved_as is None and value.kind not in _HOMOGENEOUS):
+            continue
+        if homogeneous is not None:
+            outcome = algebra.homogenize(value, 1 if homogeneous is Kind.HOMOGENEOUS_POINT else 0)
+            if outcome is not None and outcome.result is not None and outcome.result.kind == VECTOR_WITH_W1:
+                outcome = Outcome(outcome.result, Problem(GEO_TRANSLATION, messages.vector_made_point(called.rpartition(".")[2], value)))
+            return report_and_build(ctx, outcome)
+        if moved_as is Kind.POINT and value.kind in (VECTOR, DIRECTION):
+            return report_and_build(ctx, Outcome(value, Problem(GEO_TRANSLATION, messages.translating_call(called, value))))
+        if matrix is None or matrix.family != ARRAY or matrix.kind != TRANSFORM:
+            return ctx.default_return_type
+        return report_and_build(ctx, _moved_by(matrix, value))
+    return ctx.default_return_type
+
+
+def _moved_by(matrix: Geo, value: Geo) -> Outcome | None:
+    """A homogeneous value times the 4x4; a 3-vector by the column rule on its rotation block (the call
+    adds the translation itself), reported in the call's own words."""
+    if value.kind in _HOMOGENEOUS:
+        return algebra.matmul(matrix, value)
+    outcome = algebra.matmul(matrix.with_frames(matrix.dst, matrix.src, kind=ROTATION), value)
+    if outcome is not None and outcome.problem is not None:
+        return Outcome(outcome.result, Problem(outcome.problem.code, messages.applied_to_wrong_frame(matrix, value)))
+    return outcome
+
+
+def _arguments(ctx: _CallContext) -> dict[str, Expression]:
+    return {name: expressions[0] for name, expressions in zip(ctx.callee_arg_names, ctx.args) if name is not None and len(expressions) == 1}
+
+
+def _transform_parameter(bound: Bound) -> str | None:
+    return next((parameter.name for parameter in bound.signature.parameters if parameter.geometry is not None and parameter.geometry.kind is Kind.TRANSFORM), None)
+
+
+def _parameter_kind(bound: Bound, name: str) -> Kind | None:
+    parameter = bound.signature.parameter(name)
+    kind = parameter.geometry.kind if parameter is not None and parameter.geometry is not None else None
+    return kind if kind in (Kind.POINT, Kind.VECTOR, Kind.DIRECTION) else None
+
+
+def _callee_text(ctx: _CallContext) -> str:
+    """The callee as written (`trimesh.transform_points`, `pt.vector_to_point`), for messages."""
+    callee = getattr(ctx.context, "callee", None)
+    parts: list[str] = []
+    while isinstance(callee, MemberExpr):
+        parts.append(callee.name)
+        callee = callee.expr
+    if isinstance(callee, NameExpr):
+        parts.append(callee.name)
+    return ".".join(reversed(parts))
 
 
 def _parameter_order(bound: Bound, name: str) -> str | None:

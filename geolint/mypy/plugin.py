@@ -36,7 +36,6 @@ from geolint.mypy import (
     runtime_values,
     string_frame_prepass,
     string_frames,
-    third_party,
 )
 from geolint.mypy.geometry import FRAMED_CLASSES
 
@@ -60,10 +59,6 @@ FUNCTION_HOOKS: dict[str, Callable[[FunctionContext], Type]] = {
     names.AS_ROTATION: markers.mark,
     names.AS_TRANSFORM: markers.mark,
     names.AS_TRANSLATION: markers.mark,
-    names.TRIMESH_TRANSFORM_POINTS: third_party.trimesh_transform_points,
-    names.PT3D_VECTOR_TO_POINT: third_party.pytransform3d_vector_to_point,
-    names.PT3D_VECTOR_TO_DIRECTION: third_party.pytransform3d_vector_to_direction,
-    names.PT3D_TRANSFORM: third_party.pytransform3d_transform,
 }
 
 _OPERATOR_RECEIVERS = [

@@ -28,8 +28,6 @@ STILL_NAMED: dict[str, set[str]] = {
         "pytorch3d", "pytransform3d", "quaternion", "scipy", "spatialmath", "tf", "tf_transformations", "transforms3d",
         "trimesh",
     },  # fmt: skip
-    "mypy/fullnames.py": {"pytransform3d", "trimesh"},
-    "mypy/third_party.py": {"trimesh"},
     "rules/frames/geo207_invalid_tf_frame_id.py": {"tf", "transformations"},
     "rules/kind/geo107_free_vectors_left_behind.py": {"quaternion", "tf"},
     "rules/rotation/geo304_quaternion_component_reused.py": {"pyquaternion", "quaternion"},

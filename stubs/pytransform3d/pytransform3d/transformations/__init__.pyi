@@ -1,7 +1,12 @@
-from geolint.typing import (
-    Dst, From, HomogeneousPoints, HomogeneousVectors, In, PointArray, RotationMatrix, Src, To, TransformMatrix, Translation,
-    VectorArray,
+from pytransform3d.transformations._transform_operations import (
+    transform as transform,
+    vector_to_direction as vector_to_direction,
+    vector_to_point as vector_to_point,
+    vectors_to_directions as vectors_to_directions,
+    vectors_to_points as vectors_to_points,
 )
+
+from geolint.typing import Dst, From, In, RotationMatrix, Src, To, TransformMatrix, Translation
 
 # pytransform3d.transformations: 4x4 poses named `A2B` ("Transform from frame A to frame B"), composed
 # in the extrinsic convention.
@@ -17,17 +22,3 @@ def invert_transform(A2B: TransformMatrix[Dst, Src], strict_check: bool = ..., c
 def transform_from(R: RotationMatrix[Dst, Src], p: Translation[Dst, Src], strict_check: bool = ...) -> TransformMatrix[Dst, Src]:
     """Source: pytransform3d/transformations/_transform.py (3.17.0), transform_from: "Make transformation
     from rotation matrix and translation"."""
-
-def vector_to_point(v: PointArray) -> HomogeneousPoints:
-    """Source: pytransform3d/transformations/_transform_operations.py (3.17.0), vector_to_point: "A point (x, y, z) ... will be
-    represented by [x, y, z, 1] in homogeneous coordinates to which we can apply a transformation"."""
-
-def vectors_to_points(V: PointArray) -> HomogeneousPoints:
-    """Source: pytransform3d/transformations/_transform_operations.py (3.17.0), vectors_to_points: each row gets a 1 appended."""
-
-def vector_to_direction(v: VectorArray) -> HomogeneousVectors:
-    """Source: pytransform3d/transformations/_transform_operations.py (3.17.0), vector_to_direction: "A direction (x, y, z) ...
-    will be represented by [x, y, z, 0] in homogeneous coordinates"."""
-
-def vectors_to_directions(V: VectorArray) -> HomogeneousVectors:
-    """Source: pytransform3d/transformations/_transform_operations.py (3.17.0), vectors_to_directions: each row gets a 0 appended."""
