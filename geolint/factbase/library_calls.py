@@ -14,6 +14,7 @@ import ast
 from ast import AST, Attribute, Call, If, Import, ImportFrom, Name
 from typing import TYPE_CHECKING, Final
 
+from geolint.factbase.index import ParamBinding
 from geolint.factbase.project_files import module_path
 from geolint.factbase.project_pins import Pins, pins_for
 from geolint.algebra import Kind
@@ -278,12 +279,28 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
         return agreed(library_call(facts, node), lambda bound: _returned(bound).type_name)
     if isinstance(node, Name):
         bound = facts.bindings(node) or []
+        if len(bound) == 1 and isinstance(bound[0], ParamBinding) and bound[0].arg.annotation is not None:
+            return _annotated_type(facts, bound[0].arg.annotation)  # `client: airsim.MultirotorClient`
         values = [binding for binding in bound if isinstance(binding, ast.expr)]
         if not values or len(values) != len(bound):
             return None
         types = {_library_type(facts, value, depth - 1) for value in values if value is not node}
         return types.pop() if len(types) == 1 else None
     return None
+
+
+def _annotated_type(facts: FactBase, annotation: ast.expr) -> str | None:
+    """The library class an annotation names (`airsim.MultirotorClient`, `"Rotation"`), through the imports."""
+    if isinstance(annotation, ast.Constant) and isinstance(annotation.value, str):
+        try:
+            annotation = ast.parse(annotation.value, mode="eval").body
+        except SyntaxError:
+            return None
+    if not isinstance(annotation, (Name, Attribute)):
+        return None
+    qualified = facts.qualified_name(annotation)
+    api = knowledge(facts).api(qualified) if qualified is not None else None
+    return api.qualified_name if api is not None and api.is_class else None
 
 
 def _called_api(facts: FactBase, call: Call) -> Api | None:

@@ -90,7 +90,7 @@ def _bind_one(signature: Signature, shape: CallShape, constant: Callable[[Any], 
     spread = shape.spread
     if spread is not None:
         if sum(1 for parameter in parameters if parameter.positional and not parameter.variadic) < 2 and not any(
-            parameter.variadic for parameter in parameters
+            parameter.variadic and parameter.positional for parameter in parameters
         ):
             return None  # `f(*q)` spreads components: an overload of one positional parameter is not it
     else:
@@ -102,8 +102,11 @@ def _bind_one(signature: Signature, shape: CallShape, constant: Callable[[Any], 
             if parameter.variadic:
                 break
             arguments[parameter.name] = value
+    any_keyword = any(parameter.variadic and parameter.keyword for parameter in parameters)
     for name, value in shape.keywords.items():
         named = signature.parameter(name)
+        if named is None and any_keyword:
+            continue
         if named is None or not named.keyword or name in arguments:
             return None
         arguments[name] = value

@@ -41,7 +41,7 @@ class Parameter:
     has_default: bool
     geometry: Geometry | None = None
     literal: tuple[object, ...] | None = None  # `Literal[...]`: the values this overload accepts
-    variadic: bool = False  # *args
+    variadic: bool = False  # *args (positional), **kwargs (keyword)
 
 
 @dataclass(frozen=True)

@@ -179,6 +179,8 @@ class _ModuleReader:
             self._parameter(argument, positional=False, keyword=True, has_default=default is not None)
             for argument, default in zip(arguments.kwonlyargs, arguments.kw_defaults)
         ]
+        if arguments.kwarg is not None:  # `**options`: any other keyword fits, and says nothing
+            parameters.append(Parameter(arguments.kwarg.arg, positional=False, keyword=True, has_default=True, variadic=True))
         returns = self.geometry(node.returns) if node.returns is not None else None
         return Signature(tuple(parameters), returns, _versions(node.decorator_list), node.lineno, receiver)
 

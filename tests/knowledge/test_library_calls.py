@@ -6,6 +6,7 @@ from __future__ import annotations
 import ast
 import textwrap
 
+from geolint.algebra import FREE, Kind
 from geolint.config import Config
 from geolint.factbase import facts_for_module
 from geolint.factbase.library_calls import (
@@ -13,6 +14,8 @@ from geolint.factbase.library_calls import (
     angle_inputs,
     angle_output,
     library_type,
+    moved_arguments,
+    moving_as,
     quaternion_inputs,
     quaternion_output,
     returns_euler_angles,
@@ -163,3 +166,43 @@ def test_re_exported_modules_and_rotation_vectors_come_from_the_stubs() -> None:
     for call in ("quaternion.from_rotation_vector(angle * axis)", "Rotation.from_rotvec(theta * axis)"):
         assert [ast.unparse(argument) for argument in rotation_vector_arguments(facts, calls[call])] == [call.partition("(")[2][:-1]]  # type: ignore[arg-type]
     assert rotation_vector_arguments(facts, calls["Rotation.from_euler('z', theta)"]) == []  # type: ignore[arg-type]  # angles, not a rotation vector
+
+
+def test_moved_arguments_and_their_fixes_come_from_the_stubs() -> None:
+    facts, calls = _calls(
+        """
+        import trimesh
+        from pytransform3d.transformations import vector_to_point
+        from pytorch3d.transforms import Transform3d
+        a = trimesh.transform_points(x, T)
+        b = trimesh.transform_points(x, T, translate=False)
+        c = trimesh.transform_points(x, T, translate=flag)
+        d = vector_to_point(x)
+        e = Transform3d(matrix=M).transform_normals(x)
+        """
+    )
+    moved = {source: [(ast.unparse(argument), kind) for argument, kind in moved_arguments(facts, call)] for source, call in calls.items()}  # type: ignore[arg-type]
+    assert moved["trimesh.transform_points(x, T)"] == [("x", Kind.POINT)]
+    assert moved["trimesh.transform_points(x, T, translate=False)"] == [("x", Kind.VECTOR)]
+    assert moved["trimesh.transform_points(x, T, translate=flag)"] == []  # either overload
+    assert moved["vector_to_point(x)"] == [("x", Kind.POINT)]
+    assert moved["Transform3d(matrix=M).transform_normals(x)"] == [("x", Kind.DIRECTION)]
+    call = calls["trimesh.transform_points(x, T)"]
+    assert moving_as(facts, call, call.args[0], FREE) == ("keyword", "translate=False")  # type: ignore[arg-type, attr-defined]
+    call = calls["vector_to_point(x)"]
+    assert moving_as(facts, call, call.args[0], FREE) == ("name", "vector_to_direction")  # type: ignore[arg-type, attr-defined]
+
+
+def test_an_annotated_parameter_has_its_library_type() -> None:
+    facts, calls = _calls(
+        """
+        import airsim
+        def turn(client: airsim.MultirotorClient, other: "airsim.MultirotorClient", third):
+            client.rotateToYawAsync(a)
+            other.rotateToYawAsync(b)
+            third.rotateToYawAsync(c)
+        """
+    )
+    assert [ast.unparse(argument) for argument in angle_arguments(facts, calls["client.rotateToYawAsync(a)"], "degrees")] == ["a"]  # type: ignore[arg-type]
+    assert [ast.unparse(argument) for argument in angle_arguments(facts, calls["other.rotateToYawAsync(b)"], "degrees")] == ["b"]  # type: ignore[arg-type]
+    assert angle_arguments(facts, calls["third.rotateToYawAsync(c)"], "degrees") == []  # type: ignore[arg-type]

@@ -156,3 +156,18 @@ def test_a_type_alias_states_what_its_annotation_states(tmp_path: Path) -> None:
     assert signature.parameters[0].geometry == returned
     looped = kb.api("rotlib.looped")
     assert looped is not None and looped.signatures[0].parameters[0].geometry is not None  # read once, then nothing more
+
+
+def test_keywords_caught_by_options_bind_and_say_nothing(tmp_path: Path) -> None:
+    kb = _library(
+        tmp_path,
+        {"rotlib/core.pyi": "from geolint.typing import Degrees\n\ndef spawn(*, euler: Degrees = ..., **options: object) -> None:\n    '''Source: x.'''\n"},
+    )
+    api = kb.api("rotlib.core.spawn")
+    assert api is not None
+    (bound,) = bind(api, _call("spawn(file='a.urdf', euler=e, fixed=True)"))
+    assert set(bound.arguments) == {"euler"}
+    stub_without_options = "from geolint.typing import Degrees\n\ndef spawn(*, euler: Degrees = ...) -> None:\n    '''Source: x.'''\n"
+    (tmp_path / "other").mkdir()
+    strict = _library(tmp_path / "other", {"rotlib/core.pyi": stub_without_options}).api("rotlib.core.spawn")
+    assert strict is not None and bind(strict, _call("spawn(file='a.urdf', euler=e)")) == []

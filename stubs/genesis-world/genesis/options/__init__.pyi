@@ -1,0 +1,1 @@
+from genesis.options import morphs as morphs

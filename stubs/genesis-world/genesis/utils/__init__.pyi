@@ -1,0 +1,1 @@
+from genesis.utils import geom as geom
