@@ -479,54 +479,6 @@ def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: AS
     return f"`{receiver.id}` is an Open3D cloud in the camera frame (`{call_name(made)}` at line {made.lineno}, no extrinsic)"
 
 
-# Open3D calls whose extrinsic argument is world-to-camera: (position, keyword) by the callee's last name;
-# the callee must resolve to Open3D (`PointCloud.create_from_*`) or be a TSDF volume's `integrate`.
-OPEN3D_W2C_ARGUMENTS: Final[dict[str, tuple[int | None, str]]] = {
-    "create_from_rgbd_image": (2, "extrinsic"),
-    "create_from_depth_image": (2, "extrinsic"),
-    "create_camera_visualization": (None, "extrinsic"),
-    "integrate": (2, "extrinsic"),
-}
-
-
-def open3d_w2c_argument(evidence: ExtrinsicsEvidence, call: Call) -> tuple[ast.expr, str] | None:
-    """The argument of an Open3D call that must be a world-to-camera pose, and what says so."""
-    name = call_name(call)
-    wanted = OPEN3D_W2C_ARGUMENTS.get(name or "")
-    if wanted is None or not isinstance(call.func, Attribute):
-        return None
-    if name == "integrate":
-        if not _is_tsdf_volume(evidence, call.func.value):
-            return None
-        what = "Open3D's TSDF `integrate`"
-    else:
-        qualified = evidence.facts.qualified_name(call.func) or ""
-        if not qualified.startswith("open3d.") and "PointCloud" not in qualified and "LineSet" not in qualified:
-            return None
-        what = f"Open3D's `{name}`"
-    position, keyword = wanted
-    for given in call.keywords:
-        if given.arg == keyword:
-            return given.value, f"the extrinsic of {what}"
-    if position is not None and len(call.args) > position and not any(isinstance(a, Starred) for a in call.args[: position + 1]):
-        return call.args[position], f"the extrinsic of {what}"
-    return None
-
-
-def _is_tsdf_volume(evidence: ExtrinsicsEvidence, receiver: ast.expr) -> bool:
-    """`volume = o3d.pipelines.integration.ScalableTSDFVolume(...)`, directly or as `self.volume`."""
-    if isinstance(receiver, Name):
-        made = value_of(evidence.index, receiver)
-        made_by = [made] if isinstance(made, ast.expr) else []
-    elif isinstance(receiver, Attribute) and isinstance(receiver.value, Name) and receiver.value.id == "self":
-        made_by = evidence.facts.index.self_attribute_stores.get(receiver.attr, [])
-    else:
-        return False
-    return bool(made_by) and all(
-        isinstance(made, Call) and "TSDFVolume" in (evidence.facts.qualified_name(made.func) or "") for made in made_by
-    )
-
-
 _PYRENDER_CAMERAS: Final = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "OrthographicCamera"})
 
 

@@ -240,6 +240,29 @@ def moving_as(facts: FactBase, call: Call, argument: ast.expr, wanted: frozenset
     return ("name", twins[0].qualified_name.rpartition(".")[2]) if len(twins) == 1 else None
 
 
+def stated_poses(facts: FactBase, call: Call) -> list[tuple[ast.expr, str, tuple[str, str]]]:
+    """(argument, parameter, (dst, src)) for each argument a known library call reads as a transform between
+    two named frames (`extrinsic: TransformMatrix["camera", "world"]`: world-to-camera), when every overload
+    the call may be using agrees."""
+    bounds = library_call(facts, call)
+    found: list[tuple[ast.expr, str, tuple[str, str]]] = []
+    for name, argument in bounds[0].arguments.items() if bounds else ():
+        stated = {_pose_frames(bound, argument) for bound in bounds}
+        frames = stated.pop() if len(stated) == 1 else None
+        if frames is not None:
+            found.append((argument, name, frames))
+    return found
+
+
+def _pose_frames(bound: Bound, argument: ast.expr) -> tuple[str, str] | None:
+    name = next((name for name, given in bound.arguments.items() if given is argument), None)
+    parameter = bound.signature.parameter(name) if name is not None else None
+    geometry = parameter.geometry if parameter is not None else None
+    if geometry is None or geometry.kind is not Kind.TRANSFORM or len(geometry.frames) != 2 or not all(geometry.frames):
+        return None
+    return geometry.frames[0], geometry.frames[1]
+
+
 def homogenizes(facts: FactBase, call: Call) -> bool:
     """Whether a known library call returns its input made homogeneous (`vector_to_point`: w = 1)."""
     return agreed(library_call(facts, call), lambda bound: _returned(bound).kind in _HOMOGENEOUS) is True
@@ -286,6 +309,10 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
             return None
         types = {_library_type(facts, value, depth - 1) for value in values if value is not node}
         return types.pop() if len(types) == 1 else None
+    if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
+        stores = facts.index.self_attribute_stores.get(node.attr, [])  # `self.volume = ScalableTSDFVolume(...)`
+        types = {_library_type(facts, value, depth - 1) for value in stores if isinstance(value, ast.expr)}
+        return types.pop() if stores and len(types) == 1 and len(stores) == sum(isinstance(value, ast.expr) for value in stores) else None
     return None
 
 

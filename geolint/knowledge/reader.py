@@ -268,7 +268,10 @@ def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
 
 
 def _frame(node: ast.expr) -> str:
-    """A frame argument: a string literal names the frame; a type variable is generic ('')."""
+    """A frame argument: a string literal (`"camera"`, or `Literal["camera"]`, the same type, which linters
+    do not read as a forward reference) names the frame; a type variable is generic ('')."""
+    if isinstance(node, ast.Subscript) and _last(node.value) == "Literal":
+        node = node.slice
     return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else ""
 
 

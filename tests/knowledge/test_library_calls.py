@@ -20,6 +20,7 @@ from geolint.factbase.library_calls import (
     quaternion_output,
     returns_euler_angles,
     rotation_vector_arguments,
+    stated_poses,
 )
 from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST
 
@@ -206,3 +207,24 @@ def test_an_annotated_parameter_has_its_library_type() -> None:
     assert [ast.unparse(argument) for argument in angle_arguments(facts, calls["client.rotateToYawAsync(a)"], "degrees")] == ["a"]  # type: ignore[arg-type]
     assert [ast.unparse(argument) for argument in angle_arguments(facts, calls["other.rotateToYawAsync(b)"], "degrees")] == ["b"]  # type: ignore[arg-type]
     assert angle_arguments(facts, calls["third.rotateToYawAsync(c)"], "degrees") == []  # type: ignore[arg-type]
+
+
+def test_poses_between_named_frames_come_from_the_stubs() -> None:
+    facts, calls = _calls(
+        """
+        import open3d as o3d
+        class Fusion:
+            def __init__(self):
+                self.volume = o3d.pipelines.integration.ScalableTSDFVolume(voxel_length=0.01)
+            def add(self, rgbd, K, w2c):
+                self.volume.integrate(rgbd, K, w2c)
+        a = o3d.geometry.LineSet.create_camera_visualization(640, 480, K, E1)
+        b = o3d.geometry.LineSet.create_camera_visualization(intrinsic, E2, 0.1)
+        """
+    )
+    def poses(source: str) -> list[tuple[str, str, tuple[str, str]]]:
+        return [(ast.unparse(argument), name, frames) for argument, name, frames in stated_poses(facts, calls[source])]  # type: ignore[arg-type]
+
+    assert poses("self.volume.integrate(rgbd, K, w2c)") == [("w2c", "extrinsic", ("camera", "world"))]
+    assert poses("o3d.geometry.LineSet.create_camera_visualization(640, 480, K, E1)") == [("E1", "extrinsic", ("camera", "world"))]
+    assert poses("o3d.geometry.LineSet.create_camera_visualization(intrinsic, E2, 0.1)") == [("E2", "extrinsic", ("camera", "world"))]

@@ -17,7 +17,6 @@ ANALYSIS = ("rules", "factbase", "semantic", "mypy")
 # module -> stubbed packages it still names in code (not in docstrings): what is left to move to stubs/
 STILL_NAMED: dict[str, set[str]] = {
     "factbase/conventions.py": {"pydrake"},
-    "factbase/extrinsics.py": {"open3d"},
     "factbase/kinds.py": {"PyKDL", "spatialmath"},
     "factbase/messages.py": {"geometry_msgs"},
     "factbase/pose_parts.py": {"scipy", "tf", "transformations"},

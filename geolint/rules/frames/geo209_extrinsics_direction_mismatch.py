@@ -7,6 +7,7 @@ from typing import Final
 import ast
 from ast import AnnAssign, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Name, Starred, Subscript
 
+from geolint.factbase import library_calls
 from geolint.factbase.extrinsics import (
     C2W,
     DATA,
@@ -17,7 +18,6 @@ from geolint.factbase.extrinsics import (
     camera_frame_cloud,
     key_extrinsic,
     name_extrinsic,
-    open3d_w2c_argument,
     pyrender_camera_pose,
     DIRECTION_WORDS,
     is_blank_matrix,
@@ -262,10 +262,12 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 stated = name_extrinsic(self.facts, parameter.arg)
                 if stated is not None:
                     self._compare(argument, stated, f"parameter `{parameter.arg}` of `{function.name}`", names_both_sides=True)
-        library = open3d_w2c_argument(self.evidence, call)
-        if library is not None:
-            argument, where = library
-            self._compare(argument, Extrinsic(W2C, POSE, ("Open3D: an extrinsic maps world into camera",)), where, names_both_sides=True)
+        for argument, read_as, frames in library_calls.stated_poses(self.facts, call):  # the knowledge base (stubs/)
+            if frames == ("camera", "world"):
+                called = library_calls.called_api(self.facts, call)
+                owner = ".".join(called.qualified_name.split(".")[-2:]) if called is not None else read_as
+                stated = Extrinsic(W2C, POSE, (f"`{read_as}` of `{owner}` maps world into camera (its stub)",))
+                self._compare(argument, stated, f"the `{read_as}` of `{owner}`", names_both_sides=True)
         camera_pose = pyrender_camera_pose(self.evidence, call)
         if camera_pose is not None:
             stated = Extrinsic(C2W, POSE, ("pyrender: a node's pose maps it into the scene",))

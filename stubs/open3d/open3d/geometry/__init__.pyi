@@ -1,4 +1,6 @@
-from geolint.typing import QuaternionWXYZ, Radians, RotationMatrix, RotationVector
+from typing import Literal, overload
+
+from geolint.typing import QuaternionWXYZ, Radians, RotationMatrix, RotationVector, TransformMatrix
 
 # open3d.geometry (0.20.0), the module functions (also static methods of every geometry class).
 
@@ -33,3 +35,32 @@ def get_rotation_matrix_from_zxy(rotation: Radians) -> RotationMatrix:
 def get_rotation_matrix_from_zyx(rotation: Radians) -> RotationMatrix:
     """Source: open3d 0.20.0, open3d.geometry.get_rotation_matrix_from_zyx.__doc__: "The rotation is
     specified in radians"."""
+
+# An Open3D extrinsic maps world into camera: the factories invert it to place the camera
+# (`Eigen::Matrix4d camera_pose = extrinsic.inverse();`, cpp/open3d/geometry/PointCloudFactory.cpp).
+
+class PointCloud:
+    """Source: open3d.geometry.PointCloud (0.20.0 docs), create_from_rgbd_image(image, intrinsic, extrinsic=identity,
+    project_valid_depth_only=True) and create_from_depth_image(depth, intrinsic, extrinsic=identity, depth_scale=1000.0,
+    depth_trunc=1000.0, stride=1, project_valid_depth_only=True); cpp/open3d/geometry/PointCloudFactory.cpp places the camera
+    at `extrinsic.inverse()`: the extrinsic is world-to-camera."""
+
+    @staticmethod
+    def create_from_rgbd_image(image: object, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]] = ..., project_valid_depth_only: bool = ...) -> PointCloud: ...
+    @staticmethod
+    def create_from_depth_image(
+        depth: object, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]] = ..., depth_scale: float = ...,
+        depth_trunc: float = ..., stride: int = ..., project_valid_depth_only: bool = ...,
+    ) -> PointCloud: ...
+
+class LineSet:
+    """Source: open3d.geometry.LineSet (0.20.0 docs), create_camera_visualization(view_width_px, view_height_px, intrinsic,
+    extrinsic, scale=1.0) and create_camera_visualization(intrinsic, extrinsic, scale=1.0): "Factory function to create a
+    LineSet from intrinsic and extrinsic camera matrices"; the extrinsic is world-to-camera as in the point cloud factories."""
+
+    @overload
+    @staticmethod
+    def create_camera_visualization(view_width_px: int, view_height_px: int, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]], scale: float = ...) -> LineSet: ...
+    @overload
+    @staticmethod
+    def create_camera_visualization(intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]], scale: float = ...) -> LineSet: ...

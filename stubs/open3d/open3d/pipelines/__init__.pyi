@@ -1,0 +1,1 @@
+from open3d.pipelines import integration as integration
