@@ -11,7 +11,7 @@ a question is answered only when all of them agree (`geolint.knowledge.agreed`).
 from __future__ import annotations
 
 import ast
-from ast import AST, Attribute, Call, If, Import, ImportFrom, Name
+from ast import AST, Attribute, Call, Constant, If, Import, ImportFrom, Name
 from typing import TYPE_CHECKING, Final
 
 from geolint.factbase.index import ParamBinding
@@ -318,7 +318,7 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
 
 def _annotated_type(facts: FactBase, annotation: ast.expr) -> str | None:
     """The library class an annotation names (`airsim.MultirotorClient`, `"Rotation"`), through the imports."""
-    if isinstance(annotation, ast.Constant) and isinstance(annotation.value, str):
+    if isinstance(annotation, Constant) and isinstance(annotation.value, str):
         try:
             annotation = ast.parse(annotation.value, mode="eval").body
         except SyntaxError:
