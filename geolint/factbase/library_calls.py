@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Final
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.project_files import module_path
 from geolint.factbase.project_pins import Pins, pins_for
-from geolint.algebra import Kind
+from geolint.algebra import HOMOGENEOUS, Kind
 from geolint.knowledge import (
     RADIANS,
     Api,
@@ -201,7 +201,6 @@ def returns_euler_angles(facts: FactBase, call: Call) -> bool:
 
 
 _MOVED_KINDS: Final = (Kind.POINT, Kind.VECTOR, Kind.DIRECTION)
-_HOMOGENEOUS: Final = (Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR)
 
 
 def moved_arguments(facts: FactBase, call: Call) -> list[tuple[ast.expr, Kind]]:
@@ -265,7 +264,7 @@ def _pose_frames(bound: Bound, argument: ast.expr) -> tuple[str, str] | None:
 
 def homogenizes(facts: FactBase, call: Call) -> bool:
     """Whether a known library call returns its input made homogeneous (`vector_to_point`: w = 1)."""
-    return agreed(library_call(facts, call), lambda bound: _returned(bound).kind in _HOMOGENEOUS) is True
+    return agreed(library_call(facts, call), lambda bound: _returned(bound).kind in HOMOGENEOUS) is True
 
 
 def _moves_at(api: Api, position: int, wanted: frozenset[Kind]) -> bool:
@@ -311,8 +310,10 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
         return types.pop() if len(types) == 1 else None
     if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
         stores = facts.index.self_attribute_stores.get(node.attr, [])  # `self.volume = ScalableTSDFVolume(...)`
-        types = {_library_type(facts, value, depth - 1) for value in stores if isinstance(value, ast.expr)}
-        return types.pop() if stores and len(types) == 1 and len(stores) == sum(isinstance(value, ast.expr) for value in stores) else None
+        if not stores or not all(isinstance(value, ast.expr) for value in stores):
+            return None
+        types = {_library_type(facts, value, depth - 1) for value in stores}
+        return types.pop() if len(types) == 1 else None
     return None
 
 

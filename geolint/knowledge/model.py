@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from geolint.algebra import Kind
+from geolint.algebra import HOMOGENEOUS, Kind
 
 SCALAR_LAST = "xyzw"
 SCALAR_FIRST = "wxyz"
@@ -68,7 +68,7 @@ class Signature:
         return (
             Kind.TRANSFORM in kinds
             or (self.receiver is not None and self.receiver.kind is Kind.TRANSFORM)
-            or (self.returns is not None and self.returns.kind in (Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR))
+            or (self.returns is not None and self.returns.kind in HOMOGENEOUS)
         )
 
     def parameter(self, name: str) -> Parameter | None:

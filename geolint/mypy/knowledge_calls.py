@@ -18,7 +18,7 @@ from mypy.types import CallableType, Instance, Overloaded, ProperType, Type, Typ
 
 from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST, Api, Bound, Signature, agreed, knowledge_base
 from geolint.knowledge.binding import UNDECIDED, CallShape, bind_shape
-from geolint.algebra import Kind
+from geolint.algebra import HOMOGENEOUS, Kind
 from geolint.mypy import algebra, geometry, messages
 from geolint.mypy.algebra import Outcome, Problem
 from geolint.mypy.errorcodes import GEO_QUATERNION_ORDER, GEO_TRANSLATION
@@ -28,7 +28,6 @@ from geolint.mypy.plugin_api import report_and_build
 _ORDER_CLASSES = {SCALAR_LAST: "geolint.typing.QuaternionXYZW", SCALAR_FIRST: "geolint.typing.QuaternionWXYZ"}
 _CLASS_ORDERS = {fullname: order for order, fullname in _ORDER_CLASSES.items()}
 _CallContext = FunctionContext | MethodContext
-_HOMOGENEOUS = (Kind.HOMOGENEOUS_POINT, Kind.HOMOGENEOUS_VECTOR)
 
 
 @lru_cache(maxsize=None)
@@ -110,11 +109,11 @@ def _check_moving_call(ctx: _CallContext, api: Api) -> Type:
     bounds = bind_shape(api, CallShape([], arguments), _literal)
     values = {name: geometry.read(types[0]) for name, types in zip(ctx.callee_arg_names, ctx.arg_types) if name is not None and len(types) == 1}
     matrix = values.get(agreed(bounds, _transform_parameter) or "")
-    homogeneous = agreed(bounds, lambda bound: bound.signature.returns.kind if bound.signature.returns and bound.signature.returns.kind in _HOMOGENEOUS else None)
+    homogeneous = agreed(bounds, lambda bound: bound.signature.returns.kind if bound.signature.returns and bound.signature.returns.kind in HOMOGENEOUS else None)
     called = _callee_text(ctx)
     for name, value in values.items():
         moved_as = agreed(bounds, partial(_parameter_kind, name=name))
-        if value is None or value.family != ARRAY or value is matrix or (moved_as is None and value.kind not in _HOMOGENEOUS):
+        if value is None or value.family != ARRAY or value is matrix or (moved_as is None and value.kind not in HOMOGENEOUS):
             continue
         if homogeneous is not None:
             outcome = algebra.homogenize(value, 1 if homogeneous is Kind.HOMOGENEOUS_POINT else 0)
@@ -132,7 +131,7 @@ def _check_moving_call(ctx: _CallContext, api: Api) -> Type:
 def _moved_by(matrix: Geo, value: Geo) -> Outcome | None:
     """A homogeneous value times the 4x4; a 3-vector by the column rule on its rotation block (the call
     adds the translation itself), reported in the call's own words."""
-    if value.kind in _HOMOGENEOUS:
+    if value.kind in HOMOGENEOUS:
         return algebra.matmul(matrix, value)
     outcome = algebra.matmul(matrix.with_frames(matrix.dst, matrix.src, kind=ROTATION), value)
     if outcome is not None and outcome.problem is not None:
