@@ -18,6 +18,7 @@ from geolint.factbase import vocabulary as vocab
 from geolint.factbase.fact_types import GEOMETRIC, OPERATORS
 from geolint.factbase.index import Binding, LoopBinding, ParamBinding, UnpackBinding
 from geolint.factbase.kind_summaries import KINDS
+from geolint.factbase.library_calls import returned_kind
 from geolint.factbase.syntax import components_of_one_array, is_scalar_annotation, last_name, number, positional_args
 from geolint.semantic.names import kind_of_name, states_geometry
 
@@ -156,8 +157,7 @@ def _kind_of_call(facts: FactBase, node: Call) -> Kind | None:
     if name in vocab.INVERSE_FUNCTIONS and positional:
         kind = kind_of(facts, positional[0])
         return kind if kind in OPERATORS else None
-    qualified = facts.qualified_name(func) or ""
-    library = vocab.LIBRARY_KINDS.get(qualified)
+    library = returned_kind(facts, node)
     if library is not None:
         return library
     summary = facts.summary_of(node, KINDS)

@@ -195,6 +195,22 @@ def angle_output(facts: FactBase, call: Call) -> str | None:
     return agreed(library_call(facts, call), lambda bound: _angle_unit(_returned(bound)))
 
 
+_ARRAY_KINDS: Final = frozenset({Kind.POINT, Kind.VECTOR, Kind.DIRECTION, Kind.ROTATION, Kind.TRANSFORM})
+
+
+def returned_kind(facts: FactBase, call: Call) -> Kind | None:
+    """The kind of the matrix or array the call returns (`as_matrix()`: a rotation, `transform_from(R, p)`:
+    a transform, `create_from_depth_image(...)`: points), when every open overload says the same. A
+    quaternion or an angle is not answered here (their order and unit have questions of their own)."""
+    return agreed(library_call(facts, call), lambda bound: _array_kind(_returned(bound)))
+
+
+def _array_kind(geometry: Geometry) -> Kind | None:
+    if geometry.quaternion_order is not None or geometry.angle_unit is not None:
+        return None
+    return geometry.kind if geometry.kind in _ARRAY_KINDS else None
+
+
 def returns_euler_angles(facts: FactBase, call: Call) -> bool:
     """Whether the call returns a tuple of three angles in one unit (`euler_from_quaternion(q)`)."""
     return agreed(library_call(facts, call), lambda bound: len(_returned(bound).items) == 3 and _angle_unit(_returned(bound)) is not None) is True

@@ -11,7 +11,6 @@ import re
 from functools import lru_cache
 from typing import Callable, Final, Iterable
 
-from geolint.algebra import Kind
 from geolint.knowledge import knowledge_base
 from geolint.semantic import names
 from geolint.semantic.names import NameFrames
@@ -74,20 +73,6 @@ FEATURE_FUNCTIONS: Final = frozenset(
         "adaptive_avg_pool2d", "adaptive_max_pool1d", "scaled_dot_product_attention",
     )
 )  # fmt: skip
-
-# Library calls whose result kind is fixed, by qualified name.
-LIBRARY_KINDS: Final[dict[str, Kind]] = {
-    "scipy.spatial.transform.Rotation.as_matrix": Kind.ROTATION,
-    "transforms3d.quaternions.quat2mat": Kind.ROTATION,
-    "transforms3d.euler.euler2mat": Kind.ROTATION,
-    "pytransform3d.rotations.matrix_from_quaternion": Kind.ROTATION,
-    "pytransform3d.transformations.transform_from": Kind.TRANSFORM,
-    "pytransform3d.transformations.transform_from_pq": Kind.TRANSFORM,
-    "trimesh.transformations.rotation_matrix": Kind.TRANSFORM,
-    "trimesh.transformations.translation_matrix": Kind.TRANSFORM,
-    "open3d.geometry.PointCloud.create_from_rgbd_image": Kind.POINT,
-    "open3d.geometry.PointCloud.create_from_depth_image": Kind.POINT,
-}
 
 # Attributes that state a convention in so many words (pycolmap, BOP, nerfstudio-style names).
 DECLARING_ATTRIBUTES: Final[dict[str, NameFrames]] = {

@@ -245,17 +245,19 @@ class _ModuleReader:
 
 
 def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
-    camera_axes, row_vectors, stacked = base.camera_axes, base.row_vectors, base.stacked
+    kind, camera_axes, row_vectors, stacked = base.kind, base.camera_axes, base.row_vectors, base.stacked
     for marker in markers:
         name = _last(marker)
-        if isinstance(marker, ast.Attribute) and _last(marker.value) == "CameraAxes":
+        if name in _FRAMED and kind is None:  # `Annotated[PointCloud, PointArray]`: a library object that holds points
+            kind = _FRAMED[name]
+        elif isinstance(marker, ast.Attribute) and _last(marker.value) == "CameraAxes":
             camera_axes = marker.attr.lower()
         elif name == "ROW_VECTORS":
             row_vectors = True
         elif name == "STACKED":
             stacked = True
     return Geometry(
-        kind=base.kind,
+        kind=kind,
         quaternion_order=base.quaternion_order,
         angle_unit=base.angle_unit,
         frames=base.frames,

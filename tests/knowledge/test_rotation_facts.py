@@ -172,6 +172,13 @@ class TestPytransform3d:
         )
         assert np.allclose(self.rotations.euler_from_matrix(QUARTER_TURN_Z, 0, 1, 2, False), [0.0, 0.0, math.pi / 2])
 
+    def test_transform_from_pq_returns_a_transform(self) -> None:
+        assert _stated("pytransform3d.transformations.transform_from_pq", "transform_from_pq(pq)", "return", "kind") == "transform"
+        half = math.sqrt(0.5)
+        pose = self.transformations.transform_from_pq([1.0, 2.0, 3.0, half, 0.0, 0.0, half])  # w first
+        assert np.allclose(pose[:3, :3], QUARTER_TURN_Z) and np.allclose(pose[:3, 3], [1.0, 2.0, 3.0])
+        assert np.allclose(pose[3], [0.0, 0.0, 0.0, 1.0])
+
     def test_concat_applies_the_second_transform_after_the_first(self) -> None:
         # concat(A2B, B2C) is A2C = B2C @ A2B, as the stub's frames say (In -> To after From -> In)
         api = knowledge_base().api("pytransform3d.transformations.concat")

@@ -1,6 +1,6 @@
-from typing import Literal, overload
+from typing import Annotated, Literal, overload
 
-from geolint.typing import QuaternionWXYZ, Radians, RotationMatrix, RotationVector, TransformMatrix
+from geolint.typing import PointArray, QuaternionWXYZ, Radians, RotationMatrix, RotationVector, TransformMatrix
 
 # open3d.geometry (0.20.0), the module functions (also static methods of every geometry class).
 
@@ -43,15 +43,15 @@ class PointCloud:
     """Source: open3d.geometry.PointCloud (0.20.0 docs), create_from_rgbd_image(image, intrinsic, extrinsic=identity,
     project_valid_depth_only=True) and create_from_depth_image(depth, intrinsic, extrinsic=identity, depth_scale=1000.0,
     depth_trunc=1000.0, stride=1, project_valid_depth_only=True); cpp/open3d/geometry/PointCloudFactory.cpp places the camera
-    at `extrinsic.inverse()`: the extrinsic is world-to-camera."""
+    at `extrinsic.inverse()`: the extrinsic is world-to-camera, and the cloud it returns holds points."""
 
     @staticmethod
-    def create_from_rgbd_image(image: object, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]] = ..., project_valid_depth_only: bool = ...) -> PointCloud: ...
+    def create_from_rgbd_image(image: object, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]] = ..., project_valid_depth_only: bool = ...) -> Annotated[PointCloud, PointArray]: ...
     @staticmethod
     def create_from_depth_image(
         depth: object, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]] = ..., depth_scale: float = ...,
         depth_trunc: float = ..., stride: int = ..., project_valid_depth_only: bool = ...,
-    ) -> PointCloud: ...
+    ) -> Annotated[PointCloud, PointArray]: ...
 
 class LineSet:
     """Source: open3d.geometry.LineSet (0.20.0 docs), create_camera_visualization(view_width_px, view_height_px, intrinsic,

@@ -19,6 +19,10 @@ def invert_transform(A2B: TransformMatrix[Dst, Src], strict_check: bool = ..., c
     """Source: pytransform3d/transformations/_transform_operations.py (3.17.0), invert_transform:
     "Invert transform from frame A to frame B"."""
 
+def transform_from_pq(pq: object) -> TransformMatrix:
+    """Source: pytransform3d/transformations/_pq.py (3.17.0), transform_from_pq: "Position and
+    orientation quaternion: (x, y, z, qw, qx, qy, qz)", returns "A2B : array, shape (4, 4)"."""
+
 def transform_from(R: RotationMatrix[Dst, Src], p: Translation[Dst, Src], strict_check: bool = ...) -> TransformMatrix[Dst, Src]:
     """Source: pytransform3d/transformations/_transform.py (3.17.0), transform_from: "Make transformation
     from rotation matrix and translation"."""
