@@ -58,7 +58,7 @@ from geolint.factbase.classes import enclosing_class, project_class
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
+from geolint.factbase.rotations import TRIG_FUNCTIONS
 from geolint.factbase.summaries import (
     Function,
     Summary,
@@ -71,7 +71,6 @@ from geolint.factbase.summaries import (
 )
 from geolint.factbase.syntax import (
     keyword,
-    last_name,
     number,
     positional_args,
     string,
@@ -238,11 +237,6 @@ class AngleUnits:
         if method is not None:  # `imu.getRollPitchYaw()`: matched by its camelCase name on any receiver
             returned = RETURNED_EULER_METHODS[method][0]
             return Unit(returned, f"`{method}` returns its angles in {unit_word(returned)}", False)
-        if isinstance(call.func, Attribute) and call.func.attr in ("as_euler", "magnitude") and not call.keywords:
-            from geolint.factbase.rotations import is_scipy_rotation_value
-
-            if is_scipy_rotation_value(facts, call.func.value):
-                return Unit(RADIANS, f"scipy's `{call.func.attr}` returns radians", False)
         if isinstance(call.func, Attribute) and call.func.attr == "as_euler":
             degrees = keyword(call, "degrees")
             if degrees is not None and isinstance(degrees.value, Constant) and degrees.value.value is True:
@@ -492,23 +486,9 @@ def radian_arguments(facts: FactBase, node: Call) -> list[ast.expr] | None:
     if library_calls.called_api(facts, node) is not None:  # the knowledge base (stubs/) knows the call
         return library_calls.angle_arguments(facts, node, knowledge.RADIANS) or None
     positional = positional_args(node)
-    if is_scipy_rotation_method(facts, func, "from_euler", "from_rotvec"):
-        return _scipy_angles(node, last_name(func) or "", positional)
     if is_trig_or_conversion(facts, node):
         return positional[:1]
     return None
-
-
-def _scipy_angles(node: Call, name: str, positional: list[ast.expr]) -> list[ast.expr] | None:
-    """scipy's `from_euler(seq, angles)` / `from_rotvec(rotvec)` without `degrees=True`: the angles."""
-    degrees = keyword(node, "degrees")
-    if degrees is not None and not (isinstance(degrees.value, Constant) and degrees.value.value is False):
-        return None
-    if name == "from_euler":
-        angles = positional[1] if len(positional) > 1 else getattr(keyword(node, "angles"), "value", None)
-    else:
-        angles = positional[0] if positional else getattr(keyword(node, "rotvec"), "value", None)
-    return [angles] if angles is not None else None
 
 
 def is_trig_or_conversion(facts: FactBase, node: Call) -> bool:

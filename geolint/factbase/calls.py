@@ -140,7 +140,7 @@ def defining_module(facts: FactBase, qualified: str, importer: str) -> tuple[Fac
     """For `pkg.mod.name` (or `.mod.name`) imported by `importer`: the fact base of the project module
     `pkg.mod` and `name`; None for a third-party or unresolved module."""
     module, _, name = qualified.rpartition(".")
-    if not module.strip(".") or not name or module.lstrip(".").split(".")[0] in vocab.THIRD_PARTY_ROOTS:
+    if not module.strip(".") or not name or vocab.is_third_party_root(module.lstrip(".").split(".")[0]):
         return None
     level = len(module) - len(module.lstrip("."))
     file = module_file(module.lstrip("."), importer, level)

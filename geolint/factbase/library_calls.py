@@ -11,8 +11,8 @@ a question is answered only when all of them agree (`geolint.knowledge.agreed`).
 from __future__ import annotations
 
 import ast
-from ast import AST, Attribute, Call, Constant, If, Import, ImportFrom, Name
-from typing import TYPE_CHECKING, Final
+from ast import AST, Attribute, BinOp, Call, Constant, If, Import, ImportFrom, Mult, Name
+from typing import TYPE_CHECKING, Callable, Final, Sequence
 
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.project_files import module_path
@@ -211,6 +211,19 @@ def _array_kind(geometry: Geometry) -> Kind | None:
     return geometry.kind if geometry.kind in _ARRAY_KINDS else None
 
 
+def returned_part(facts: FactBase, call: Call, position: int | None) -> Geometry | None:
+    """What a known library call returns (position None) or element `position` of the tuple it returns,
+    when every open overload says the same."""
+
+    def part(bound: Bound) -> Geometry | None:
+        returned = _returned(bound)
+        if position is None:
+            return returned
+        return returned.items[position] if position < len(returned.items) else None
+
+    return agreed(library_call(facts, call), part)
+
+
 def returns_euler_angles(facts: FactBase, call: Call) -> bool:
     """Whether the call returns a tuple of three angles in one unit (`euler_from_quaternion(q)`)."""
     return agreed(library_call(facts, call), lambda bound: len(_returned(bound).items) == 3 and _angle_unit(_returned(bound)) is not None) is True
@@ -239,20 +252,41 @@ def moving_as(facts: FactBase, call: Call, argument: ast.expr, wanted: frozenset
     name = next((name for name, given in bounds[0].arguments.items() if given is argument), None) if bounds else None
     if api is None or name is None:
         return None
-    given = {keyword.arg for keyword in call.keywords}
-    for signature in api.signatures:
+    def moves_as_wanted(signature: Signature) -> bool:
         parameter = signature.parameter(name)
-        if parameter is None or parameter.geometry is None or parameter.geometry.kind not in wanted:
-            continue
-        choices = [other for other in signature.parameters if other.literal is not None and other.keyword and other.name not in given]
-        if len(choices) == 1 and len(choices[0].literal or ()) == 1:
-            return "keyword", f"{choices[0].name}={choices[0].literal[0]!r}"  # type: ignore[index]
+        return parameter is not None and parameter.geometry is not None and parameter.geometry.kind in wanted
+
+    chosen = _keyword_choosing(api, call, moves_as_wanted)
+    if chosen is not None:
+        return "keyword", chosen
     position = [parameter.name for parameter in bounds[0].signature.parameters].index(name)
     owner = api.qualified_name.rpartition(".")[0]
     twins = [other for other in knowledge(facts).apis() if other is not api and other.qualified_name.rpartition(".")[0] == owner and _moves_at(other, position, wanted)]
     if len(twins) > 1:  # `vector_to_direction(v)` over `vectors_to_directions(V)`: the same parameter name too
         twins = [other for other in twins if all(signature.parameters[position].name == name for signature in other.signatures)]
     return ("name", twins[0].qualified_name.rpartition(".")[2]) if len(twins) == 1 else None
+
+
+def unit_keyword(facts: FactBase, call: Call, unit: str) -> str | None:
+    """The keyword value that makes a known library call read its angles in `unit` (`degrees=True` for
+    scipy's `from_euler`), when the call does not give that keyword. None: no such keyword."""
+    api = called_api(facts, call)
+    if api is None:
+        return None
+    return _keyword_choosing(api, call, lambda signature: any(_angle_unit(parameter.geometry) == unit for parameter in signature.parameters if parameter.geometry is not None))
+
+
+def _keyword_choosing(api: Api, call: Call, holds: Callable[[Signature], bool]) -> str | None:
+    """`name=value`: the one keyword the call does not give whose one literal value picks an overload for
+    which `holds`."""
+    given = {keyword.arg for keyword in call.keywords}
+    for signature in api.signatures:
+        if not holds(signature):
+            continue
+        choices = [other for other in signature.parameters if other.literal is not None and other.keyword and other.name not in given]
+        if len(choices) == 1 and len(choices[0].literal or ()) == 1:
+            return f"{choices[0].name}={choices[0].literal[0]!r}"  # type: ignore[index]
+    return None
 
 
 def stated_poses(facts: FactBase, call: Call) -> list[tuple[ast.expr, str, tuple[str, str]]]:
@@ -316,21 +350,57 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
             return api.qualified_name
         return agreed(library_call(facts, node), lambda bound: _returned(bound).type_name)
     if isinstance(node, Name):
-        bound = facts.bindings(node) or []
-        if len(bound) == 1 and isinstance(bound[0], ParamBinding) and bound[0].arg.annotation is not None:
-            return _annotated_type(facts, bound[0].arg.annotation)  # `client: airsim.MultirotorClient`
-        values = [binding for binding in bound if isinstance(binding, ast.expr)]
-        if not values or len(values) != len(bound):
-            return None
-        types = {_library_type(facts, value, depth - 1) for value in values if value is not node}
-        return types.pop() if len(types) == 1 else None
+        return _type_of_name(facts, node, depth)
+    if isinstance(node, BinOp) and isinstance(node.op, Mult):  # `r1 * r2`: what the left class's `__mul__` returns
+        left = _library_type(facts, node.left, depth - 1)
+        product = knowledge(facts).api(f"{left}.__mul__") if left is not None else None
+        returned = {(signature.returns or Geometry()).type_name for signature in product.signatures} if product is not None else set()
+        return returned.pop() if len(returned) == 1 else None
+    if isinstance(node, Attribute) and (held := _attribute_api(facts, node, depth)) is not None:
+        return held[1].type_name  # `q.inverse`: a property that returns another library object
     if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
         stores = facts.index.self_attribute_stores.get(node.attr, [])  # `self.volume = ScalableTSDFVolume(...)`
-        if not stores or not all(isinstance(value, ast.expr) for value in stores):
-            return None
-        types = {_library_type(facts, value, depth - 1) for value in stores}
-        return types.pop() if len(types) == 1 else None
+        return _one_type(facts, stores, depth) if all(isinstance(value, ast.expr) for value in stores) else None
     return None
+
+
+def attribute_geometry(facts: FactBase, node: Attribute) -> tuple[Api, Geometry] | None:
+    """What an attribute of a library object holds, from its stub (`q.elements` of a pyquaternion
+    `Quaternion`: w, x, y, z; `data.xquat` in a module that imports MuJoCo: a stack of w, x, y, z), with
+    the API that says so. None: not a known library attribute."""
+    return facts.cached("library attribute", node, _attribute_of)
+
+
+def _attribute_of(facts: FactBase, node: Attribute) -> tuple[Api, Geometry] | None:
+    return _attribute_api(facts, node, _TYPE_DEPTH)
+
+
+def _attribute_api(facts: FactBase, node: Attribute, depth: int) -> tuple[Api, Geometry] | None:
+    kb = knowledge(facts)
+    owner = _library_type(facts, node.value, depth - 1)
+    api = kb.api(f"{owner}.{node.attr}") if owner is not None else _any_receiver(facts, kb, node.attr)
+    if api is None or not api.is_attribute:
+        return None
+    held = {signature.returns for signature in api.signatures}
+    geometry = held.pop() if len(held) == 1 else None
+    return (api, geometry) if geometry is not None else None
+
+
+def _type_of_name(facts: FactBase, node: Name, depth: int) -> str | None:
+    bound = facts.bindings(node) or []
+    if len(bound) == 1 and isinstance(bound[0], ParamBinding) and bound[0].arg.annotation is not None:
+        return _annotated_type(facts, bound[0].arg.annotation)  # `client: airsim.MultirotorClient`
+    others = [binding for binding in bound if binding is not node]
+    values = [binding for binding in others if isinstance(binding, ast.expr)]
+    return _one_type(facts, values, depth) if len(values) == len(others) else None  # a parameter, a loop: unknown
+
+
+def _one_type(facts: FactBase, values: Sequence[AST], depth: int) -> str | None:
+    """The one library type every value has; None for none, or for values that disagree."""
+    if not values:
+        return None
+    types = {_library_type(facts, value, depth - 1) for value in values}
+    return types.pop() if len(types) == 1 else None
 
 
 def _annotated_type(facts: FactBase, annotation: ast.expr) -> str | None:

@@ -16,7 +16,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, Final, Iterable, Iterator, Mapping, Sequence
 
-from geolint.factbase.vocabulary import THIRD_PARTY_ROOTS
+from geolint.factbase.vocabulary import is_third_party_root
 
 _IMPORT: Final = re.compile(r"^[ \t]*(?:from[ \t]+([.\w]+)[ \t]+import|import[ \t]+([\w.]+))", re.MULTILINE)
 # `_IMPORT` at one line start: both its alternatives hold the word "import", so only the lines that
@@ -70,7 +70,7 @@ def may_be_project_import(imported: str, importer: str) -> bool:
     """Whether a name imported as `imported` (`slam.geometry.apply_pose`) may be a project module's:
     not a known third-party package (`numpy`, `torch`), and one a project folder can hold."""
     top = imported.split(".")[0]
-    return top not in THIRD_PARTY_ROOTS and (not top or not importer or may_be_project_module(top, importer))
+    return not is_third_party_root(top) and (not top or not importer or may_be_project_module(top, importer))
 
 
 def may_be_project_module(top: str, importer: str) -> bool:

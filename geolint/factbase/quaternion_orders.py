@@ -42,6 +42,7 @@ from geolint.factbase.rotations import (
     quaternion_producer,
 )
 from geolint.factbase.summaries import Function, Summary, SummaryFamily, agreed, chain, plain_parameters, settled_returns, shifted
+from geolint.factbase import library_calls
 from geolint.factbase.vocabulary import PASSTHROUGH_FUNCTIONS, PASSTHROUGH_METHODS
 
 if TYPE_CHECKING:
@@ -49,12 +50,8 @@ if TYPE_CHECKING:
 
 STANDARD_ORDERS: Final = (SCALAR_FIRST, SCALAR_LAST)
 # mujoco's quaternion arrays (w, x, y, z), one row per body/geom/site/camera.
-_MUJOCO_ATTRIBUTES: Final = frozenset({"xquat", "body_xquat", "body_quat", "geom_quat", "site_quat", "cam_quat", "body_iquat"})
-_MUJOCO_GETTERS: Final = frozenset({"get_body_xquat", "get_site_xquat", "get_geom_xquat"})
-_MUJOCO_MODULES: Final = ("mujoco", "mujoco_py", "dm_control")
 # pybullet calls returning (position, orientation): the orientation is (x, y, z, w).
 _PYBULLET_PAIRS: Final = frozenset({"getBasePositionAndOrientation", "multiplyTransforms", "invertTransform"})
-_PYQUATERNION: Final = ("pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion")
 _TYPING_WORDS: Final = frozenset(
     {"List", "Sequence", "Iterable", "Iterator", "Optional", "Tuple", "Dict", "Union", "Set", "Collection", "Mapping", "Any", "Type"}
 )
@@ -292,9 +289,6 @@ class QuaternionFlow:
         produced = quaternion_producer(facts, call)
         if produced is not None:
             return Order(produced, f"from `{facts.code_of(call)}`, line {call.lineno}")
-        name = last_name(call.func)
-        if name in _MUJOCO_GETTERS and self._imports(*_MUJOCO_MODULES):
-            return Order(SCALAR_FIRST, f"from mujoco's `{name}`, line {call.lineno}")
         elements = spelled_components(facts, call)
         if elements is not None:
             return self._order_of_spelled(call, elements)
@@ -374,10 +368,10 @@ class QuaternionFlow:
     def _order_of_attribute(self, node: Attribute) -> Order | None:
         facts = self.facts
         attr = node.attr
-        if attr in _MUJOCO_ATTRIBUTES and self._imports(*_MUJOCO_MODULES):
-            return Order(SCALAR_FIRST, f"from mujoco's `{attr}`", batch=True)
-        if attr in ("elements", "q") and self._is_pyquaternion(node.value):
-            return Order(SCALAR_FIRST, f"from pyquaternion's `.{attr}`")
+        held = library_calls.attribute_geometry(facts, node)  # `data.xquat`, `q.elements`: from the stubs
+        order = held[1].quaternion_order if held is not None else None
+        if held is not None and order is not None:
+            return Order(order, f"from {held[0].library}'s `{attr}`", batch=held[1].stacked)
         if attr in QUATERNION_FIELD_NAMES:
             cls = self.messages.class_of(node.value)
             order = field_order(cls, attr)
@@ -492,28 +486,6 @@ class QuaternionFlow:
         """`q[0] = ...` / `q += ...` in the name's scope: its components may have been rewritten."""
         scope = self.facts.index.scope_of(name)
         return name.id in scope.subscript_stores or name.id in scope.augmented
-
-    def _is_pyquaternion(self, node: ast.expr) -> bool:
-        facts = self.facts
-        for _ in range(6):
-            if isinstance(node, Call):
-                func = node.func
-                qualified = facts.qualified_name(func) or ""
-                if qualified in _PYQUATERNION or qualified.rsplit(".", 1)[0] in _PYQUATERNION:
-                    return True
-                return False
-            if isinstance(node, Name):
-                bound = facts.bindings(node) or []
-                return bool(bound) and all(isinstance(b, ast.expr) and self._is_pyquaternion(b) for b in bound)
-            if isinstance(node, Attribute) and node.attr in ("normalised", "unit", "inverse", "conjugate"):
-                node = node.value
-                continue
-            return False
-        return False
-
-    def _imports(self, *modules: str) -> bool:
-        imported = self.facts.index.imports.values()
-        return any(name.split(".")[0] in modules for name in imported)
 
 
 def _index_list(facts: FactBase, node: AST) -> tuple[int, ...] | None:

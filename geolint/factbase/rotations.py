@@ -8,7 +8,6 @@ from typing import Final, TYPE_CHECKING
 import ast
 import re
 from ast import (
-    AST,
     Attribute,
     Call,
     Constant,
@@ -30,20 +29,6 @@ if TYPE_CHECKING:
 SCALAR_LAST: Final = "xyzw"
 SCALAR_FIRST: Final = "wxyz"
 TRIG_FUNCTIONS: Final = frozenset({"sin", "cos", "tan"})
-
-# Unresolved names (no import seen) that still mean scipy's Rotation in practice.
-_SCIPY_ROTATION_ALIASES: Final = frozenset({"Rotation", "R", "Rot", "ScipyRotation", "SciRotation"})
-
-
-def is_scipy_rotation_method(facts: FactBase, func: AST, *methods: str) -> bool:
-    """Whether `func` is `scipy.spatial.transform.Rotation.<method>` (through imports or the usual aliases)."""
-    if not isinstance(func, Attribute) or func.attr not in methods:
-        return False
-    qualified = facts.qualified_name(func.value) or ""
-    if qualified.startswith("scipy.spatial.transform"):
-        return qualified.endswith("Rotation")
-    return isinstance(func.value, Name) and func.value.id in _SCIPY_ROTATION_ALIASES and func.value.id not in facts.index.imports
-
 
 def quaternion_order(facts: FactBase, call: Call) -> str | None:
     """The component order the called API expects for its quaternion argument, or None if unknown."""
@@ -156,42 +141,14 @@ def quaternion_producer(facts: FactBase, call: Call) -> str | None:
     func = call.func
     if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
         return library_calls.quaternion_output(facts, call)
-    if isinstance(func, Attribute) and func.attr == "as_quat":
+    if isinstance(func, Attribute) and func.attr == "as_quat":  # on an object of unknown class: the keyword says
         scalar_first = keyword(call, "scalar_first")
-        if scalar_first is not None:
-            value = scalar_first.value
-            if isinstance(value, Constant) and value.value in (True, False):
-                return SCALAR_FIRST if value.value else SCALAR_LAST
-            return None
-        return SCALAR_LAST if is_scipy_rotation_value(facts, func.value) else None
+        value = scalar_first.value if scalar_first is not None else None
+        if isinstance(value, Constant) and value.value in (True, False):
+            return SCALAR_FIRST if value.value else SCALAR_LAST
     return None
 
 
-def is_scipy_rotation_value(facts: FactBase, node: AST) -> bool:
-    """Whether `node` is a scipy `Rotation` object: `Rotation.from_*(...)` (possibly `.inv()`-ed),
-    or a name bound only to one. The method name alone (`r.as_quat()`) is no evidence."""
-    for _ in range(8):
-        if isinstance(node, Call) and isinstance(node.func, Attribute):
-            if is_scipy_rotation_method(facts, node.func, *_SCIPY_CONSTRUCTORS):
-                return True
-            if node.func.attr in ("inv", "__mul__") or node.func.attr == "reduce":
-                node = node.func.value
-                continue
-            return False
-        if isinstance(node, Name):
-            bound = facts.bindings(node) or []
-            values = [binding for binding in bound if isinstance(binding, ast.expr)]
-            if not values or len(values) != len(bound):
-                return False
-            return all(is_scipy_rotation_value(facts, value) for value in values if value is not node)
-        return False
-    return False
-
-
-_SCIPY_CONSTRUCTORS: Final = (
-    "from_quat", "from_matrix", "from_euler", "from_rotvec", "from_mrp", "from_davenport", "from_dcm",
-    "random", "identity", "concatenate",
-)  # fmt: skip
 # (Christoph Gohlke's transformations.py, as PyPI's transformations, trimesh.transformations, ROS tf.transformations
 # and tf_transformations ship it: stubs/transformations, stubs/trimesh, stubs/tf, stubs/tf_transformations.)
 _PYBULLET_ORIENTATION_ARGUMENTS: Final[dict[str, tuple[tuple[int, ...], frozenset[str]]]] = {

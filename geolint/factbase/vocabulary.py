@@ -18,16 +18,22 @@ from geolint.semantic.names import NameFrames
 # Array libraries whose functions behave alike for our purposes (numpy's names).
 ARRAY_MODULES: Final = frozenset({"numpy", "np", "torch", "jax.numpy", "jnp", "cupy", "cp"})
 ARRAY_ROOTS: Final = frozenset({"numpy", "np", "torch", "jax", "jnp", "cupy", "cp"})
-# Packages that are never the project's own modules (no summary is looked for in them).
-THIRD_PARTY_ROOTS: Final = frozenset(
+# Packages that are never the project's own modules (no summary is looked for in them): these, and every
+# package of the knowledge base (`is_third_party_root`).
+_UNSTUBBED_THIRD_PARTY_ROOTS: Final = frozenset(
     {
-        "numpy", "torch", "jax", "cupy", "scipy", "math", "os", "sys", "re", "json", "typing", "collections",
-        "open3d", "trimesh", "cv2", "PIL", "matplotlib", "pytransform3d", "spatialmath", "transforms3d",
-        "PyKDL", "rospy", "rclpy", "tf", "tf2_ros", "tf_transformations", "geometry_msgs", "sensor_msgs",
-        "pycolmap", "autolab_core", "pydrake", "pyquaternion", "quaternion", "kornia", "pytorch3d",
-        "tensorflow", "sklearn", "pandas", "yaml", "logging", "pathlib", "functools", "itertools",
+        "numpy", "torch", "jax", "cupy", "math", "os", "sys", "re", "json", "typing", "collections",
+        "PIL", "matplotlib", "rospy", "rclpy", "tensorflow", "sklearn", "pandas", "yaml", "logging", "pathlib",
+        "functools", "itertools",
     }
 )  # fmt: skip
+
+
+def is_third_party_root(top: str) -> bool:
+    """Whether an import's first name is a package that is never one of the project's own modules."""
+    return top in _UNSTUBBED_THIRD_PARTY_ROOTS or knowledge_base().library_of_module(top) is not None
+
+
 # Local names that mean a module by convention even when the import is not in this file.
 CONVENTIONAL_ALIASES: Final = {"np": "numpy", "jnp": "jax.numpy", "cp": "cupy"}
 # Module aliases that are never geometric values themselves (`np.random.normal` is not a normal).
@@ -46,14 +52,6 @@ PASSTHROUGH_FUNCTIONS: Final = frozenset(
 PASSTHROUGH_METHODS: Final = frozenset(
     {"copy", "astype", "reshape", "squeeze", "flatten", "ravel", "clone", "detach", "cpu", "cuda", "to", "float", "double", "numpy", "contiguous", "view"}
 )
-# Library calls that return a transform with no translation when one argument has a given value:
-# qualified name -> (the transform's position in the returned tuple, the argument's keyword, its
-# position, the value). nerfstudio's `auto_orient_and_center_poses(poses, method="up",
-# center_method="poses")` returns (poses, transform) with the translation -R @ mean_origin, which
-# is zeros for center_method="none".
-UNTRANSLATED_WITH: Final = {
-    "nerfstudio.cameras.camera_utils.auto_orient_and_center_poses": (1, "center_method", 2, "none"),
-}
 # Calls that return a unit vector.
 UNIT_FUNCTIONS: Final = frozenset({"unitize", "normalize", "normalized", "unit_vector", "norm_vector", "normalize_vector"})
 NORM_FUNCTIONS: Final = frozenset({"norm", "vector_norm"})
@@ -283,8 +281,9 @@ def gate_matches(source: str) -> bool:
 @lru_cache(maxsize=1)
 def _knowledge_words() -> WordSet:
     """The names of the knowledge base's APIs (`getRotationMatrix2D`, `rpyToMatrix`...): a call to one
-    is something the rules reason about. Built on first use, from stubs/."""
-    return WordSet(sorted({api.qualified_name.rpartition(".")[2] for api in knowledge_base().apis()}))
+    is something the rules reason about (an API that states only the class it returns, `concatenate`, is
+    not: what a rule reads is called on its result). Built on first use, from stubs/."""
+    return WordSet(sorted({api.qualified_name.rpartition(".")[2] for api in knowledge_base().apis() if api.states_geometry}))
 
 
 def _knowledge_call_named(source: str) -> bool:

@@ -93,6 +93,24 @@ class Api:
     source: str  # the docstring's `Source:` citation
     is_class: bool = False
     receiver: Receiver | None = None
+    is_attribute: bool = False  # a property or an annotated attribute: read, not called (`q.elements`)
+
+    @property
+    def states_geometry(self) -> bool:
+        """Whether a signature says something of geometry beyond the class it returns or takes
+        (`concatenate(rotations) -> Rotation` states nothing the rules read; `as_quat()` does)."""
+        return any(
+            _geometric(geometry)
+            for signature in self.signatures
+            for geometry in (signature.returns, signature.receiver, *(parameter.geometry for parameter in signature.parameters))
+        ) or any(signature.components for signature in self.signatures)
+
+
+def _geometric(geometry: Geometry | None) -> bool:
+    if geometry is None:
+        return False
+    stated = (geometry.kind, geometry.quaternion_order, geometry.angle_unit, geometry.camera_axes)
+    return any(value is not None for value in stated) or geometry.row_vectors or any(_geometric(part) for part in geometry.items)
 
 
 @dataclass(frozen=True)

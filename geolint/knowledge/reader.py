@@ -117,6 +117,7 @@ class _ModuleReader:
     def _read_body(self, body: list[ast.stmt], prefix: str, in_class: bool, receiver: Receiver | None, class_source: str) -> None:
         overloads: dict[str, list[Signature]] = {}
         sources: dict[str, str] = {}
+        attributes: set[str] = set()
         for statement in body:
             if isinstance(statement, ast.ClassDef):
                 self._read_class(statement, prefix)
@@ -125,12 +126,21 @@ class _ModuleReader:
                 source = _source_of(statement)
                 if source:
                     sources[statement.name] = source
+                if in_class and any(_last(decorator) == "property" for decorator in statement.decorator_list):
+                    attributes.add(statement.name)
+            elif in_class and isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name):
+                # `xquat: Annotated[QuaternionWXYZ, STACKED]`: an attribute, read like a property
+                returns = self.geometry(statement.annotation)
+                overloads.setdefault(statement.target.id, []).append(Signature((), returns, None, statement.lineno))
+                attributes.add(statement.target.id)
         for name, signatures in overloads.items():
             qualified = f"{prefix}.{name}"
             source = sources.get(name) or class_source
             if name == "__init__":
                 continue  # the constructor is the class's entry
-            self.library.apis[qualified] = Api(qualified, tuple(signatures), self.library.name, self.label, source, receiver=receiver)
+            self.library.apis[qualified] = Api(
+                qualified, tuple(signatures), self.library.name, self.label, source, receiver=receiver, is_attribute=name in attributes
+            )
 
     def _read_class(self, node: ast.ClassDef, prefix: str) -> None:
         qualified = f"{prefix}.{node.name}"

@@ -18,9 +18,11 @@ from geolint.factbase.library_calls import (
     moving_as,
     quaternion_inputs,
     quaternion_output,
+    returned_kind,
     returns_euler_angles,
     rotation_vector_arguments,
     stated_poses,
+    unit_keyword,
 )
 from geolint.knowledge import SCALAR_FIRST, SCALAR_LAST
 
@@ -54,6 +56,33 @@ def test_quaternion_order_of_scipy_calls_through_imports_and_receivers() -> None
     assert quaternion_output(facts, calls["s.as_quat(scalar_first=True)"]) == SCALAR_FIRST  # type: ignore[arg-type]
     assert angle_output(facts, calls["r.as_euler('xyz', degrees=True)"]) == "degrees"  # type: ignore[arg-type]
     assert [unit for _, unit in angle_inputs(facts, calls["R.from_euler('xyz', angles)"])] == ["radians"]  # type: ignore[arg-type]
+
+
+def test_products_inverses_and_returned_kinds_come_from_the_stub() -> None:
+    facts, calls = _calls(
+        """
+        from scipy.spatial.transform import Rotation as R
+        from pytransform3d.transformations import transform_from_pq
+        r = R.from_quat(q1)
+        s = R.from_euler("z", yaw)
+        q = (r * s).inv().as_quat()
+        e = (r * s).as_euler("xyz")
+        m = r.as_matrix()
+        t = transform_from_pq(pq)
+        f = R.from_euler("xyz", angles)
+        g = R.from_euler("xyz", angles, degrees=False)
+        """
+    )
+    assert quaternion_output(facts, calls["(r * s).inv().as_quat()"]) == SCALAR_LAST  # type: ignore[arg-type]
+    assert returns_euler_angles(facts, calls["(r * s).as_euler('xyz')"])  # type: ignore[arg-type]
+    assert angle_output(facts, calls["(r * s).as_euler('xyz')"]) == "radians"  # type: ignore[arg-type]
+    assert returned_kind(facts, calls["r.as_matrix()"]) is Kind.ROTATION  # type: ignore[arg-type]
+    assert returned_kind(facts, calls["transform_from_pq(pq)"]) is Kind.TRANSFORM  # type: ignore[arg-type]
+    # a quaternion is not answered as an array kind: its order is a question of its own
+    assert returned_kind(facts, calls["(r * s).inv().as_quat()"]) is None  # type: ignore[arg-type]
+    # the keyword that reads degrees, from the overloads; none when the call already chose
+    assert unit_keyword(facts, calls["R.from_euler('xyz', angles)"], "degrees") == "degrees=True"  # type: ignore[arg-type]
+    assert unit_keyword(facts, calls["R.from_euler('xyz', angles, degrees=False)"], "degrees") is None  # type: ignore[arg-type]
 
 
 def test_a_project_class_of_the_same_name_is_not_the_library_s() -> None:

@@ -15,7 +15,7 @@ from geolint.factbase import vocabulary as vocab
 from geolint.factbase.index import ParamBinding, UnpackBinding
 from geolint.factbase.model import (
     GEOMETRIC, FactBase, is_transpose, is_zero, keyword, last_name, last_name_target, number, positional_args, replace_span,
-    string, subscript_parts, transposed_value,
+    subscript_parts, transposed_value,
 )  # fmt: skip
 from geolint.factbase.kind_summaries import TRANSLATION, TranslationSummary
 from geolint.rules.fact_rule import FactRule, with_keyword
@@ -282,7 +282,7 @@ class DirectionTranslated(FactRule):
     def _may_translate(self, matrix: ast.expr, depth: int = 0) -> bool:
         """False when `matrix` certainly has no translation: a literal identity (`np.eye(4)`,
         `torch.eye(4)[:3, :4]`) never written into, a library transform made without one
-        (`vocabulary.UNTRANSLATED_WITH`: nerfstudio's `auto_orient_and_center_poses(...,
+        (its stub returns a rotation alone: nerfstudio's `auto_orient_and_center_poses(...,
         center_method="none")`), a name bound only to such, or a parameter of a private helper
         whose calls in the module all pass such (a private helper nothing calls is reached by none)."""
         facts = self.facts
@@ -465,15 +465,11 @@ class DirectionTranslated(FactRule):
 
 
 def _untranslated_element(facts: FactBase, call: Call, position: int | None) -> bool:
-    """Whether element `position` of what `call` returns (None: the value itself) is a library transform
-    made without translation (`vocabulary.UNTRANSLATED_WITH`)."""
-    known = vocab.UNTRANSLATED_WITH.get(facts.qualified_name(call.func) or "")
-    if known is None:
-        return False
-    element, name, index, value = known
-    given = keyword(call, name)
-    argument = given.value if given is not None else call.args[index] if index < len(call.args) else None
-    return element == position and string(argument) == value
+    """Whether element `position` of what `call` returns (None: the value itself) is, by its stub, a
+    rotation alone: a transform made without translation (nerfstudio's `auto_orient_and_center_poses(...,
+    center_method="none")`)."""
+    returned = library_calls.returned_part(facts, call, position)
+    return returned is not None and returned.kind is Kind.ROTATION
 
 
 def _through(summary: TranslationSummary, index: int) -> str:

@@ -30,8 +30,10 @@ from ast import (
 )
 
 from geolint.factbase.index import ParamBinding
-from geolint.factbase.model import keyword, last_name, number, positional_args, string
-from geolint.factbase.rotations import TRIG_FUNCTIONS, is_scipy_rotation_method
+from geolint.factbase.model import last_name, number, positional_args, string
+from geolint import knowledge
+from geolint.factbase import library_calls
+from geolint.factbase.rotations import TRIG_FUNCTIONS
 from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.factbase.vocabulary import GATE_TRIGGER
 from geolint.rules.base import Invalid, Valid
@@ -455,9 +457,10 @@ class DegreesAsRadians(FactRule):
         return values  # type: ignore[return-value]
 
     def _degrees_keyword_fix(self, node: Call) -> str | None:
-        """The call with `degrees=True` added: for scipy's `from_euler` / `from_rotvec` that do not say."""
-        if is_scipy_rotation_method(self.facts, node.func, "from_euler", "from_rotvec") and keyword(node, "degrees") is None:
-            return with_keyword(self.facts.index.segment(node), "degrees=True")
+        """The call with the keyword its stub says reads degrees added (scipy's `from_euler(..., degrees=True)`)."""
+        chosen = library_calls.unit_keyword(self.facts, node, knowledge.DEGREES)
+        if chosen is not None:
+            return with_keyword(self.facts.index.segment(node), chosen)
         return None
 
     def _check_helper(self, node: Call, units: AngleUnits) -> bool:

@@ -19,7 +19,7 @@ from geolint.factbase.angles import (
 from geolint.factbase.index import Scope, UnpackBinding
 from geolint.factbase.messages import MessageTypes
 from geolint.factbase.model import dotted_name, last_name, number, positional_args, walk_within
-from geolint.factbase.rotations import PYBULLET_QUATERNION_CALLS, TRIG_FUNCTIONS, is_scipy_rotation_value, pybullet_quaternion_values
+from geolint.factbase.rotations import PYBULLET_QUATERNION_CALLS, TRIG_FUNCTIONS, pybullet_quaternion_values
 from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
@@ -400,8 +400,6 @@ class EulerAnglesInQuaternion(FactRule):
             if method is not None and not node.args:
                 _, names, twin = RETURNED_EULER_METHODS[method]
                 return _Source(names, f"`{method}` returns them", True, twin)
-            if func.attr == "as_euler" and is_scipy_rotation_value(facts, func.value):
-                return _Source((), "scipy's `as_euler` returns Euler angles", True)
         return None
 
     def _euler_source_of_values(self, name: str, values: Sequence[ast.expr], every_value_known: bool, depth: int) -> _Source | None:

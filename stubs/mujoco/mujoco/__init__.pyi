@@ -1,3 +1,6 @@
+from typing import Annotated
+
+from geolint.knowledge.markers import STACKED, any_receiver
 from geolint.typing import QuaternionWXYZ, Radians, VectorArray
 
 # MuJoCo (4.0.0): "MuJoCo uses quaternions in (w, x, y, z) order" (documentation, "Quaternions" in the
@@ -36,3 +39,26 @@ def mju_axisAngle2Quat(res: object, axis: VectorArray, angle: Radians) -> None:
 def mju_euler2Quat(quat: object, euler: Radians, seq: str) -> None:
     """Source: mujoco 4.0.0, mju_euler2Quat.__doc__: "Convert sequence of Euler angles (radians) to
     quaternion"."""
+
+# The state and model arrays, one (w, x, y, z) row per body, geom, site or camera. Recognised by name on
+# any object in a module that imports MuJoCo or dm_control (whose `physics.data` wraps the same MjData):
+# a model and its data are seldom built where they are read.
+
+@any_receiver(when_imported=("mujoco", "dm_control"))
+class MjData:
+    """Source: mujoco 4.0.0, the MjData reference (documentation, "mjData": `xquat` "Cartesian orientation of
+    body frame", nbody x 4); checked numerically (a body with quat="0.7071068 0 0 0.7071068" has the
+    quarter-turn about z as its xmat, tests/knowledge/test_simulator_facts.py)."""
+
+    xquat: Annotated[QuaternionWXYZ, STACKED]
+
+@any_receiver(when_imported=("mujoco", "dm_control"))
+class MjModel:
+    """Source: mujoco 4.0.0, the MjModel reference ("mjModel": body_quat, body_iquat, geom_quat, site_quat,
+    cam_quat, each n x 4, "orientation ... relative to parent"); checked numerically as MjData."""
+
+    body_quat: Annotated[QuaternionWXYZ, STACKED]
+    body_iquat: Annotated[QuaternionWXYZ, STACKED]
+    geom_quat: Annotated[QuaternionWXYZ, STACKED]
+    site_quat: Annotated[QuaternionWXYZ, STACKED]
+    cam_quat: Annotated[QuaternionWXYZ, STACKED]

@@ -1,0 +1,1 @@
+from sensor_msgs import msg as msg

@@ -1,0 +1,40 @@
+from geometry_msgs.msg import Quaternion
+
+from geolint.typing import Degrees, VectorArray
+
+class NavSatFix:
+    """Source: sensor_msgs/msg/NavSatFix.msg (ros2/common_interfaces 5.4.2, commit c0c0bc57; ros/common_msgs
+    commit 30624af5): "Latitude [degrees]. Positive is north of equator", "Longitude [degrees]. Positive
+    is east of prime meridian", "Altitude [m]. Positive is above the WGS 84 ellipsoid". Fields in the order header,
+    status, latitude, longitude, altitude, position_covariance, position_covariance_type: a generated ROS 1 message
+    takes them by position in that order, ROS 2's by keyword."""
+
+    def __init__(
+        self,
+        header: object = ...,
+        status: object = ...,
+        latitude: Degrees = ...,
+        longitude: Degrees = ...,
+        altitude: float = ...,
+        position_covariance: object = ...,
+        position_covariance_type: int = ...,
+    ) -> None: ...
+
+class Imu:
+    """Source: sensor_msgs/msg/Imu.msg (ros2/common_interfaces 5.4.2, commit c0c0bc57; ros/common_msgs commit 6f4180b2, the same fields):
+    `geometry_msgs/Quaternion orientation`, `geometry_msgs/Vector3 angular_velocity`, `geometry_msgs/Vector3
+    linear_acceleration` (each followed by its float64[9] covariance, "Row major about x, y, z axes");
+    "Accelerations should be in m/s^2 (not in g's), and rotational velocity should be in rad/sec". The two Vector3
+    fields are free vectors (rates, not positions). A generated ROS 1 message takes the fields by position in this
+    order, ROS 2's by keyword."""
+
+    def __init__(
+        self,
+        header: object = ...,
+        orientation: Quaternion = ...,
+        orientation_covariance: object = ...,
+        angular_velocity: VectorArray = ...,
+        angular_velocity_covariance: object = ...,
+        linear_acceleration: VectorArray = ...,
+        linear_acceleration_covariance: object = ...,
+    ) -> None: ...

@@ -1,0 +1,1 @@
+from sensor_msgs.msg import Imu as Imu
