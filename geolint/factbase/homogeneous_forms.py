@@ -215,7 +215,8 @@ def _w_value(facts: FactBase, node: ast.expr) -> tuple[int | None, list[tuple[AS
         return _w_value(facts, node.elts[0])
     if isinstance(node, Name):  # `ones = np.ones((n, 1)); np.hstack([x, ones])`
         bindings = facts.bindings(node) or []
-        if len(bindings) == 1 and isinstance(bindings[0], Call):
+        written = facts.index.scope_of(node).subscript_stores.get(node.id)  # `pad[..., -1] = 1.0`: not the zeros any more
+        if len(bindings) == 1 and isinstance(bindings[0], Call) and not written:
             return _w_value(facts, bindings[0])
     if isinstance(node, Call) and facts.is_array_call(node.func, "ones", "zeros", "ones_like", "zeros_like"):
         w = 1 if last_name(node.func) in ("ones", "ones_like") else 0

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Final
 
 import ast
-from ast import AnnAssign, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Name, Starred, Subscript
+from ast import AnnAssign, Assign, AsyncFunctionDef, Attribute, Call, FunctionDef, Load, Name, Return, Starred, Subscript
 
 from geolint.factbase import library_calls
 from geolint.factbase.extrinsics import (
@@ -22,11 +22,16 @@ from geolint.factbase.extrinsics import (
     DIRECTION_WORDS,
     is_blank_matrix,
 )
-from geolint.factbase.model import string, walk_within
+from geolint.factbase.model import FactBase, string, walk_within
 from geolint.rules.fact_rule import FactRule
 from geolint.factbase.vocabulary import is_word_character
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf, AnyOf
+
+
+# What a shape-only helper reads of an array, and the joins that pad it
+_SHAPE_ATTRIBUTES: Final = frozenset({"shape", "ndim", "dtype", "device", "size"})
+_JOINS: Final = ("cat", "concatenate", "stack", "hstack", "vstack", "concat")
 
 
 class _OrbSlamPoseName:
@@ -128,7 +133,9 @@ class ExtrinsicsDirectionMismatch(FactRule):
 
     ## Known problems
     Parameters are read for functions of the project (this module, or a project module it imports)
-    and for `self.method(...)` when the module defines one method of that name.
+    and for `self.method(...)` when the module defines one method of that name; a parameter the
+    function only pads, measures or returns (`affine_padding(c2w)`) states nothing. A method that
+    swaps two poses on purpose (`invert_pose`) is still reported.
     Only conventions stated in the code are used: a pose loaded from a file without a telling key
     (`np.loadtxt(pose_path)`) has no direction. A `T_a_b` target is read in the project's naming
     order and is skipped where the project does not settle it. Plain name-to-name assignments
@@ -157,6 +164,12 @@ class ExtrinsicsDirectionMismatch(FactRule):
             "    return pcd.transform(world2cam)\n"
         ),
         Valid("def f(image, render):\n    return render(c2w=image.cam_from_world.inverse().matrix())\n"),
+        # a helper that only pads its argument to 4x4: the parameter's name is no contract (FP30)
+        Valid(
+            "import torch\ndef affine_padding(c2w):\n    if c2w.shape[-2] == 4:\n        return c2w\n"
+            "    pad = c2w.new_zeros(c2w.shape[:-2] + (1, 4))\n    pad[..., -1] = 1.0\n"
+            "    return torch.cat([c2w, pad], dim=-2)\ndef f(output):\n    return affine_padding(output.w2c)\n"
+        ),
         # a `T_a_b` target in a project whose naming order nothing settles: no claim
         Valid(
             "import numpy as np\ndef f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
@@ -174,6 +187,11 @@ class ExtrinsicsDirectionMismatch(FactRule):
         Invalid("import numpy as np\ndef f(frame):\n    frame['pose'].c2w = np.linalg.inv(np.array(frame['transform_matrix']))\n"),
         Invalid("def f(image, frames):\n    frames.append({'transform_matrix': image.cam_from_world.matrix().tolist()})\n"),
         Invalid("def f(image, render):\n    return render(c2w=image.cam_from_world.matrix())\n"),
+        Invalid(
+            "def camera_center(c2w):\n    return c2w[:3, 3]\ndef f(output):\n    return camera_center(output.w2c)\n",
+            message="parameter `c2w` of `camera_center` expects a camera-to-world pose (name `c2w`), but `output.w2c` is a world-to-camera pose (name `w2c`): an inverse is missing or one too many",
+            range=(4, 26, 4, 36),
+        ),
         Invalid(
             "import open3d as o3d\ndef f(depth, K, image):\n"
             "    pcd = o3d.geometry.PointCloud.create_from_depth_image(depth, K)\n"
@@ -254,13 +272,13 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 stated = name_extrinsic(self.facts, keyword.arg)
                 if stated is not None:
                     self._compare(keyword.value, stated, f"`{keyword.arg}=`", names_both_sides=True)
-        function, parameters = self._callee(call)
+        defining, function, parameters = self._callee(call)
         if function is not None:
             for argument, parameter in zip(call.args, parameters):
                 if isinstance(argument, Starred):
                     break
                 stated = name_extrinsic(self.facts, parameter.arg)
-                if stated is not None:
+                if stated is not None and not _only_reshaped(defining, function, parameter.arg):
                     self._compare(argument, stated, f"parameter `{parameter.arg}` of `{function.name}`", names_both_sides=True)
         for argument, read_as, frames in library_calls.stated_poses(self.facts, call):  # the knowledge base (stubs/)
             if frames == ("camera", "world"):
@@ -286,22 +304,22 @@ class ExtrinsicsDirectionMismatch(FactRule):
                     evidence=(why, *moved.evidence),
                 )
 
-    def _callee(self, call: Call) -> tuple[FunctionDef | AsyncFunctionDef | None, list[ast.arg]]:
+    def _callee(self, call: Call) -> tuple[FactBase, FunctionDef | AsyncFunctionDef | None, list[ast.arg]]:
         """The project function a call runs (`render(...)` of this module or of a project module it
         imports, or `self.render(...)` when one method of the module has that name) and the
-        parameters its positional arguments fill."""
+        parameters its positional arguments fill, with the fact base of the module that defines it."""
         index = self.facts.index
         func = call.func
         found = self.facts.called_function(call) if isinstance(func, (Name, Attribute)) else None
         if found is not None:
-            function = found[1]
-            return function, [*function.args.posonlyargs, *function.args.args]
+            defining, function = found
+            return defining, function, [*function.args.posonlyargs, *function.args.args]
         if isinstance(func, Attribute) and isinstance(func.value, Name) and func.value.id == "self":
             methods = index.methods.get(func.attr, [])
             if len(methods) == 1:
                 function = methods[0]
-                return function, [*function.args.posonlyargs, *function.args.args][1:]
-        return None, []
+                return self.facts, function, [*function.args.posonlyargs, *function.args.args][1:]
+        return self.facts, None, []
 
     def _compare(self, value: ast.expr, stated: Extrinsic, where: str, names_both_sides: bool = False) -> None:
         actual = self.evidence.of(value)
@@ -315,6 +333,26 @@ class ExtrinsicsDirectionMismatch(FactRule):
             f"{actual.description} ({'; '.join(actual.evidence)}): an inverse is missing or one too many",
             evidence=(*stated.evidence, *actual.evidence),
         )
+
+
+def _only_reshaped(facts: FactBase, function: FunctionDef | AsyncFunctionDef, parameter: str) -> bool:
+    """Whether the function does nothing with the parameter that depends on its direction: it only
+    reads its shape, dtype or device, joins it with padding, or returns it (`affine_padding(c2w)`,
+    which pads any 3x4 to 4x4). Its name is then no contract (FP30). `facts`: its module's."""
+    uses = [node for node in walk_within(function) if isinstance(node, Name) and node.id == parameter and isinstance(node.ctx, Load)]
+    return bool(uses) and all(_reshaping_use(facts, node) for node in uses)
+
+
+def _reshaping_use(facts: FactBase, node: Name) -> bool:
+    parent = facts.parent(node)
+    if isinstance(parent, Attribute):
+        return parent.attr in _SHAPE_ATTRIBUTES or (parent.attr.startswith("new_") and isinstance(facts.parent(parent), Call))
+    if isinstance(parent, Return):
+        return True
+    if isinstance(parent, (ast.List, ast.Tuple)):
+        joined = facts.parent(parent)
+        return isinstance(joined, Call) and facts.is_array_call(joined.func, *_JOINS)
+    return isinstance(parent, Call) and isinstance(parent.func, Name) and parent.func.id == "len"
 
 
 def _mentions(value: ast.expr, target: ast.expr) -> bool:
