@@ -29,6 +29,30 @@ def test_mujoco_reads_quaternions_and_angles_as_stated() -> None:
     assert _same_rotation(_quaternion_parts(quaternion, order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
 
 
+def test_mujoco_state_arrays_hold_quaternions_in_the_stated_order() -> None:
+    mujoco = pytest.importorskip("mujoco")
+    from geolint.knowledge import knowledge_base
+
+    attributes = {
+        name: knowledge_base().api(f"mujoco.{name}")
+        for name in ("MjData.xquat", "MjModel.body_quat", "MjModel.geom_quat", "MjModel.site_quat", "MjModel.cam_quat")
+    }
+    assert all(api is not None and api.is_attribute for api in attributes.values())
+    orders = {api.signatures[0].returns.quaternion_order for api in attributes.values()}  # type: ignore[union-attr]
+    assert len(orders) == 1
+    order = orders.pop()
+    turn = " ".join(str(value) for value in _quarter_turn(order))  # type: ignore[arg-type]
+    model = mujoco.MjModel.from_xml_string(
+        f'<mujoco><worldbody><body quat="{turn}"><freejoint/><geom size=".1" quat="{turn}"/>'
+        f'<site quat="{turn}"/><camera quat="{turn}"/></body></worldbody></mujoco>'
+    )
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    assert np.allclose(data.xmat[1].reshape(3, 3), QUARTER_TURN_Z)  # the body's world rotation
+    for stored in (data.xquat[1], model.body_quat[1], model.geom_quat[0], model.site_quat[0], model.cam_quat[0]):
+        assert _same_rotation(_quaternion_parts(stored, order), _quaternion_parts(_quarter_turn(order), order))  # type: ignore[arg-type]
+
+
 def test_pinocchio_quaternion_reads_four_scalars_and_one_vector_differently() -> None:
     pinocchio = pytest.importorskip("pinocchio")
     from geolint.knowledge import agreed, bind, knowledge_base
