@@ -24,6 +24,7 @@ from geolint.factbase.extrinsics import (
 )
 from geolint.factbase.model import FactBase, string, walk_within
 from geolint.rules.fact_rule import FactRule
+from geolint.factbase import vocabulary as vocab
 from geolint.factbase.vocabulary import is_word_character
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf, AnyOf
@@ -31,7 +32,7 @@ from geolint.rules.triggers import AllOf, AnyOf
 
 # What a shape-only helper reads of an array, and the joins that pad it
 _SHAPE_ATTRIBUTES: Final = frozenset({"shape", "ndim", "dtype", "device", "size"})
-_JOINS: Final = ("cat", "concatenate", "stack", "hstack", "vstack", "concat")
+_JOINS: Final = (*vocab.STACKING_FUNCTIONS, "stack", "vstack")
 
 
 class _OrbSlamPoseName:
