@@ -7,11 +7,10 @@ time (a parameter, `rospy.get_param`, an attribute) leaves the value unknown (No
 
 from __future__ import annotations
 
-from typing import Final
-
 import ast
 from ast import (
     Add,
+    Assign,
     Attribute,
     BinOp,
     Call,
@@ -21,9 +20,16 @@ from ast import (
     Mod,
     Name,
 )
+from typing import Final
 
 from geolint.factbase.index import ModuleIndex, module_constant
-from geolint.factbase.reaching import resolve, scope_of
+from geolint.factbase.reaching import (
+    resolve,
+    runs_before,
+    scope_of,
+    single_definition,
+    statement_of,
+)
 
 _MAX_DEPTH: Final = 6
 _MAX_LENGTH: Final = 256  # frame ids are short; nothing longer is built here
@@ -99,3 +105,55 @@ def _formatted(render: object) -> str | None:
 
 def _short(text: str) -> str | None:
     return text if len(text) <= _MAX_LENGTH else None
+
+
+class StampedFrames:
+    """Every `<name>.header.frame_id = ...` and `<name>.child_frame_id = ...` of a module, read in one
+    pass: what frame a message or a `TransformStamped` held by a local name was stamped with before a
+    call (`frame_before`)."""
+
+    def __init__(self, index: ModuleIndex) -> None:
+        self.index = index
+        # (scope id, owner name, attribute path) -> [(position, value)] in source order
+        self.stores: dict[tuple[int, str, tuple[str, ...]], list[tuple[tuple[int, int], ast.expr]]] = {}
+        for node in index.nodes(Assign):
+            assert isinstance(node, Assign)
+            if len(node.targets) != 1:
+                continue
+            owner, path = _owner_and_path(node.targets[0])
+            if owner is None or path not in STAMP_PATHS:
+                continue
+            key = (id(scope_of(index, node)), owner, path)
+            self.stores.setdefault(key, []).append(((node.lineno, node.col_offset), node.value))
+
+    def frame_before(self, owner: Name, call: ast.AST, path: tuple[str, ...]) -> ast.expr | None:
+        """The value of the last `owner.<path> = value` before `call` in its function, set on the object
+        `owner` holds at the call (a second `v = Vector3Stamped()` starts a message with no frame) by a
+        statement that runs whenever the call does."""
+        definition = single_definition(self.index, owner)
+        if definition is None:
+            return None
+        scope = scope_of(self.index, call)
+        position = (getattr(call, "lineno", 0), getattr(call, "col_offset", 0))
+        found = None
+        for point, value in self.stores.get((id(scope), owner.id, path), ()):
+            if definition.point <= point < position:
+                found = value
+        if found is None:
+            return None
+        assignment = statement_of(self.index, found)
+        return found if assignment is not None and runs_before(self.index, assignment, call) else None
+
+
+PARENT_PATH: Final = ("header", "frame_id")
+CHILD_PATH: Final = ("child_frame_id",)
+STAMP_PATHS: Final = frozenset({PARENT_PATH, CHILD_PATH})
+
+
+def _owner_and_path(node: ast.expr) -> tuple[str | None, tuple[str, ...]]:
+    """`("t", ("header", "frame_id"))` for `t.header.frame_id`."""
+    parts: list[str] = []
+    while isinstance(node, Attribute):
+        parts.append(node.attr)
+        node = node.value
+    return (node.id, tuple(reversed(parts))) if isinstance(node, Name) and parts else (None, ())

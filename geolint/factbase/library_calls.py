@@ -563,3 +563,51 @@ def _parameter_geometry(bound: Bound, name: str, field: str) -> object:
 
 def _returned(bound: Bound) -> Geometry:
     return bound.signature.returns or Geometry()
+
+
+def tf_roles(facts: FactBase, call: Call) -> tuple[Api, dict[str, ast.expr]] | None:
+    """The tf frame ids a call names, by role (`markers.TfFrame`: "target"/"source" for a lookup,
+    "parent"/"child" for a ROS 1 broadcast, "published" for the transform messages it publishes), with
+    the API that says so; or the parts of a launch action (`markers.LaunchNode`). A method is also
+    recognised by its name alone, on an object the module does not type (a buffer passed in, a
+    `self.broadcaster` set elsewhere), in a module that imports the library; overloads and
+    same-named methods of several classes count when they agree on each role."""
+    return facts.memoised("tf roles", call, lambda: _tf_roles(facts, call))
+
+
+def _tf_roles(facts: FactBase, call: Call) -> tuple[Api, dict[str, ast.expr]] | None:
+    bounds = library_call(facts, call)
+    if bounds:
+        api = called_api(facts, call)
+        return _agreed_roles(api, bounds) if api is not None else None
+    if not isinstance(call.func, Attribute):
+        return None
+    kb = knowledge(facts)
+    candidates = [api for api in kb.tf_apis_named(call.func.attr) if not api.is_class]
+    if not candidates:
+        return None
+    imported = {name.partition(".")[0] for name in imported_modules(facts)}
+    found: list[tuple[Api, Bound]] = []
+    for api in candidates:
+        library = kb.libraries.get(api.library)
+        if library is not None and imported.intersection(library.packages):
+            found += [(api, bound) for bound in bind(api, call)]
+    if not found:
+        return None
+    return _agreed_roles(found[0][0], [bound for _, bound in found])
+
+
+def _agreed_roles(api: Api, bounds: list[Bound]) -> tuple[Api, dict[str, ast.expr]] | None:
+    """role -> argument, for the roles every overload binds to the same argument."""
+    maps = []
+    for bound in bounds:
+        roles: dict[str, ast.expr] = {}
+        for parameter in bound.signature.parameters:
+            geometry = parameter.geometry
+            role = None if geometry is None else geometry.tf_frame or geometry.launch_part
+            argument = bound.argument(parameter)
+            if role is not None and isinstance(argument, ast.expr):
+                roles[role] = argument
+        maps.append(roles)
+    agreed_roles = {role: argument for role, argument in maps[0].items() if all(other.get(role) is argument for other in maps[1:])}
+    return (api, agreed_roles) if agreed_roles else None

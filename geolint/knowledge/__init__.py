@@ -12,11 +12,11 @@ from functools import lru_cache
 from pathlib import Path
 
 from geolint.knowledge.binding import Bound, agreed, bind
-from geolint.knowledge.model import DEGREES, RADIANS, SCALAR_FIRST, SCALAR_LAST, Api, Geometry, Library, Parameter, Signature
+from geolint.knowledge.model import DEGREES, RADIANS, SCALAR_FIRST, SCALAR_LAST, Api, Executable, Geometry, Library, Parameter, Signature
 from geolint.knowledge.reader import StubError, read_library
 
 __all__ = [
-    "DEGREES", "RADIANS", "SCALAR_FIRST", "SCALAR_LAST", "Api", "Bound", "Geometry", "KnowledgeBase", "Library",
+    "DEGREES", "RADIANS", "SCALAR_FIRST", "SCALAR_LAST", "Api", "Bound", "Executable", "Geometry", "KnowledgeBase", "Library",
     "Parameter", "Signature", "StubError", "agreed", "bind", "knowledge_base", "stubs_folder",
 ]  # fmt: skip
 
@@ -35,6 +35,8 @@ class KnowledgeBase:
         self._conventional: dict[str, str] = {}
         self._extensions: dict[str, tuple[tuple[str, ...], str]] = {}
         self._names_reading: dict[tuple[str, str], frozenset[str]] = {}
+        self._tf_apis: dict[str, list[Api]] = {}
+        self._executables: dict[tuple[str, str], Executable] = {}
         for library in libraries:
             for name, target in library.extends.items():
                 self._extensions[name] = (library.packages, target)
@@ -46,6 +48,10 @@ class KnowledgeBase:
             for api in library.apis.values():
                 if api.receiver is not None and not api.is_class:
                     self._by_method.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
+                if _names_tf_frames(api):
+                    self._tf_apis.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
+            for executable in library.executables.values():
+                self._executables[(executable.package, executable.name)] = executable
 
     def api(self, qualified_name: str) -> Api | None:
         """The API a qualified name means, through re-exports (`scipy.spatial.transform.Rotation.from_quat`)."""
@@ -73,6 +79,27 @@ class KnowledgeBase:
     def methods_named(self, name: str) -> list[Api]:
         """APIs of `@any_receiver` classes with this method name (pybullet's client methods...)."""
         return self._by_method.get(name, [])
+
+    def tf_apis_named(self, name: str) -> list[Api]:
+        """The APIs with this last name that take tf frame ids, publish transforms (`TfFrame` markers) or
+        launch a ROS executable (`LaunchNode`): tf's lookups and broadcasters are recognised by method name,
+        on whatever object holds them."""
+        return self._tf_apis.get(name, [])
+
+    def tf_names(self) -> list[str]:
+        """Every name a file must contain to state something about tf: the tf APIs' last names and the
+        launched executables' names (a cheap test before a file is parsed)."""
+        methods = {name for name, apis in self._tf_apis.items() if any(not api.is_class for api in apis)}
+        return sorted(methods | {name for _, name in self._executables})
+
+    def tf_packages(self) -> list[str]:
+        """The import names of the libraries that have tf APIs (a module states tf facts only if it imports one)."""
+        return sorted({package for apis in self._tf_apis.values() for api in apis for package in self.libraries[api.library].packages})
+
+    def executable(self, package: str, name: str) -> Executable | None:
+        """A ROS executable that publishes a transform from its command line (`tf2_ros`'s
+        `static_transform_publisher`), by the package and name a launch file gives."""
+        return self._executables.get((package, name))
 
     def extension(self, qualified_name: str, imported: list[str]) -> Api | None:
         """A name another package gains once a library is imported (`numpy.quaternion` after `import
@@ -114,6 +141,14 @@ class KnowledgeBase:
             )
             self._names_reading[key] = found
         return found
+
+
+def _names_tf_frames(api: Api) -> bool:
+    return any(
+        parameter.geometry is not None and (parameter.geometry.tf_frame is not None or parameter.geometry.launch_part is not None)
+        for signature in api.signatures
+        for parameter in signature.parameters
+    )
 
 
 def stubs_folder() -> Path:

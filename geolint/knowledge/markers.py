@@ -15,6 +15,13 @@ with its meaning.
   matrix it is given or returns is the transpose of the column-vector one.
 - ``Annotated[T, STACKED]``: the parameter also accepts a stack (``(..., 4)`` quaternions, ``(N, 3)``
   points).
+- ``Annotated[str, TfFrame.TARGET]``: a tf frame id and its role in the call (a lookup's target or
+  source frame, a published transform's parent or child frame); ``TfFrame.PUBLISHED`` on a transform
+  message (or a list of them) that the call publishes, each from ``header.frame_id`` (the parent) to
+  ``child_frame_id`` (the child).
+- ``Annotated[str, LaunchNode.PACKAGE]`` (and ``EXECUTABLE``, ``ARGUMENTS``): the parts of a launch
+  action that starts a ROS executable, whose command line a package's METADATA.toml may describe
+  (``[executables.static_transform_publisher]``).
 """
 
 from __future__ import annotations
@@ -48,6 +55,24 @@ class CameraAxes:
     OPENCV: Final = "opencv"  # x right, y down, z forward (OpenCV, COLMAP, ROS optical frames)
     OPENGL: Final = "opengl"  # x right, y up, z backward (OpenGL, Blender, nerfstudio, instant-ngp)
     PYTORCH3D: Final = "pytorch3d"  # x left, y up, z forward
+
+
+class TfFrame:
+    """The role of a tf frame id in a call, as `Annotated` metadata."""
+
+    TARGET: Final = "target"  # a lookup's frame to express data in (the transform maps into it)
+    SOURCE: Final = "source"  # a lookup's frame the data is in (the transform maps from it)
+    PARENT: Final = "parent"  # a published transform's parent frame (its header.frame_id)
+    CHILD: Final = "child"  # a published transform's child frame (its child_frame_id)
+    PUBLISHED: Final = "published"  # transform messages the call publishes, parent -> child each
+
+
+class LaunchNode:
+    """The parts of a launch action that runs a ROS executable, as `Annotated` metadata."""
+
+    PACKAGE: Final = "package"
+    EXECUTABLE: Final = "executable"
+    ARGUMENTS: Final = "arguments"  # its command line, a list of strings
 
 
 ROW_VECTORS: Final = "row vectors"

@@ -31,6 +31,8 @@ class Geometry:
     stacked: bool = False
     type_name: str | None = None  # the qualified class the value is an instance of (a library class)
     items: tuple[Geometry, ...] = ()  # the parts of a returned tuple
+    tf_frame: str | None = None  # markers.TfFrame values: the role of a tf frame id (or of published transforms)
+    launch_part: str | None = None  # markers.LaunchNode values: a part of a launched ROS executable
 
 
 @dataclass(frozen=True)
@@ -114,6 +116,20 @@ def _geometric(geometry: Geometry | None) -> bool:
 
 
 @dataclass(frozen=True)
+class Executable:
+    """A ROS executable that publishes a transform named on its command line (`static_transform_publisher
+    x y z yaw pitch roll parent child`), as METADATA.toml's `[executables.<name>]` states it: what a launch
+    file's `args` mean."""
+
+    name: str
+    package: str  # the ROS package that ships it (`pkg=` / `package=` in a launch file)
+    static: bool  # publishes on /tf_static (latched) rather than /tf
+    positional: dict[int, tuple[int, int]]  # number of arguments -> the positions of (parent, child)
+    options: dict[str, str]  # `--frame-id` -> TfFrame role ("parent" / "child")
+    source: str  # where the command line is documented
+
+
+@dataclass(frozen=True)
 class Library:
     """A `stubs/<library>/` folder: METADATA.toml and what its stubs define."""
 
@@ -127,3 +143,4 @@ class Library:
     conventional_names: dict[str, str] = field(default_factory=dict)
     # names another package gains once this library is imported (`numpy.quaternion`) -> what they are
     extends: dict[str, str] = field(default_factory=dict)
+    executables: dict[str, Executable] = field(default_factory=dict)  # ROS executables, by name

@@ -15,7 +15,19 @@ import sys
 from pathlib import Path
 
 from geolint.algebra import Kind
-from geolint.knowledge.model import DEGREES, RADIANS, SCALAR_FIRST, SCALAR_LAST, Api, Geometry, Library, Parameter, Receiver, Signature
+from geolint.knowledge.model import (
+    DEGREES,
+    RADIANS,
+    SCALAR_FIRST,
+    SCALAR_LAST,
+    Api,
+    Executable,
+    Geometry,
+    Library,
+    Parameter,
+    Receiver,
+    Signature,
+)
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -62,6 +74,7 @@ def read_library(folder: Path) -> Library:
         upstream=str(metadata.get("upstream", "")),
         conventional_names={str(name): str(target) for name, target in metadata.get("conventional_names", {}).items()},
         extends={str(name): str(target) for name, target in metadata.get("extends", {}).items()},
+        executables=_executables(metadata_path, metadata.get("executables", {})),
     )
     for stub in sorted(folder.rglob("*.pyi")):
         relative = stub.relative_to(folder).with_suffix("")
@@ -70,6 +83,21 @@ def read_library(folder: Path) -> Library:
             parts.pop()
         _ModuleReader(library, ".".join(parts), stub, stub.relative_to(folder.parent).as_posix()).read()
     return library
+
+
+def _executables(path: Path, table: dict[str, dict[str, object]]) -> dict[str, Executable]:
+    """METADATA.toml's `[executables.<name>]` tables: `package`, `static`, `positional = {"8" = [6, 7]}`
+    (argument count -> positions of the parent and child frames), `options = {"--frame-id" = "parent"}`,
+    `source`."""
+    found = {}
+    for name, entry in table.items():
+        try:
+            positional = {int(count): (int(places[0]), int(places[1])) for count, places in dict(entry.get("positional", {})).items()}  # type: ignore[call-overload]
+            options = {str(flag): str(role) for flag, role in dict(entry.get("options", {})).items()}  # type: ignore[call-overload]
+            found[name] = Executable(name, str(entry["package"]), bool(entry.get("static", False)), positional, options, str(entry.get("source", "")))
+        except (KeyError, TypeError, ValueError, IndexError) as error:
+            raise StubError(f"{path}: [executables.{name}]: {error!r}") from error
+    return found
 
 
 class _ModuleReader:
@@ -256,6 +284,7 @@ class _ModuleReader:
 
 def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
     kind, camera_axes, row_vectors, stacked = base.kind, base.camera_axes, base.row_vectors, base.stacked
+    tf_frame, launch_part = base.tf_frame, base.launch_part
     for marker in markers:
         name = _last(marker)
         if name in _FRAMED and kind is None:  # `Annotated[PointCloud, PointArray]`: a library object that holds points
@@ -266,6 +295,10 @@ def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
             row_vectors = True
         elif name == "STACKED":
             stacked = True
+        elif isinstance(marker, ast.Attribute) and _last(marker.value) == "TfFrame":
+            tf_frame = marker.attr.lower()
+        elif isinstance(marker, ast.Attribute) and _last(marker.value) == "LaunchNode":
+            launch_part = marker.attr.lower()
     return Geometry(
         kind=kind,
         quaternion_order=base.quaternion_order,
@@ -276,6 +309,8 @@ def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
         stacked=stacked,
         type_name=base.type_name,
         items=base.items,
+        tf_frame=tf_frame,
+        launch_part=launch_part,
     )
 
 

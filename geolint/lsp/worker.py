@@ -14,7 +14,7 @@ import traceback
 from typing import Any, Callable
 
 from geolint import api
-from geolint.factbase import conventions, ros_packages
+from geolint.factbase import conventions, ros_packages, tf_workspace
 
 JOBS: dict[str, Callable[..., Any]] = {"lint_text": api.lint_text, "fix_text": api.fix_text}
 
@@ -32,6 +32,7 @@ def main() -> None:
         # (each file's votes are reused while its stat is unchanged, so only edited files are read)
         conventions.forget_project_totals()
         ros_packages.forget_packages()  # and what each ROS package's files say about its frame ids
+        tf_workspace.forget_projects()  # and the tf tree each project's files state
         try:
             answer: tuple[str, Any] = ("ok", JOBS[function](*args, **kwargs))
         except Exception:

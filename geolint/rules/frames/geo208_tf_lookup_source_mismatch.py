@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import ast
-from ast import Assign, Attribute, Call, Constant, Module, Name
+from ast import Call, Constant, Module, Name
 
 from geolint.factbase import ModuleIndex, index_of
+from geolint.factbase.frame_ids import CHILD_PATH, PARENT_PATH, StampedFrames
 from geolint.factbase.index import module_constant
 from geolint.factbase.pose_parts import call_name
-from geolint.factbase.reaching import resolve, runs_before, scope_of, single_definition, statement_of
+from geolint.factbase.reaching import resolve
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
 
@@ -99,6 +100,7 @@ class TfLookupSourceMismatch(AstRule):
 
     def check(self, tree: Module) -> None:
         index = index_of(tree)
+        stamps = StampedFrames(index)
         for node in index.nodes(Call):
             if not (isinstance(node, Call) and (call_name(node) or "").startswith("do_transform_") and len(node.args) >= 2):
                 continue
@@ -112,10 +114,10 @@ class TfLookupSourceMismatch(AstRule):
                 stated = f"lookup_transform({target!r}, {source!r})"
                 hint = "swapped lookup arguments?"
             else:  # a TransformStamped built here: `t.child_frame_id = "camera"` is the frame it maps from
-                source = self._frame_set_before(transform, node, index, ("child_frame_id",))
+                source = _literal(stamps.frame_before(transform, node, CHILD_PATH), index)
                 stated = f"stamped with child_frame_id {source!r}"
                 hint = "the message or the transform names the wrong frame"
-            stamped = self._frame_set_before(message, node, index, ("header", "frame_id"))
+            stamped = _literal(stamps.frame_before(message, node, PARENT_PATH), index)
             if source is None or stamped is None or stamped.lstrip("/") == source.lstrip("/"):
                 continue
             self.report(
@@ -125,49 +127,11 @@ class TfLookupSourceMismatch(AstRule):
                 frames=(source.lstrip("/"), stamped.lstrip("/")),
             )
 
-    def _frame_set_before(self, owner: Name, call: Call, index: ModuleIndex, path: tuple[str, ...]) -> str | None:
-        """The literal of the last `owner.<path> = ...` (`msg.header.frame_id`, `t.child_frame_id`) before
-        the call, in its function."""
-        scope = scope_of(index, call)
-        position = (call.lineno, call.col_offset)
-        # only what was set on the object the name holds at the call: `v = Vector3Stamped()` again
-        # starts a message with no frame, whatever the last one was stamped with
-        definition = single_definition(index, owner)
-        if definition is None:
-            return None
-        since = definition.point
-        found: tuple[tuple[int, int], ast.expr] | None = None
-        for node in ast.walk(scope.node):
-            if not isinstance(node, Assign) or len(node.targets) != 1:
-                continue
-            target = node.targets[0]
-            if (
-                _attribute_path(target, owner.id) == path
-                and since <= (node.lineno, node.col_offset) < position
-                and scope_of(index, node) is scope
-            ):
-                if found is None or (node.lineno, node.col_offset) > found[0]:
-                    found = ((node.lineno, node.col_offset), node.value)
-        if found is None:
-            return None
-        # The assignment must run whenever the call does (same block or an enclosing one).
-        assignment = statement_of(index, found[1])
-        if assignment is None or not runs_before(index, assignment, call):
-            return None
-        return _literal(found[1], index)
 
-
-def _attribute_path(node: ast.expr, owner: str) -> tuple[str, ...] | None:
-    """`("header", "frame_id")` for `owner.header.frame_id`; None when the chain is not rooted at `owner`."""
-    parts: list[str] = []
-    while isinstance(node, Attribute):
-        parts.append(node.attr)
-        node = node.value
-    return tuple(reversed(parts)) if isinstance(node, Name) and node.id == owner else None
-
-
-def _literal(node: ast.expr, index: ModuleIndex) -> str | None:
+def _literal(node: ast.expr | None, index: ModuleIndex) -> str | None:
     """A string literal, or a name that certainly holds one (a module constant)."""
+    if node is None:
+        return None
     if isinstance(node, Name):
         resolved = resolve(index, node)
         constant = module_constant(index, node.id) if isinstance(resolved, Name) else resolved

@@ -1,3 +1,6 @@
+from typing import Annotated
+
+from geolint.knowledge.markers import TfFrame
 from geolint.typing import QuaternionXYZW, Translation
 
 class TransformBroadcaster:
@@ -5,4 +8,6 @@ class TransformBroadcaster:
     parent):` (lines 44-66): the child frame before the parent, and ":param rotation: the rotation of the transformation as a
     tuple (x, y, z, w)"."""
 
-    def sendTransform(self, translation: Translation, rotation: QuaternionXYZW, time: object, child: str, parent: str) -> None: ...
+    def sendTransform(
+        self, translation: Translation, rotation: QuaternionXYZW, time: object, child: Annotated[str, TfFrame.CHILD], parent: Annotated[str, TfFrame.PARENT]
+    ) -> None: ...

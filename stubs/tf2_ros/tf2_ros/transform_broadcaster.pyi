@@ -1,4 +1,8 @@
+from typing import Annotated
+
 from geometry_msgs.msg import TransformStamped
+
+from geolint.knowledge.markers import TfFrame
 
 class TransformBroadcaster:
     """Source: ros2/geometry2 tf2_ros_py/tf2_ros/transform_broadcaster.py (0.39.1, commit 1b005c65),
@@ -7,4 +11,4 @@ class TransformBroadcaster:
     child (tf2's BufferCore::setTransform reads them so, tf2/src/buffer_core.cpp 199-230)."""
 
     def __init__(self, node: object, qos: object = ...) -> None: ...
-    def sendTransform(self, transform: TransformStamped | list[TransformStamped]) -> None: ...
+    def sendTransform(self, transform: Annotated[TransformStamped | list[TransformStamped], TfFrame.PUBLISHED]) -> None: ...

@@ -1,0 +1,322 @@
+"""What one file of a ROS project states about its tf tree: the transforms it publishes (parent ->
+child) and the frames it looks up (target <- source).
+
+Read from the places real projects state them:
+
+- Python nodes, ROS 1 and ROS 2: the calls the knowledge base marks with `TfFrame` roles (tf2's
+  `Buffer.lookup_transform(target, source, t)`, `can_transform`, ROS 1 tf's `lookupTransform`,
+  `TransformBroadcaster.sendTransform(t, q, time, child, parent)`, tf2's `sendTransform(msg)`,
+  whose `TransformStamped` gives `header.frame_id` -> `child_frame_id`);
+- Python launch files: a launch action the knowledge base marks with `LaunchNode` parts
+  (`Node(package="tf2_ros", executable="static_transform_publisher", arguments=[...])`), whose command
+  line its package's METADATA.toml describes;
+- XML launch files (ROS 1 `.launch`, ROS 2 `.launch.xml`): `<node pkg= type=|exec= args=>`, with
+  `$(arg name)` / `$(var name)` read from the file's `<arg>` defaults;
+- URDF and xacro: each `<joint>`'s `<parent link>` -> `<child link>` (what robot_state_publisher
+  publishes), with `${name}` read from the file's `<xacro:property>` values.
+
+A frame is kept as text when the file fixes it (`frame_ids.frame_string`), else None: a publication
+with an unknown frame still says the project publishes something this file cannot name.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+import re
+import xml.parsers.expat
+from ast import Attribute, Call, List, Name, Starred, Tuple
+from dataclasses import dataclass
+from typing import Final, Iterable, Iterator
+
+from geolint.factbase.frame_ids import CHILD_PATH, PARENT_PATH, StampedFrames, frame_string
+from geolint.factbase.library_calls import knowledge, tf_roles
+from geolint.knowledge import Executable, KnowledgeBase
+
+URDF_SUFFIXES: Final = (".urdf", ".xacro")
+XML_LAUNCH_SUFFIXES: Final = (".launch", ".launch.xml")
+_SUBSTITUTION: Final = re.compile(r"\$\((?:arg|var)\s+([\w-]+)\)")
+_PROPERTY: Final = re.compile(r"\$\{\s*([A-Za-z_]\w*)\s*\}")
+_MAX_XML_BYTES: Final = 4_000_000
+
+
+@dataclass(frozen=True, order=True)
+class Place:
+    """Where a statement is: a file, and the 1-based line and 0-based columns of its text."""
+
+    path: str
+    line: int
+    column: int = 0
+    end_line: int = 0
+    end_column: int = 0
+
+    def __str__(self) -> str:
+        """`path:line`, the path relative to the working folder when it is inside it."""
+        path = self.path
+        if os.path.isabs(path):
+            relative = os.path.relpath(path)
+            path = path if relative.startswith("..") else relative
+        return f"{path}:{self.line}"
+
+
+@dataclass(frozen=True)
+class Published:
+    """A transform the project publishes: `parent` -> `child` (None: a frame the file does not fix)."""
+
+    parent: str | None
+    child: str | None
+    how: str  # "sendTransform", "static_transform_publisher", "URDF joint"...
+    place: Place
+
+
+@dataclass(frozen=True)
+class LookedUp:
+    """A transform the project asks tf for: from `source` into `target`."""
+
+    target: str | None
+    source: str | None
+    how: str
+    place: Place
+
+
+@dataclass(frozen=True)
+class FileFrames:
+    published: tuple[Published, ...] = ()
+    looked_up: tuple[LookedUp, ...] = ()
+
+
+def frame_name(text: str | None) -> str | None:
+    """A frame id as tf2 compares it: ROS 1 tf's leading slash dropped (GEO207 reports the slash)."""
+    if text is None:
+        return None
+    name = text.strip().lstrip("/")
+    return name or None
+
+
+# -- Python ---------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class PythonStatement:
+    """A statement of the linted module, with the call that makes it (for a finding's range)."""
+
+    statement: Published | LookedUp
+    call: Call
+
+
+def python_statements(facts, path: str) -> list[PythonStatement]:  # type: ignore[no-untyped-def]
+    """The tf statements of one module, in source order."""
+    index = facts.index
+    kb = knowledge(facts)
+    stamps: StampedFrames | None = None
+    found: list[PythonStatement] = []
+    for node in index.nodes(Call):
+        assert isinstance(node, Call)
+        answer = tf_roles(facts, node)
+        if answer is None:
+            continue
+        api, roles = answer
+        place = _place_of(node, path)
+        how = node.func.attr if isinstance(node.func, Attribute) else api.qualified_name.rpartition(".")[2]
+        if "target" in roles or "source" in roles:
+            target, source = (_frame(roles.get(role), index) for role in ("target", "source"))
+            found.append(PythonStatement(LookedUp(target, source, how, place), node))
+        elif "parent" in roles or "child" in roles:
+            parent, child = (_frame(roles.get(role), index) for role in ("parent", "child"))
+            found.append(PythonStatement(Published(parent, child, how, place), node))
+        elif "published" in roles:
+            if stamps is None:
+                stamps = StampedFrames(index)
+            for parent, child in _published_messages(roles["published"], node, index, stamps):
+                found.append(PythonStatement(Published(parent, child, how, place), node))
+        elif "executable" in roles:
+            executable = _launched(kb, roles, index)
+            if executable is not None:
+                arguments = _command_line(roles.get("arguments"), index)
+                parent, child = (None, None) if arguments is None else command_line_frames(executable, arguments)
+                found.append(PythonStatement(Published(parent, child, executable.name, place), node))
+    return found
+
+
+def _frame(node: ast.expr | None, index) -> str | None:  # type: ignore[no-untyped-def]
+    return None if node is None else frame_name(frame_string(node, index))
+
+
+def _published_messages(argument: ast.expr, call: Call, index, stamps: StampedFrames) -> Iterator[tuple[str | None, str | None]]:  # type: ignore[no-untyped-def]
+    """(parent, child) of each `TransformStamped` a `sendTransform` call publishes: a name stamped
+    before the call, a list of them, or a message built with keywords."""
+    for message in argument.elts if isinstance(argument, (List, Tuple)) else [argument]:
+        if isinstance(message, Name):
+            yield (
+                _frame(stamps.frame_before(message, call, PARENT_PATH), index),
+                _frame(stamps.frame_before(message, call, CHILD_PATH), index),
+            )
+        elif isinstance(message, Call):  # `TransformStamped(header=Header(frame_id="map"), child_frame_id="odom")`
+            keywords = {keyword.arg: keyword.value for keyword in message.keywords if keyword.arg}
+            header = keywords.get("header")
+            header_keywords = {keyword.arg: keyword.value for keyword in header.keywords} if isinstance(header, Call) else {}
+            yield _frame(header_keywords.get("frame_id"), index), _frame(keywords.get("child_frame_id"), index)
+        else:
+            yield None, None
+
+
+def _launched(kb: KnowledgeBase, roles: dict[str, ast.expr], index) -> Executable | None:  # type: ignore[no-untyped-def]
+    package = roles.get("package")
+    name = roles.get("executable")
+    package_text = frame_string(package, index) if package is not None else None
+    name_text = frame_string(name, index) if name is not None else None
+    if package_text is None or name_text is None:
+        return None
+    return kb.executable(package_text, name_text)
+
+
+def _command_line(node: ast.expr | None, index) -> list[str | None] | None:  # type: ignore[no-untyped-def]
+    """A launch action's `arguments`: a list of strings (None for an element known at run time only),
+    or `"0 0 0 0 0 0 map odom".split()`; None when the list itself is not fixed here."""
+    if isinstance(node, (List, Tuple)):
+        if any(isinstance(element, Starred) for element in node.elts):
+            return None
+        return [frame_string(element, index) for element in node.elts]
+    if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr == "split" and not node.args and not node.keywords:
+        text = frame_string(node.func.value, index)
+        return None if text is None else list(text.split())
+    return None
+
+
+def command_line_frames(executable: Executable, arguments: Iterable[str | None]) -> tuple[str | None, str | None]:
+    """(parent, child) from a static transform publisher's command line, as its METADATA.toml describes it:
+    the `--frame-id`-style options when given, else the positions for that many arguments."""
+    words = list(arguments)
+    if "--ros-args" in words:
+        words = words[: words.index("--ros-args")]
+    roles: dict[str, str | None] = {}
+    for position, word in enumerate(words):
+        role = executable.options.get(word) if word is not None else None
+        if role is not None:
+            roles[role] = words[position + 1] if position + 1 < len(words) else None
+    if roles:
+        return frame_name(roles.get("parent")), frame_name(roles.get("child"))
+    places = executable.positional.get(len(words))
+    if places is None:
+        return None, None
+    return frame_name(words[places[0]]), frame_name(words[places[1]])
+
+
+def _place_of(node: ast.AST, path: str) -> Place:
+    return Place(
+        path,
+        getattr(node, "lineno", 0),
+        getattr(node, "col_offset", 0),
+        getattr(node, "end_lineno", 0) or 0,
+        getattr(node, "end_col_offset", 0) or 0,
+    )
+
+
+# -- XML: launch files and URDF -------------------------------------------------------------------
+@dataclass(frozen=True)
+class _Element:
+    tag: str
+    attributes: dict[str, str]
+    line: int
+    column: int
+    parent: int  # the index of the enclosing element, -1 at the root
+
+
+def _elements(text: str) -> list[_Element] | None:
+    """Every element of an XML text, in document order, with its line (expat, a real parser); None
+    when the text is not well-formed XML."""
+    parser = xml.parsers.expat.ParserCreate()
+    elements: list[_Element] = []
+    open_elements: list[int] = []
+
+    def start(tag: str, attributes: dict[str, str]) -> None:
+        elements.append(_Element(tag, attributes, parser.CurrentLineNumber, parser.CurrentColumnNumber, open_elements[-1] if open_elements else -1))
+        open_elements.append(len(elements) - 1)
+
+    def end(tag: str) -> None:
+        open_elements.pop()
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    try:
+        parser.Parse(text, True)
+    except xml.parsers.expat.ExpatError:
+        return None
+    return elements
+
+
+def xml_frames(kb: KnowledgeBase, path: str, text: str) -> FileFrames:
+    """The publications of an XML launch file or a URDF/xacro file ([] for anything else, or XML that does
+    not parse)."""
+    if len(text) > _MAX_XML_BYTES:
+        return FileFrames()
+    elements = _elements(text)
+    if elements is None:
+        return FileFrames()
+    if path.endswith(URDF_SUFFIXES) or any(element.tag == "robot" for element in elements[:1]):
+        return FileFrames(tuple(_joints(elements, path)))
+    return FileFrames(tuple(_launched_publishers(kb, elements, path)))
+
+
+def _joints(elements: list[_Element], path: str) -> Iterator[Published]:
+    properties = {
+        element.attributes["name"]: element.attributes["value"]
+        for element in elements
+        if element.tag.endswith("property") and "name" in element.attributes and "value" in element.attributes
+    }
+    for position, element in enumerate(elements):
+        if element.tag != "joint":
+            continue
+        links = {child.tag: child.attributes.get("link") for child in elements[position + 1 :] if child.parent == position and child.tag in ("parent", "child")}
+        parent, child = (_substituted(links.get(role), properties, _PROPERTY) for role in ("parent", "child"))
+        if "parent" in links and "child" in links:
+            kind = element.attributes.get("type", "")
+            yield Published(frame_name(parent), frame_name(child), f"URDF {kind} joint".replace("  ", " "), Place(path, element.line, element.column))
+
+
+def _launched_publishers(kb: KnowledgeBase, elements: list[_Element], path: str) -> Iterator[Published]:
+    arguments = {
+        element.attributes["name"]: element.attributes.get("value", element.attributes.get("default"))
+        for element in elements
+        if element.tag == "arg" and "name" in element.attributes
+    }
+    for element in elements:
+        if element.tag != "node":
+            continue
+        package = element.attributes.get("pkg")
+        name = element.attributes.get("type", element.attributes.get("exec"))
+        executable = kb.executable(package, name) if package and name else None
+        if executable is None:
+            continue
+        command = element.attributes.get("args")
+        parent, child = command_line_frames(executable, _words(command, arguments)) if command is not None else (None, None)
+        yield Published(parent, child, executable.name, Place(path, element.line, element.column))
+
+
+_UNKNOWN: Final = "\0"
+
+
+def _words(command: str, values: dict[str, str | None]) -> list[str | None]:
+    """A launch file's `args` split into words, a word with a substitution the file does not fix None."""
+
+    def value(match: re.Match[str]) -> str:
+        found = values.get(match.group(1))
+        return _UNKNOWN if found is None or "$" in found else found
+
+    return [None if _UNKNOWN in word or "$(" in word else word for word in _SUBSTITUTION.sub(value, command).split()]
+
+
+def _substituted(text: str | None, values: dict[str, str], pattern: re.Pattern[str]) -> str | None:
+    """`text` with each `${name}` replaced by the file's value; None when one is unknown."""
+    if text is None:
+        return None
+    unknown = False
+
+    def value(match: re.Match[str]) -> str:
+        nonlocal unknown
+        found = values.get(match.group(1))
+        if found is None or "$" in found:  # a macro's parameter, an expression: known only when expanded
+            unknown = True
+            return ""
+        return found
+
+    result = pattern.sub(value, text)
+    return None if unknown or "$(" in result or "${" in result else result

@@ -1,0 +1,76 @@
+"""The base of the rules on the project's tf tree (GEO211-GEO214): the module's own tf statements,
+and the graph of its whole project with them (`geolint.factbase.tf_workspace`)."""
+
+from __future__ import annotations
+
+import os
+import re
+from typing import ClassVar, Final
+
+from geolint.factbase.model import FactBase
+from geolint.factbase.tf_statements import Published, PythonStatement, python_statements
+from geolint.factbase.tf_workspace import TfGraph, frames_of_statements, graph_of, project_graph
+from geolint.knowledge import knowledge_base
+from geolint.rules.base import RuleTrigger
+from geolint.rules.fact_rule import FactRule
+
+# REP 105's chain: each frame is the parent of the next (earth -> map -> odom -> base_link)
+REP105_CHAIN: Final = ("earth", "map", "odom", "base_link")
+
+
+def reverses_rep105(edge: Published) -> bool:
+    """Whether a publication puts a frame of REP 105's chain above one that the chain puts above it."""
+    if edge.parent not in REP105_CHAIN or edge.child not in REP105_CHAIN:
+        return False
+    return REP105_CHAIN.index(edge.parent) > REP105_CHAIN.index(edge.child)
+
+
+class _TfText:
+    """A module names one of the knowledge base's tf calls or launched executables (a cheap gate)."""
+
+    def __init__(self) -> None:
+        self._pattern: re.Pattern[str] | None = None
+
+    @property
+    def pattern(self) -> str:
+        return self._compiled().pattern
+
+    def _compiled(self) -> re.Pattern[str]:
+        if self._pattern is None:
+            self._pattern = re.compile("|".join(re.escape(name) for name in knowledge_base().tf_names()))
+        return self._pattern
+
+    def search(self, source: str, /) -> bool:
+        return self._compiled().search(source) is not None
+
+    def search_with(self, source: str, config: object, /) -> bool:
+        return self.search(source)
+
+
+TF_TEXT: Final = _TfText()
+
+
+class ModuleTfTree:
+    """The module's tf statements and its project's graph, computed once for every rule that asks."""
+
+    def __init__(self, facts: FactBase) -> None:
+        # a file on disk is judged with its project (its places named as the project's files are); a
+        # snippet (an example, standard input) alone
+        on_disk = os.path.isfile(facts.path)
+        self.statements: list[PythonStatement] = python_statements(facts, os.path.realpath(facts.path) if on_disk else facts.path)
+        own = frames_of_statements(self.statements)
+        self.graph: TfGraph = project_graph(facts.path, own) if on_disk and self.statements else graph_of([own])
+
+
+class TfTreeRule(FactRule):
+    """A rule on the tf statements of the module, judged against the project's whole tree."""
+
+    triggers: ClassVar[RuleTrigger | None] = TF_TEXT
+
+    def run(self) -> None:
+        tree = self.facts.shared(ModuleTfTree)
+        if tree.statements:
+            self.check_tree(tree)
+
+    def check_tree(self, tree: ModuleTfTree) -> None:
+        raise NotImplementedError
