@@ -22,7 +22,6 @@ with an unknown frame still says the project publishes something this file canno
 from __future__ import annotations
 
 import ast
-import os
 import re
 import xml.parsers.expat
 from ast import Attribute, Call, List, Name, Starred, Tuple
@@ -50,13 +49,6 @@ class Place:
     end_line: int = 0
     end_column: int = 0
 
-    def __str__(self) -> str:
-        """`path:line`, the path relative to the working folder when it is inside it."""
-        path = self.path
-        if os.path.isabs(path):
-            relative = os.path.relpath(path)
-            path = path if relative.startswith("..") else relative
-        return f"{path}:{self.line}"
 
 
 @dataclass(frozen=True)

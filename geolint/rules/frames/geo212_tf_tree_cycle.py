@@ -82,7 +82,7 @@ class TfTreeCycle(TfTreeRule):
                 continue
             if any(reverses_rep105(step) for step in [*loop, edge]):
                 continue  # GEO211 reports the frames REP 105 orders the other way
-            steps = ", ".join(f"{step.parent} → {step.child}, {step.place}" for step in reversed(loop))
+            steps = ", ".join(f"{step.parent} → {step.child}, {tree.where(step.place)}" for step in reversed(loop))
             self.report(
                 found.call,
                 f"`{edge.how}` publishes {edge.parent!r} → {edge.child!r}, but {edge.child!r} is already an ancestor of "

@@ -102,7 +102,7 @@ class TfFrameNeverPublished(TfTreeRule):
                 self.report(
                     argument if argument is not None else found.call,
                     f"`{lookup.how}` asks for frame {frame!r}, which nothing in the project publishes; did you mean "
-                    f"{close[0]!r} (published at {where})?",
+                    f"{close[0]!r} (published at {tree.where(where)})?",
                     replacement=repr(close[0]) if argument is not None else None,
                     applicability="unsafe",
                     fix_description=f"Use {close[0]!r}",

@@ -8,8 +8,8 @@ import re
 from typing import ClassVar, Final
 
 from geolint.factbase.model import FactBase
-from geolint.factbase.tf_statements import Published, PythonStatement, python_statements
-from geolint.factbase.tf_workspace import TfGraph, frames_of_statements, graph_of, project_graph
+from geolint.factbase.tf_statements import Place, Published, PythonStatement, python_statements
+from geolint.factbase.tf_workspace import TfGraph, frames_of_statements, graph_of, project_graph, project_of
 from geolint.knowledge import knowledge_base
 from geolint.rules.base import RuleTrigger
 from geolint.rules.fact_rule import FactRule
@@ -60,6 +60,18 @@ class ModuleTfTree:
         self.statements: list[PythonStatement] = python_statements(facts, os.path.realpath(facts.path) if on_disk else facts.path)
         own = frames_of_statements(self.statements)
         self.graph: TfGraph = project_graph(facts.path, own) if on_disk and self.statements else graph_of([own])
+        self.root = project_of(facts.path) if on_disk else None
+
+    def where(self, place: Place) -> str:
+        """`path:line` for a message: the path relative to the working folder when it is inside it, else
+        to the project (never a path of this machine)."""
+        path = place.path
+        if os.path.isabs(path):
+            relative = os.path.relpath(path)
+            if relative.startswith("..") and self.root is not None:
+                relative = os.path.relpath(path, self.root)
+            path = relative if not relative.startswith("..") else os.path.basename(path)
+        return f"{path}:{place.line}"
 
 
 class TfTreeRule(FactRule):
