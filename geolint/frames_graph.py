@@ -23,6 +23,7 @@ Frame names are lower-cased, as `frames_of_name` gives them, so `Transform[World
 from __future__ import annotations
 
 import ast
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -31,7 +32,7 @@ from typing import Iterable, Sequence
 from geolint.lint_types import Config, Finding
 from geolint.parsing import parse_module
 from geolint.render import FrameEdge, FrameGraph
-from geolint.factbase import typed
+from geolint.factbase import tf_workspace, typed
 from geolint.factbase.conventions import naming_config, orders_for
 from geolint.factbase.model import DST_FIRST, SRC_FIRST
 from geolint.semantic.names import NameFrames, frames_of_name, order_dependent, same_frame
@@ -382,11 +383,47 @@ def graph_of_paths(paths: Sequence[Path], config: Config | None = None) -> Frame
     if config is None:
         config = api.find_config(Path(paths[0]) if paths else Path.cwd())
     graphs = []
+    projects: set[str] = set()
+    stating: dict[str, set[str]] = {}  # project -> its files that state tf facts
     for result in api.lint_paths(paths, config):
         location = getattr(result, "location", None) or Path(result.path)
         try:
             source = Path(location).read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError):
             continue  # the linter has already said what is wrong with it
-        graphs.append(graph_of_source(source, result.path, config, result.findings, str(location)))
+        graph = graph_of_source(source, result.path, config, result.findings, str(location))
+        root = tf_workspace.project_of(str(location))
+        projects.add(root)
+        if os.path.realpath(location) in stating.setdefault(root, _stating_files(root)):
+            # a ROS node's tf calls say what it publishes and looks up: its variable names
+            # (`laser_to_base = buffer.lookup_transform(...)`) would draw the same edges again, guessed
+            graph = FrameGraph(edges=tuple(edge for edge in graph.edges if edge.mismatch), frames=graph.frames)
+        graphs.append(graph)
+    graphs += [tf_tree_graph(root) for root in sorted(projects)]
     return merge(graphs)
+
+
+def _stating_files(root: str) -> set[str]:
+    return {file for file, _ in tf_workspace.project_frames(root)}
+
+
+def tf_tree_graph(root: str) -> FrameGraph:
+    """The tf tree a project states (`geolint.factbase.tf_workspace`): what its nodes and launch files
+    publish and its URDF joins, as edges parent -> child labelled with how; what its nodes look up as
+    dotted edges target -> source."""
+    edges = []
+    for file, frames in tf_workspace.project_frames(root):
+        shown = _shown_path(file, root)
+        for edge in frames.published:
+            if edge.parent is not None and edge.child is not None:
+                edges.append(FrameEdge(edge.parent, edge.child, edge.how, location=f"{shown}:{edge.place.line}"))
+        for lookup in frames.looked_up:
+            if lookup.target is not None and lookup.source is not None:
+                edges.append(FrameEdge(lookup.target, lookup.source, lookup.how, location=f"{shown}:{lookup.place.line}", lookup=True))
+    return FrameGraph(edges=tuple(edges))
+
+
+def _shown_path(file: str, root: str) -> str:
+    """A project file as the drawing names it: relative to the working folder when inside it, else to the project."""
+    relative = os.path.relpath(file)
+    return relative if not relative.startswith("..") else os.path.relpath(file, root)

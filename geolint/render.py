@@ -12,11 +12,13 @@ Output is deterministic (frames and edges sorted), so it can be compared with a 
 
 from __future__ import annotations
 
+import json
 import shutil
 import subprocess
 from dataclasses import dataclass
 
 MISMATCH_COLOR = "red"
+LOOKUP_COLOR = "gray40"
 
 GRAPHVIZ_MISSING = (
     "SVG output needs the Graphviz `dot` program, which was not found on PATH. "
@@ -35,6 +37,8 @@ class FrameEdge:
 
     `label` is what the edge is called in the code (e.g. "T_world_cam"); `location` is
     "file:line" where it was seen (may be empty); `mismatch` marks a wrong use, drawn red.
+    `lookup` marks a transform the code asks tf for (target -> source) rather than one it
+    publishes, drawn dotted.
     """
 
     parent: str
@@ -42,6 +46,7 @@ class FrameEdge:
     label: str = ""
     mismatch: bool = False
     location: str = ""
+    lookup: bool = False
 
 
 @dataclass(frozen=True)
@@ -94,6 +99,8 @@ def render_dot(graph: FrameGraph) -> str:
         if edge.mismatch:
             # Dashed as well as red, so the mismatch reads without colour too.
             attributes += [f"color={MISMATCH_COLOR}", f"fontcolor={MISMATCH_COLOR}", "penwidth=2", "style=dashed"]
+        elif edge.lookup:
+            attributes += [f"color={LOOKUP_COLOR}", f"fontcolor={LOOKUP_COLOR}", "style=dotted"]
         suffix = f" [{', '.join(attributes)}]" if attributes else ""
         lines.append(f"  {_dot_quote(edge.parent)} -> {_dot_quote(edge.child)}{suffix};")
     lines.append("}")
@@ -119,7 +126,8 @@ def render_mermaid(graph: FrameGraph) -> str:
     red_links = []
     for index, edge in enumerate(graph.sorted_edges()):
         caption = _edge_caption(edge)
-        arrow = f'-->|"{_mermaid_text(caption)}"|' if caption else "-->"
+        link = "-.->" if edge.lookup and not edge.mismatch else "-->"
+        arrow = f'{link}|"{_mermaid_text(caption)}"|' if caption else link
         lines.append(f"  {node_id[edge.parent]} {arrow} {node_id[edge.child]}")
         if edge.mismatch:
             red_links.append(str(index))
@@ -144,4 +152,13 @@ def render_svg(graph: FrameGraph, *, timeout: float = 60.0) -> str:
     return completed.stdout
 
 
-RENDERERS = {"dot": render_dot, "mermaid": render_mermaid, "svg": render_svg}
+def render_json(graph: FrameGraph) -> str:
+    """The graph as data: its frames, and each edge with what the drawings show of it."""
+    edges = [
+        {"parent": edge.parent, "child": edge.child, "label": edge.label, "location": edge.location, "mismatch": edge.mismatch, "lookup": edge.lookup}
+        for edge in graph.sorted_edges()
+    ]
+    return json.dumps({"name": graph.name, "frames": list(graph.all_frames()), "edges": edges}, indent=2) + "\n"
+
+
+RENDERERS = {"dot": render_dot, "json": render_json, "mermaid": render_mermaid, "svg": render_svg}

@@ -14,7 +14,7 @@ EXIT_OK, EXIT_ERROR = 0, 2
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("paths", nargs="*", type=Path, default=[Path(".")], metavar="PATH", help="files or folders (default: .)")
     parser.add_argument(
-        "--format", choices=sorted(RENDERERS), default="dot", help="Graphviz DOT (default), Mermaid, or SVG (needs graphviz)"
+        "--format", choices=sorted(RENDERERS), default="dot", help="Graphviz DOT (default), JSON, Mermaid, or SVG (needs graphviz)"
     )
     parser.add_argument("--output", "-o", type=Path, metavar="FILE", help="write here instead of standard output")
 

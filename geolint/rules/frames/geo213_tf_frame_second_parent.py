@@ -93,7 +93,7 @@ class TfFrameSecondParent(TfTreeRule):
                 f"`{edge.how}` publishes {edge.child!r} as a child of {edge.parent!r}, but it is also published as a child of "
                 f"{other.parent!r} ({tree.where(other.place)}): a tf frame has one parent, so tf2 flips between the two and lookups "
                 f"through {edge.child!r} are wrong",
-                frames=(edge.parent, other.parent or ""),
+                frames=(edge.parent, edge.child),
             )
 
     def _conflicts(self, edge: Published, other: Published, calls: dict[Place, Call]) -> bool:

@@ -1,0 +1,113 @@
+"""The tf tree of a ROS workspace (`geolint.factbase.tf_workspace`): what the fixture workspaces'
+nodes, launch files and URDF state, drawn by the real `geolint frames`, checked by the real `geolint
+check`, and re-checked when another file of the workspace changes (the findings cache's key)."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from geolint.factbase.tf_statements import command_line_frames, xml_frames
+from geolint.knowledge import knowledge_base
+from geolint.rules.frames.geo214_tf_frame_never_published import _misspelt
+
+ROOT = Path(__file__).resolve().parents[2]
+ROS = ROOT / "fixtures" / "ros"
+
+
+def geolint(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "geolint", *args], cwd=cwd, capture_output=True, text=True, timeout=300)
+
+
+def drawn(workspace: Path) -> dict[tuple[str, str], dict]:
+    completed = geolint("frames", "src", "--format", "json", cwd=workspace)
+    assert completed.returncode == 0, completed.stderr
+    return {(edge["parent"], edge["child"], edge["lookup"], edge["mismatch"]): edge for edge in json.loads(completed.stdout)["edges"]}
+
+
+def test_the_graph_holds_every_kind_of_statement_of_a_ros2_workspace() -> None:
+    edges = drawn(ROS / "rover_ws")
+    urdf = edges[("base_link", "laser_frame", False, False)]  # a xacro property resolved
+    assert (urdf["label"], urdf["location"]) == ("URDF fixed joint", "src/rover_description/urdf/rover.urdf.xacro:18")
+    assert edges[("map", "odom", False, False)]["label"] == "static_transform_publisher"  # --frame-id style
+    assert edges[("base_link", "odom", False, False)]["location"] == "src/rover_bringup/launch/GEO211_bringup.launch.py:20"  # "...".split()
+    assert edges[("odom", "base_footprint", False, False)]["label"] == "sendTransform"  # frames from module constants
+    assert ("camera_optical_frame", "dock_marker", False, False) in edges  # a list of messages
+    assert edges[("base_link", "laserframe", True, False)]["label"] == "lookup_transform"  # dotted
+    assert ("base_link", "odom", False, True) in edges  # GEO211's finding, red
+    # a node's variable names (`laser_to_base = buffer.lookup_transform(...)`) draw nothing of their own
+    assert not any(parent == "base" for parent, *_ in edges)
+
+
+def test_an_xml_launch_file_reads_its_arg_defaults() -> None:
+    edges = drawn(ROS / "arm_ws")
+    assert edges[("base_link", "table_camera_link", False, False)]["location"] == "src/arm_bringup/launch/arm.launch:5"
+    assert ("tool0", "gripper_tip", False, False) in edges  # the quaternion form: 10 arguments with the period
+
+
+@pytest.mark.parametrize(
+    ("package", "arguments", "expected"),
+    [
+        ("tf2_ros", "0 0 0 0 0 0 map odom", ("map", "odom")),
+        ("tf2_ros", "0 0 0 0 0 0 1 map odom", ("map", "odom")),
+        ("tf2_ros", "--x 1 --child-frame-id odom --frame-id map", ("map", "odom")),
+        ("tf2_ros", "0 0 0 0 0 0 /map odom --ros-args -r __node:=pin", ("map", "odom")),
+        ("tf", "0 0 0 0 0 0 map odom 100", ("map", "odom")),
+        ("tf", "0 0 0 0 0 0 1 map odom 100", ("map", "odom")),
+        ("tf", "0 0 0 0 0 0 map odom", (None, None)),  # tf wants a period: no form has 8 arguments
+    ],
+)
+def test_a_static_publishers_command_line_as_its_metadata_describes_it(package: str, arguments: str, expected: tuple) -> None:
+    executable = knowledge_base().executable(package, "static_transform_publisher")
+    assert executable is not None
+    assert command_line_frames(executable, arguments.split()) == expected
+
+
+def test_a_file_that_is_not_xml_states_nothing() -> None:
+    assert xml_frames(knowledge_base(), "broken.launch", "<launch><node pkg='tf' args='0 0 0 0 0 0 a b 1'") .published == ()
+
+
+@pytest.mark.parametrize(
+    ("frame", "known", "misspelt"),
+    [
+        ("baselink", "base_link", True),
+        ("Base_Link", "base_link", True),
+        ("camera_lnik", "camera_link", True),
+        ("camera_lnk", "camera_link", True),
+        ("camera2_link", "camera1_link", False),  # other digits: another frame
+        ("map", "mat", False),  # too short to call a misspelling
+        ("base_link", "base_link", False),
+        ("laser", "lidar", False),
+    ],
+)
+def test_what_counts_as_a_misspelt_frame(frame: str, known: str, misspelt: bool) -> None:
+    assert _misspelt(frame, known) is misspelt
+
+
+def test_a_change_elsewhere_in_the_workspace_changes_a_nodes_findings(tmp_path: Path) -> None:
+    """The findings cache keys each node by what its workspace states: fixing the URDF clears the
+    node's GEO213 on the next cached run, although the node itself did not change."""
+    workspace = tmp_path / "rover_ws"
+    shutil.copytree(ROS / "rover_ws", workspace)
+    cache = tmp_path / "cache"
+    node = "src/rover_bringup/rover_bringup/GEO213_wheel_odometry.py"
+    first = geolint("check", "--select", "GEO213", "--cache-dir", str(cache), "--output-format", "concise", node, cwd=workspace)
+    assert first.returncode == 1 and "GEO213" in first.stdout, first.stdout + first.stderr
+    urdf = workspace / "src/rover_description/urdf/rover.urdf.xacro"
+    urdf.write_text(urdf.read_text().replace('<parent link="base_link"/>\n    <child link="${laser_frame}"/>', '<parent link="base_footprint"/>\n    <child link="${laser_frame}"/>'))
+    second = geolint("check", "--select", "GEO213", "--cache-dir", str(cache), "--output-format", "concise", node, cwd=workspace)
+    assert second.returncode == 0, second.stdout + second.stderr
+
+
+def test_a_broken_launch_file_does_not_end_the_run(tmp_path: Path) -> None:
+    workspace = tmp_path / "arm_ws"
+    shutil.copytree(ROS / "arm_ws", workspace)
+    (workspace / "src/arm_bringup/launch/broken.launch").write_text("<launch><node pkg='tf' type='static_transform_publisher'")
+    completed = geolint("check", "--no-cache", "--select", "GEO211,GEO212,GEO214", "--output-format", "concise", "src", cwd=workspace)
+    assert completed.returncode == 1, completed.stderr
+    assert {line.split(": ")[1].split()[0] for line in completed.stdout.splitlines() if ": GEO" in line} == {"GEO211", "GEO212", "GEO214"}
