@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from ast import AST, Call, If
+from ast import AST, Attribute, Call, If, Name, walk
+from typing import Final
 
 from geolint.factbase.model import FactBase
 from geolint.factbase.tf_statements import URDF_SUFFIXES, Place, Published
@@ -40,7 +41,9 @@ class TfFrameSecondParent(TfTreeRule):
     There is no automatic fix: which publisher to keep is for a person to decide.
 
     ## Known problems
-    Only frames the files fix are compared. Publications in different Python modules or launch files
+    A publication that runs only on an option whose name says so (`if self.publish_tf:`) is not
+    reported: such a node is written to leave the frame to another publisher. Only frames the files
+    fix are compared. Publications in different Python modules or launch files
     are not compared with each other (they are often alternatives, a simulator's and a robot's), only
     with the URDF.
     """
@@ -58,6 +61,11 @@ class TfFrameSecondParent(TfTreeRule):
             "import tf\nbroadcaster = tf.TransformBroadcaster()\n"
             "def publish(p, q, now, simulated):\n    if simulated:\n        broadcaster.sendTransform(p, q, now, 'base_link', 'world')\n"
             "    else:\n        broadcaster.sendTransform(p, q, now, 'base_link', 'odom')\n"
+        ),
+        Valid(  # published only when the node is told to, leaving the frame to another publisher otherwise
+            "import tf\nbroadcaster = tf.TransformBroadcaster()\n"
+            "def publish(self, p, q, now):\n    broadcaster.sendTransform(p, q, now, 'base_link', 'base_footprint')\n"
+            "    if self.publish_odom_tf:\n        broadcaster.sendTransform(p, q, now, 'base_link', 'odom')\n"
         ),
     ]
     INVALID = [
@@ -78,6 +86,8 @@ class TfFrameSecondParent(TfTreeRule):
                 continue
             if tree.graph.path_up(edge.parent, edge.child) is not None:
                 continue  # a cycle: GEO212 reports it
+            if _published_on_option(self.facts, found.call):
+                continue
             others = [
                 other
                 for parent, edges in tree.graph.parents.get(edge.child, {}).items()
@@ -102,6 +112,22 @@ class TfFrameSecondParent(TfTreeRule):
         if other.place not in calls or other.place >= edge.place:  # another module; or reported at the later one
             return False
         return not _exclusive(self.facts, calls[edge.place], calls[other.place])
+
+
+_OPTION_WORDS: Final = ("tf", "transform", "publish", "broadcast")
+
+
+def _published_on_option(facts: FactBase, call: AST) -> bool:
+    """Whether the publication runs only when the node is told to (`if self.publish_tf:`), the way a
+    node offers to publish a frame that something else (a simulator, an EKF) may publish instead."""
+    current = facts.parent(call)
+    while current is not None:
+        if isinstance(current, If):
+            words = [node.id if isinstance(node, Name) else node.attr for node in walk(current.test) if isinstance(node, (Name, Attribute))]
+            if any(word in name.lower() for name in words for word in _OPTION_WORDS):
+                return True
+        current = facts.parent(current)
+    return False
 
 
 def _exclusive(facts: FactBase, first: AST, second: AST) -> bool:
