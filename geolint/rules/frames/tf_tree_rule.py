@@ -61,6 +61,15 @@ class ModuleTfTree:
         own = frames_of_statements(self.statements)
         self.graph: TfGraph = project_graph(facts.path, own) if on_disk and self.statements else graph_of([own])
         self.root = project_of(facts.path) if on_disk else None
+        self._path, self._own = facts.path, own
+        self._whole: TfGraph | None = self.graph if self.statements or self.root is None else None
+
+    def whole_graph(self) -> TfGraph:
+        """The project's graph even when this module states nothing about tf itself (a camera driver
+        that only stamps its images)."""
+        if self._whole is None:
+            self._whole = project_graph(self._path, self._own)
+        return self._whole
 
     def where(self, place: Place) -> str:
         """`path:line` for a message: the path relative to the working folder when it is inside it, else

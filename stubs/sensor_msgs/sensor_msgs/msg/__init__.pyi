@@ -1,6 +1,12 @@
+from typing import Annotated
+
 from geometry_msgs.msg import Quaternion
 
+from geolint.knowledge.markers import CameraAxes
 from geolint.typing import Degrees, VectorArray
+
+# the header of camera data: its frame_id names the camera's optical frame (x right, y down, z forward)
+_OpticalHeader = Annotated[object, CameraAxes.OPENCV]
 
 class NavSatFix:
     """Source: sensor_msgs/msg/NavSatFix.msg (ros2/common_interfaces 5.4.2, commit c0c0bc57; ros/common_msgs
@@ -37,4 +43,31 @@ class Imu:
         angular_velocity_covariance: object = ...,
         linear_acceleration: VectorArray = ...,
         linear_acceleration_covariance: object = ...,
+    ) -> None: ...
+
+class Image:
+    """Source: sensor_msgs/msg/Image.msg (ros2/common_interfaces 5.4.2, commit c0c0bc57; ros/common_msgs, the same text):
+    "Header frame_id should be optical frame of camera / origin of frame should be optical center of camera / +x should
+    point to the right in the image / +y should point down in the image / +z should point into to plane of the image".
+    Fields header, height, width, encoding, is_bigendian, step, data."""
+
+    def __init__(
+        self, header: _OpticalHeader = ..., height: int = ..., width: int = ..., encoding: str = ..., is_bigendian: int = ..., step: int = ..., data: object = ...
+    ) -> None: ...
+
+class CompressedImage:
+    """Source: sensor_msgs/msg/CompressedImage.msg (ros2/common_interfaces 5.4.2): "Header frame_id should be optical frame
+    of camera / origin of frame should be optical center of camera / +x should point to the right in the image / +y should
+    point down in the image / +z should point into to plane of the image". Fields header, format, data."""
+
+    def __init__(self, header: _OpticalHeader = ..., format: str = ..., data: object = ...) -> None: ...
+
+class CameraInfo:
+    """Source: sensor_msgs/msg/CameraInfo.msg (ros2/common_interfaces 5.4.2): "Header frame_id should be the optical frame
+    of the camera / origin of frame should be optical center of cameara / +x should point to the right in the image / +y
+    should point down in the image / +z should point into the plane of the image" (and "If the frame_id here and the
+    frame_id of the CameraInfo message associated with the image conflict the behavior is undefined")."""
+
+    def __init__(
+        self, header: _OpticalHeader = ..., height: int = ..., width: int = ..., distortion_model: str = ..., d: object = ..., k: object = ..., r: object = ..., p: object = ..., **fields: object
     ) -> None: ...
