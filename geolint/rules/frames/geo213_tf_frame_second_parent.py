@@ -114,7 +114,7 @@ class TfFrameSecondParent(TfTreeRule):
         return not _exclusive(self.facts, calls[edge.place], calls[other.place])
 
 
-_OPTION_WORDS: Final = ("tf", "transform", "publish", "broadcast")
+_OPTION_WORDS: Final = ("transform", "publish", "broadcast")  # `publish_tf`, `should_publish_transform`
 
 
 def _published_on_option(facts: FactBase, call: AST) -> bool:
