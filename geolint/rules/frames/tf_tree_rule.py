@@ -26,22 +26,23 @@ def reverses_rep105(edge: Published) -> bool:
 
 
 class _TfText:
-    """A module names one of the knowledge base's tf calls or launched executables (a cheap gate)."""
+    """A module names one of the knowledge base's tf calls or launched executables (a cheap gate: one
+    `in` test per name, which scans faster than an alternation with no first character)."""
 
     def __init__(self) -> None:
-        self._pattern: re.Pattern[str] | None = None
+        self._names: tuple[str, ...] | None = None
 
     @property
     def pattern(self) -> str:
-        return self._compiled().pattern
+        return "|".join(re.escape(name) for name in self._known())
 
-    def _compiled(self) -> re.Pattern[str]:
-        if self._pattern is None:
-            self._pattern = re.compile("|".join(re.escape(name) for name in knowledge_base().tf_names()))
-        return self._pattern
+    def _known(self) -> tuple[str, ...]:
+        if self._names is None:
+            self._names = tuple(knowledge_base().tf_names())
+        return self._names
 
     def search(self, source: str, /) -> bool:
-        return self._compiled().search(source) is not None
+        return any(name in source for name in self._known())
 
     def search_with(self, source: str, config: object, /) -> bool:
         return self.search(source)
