@@ -38,6 +38,7 @@ from geolint.knowledge import KnowledgeBase, knowledge_base
 
 _SKIPPED_FOLDERS: Final = frozenset({"node_modules", "__pycache__", "build", "devel", "install", "log", "site-packages"})
 _MAX_FILES: Final = 20000
+_TEST_FOLDERS: Final = frozenset({"test", "tests"})
 _MAX_PYTHON_BYTES: Final = 2_000_000
 
 
@@ -177,8 +178,10 @@ def _candidate_files(root: str) -> list[str]:
             for name in dirnames
             if not name.startswith(".") and name not in _SKIPPED_FOLDERS and not _another_tree(os.path.join(parent, name), root)
         )
+        # a test folder's robot descriptions and launch files describe test set-ups, not the robot
+        in_tests = any(part in _TEST_FOLDERS for part in os.path.relpath(parent, root).split(os.sep))
         for filename in sorted(filenames):
-            if filename.endswith((".py", *URDF_SUFFIXES, *XML_LAUNCH_SUFFIXES)):
+            if filename.endswith(".py") or (not in_tests and filename.endswith((*URDF_SUFFIXES, *XML_LAUNCH_SUFFIXES))):
                 files.append(os.path.realpath(os.path.join(parent, filename)))
                 if len(files) >= _MAX_FILES:
                     return files

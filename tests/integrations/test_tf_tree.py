@@ -111,3 +111,31 @@ def test_a_broken_launch_file_does_not_end_the_run(tmp_path: Path) -> None:
     completed = geolint("check", "--no-cache", "--select", "GEO211,GEO212,GEO214", "--output-format", "concise", "src", cwd=workspace)
     assert completed.returncode == 1, completed.stderr
     assert {line.split(": ")[1].split()[0] for line in completed.stdout.splitlines() if ": GEO" in line} == {"GEO211", "GEO212", "GEO214"}
+
+
+def test_a_second_parent_that_another_robot_description_agrees_with_is_a_variant(tmp_path: Path) -> None:
+    """The node publishes laser_frame under base_footprint; the mk1 URDF hangs it from base_link. Add a
+    mk2 URDF that agrees with the node: the descriptions are variants, and GEO213 says nothing."""
+    workspace = tmp_path / "rover_ws"
+    shutil.copytree(ROS / "rover_ws", workspace)
+    node = "src/rover_bringup/rover_bringup/GEO213_wheel_odometry.py"
+    assert "GEO213" in geolint("check", "--no-cache", "--select", "GEO213", node, cwd=workspace).stdout
+    mk2 = workspace / "src/rover_description/urdf/rover_mk2.urdf"
+    mk2.write_text(
+        '<robot name="rover_mk2"><link name="base_footprint"/><link name="laser_frame"/>'
+        '<joint name="laser_joint" type="fixed"><parent link="base_footprint"/><child link="laser_frame"/></joint></robot>'
+    )
+    assert geolint("check", "--no-cache", "--select", "GEO213", node, cwd=workspace).returncode == 0
+
+
+def test_a_test_folders_robot_description_is_not_the_robots(tmp_path: Path) -> None:
+    workspace = tmp_path / "arm_ws"
+    shutil.copytree(ROS / "arm_ws", workspace)
+    tests = workspace / "src/arm_bringup/test"
+    tests.mkdir()
+    (tests / "table.urdf").write_text(  # a test robot whose link is spelled like the misspelt lookup
+        '<robot name="t"><link name="base_link"/><link name="table_camera_lnk"/>'
+        '<joint name="j" type="fixed"><parent link="base_link"/><child link="table_camera_lnk"/></joint></robot>'
+    )
+    completed = geolint("check", "--no-cache", "--select", "GEO214", "--output-format", "concise", "src", cwd=workspace)
+    assert "GEO214" in completed.stdout, completed.stdout + completed.stderr

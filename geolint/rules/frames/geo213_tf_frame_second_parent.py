@@ -42,7 +42,9 @@ class TfFrameSecondParent(TfTreeRule):
 
     ## Known problems
     A publication that runs only on an option whose name says so (`if self.publish_tf:`) is not
-    reported: such a node is written to leave the frame to another publisher. Only frames the files
+    reported: such a node is written to leave the frame to another publisher. Nor is one that a
+    robot description agrees with while another does not (the URDFs are variants), and test
+    folders' URDF and launch files are not read. Only frames the files
     fix are compared. Publications in different Python modules or launch files
     are not compared with each other (they are often alternatives, a simulator's and a robot's), only
     with the URDF.
@@ -88,13 +90,10 @@ class TfFrameSecondParent(TfTreeRule):
                 continue  # a cycle: GEO212 reports it
             if _published_on_option(self.facts, found.call):
                 continue
-            others = [
-                other
-                for parent, edges in tree.graph.parents.get(edge.child, {}).items()
-                if parent != edge.parent
-                for other in edges
-                if self._conflicts(edge, other, calls)
-            ]
+            parents = tree.graph.parents.get(edge.child, {})
+            if any(other.place.path.endswith(URDF_SUFFIXES) for other in parents.get(edge.parent, ())):
+                continue  # a robot description agrees: the others are variants (another arm, the simulator's)
+            others = [other for parent, edges in parents.items() if parent != edge.parent for other in edges if self._conflicts(edge, other, calls)]
             if not others:
                 continue
             other = min(others, key=lambda published: published.place)
