@@ -590,7 +590,7 @@ def _tf_roles(facts: FactBase, call: Call) -> tuple[Api, dict[str, ast.expr]] | 
     found: list[tuple[Api, Bound]] = []
     for api in candidates:
         library = kb.libraries.get(api.library)
-        if library is not None and imported.intersection(library.packages):
+        if library is not None and imported.intersection((*library.packages, *library.recognised_with)):
             found += [(api, bound) for bound in bind(api, call)]
     if not found:
         return None

@@ -24,12 +24,13 @@ from __future__ import annotations
 import ast
 import re
 import xml.parsers.expat
-from ast import Attribute, Call, List, Name, Starred, Tuple
+from ast import Attribute, Call, FunctionDef, List, Name, Return, Starred, Tuple
 from dataclasses import dataclass
 from typing import Final, Iterable, Iterator
 
 from geolint.factbase.frame_ids import CHILD_PATH, PARENT_PATH, StampedFrames, frame_string
 from geolint.factbase.library_calls import knowledge, tf_roles
+from geolint.factbase.reaching import resolve
 from geolint.knowledge import Executable, KnowledgeBase
 
 URDF_SUFFIXES: Final = (".urdf", ".xacro")
@@ -312,3 +313,56 @@ def _substituted(text: str | None, values: dict[str, str], pattern: re.Pattern[s
 
     result = pattern.sub(value, text)
     return None if unknown or "$(" in result or "${" in result else result
+
+
+# -- the frames a looked-up transform maps between, followed through names ------------------------
+_LOOKUP_DEPTH: Final = 4
+
+
+def lookup_frames(facts, node: ast.expr, depth: int = _LOOKUP_DEPTH) -> LookedUp | None:  # type: ignore[no-untyped-def]
+    """The lookup a transform comes from, when every way it can be bound says the same: a name bound to
+    `buffer.lookup_transform(target, source, t)`, an attribute `self.t` that the class sets only to
+    lookups of the same frames, or a call of a function of the module whose every return is one."""
+    if depth <= 0:
+        return None
+    index = facts.index
+    if isinstance(node, Name):
+        value = resolve(index, node)
+        return lookup_frames(facts, value, depth - 1) if isinstance(value, ast.expr) and value is not node else None
+    if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
+        stores = index.self_attribute_stores.get(node.attr, [])
+        return _agreed_lookup([lookup_frames(facts, value, depth - 1) if isinstance(value, ast.expr) else None for value in stores])
+    if not isinstance(node, Call):
+        return None
+    answer = tf_roles(facts, node)
+    if answer is not None:
+        api, roles = answer
+        if "target" in roles and "source" in roles:
+            how = node.func.attr if isinstance(node.func, Attribute) else api.qualified_name.rpartition(".")[2]
+            return LookedUp(_frame(roles["target"], index), _frame(roles["source"], index), how, _place_of(node, facts.path))
+        return None
+    function = _called_function(index, node)
+    if function is None:
+        return None
+    returns = [statement.value for statement in ast.walk(function) if isinstance(statement, Return) and statement.value is not None]
+    return _agreed_lookup([lookup_frames(facts, value, depth - 1) for value in returns])
+
+
+def _agreed_lookup(found: list[LookedUp | None]) -> LookedUp | None:
+    if not found or any(lookup is None for lookup in found):
+        return None
+    frames = {(lookup.target, lookup.source) for lookup in found if lookup is not None}
+    return found[0] if len(frames) == 1 else None
+
+
+def _called_function(index, call: Call) -> FunctionDef | None:  # type: ignore[no-untyped-def]
+    """The one function of the module a call names: `helper(...)` or `self.helper(...)`."""
+    func = call.func
+    if isinstance(func, Name):
+        name = func.id
+    elif isinstance(func, Attribute) and isinstance(func.value, Name) and func.value.id == "self":
+        name = func.attr
+    else:
+        return None
+    found = [node for node in index.nodes(FunctionDef) if isinstance(node, FunctionDef) and node.name == name]
+    return found[0] if len(found) == 1 else None

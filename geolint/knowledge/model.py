@@ -144,3 +144,6 @@ class Library:
     # names another package gains once this library is imported (`numpy.quaternion`) -> what they are
     extends: dict[str, str] = field(default_factory=dict)
     executables: dict[str, Executable] = field(default_factory=dict)  # ROS executables, by name
+    # modules whose import makes the library's methods recognisable by name alone (its companions:
+    # a node that imports tf2_geometry_msgs is handed a tf2 buffer)
+    recognised_with: tuple[str, ...] = ()

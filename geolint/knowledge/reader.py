@@ -75,6 +75,7 @@ def read_library(folder: Path) -> Library:
         conventional_names={str(name): str(target) for name, target in metadata.get("conventional_names", {}).items()},
         extends={str(name): str(target) for name, target in metadata.get("extends", {}).items()},
         executables=_executables(metadata_path, metadata.get("executables", {})),
+        recognised_with=tuple(str(name) for name in metadata.get("recognised_with", ())),
     )
     for stub in sorted(folder.rglob("*.pyi")):
         relative = stub.relative_to(folder).with_suffix("")
