@@ -1,4 +1,4 @@
-"""GEO215 camera-data-outside-optical-frame: an image stamped with a camera's body frame, not its optical frame."""
+"""GEO215 image-not-in-optical-frame: an image stamped with a camera's body frame, not its optical frame."""
 
 from __future__ import annotations
 
@@ -55,7 +55,7 @@ class _CameraText:
         return self.search(source)
 
 
-class CameraDataOutsideOpticalFrame(FactRule):
+class ImageNotInOpticalFrame(FactRule):
     """An image or camera-info message is stamped with a camera's body frame, whose optical frame the project publishes.
 
     ## What it does
@@ -96,7 +96,7 @@ class CameraDataOutsideOpticalFrame(FactRule):
     """
 
     code = "GEO215"
-    name = "camera-data-outside-optical-frame"
+    name = "image-not-in-optical-frame"
     triggers: ClassVar[RuleTrigger | None] = _CameraText()
 
     VALID = [
