@@ -568,7 +568,8 @@ def _returned(bound: Bound) -> Geometry:
 def tf_roles(facts: FactBase, call: Call) -> tuple[Api, dict[str, ast.expr]] | None:
     """The tf frame ids a call names, by role (`markers.TfFrame`: "target"/"source" for a lookup,
     "parent"/"child" for a ROS 1 broadcast, "published" for the transform messages it publishes), with
-    the API that says so; or the parts of a launch action (`markers.LaunchNode`). A method is also
+    the API that says so; or the parts of a launch action (`markers.LaunchNode`), or of a ROS
+    parameter's declaration or reading (`markers.RosParameter`: "name", "default"). A method is also
     recognised by its name alone, on an object the module does not type (a buffer passed in, a
     `self.broadcaster` set elsewhere), in a module that imports the library; overloads and
     same-named methods of several classes count when they agree on each role."""
@@ -583,7 +584,8 @@ def _tf_roles(facts: FactBase, call: Call) -> tuple[Api, dict[str, ast.expr]] | 
     if not isinstance(call.func, Attribute):
         return None
     kb = knowledge(facts)
-    candidates = [api for api in kb.tf_apis_named(call.func.attr) if not api.is_class]
+    named = call.func.attr
+    candidates = [api for api in (*kb.tf_apis_named(named), *kb.parameter_apis_named(named)) if not api.is_class]
     if not candidates:
         return None
     imported = {name.partition(".")[0] for name in imported_modules(facts)}
@@ -604,7 +606,7 @@ def _agreed_roles(api: Api, bounds: list[Bound]) -> tuple[Api, dict[str, ast.exp
         roles: dict[str, ast.expr] = {}
         for parameter in bound.signature.parameters:
             geometry = parameter.geometry
-            role = None if geometry is None else geometry.tf_frame or geometry.launch_part
+            role = None if geometry is None else geometry.tf_frame or geometry.launch_part or geometry.ros_parameter
             argument = bound.argument(parameter)
             if role is not None and isinstance(argument, ast.expr):
                 roles[role] = argument

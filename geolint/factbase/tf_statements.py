@@ -25,12 +25,14 @@ import ast
 import re
 import xml.parsers.expat
 from ast import Attribute, Call, FunctionDef, List, Name, Return, Starred, Tuple
-from dataclasses import dataclass
-from typing import Final, Iterable, Iterator
+from dataclasses import dataclass, replace
+from typing import Any, Final, Iterable, Iterator, TypeVar
 
 from geolint.factbase.frame_ids import CHILD_PATH, PARENT_PATH, StampedFrames, frame_string
 from geolint.factbase.library_calls import knowledge, tf_roles
-from geolint.factbase.reaching import resolve
+from geolint.factbase.index import module_constant
+from geolint.factbase.reaching import resolve, scope_of
+from geolint.factbase.ros_parameters import parameter_key, yaml_keys
 from geolint.knowledge import Executable, KnowledgeBase
 
 URDF_SUFFIXES: Final = (".urdf", ".xacro")
@@ -60,6 +62,7 @@ class Published:
     child: str | None
     how: str  # "sendTransform", "static_transform_publisher", "URDF joint"...
     place: Place
+    parameters: tuple[tuple[str, str], ...] = ()  # (role, parameter) for a frame that is a parameter's declared default
 
 
 @dataclass(frozen=True)
@@ -70,12 +73,27 @@ class LookedUp:
     source: str | None
     how: str
     place: Place
+    parameters: tuple[tuple[str, str], ...] = ()  # (role, parameter) for a frame that is a parameter's declared default
 
 
 @dataclass(frozen=True)
 class FileFrames:
     published: tuple[Published, ...] = ()
     looked_up: tuple[LookedUp, ...] = ()
+    parameters_set: frozenset[str] = frozenset()  # the ROS parameters a launch or parameter file sets (`parameter_key`)
+
+    def __bool__(self) -> bool:
+        return bool(self.published or self.looked_up or self.parameters_set)
+
+
+_Statement = TypeVar("_Statement", Published, LookedUp, "Published | LookedUp")
+
+
+def settled(statement: _Statement, overridden: frozenset[str]) -> _Statement:
+    """The statement with each frame that is the default of a parameter the project sets made unknown:
+    the default is not what runs."""
+    changes: dict[str, Any] = {role: None for role, parameter in statement.parameters if parameter_key(parameter) in overridden}
+    return replace(statement, **changes) if changes else statement
 
 
 def frame_name(text: str | None) -> str | None:
@@ -99,6 +117,7 @@ def python_statements(facts, path: str) -> list[PythonStatement]:  # type: ignor
     """The tf statements of one module, in source order."""
     index = facts.index
     kb = knowledge(facts)
+    values = FrameValues(facts)
     stamps: StampedFrames | None = None
     found: list[PythonStatement] = []
     for node in index.nodes(Call):
@@ -110,16 +129,16 @@ def python_statements(facts, path: str) -> list[PythonStatement]:  # type: ignor
         place = _place_of(node, path)
         how = node.func.attr if isinstance(node.func, Attribute) else api.qualified_name.rpartition(".")[2]
         if "target" in roles or "source" in roles:
-            target, source = (_frame(roles.get(role), index) for role in ("target", "source"))
-            found.append(PythonStatement(LookedUp(target, source, how, place), node))
+            (target, source), parameters = values.frames(roles, ("target", "source"))
+            found.append(PythonStatement(LookedUp(target, source, how, place, parameters), node))
         elif "parent" in roles or "child" in roles:
-            parent, child = (_frame(roles.get(role), index) for role in ("parent", "child"))
-            found.append(PythonStatement(Published(parent, child, how, place), node))
+            (parent, child), parameters = values.frames(roles, ("parent", "child"))
+            found.append(PythonStatement(Published(parent, child, how, place, parameters), node))
         elif "published" in roles:
             if stamps is None:
                 stamps = StampedFrames(index)
-            for parent, child in _published_messages(roles["published"], node, index, stamps):
-                found.append(PythonStatement(Published(parent, child, how, place), node))
+            for stamped, parameters in _published_messages(roles["published"], node, values, stamps):
+                found.append(PythonStatement(Published(stamped.get("parent"), stamped.get("child"), how, place, parameters), node))
         elif "executable" in roles:
             executable = _launched(kb, roles, index)
             if executable is not None:
@@ -133,22 +152,128 @@ def _frame(node: ast.expr | None, index) -> str | None:  # type: ignore[no-untyp
     return None if node is None else frame_name(frame_string(node, index))
 
 
-def _published_messages(argument: ast.expr, call: Call, index, stamps: StampedFrames) -> Iterator[tuple[str | None, str | None]]:  # type: ignore[no-untyped-def]
-    """(parent, child) of each `TransformStamped` a `sendTransform` call publishes: a name stamped
-    before the call, a list of them, or a message built with keywords."""
+_PARAMETER_VALUE: Final = frozenset({"value", "string_value"})  # rclpy's Parameter.value, ParameterValue.string_value
+_VALUE_DEPTH: Final = 5
+
+
+class FrameValues:
+    """The frame id an expression of a module holds: an exact string (`frame_ids.frame_string`), or the
+    default the module declares for the ROS parameter it reads (`declare_parameter("odom_frame",
+    "odom")` then `get_parameter("odom_frame").value`, `rospy.get_param("~frame_id", "base_link")`),
+    through local names and `self` attributes whose every store agrees. A default comes with the
+    parameter's name: a launch or parameter file of the project may set it (`settled`)."""
+
+    def __init__(self, facts) -> None:  # type: ignore[no-untyped-def]
+        self.facts = facts
+        self.index = facts.index
+        self._declared: dict[str, set[str | None]] | None = None
+
+    def frames(self, roles: dict[str, ast.expr], wanted: tuple[str, ...]) -> tuple[tuple[str | None, ...], tuple[tuple[str, str], ...]]:
+        """The frame of each wanted role (None where unknown), and (role, parameter) for those that are defaults."""
+        frames: list[str | None] = []
+        parameters: list[tuple[str, str]] = []
+        for role in wanted:
+            node = roles.get(role)
+            frame, parameter = self.frame(node) if node is not None else (None, None)
+            frames.append(frame)
+            if parameter is not None and frame is not None:
+                parameters.append((role, parameter))
+        return tuple(frames), tuple(parameters)
+
+    def frame(self, node: ast.expr, depth: int = _VALUE_DEPTH) -> tuple[str | None, str | None]:
+        """(frame, the parameter whose default it is, or None)."""
+        text = frame_string(node, self.index)
+        if text is not None:
+            return frame_name(text), None
+        if depth <= 0:
+            return None, None
+        if isinstance(node, Name):
+            value = resolve(self.index, node)
+            if isinstance(value, Name):  # a global the reading scope does not rebind
+                value = None if value.id in scope_of(self.index, value).bindings else module_constant(self.index, value.id)
+            return self.frame(value, depth - 1) if isinstance(value, ast.expr) and not isinstance(value, Name) else (None, None)
+        if isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id == "self":
+            stores = self.index.self_attribute_stores.get(node.attr, [])
+            found = {self.frame(value, depth - 1) if isinstance(value, ast.expr) else (None, None) for value in stores}
+            return found.pop() if len(found) == 1 else (None, None)
+        return self._parameter_default(node, depth)
+
+    def _parameter_default(self, node: ast.expr, depth: int) -> tuple[str | None, str | None]:
+        """The default of a parameter read: `<read>.value`, `<read>.get_parameter_value().string_value`,
+        or a read that returns the value itself (ROS 1's `get_param`)."""
+        read = node
+        if isinstance(read, Attribute) and read.attr in _PARAMETER_VALUE:
+            read = read.value
+            if isinstance(read, Call) and isinstance(read.func, Attribute) and read.func.attr == "get_parameter_value":
+                read = read.func.value
+            if isinstance(read, Name):
+                value = resolve(self.index, read)
+                read = value if isinstance(value, ast.expr) else read
+        elif not isinstance(read, Call):
+            return None, None
+        if not isinstance(read, Call):
+            return None, None
+        answer = tf_roles(self.facts, read)
+        if answer is None or "name" not in answer[1]:
+            return None, None
+        _, roles = answer
+        name = frame_string(roles["name"], self.index)
+        if name is None:
+            return None, None
+        if "default" in roles:
+            default = frame_string(roles["default"], self.index)
+        else:
+            defaults = self._declarations().get(parameter_key(name), set())
+            default = defaults.pop() if len(defaults) == 1 else None
+        return (frame_name(default), name) if default is not None else (None, None)
+
+    def _declarations(self) -> dict[str, set[str | None]]:
+        """parameter key -> the defaults the module declares for it (several: unknown)."""
+        if self._declared is None:
+            self._declared = {}
+            for node in self.index.nodes(Call):
+                answer = tf_roles(self.facts, node)
+                if answer is None:
+                    continue
+                roles = answer[1]
+                for name, default in _declared_pairs(roles, self.index):
+                    self._declared.setdefault(parameter_key(name), set()).add(default)
+        return {key: set(values) for key, values in self._declared.items()}
+
+
+def _declared_pairs(roles: dict[str, ast.expr], index) -> Iterator[tuple[str, str | None]]:  # type: ignore[no-untyped-def]
+    """(name, default text or None) of each parameter a call declares with a default."""
+    if "name" in roles and "default" in roles:
+        name = frame_string(roles["name"], index)
+        if name is not None:
+            yield name, frame_string(roles["default"], index)
+    declarations = roles.get("declarations")
+    if isinstance(declarations, (List, Tuple)):
+        namespace = frame_string(roles["namespace"], index) if "namespace" in roles else ""
+        for declaration in declarations.elts:
+            if isinstance(declaration, (List, Tuple)) and len(declaration.elts) >= 2:
+                name = frame_string(declaration.elts[0], index)
+                if name is not None and namespace is not None:
+                    yield f"{namespace}.{name}" if namespace else name, frame_string(declaration.elts[1], index)
+
+
+def _published_messages(argument: ast.expr, call: Call, values: FrameValues, stamps: StampedFrames) -> Iterator[tuple[dict[str, str | None], tuple[tuple[str, str], ...]]]:
+    """({"parent": ..., "child": ...}, parameters) of each `TransformStamped` a `sendTransform` call
+    publishes: a name stamped before the call, a list of them, or a message built with keywords."""
     for message in argument.elts if isinstance(argument, (List, Tuple)) else [argument]:
+        roles: dict[str, ast.expr] = {}
         if isinstance(message, Name):
-            yield (
-                _frame(stamps.frame_before(message, call, PARENT_PATH), index),
-                _frame(stamps.frame_before(message, call, CHILD_PATH), index),
-            )
+            for role, path in (("parent", PARENT_PATH), ("child", CHILD_PATH)):
+                stamped = stamps.frame_before(message, call, path)
+                if stamped is not None:
+                    roles[role] = stamped
         elif isinstance(message, Call):  # `TransformStamped(header=Header(frame_id="map"), child_frame_id="odom")`
             keywords = {keyword.arg: keyword.value for keyword in message.keywords if keyword.arg}
             header = keywords.get("header")
-            header_keywords = {keyword.arg: keyword.value for keyword in header.keywords} if isinstance(header, Call) else {}
-            yield _frame(header_keywords.get("frame_id"), index), _frame(keywords.get("child_frame_id"), index)
-        else:
-            yield None, None
+            header_keywords = {keyword.arg: keyword.value for keyword in header.keywords if keyword.arg} if isinstance(header, Call) else {}
+            roles = {role: value for role, value in (("parent", header_keywords.get("frame_id")), ("child", keywords.get("child_frame_id"))) if value is not None}
+        (parent, child), parameters = values.frames(roles, ("parent", "child"))
+        yield {"parent": parent, "child": child}, parameters
 
 
 def _launched(kb: KnowledgeBase, roles: dict[str, ast.expr], index) -> Executable | None:  # type: ignore[no-untyped-def]
@@ -213,11 +338,12 @@ class _Element:
     parent: int  # the index of the enclosing element, -1 at the root
 
 
-def _elements(text: str) -> list[_Element] | None:
-    """Every element of an XML text, in document order, with its line (expat, a real parser); None
-    when the text is not well-formed XML."""
+def _elements(text: str, keep_text: frozenset[str] = frozenset()) -> tuple[list[_Element], dict[int, str]] | None:
+    """Every element of an XML text, in document order, with its line (expat, a real parser), and the
+    text inside the elements whose tag is in `keep_text`; None when the text is not well-formed XML."""
     parser = xml.parsers.expat.ParserCreate()
     elements: list[_Element] = []
+    texts: dict[int, list[str]] = {}
     open_elements: list[int] = []
 
     def start(tag: str, attributes: dict[str, str]) -> None:
@@ -227,13 +353,19 @@ def _elements(text: str) -> list[_Element] | None:
     def end(tag: str) -> None:
         open_elements.pop()
 
+    def characters(data: str) -> None:
+        if open_elements and elements[open_elements[-1]].tag in keep_text:
+            texts.setdefault(open_elements[-1], []).append(data)
+
     parser.StartElementHandler = start
     parser.EndElementHandler = end
+    if keep_text:
+        parser.CharacterDataHandler = characters
     try:
         parser.Parse(text, True)
     except xml.parsers.expat.ExpatError:
         return None
-    return elements
+    return elements, {position: "".join(parts) for position, parts in texts.items()}
 
 
 def xml_frames(kb: KnowledgeBase, path: str, text: str) -> FileFrames:
@@ -241,12 +373,28 @@ def xml_frames(kb: KnowledgeBase, path: str, text: str) -> FileFrames:
     not parse)."""
     if len(text) > _MAX_XML_BYTES:
         return FileFrames()
-    elements = _elements(text)
-    if elements is None:
+    parsed = _elements(text, keep_text=frozenset({"rosparam"}))
+    if parsed is None:
         return FileFrames()
+    elements, texts = parsed
     if path.endswith(URDF_SUFFIXES) or any(element.tag == "robot" for element in elements[:1]):
         return FileFrames(tuple(_joints(elements, path)))
-    return FileFrames(tuple(_launched_publishers(kb, elements, path)))
+    return FileFrames(tuple(_launched_publishers(kb, elements, path)), parameters_set=_launch_parameters(elements, texts))
+
+
+def _launch_parameters(elements: list[_Element], texts: dict[int, str]) -> frozenset[str]:
+    """The parameters an XML launch file sets: `<param name=...>`, `<rosparam param=...>` and the keys
+    of a `<rosparam>`'s YAML text."""
+    found: set[str] = set()
+    for position, element in enumerate(elements):
+        if element.tag == "param" and "name" in element.attributes:
+            found.add(parameter_key(element.attributes["name"]))
+        elif element.tag == "rosparam":
+            if "param" in element.attributes:
+                found.add(parameter_key(element.attributes["param"]))
+            if "$(" not in texts.get(position, "$("):
+                found.update(yaml_keys(texts[position]))
+    return frozenset(found)
 
 
 def _joints(elements: list[_Element], path: str) -> Iterator[Published]:

@@ -4,7 +4,8 @@ one graph, which the frame-graph rules and `geolint frames` read.
 The project is the folder `project_files.project_root` gives for a linted file (the nearest one with a
 project marker, `.git` included), or the file's own folder. Its files are walked once per process
 and read only when their text can state something: a Python file that names one of the knowledge
-base's tf calls or launched executables, an XML launch file, a URDF or xacro file. What each file
+base's tf calls or launched executables, an XML launch file, a URDF or xacro file, and the launch and
+parameter files that set the parameters nodes read their frames from (`ros_parameters`). What each file
 states is remembered by its size and modification time, so a second question (another linted file
 of the same project, a warm run) reads only what changed.
 
@@ -25,6 +26,7 @@ from functools import lru_cache
 from typing import Final, Iterable
 
 from geolint.factbase.project_files import PACKAGE_MANIFEST, package_of_folder, project_root
+from geolint.factbase.ros_parameters import PARAMETER_FILE_SUFFIXES, launch_parameter_keys, may_launch, yaml_keys
 from geolint.factbase.tf_statements import (
     URDF_SUFFIXES,
     XML_LAUNCH_SUFFIXES,
@@ -32,6 +34,7 @@ from geolint.factbase.tf_statements import (
     LookedUp,
     Published,
     python_statements,
+    settled,
     xml_frames,
 )
 from geolint.knowledge import KnowledgeBase, knowledge_base
@@ -48,6 +51,7 @@ class TfGraph:
 
     published: list[Published] = field(default_factory=list)
     looked_up: list[LookedUp] = field(default_factory=list)
+    overridden: frozenset[str] = frozenset()  # the parameters the project's launch and parameter files set
 
     def __post_init__(self) -> None:
         self.parents: dict[str, dict[str, list[Published]]] = defaultdict(lambda: defaultdict(list))
@@ -77,10 +81,14 @@ class TfGraph:
 
 
 def graph_of(frames: Iterable[FileFrames]) -> TfGraph:
-    graph = TfGraph()
-    for file_frames in frames:
-        graph.published.extend(file_frames.published)
-        graph.looked_up.extend(file_frames.looked_up)
+    """One graph of the files' statements, each frame that is a parameter's default made unknown where
+    a launch or parameter file sets that parameter."""
+    files = list(frames)
+    overridden = frozenset().union(*(file_frames.parameters_set for file_frames in files))
+    graph = TfGraph(overridden=overridden)
+    for file_frames in files:
+        graph.published.extend(settled(edge, overridden) for edge in file_frames.published)
+        graph.looked_up.extend(settled(lookup, overridden) for lookup in file_frames.looked_up)
     graph.__post_init__()
     return graph
 
@@ -158,7 +166,7 @@ def _read_project(root: str) -> list[tuple[str, FileFrames]]:
     found = []
     for file in _candidate_files(root):
         frames = _frames_of_file(kb, file)
-        if frames.published or frames.looked_up:
+        if frames:
             found.append((file, frames))
     return found
 
@@ -181,7 +189,7 @@ def _candidate_files(root: str) -> list[str]:
         # a test folder's robot descriptions and launch files describe test set-ups, not the robot
         in_tests = any(part in _TEST_FOLDERS for part in os.path.relpath(parent, root).split(os.sep))
         for filename in sorted(filenames):
-            if filename.endswith(".py") or (not in_tests and filename.endswith((*URDF_SUFFIXES, *XML_LAUNCH_SUFFIXES))):
+            if filename.endswith(".py") or (not in_tests and filename.endswith((*URDF_SUFFIXES, *XML_LAUNCH_SUFFIXES, *PARAMETER_FILE_SUFFIXES))):
                 files.append(os.path.realpath(os.path.join(parent, filename)))
                 if len(files) >= _MAX_FILES:
                     return files
@@ -227,6 +235,11 @@ def _frames_of_file(kb: KnowledgeBase, file: str) -> FileFrames:
                     data = stream.read()
                 if _may_state(kb, data):
                     frames = python_file_frames(file, data.decode("utf-8", errors="replace"))
+                elif may_launch(file, data):
+                    frames = FileFrames(parameters_set=launch_parameter_keys(ast.parse(data, file)))
+        elif file.endswith(PARAMETER_FILE_SUFFIXES):
+            with open(file, "rb") as stream:
+                frames = FileFrames(parameters_set=yaml_keys(stream.read().decode("utf-8", errors="replace")))
         else:
             with open(file, "rb") as stream:
                 frames = xml_frames(kb, file, stream.read().decode("utf-8", errors="replace"))
@@ -246,12 +259,14 @@ def python_file_frames(path: str, source: str) -> FileFrames:
     tree = ast.parse(source, path)
     facts = FactBase(ModuleIndex(tree, source), Config(), path, cross_module=False)
     try:
-        return frames_of_statements(python_statements(facts, path))
+        statements = python_statements(facts, path)
     finally:
         facts.close()
+    parameters = launch_parameter_keys(tree) if may_launch(path, source.encode("utf-8", errors="replace")) else frozenset()
+    return frames_of_statements(statements, parameters)
 
 
-def frames_of_statements(statements) -> FileFrames:  # type: ignore[no-untyped-def]
+def frames_of_statements(statements, parameters_set: frozenset[str] = frozenset()) -> FileFrames:  # type: ignore[no-untyped-def]
     published = tuple(found.statement for found in statements if isinstance(found.statement, Published))
     looked_up = tuple(found.statement for found in statements if isinstance(found.statement, LookedUp))
-    return FileFrames(published, looked_up)
+    return FileFrames(published, looked_up, parameters_set)

@@ -23,7 +23,7 @@ ARRAY_ROOTS: Final = frozenset({"numpy", "np", "torch", "jax", "jnp", "cupy", "c
 _UNSTUBBED_THIRD_PARTY_ROOTS: Final = frozenset(
     {
         "numpy", "torch", "jax", "cupy", "math", "os", "sys", "re", "json", "typing", "collections",
-        "PIL", "matplotlib", "rospy", "rclpy", "tensorflow", "sklearn", "pandas", "yaml", "logging", "pathlib",
+        "PIL", "matplotlib", "tensorflow", "sklearn", "pandas", "yaml", "logging", "pathlib",
         "functools", "itertools",
     }
 )  # fmt: skip

@@ -36,6 +36,7 @@ class KnowledgeBase:
         self._extensions: dict[str, tuple[tuple[str, ...], str]] = {}
         self._names_reading: dict[tuple[str, str], frozenset[str]] = {}
         self._tf_apis: dict[str, list[Api]] = {}
+        self._parameter_apis: dict[str, list[Api]] = {}
         self._executables: dict[tuple[str, str], Executable] = {}
         for library in libraries:
             for name, target in library.extends.items():
@@ -50,6 +51,8 @@ class KnowledgeBase:
                     self._by_method.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
                 if _names_tf_frames(api):
                     self._tf_apis.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
+                if _names_ros_parameters(api):
+                    self._parameter_apis.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
             for executable in library.executables.values():
                 self._executables[(executable.package, executable.name)] = executable
 
@@ -85,6 +88,11 @@ class KnowledgeBase:
         launch a ROS executable (`LaunchNode`): tf's lookups and broadcasters are recognised by method name,
         on whatever object holds them."""
         return self._tf_apis.get(name, [])
+
+    def parameter_apis_named(self, name: str) -> list[Api]:
+        """The APIs with this last name that declare or read a ROS parameter (`RosParameter` markers):
+        recognised by method name too, as a node's `self.declare_parameter` is."""
+        return self._parameter_apis.get(name, [])
 
     def tf_names(self) -> list[str]:
         """Every name a file must contain to state something about tf: the tf APIs' last names and the
@@ -141,6 +149,14 @@ class KnowledgeBase:
             )
             self._names_reading[key] = found
         return found
+
+
+def _names_ros_parameters(api: Api) -> bool:
+    return any(
+        parameter.geometry is not None and parameter.geometry.ros_parameter is not None
+        for signature in api.signatures
+        for parameter in signature.parameters
+    )
 
 
 def _names_tf_frames(api: Api) -> bool:

@@ -22,6 +22,10 @@ with its meaning.
 - ``Annotated[str, LaunchNode.PACKAGE]`` (and ``EXECUTABLE``, ``ARGUMENTS``): the parts of a launch
   action that starts a ROS executable, whose command line a package's METADATA.toml may describe
   (``[executables.static_transform_publisher]``).
+- ``Annotated[str, RosParameter.NAME]`` (and ``DEFAULT``, ``DECLARATIONS``): a ROS parameter a call
+  declares or reads, and the default it declares (``node.declare_parameter("frame_id", "base_link")``,
+  ``rospy.get_param("~frame_id", "base_link")``); ``DECLARATIONS`` on a list of ``(name, default)``
+  tuples (rclpy's ``declare_parameters``), ``NAMESPACE`` on the prefix it puts before each name.
 """
 
 from __future__ import annotations
@@ -73,6 +77,15 @@ class LaunchNode:
     PACKAGE: Final = "package"
     EXECUTABLE: Final = "executable"
     ARGUMENTS: Final = "arguments"  # its command line, a list of strings
+
+
+class RosParameter:
+    """The parts of a call that declares or reads a ROS parameter, as `Annotated` metadata."""
+
+    NAME: Final = "name"
+    DEFAULT: Final = "default"  # the value the parameter has when nothing overrides it
+    DECLARATIONS: Final = "declarations"  # a list of (name, default[, descriptor]) tuples
+    NAMESPACE: Final = "namespace"  # put before each declared name, with a dot
 
 
 ROW_VECTORS: Final = "row vectors"

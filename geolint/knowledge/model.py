@@ -33,6 +33,7 @@ class Geometry:
     items: tuple[Geometry, ...] = ()  # the parts of a returned tuple
     tf_frame: str | None = None  # markers.TfFrame values: the role of a tf frame id (or of published transforms)
     launch_part: str | None = None  # markers.LaunchNode values: a part of a launched ROS executable
+    ros_parameter: str | None = None  # markers.RosParameter values: a part of a declared or read ROS parameter
 
 
 @dataclass(frozen=True)
@@ -147,3 +148,4 @@ class Library:
     # modules whose import makes the library's methods recognisable by name alone (its companions:
     # a node that imports tf2_geometry_msgs is handed a tf2 buffer)
     recognised_with: tuple[str, ...] = ()
+    ros_client: int | None = None  # 1 or 2: a ROS client library (a module that imports it is a ROS node)

@@ -76,6 +76,7 @@ def read_library(folder: Path) -> Library:
         extends={str(name): str(target) for name, target in metadata.get("extends", {}).items()},
         executables=_executables(metadata_path, metadata.get("executables", {})),
         recognised_with=tuple(str(name) for name in metadata.get("recognised_with", ())),
+        ros_client=int(metadata["ros_client"]) if "ros_client" in metadata else None,
     )
     for stub in sorted(folder.rglob("*.pyi")):
         relative = stub.relative_to(folder).with_suffix("")
@@ -285,7 +286,7 @@ class _ModuleReader:
 
 def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
     kind, camera_axes, row_vectors, stacked = base.kind, base.camera_axes, base.row_vectors, base.stacked
-    tf_frame, launch_part = base.tf_frame, base.launch_part
+    tf_frame, launch_part, ros_parameter = base.tf_frame, base.launch_part, base.ros_parameter
     for marker in markers:
         name = _last(marker)
         if name in _FRAMED and kind is None:  # `Annotated[PointCloud, PointArray]`: a library object that holds points
@@ -300,6 +301,8 @@ def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
             tf_frame = marker.attr.lower()
         elif isinstance(marker, ast.Attribute) and _last(marker.value) == "LaunchNode":
             launch_part = marker.attr.lower()
+        elif isinstance(marker, ast.Attribute) and _last(marker.value) == "RosParameter":
+            ros_parameter = marker.attr.lower()
     return Geometry(
         kind=kind,
         quaternion_order=base.quaternion_order,
@@ -312,6 +315,7 @@ def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
         items=base.items,
         tf_frame=tf_frame,
         launch_part=launch_part,
+        ros_parameter=ros_parameter,
     )
 
 

@@ -4,6 +4,7 @@ check`, and re-checked when another file of the workspace changes (the findings 
 
 from __future__ import annotations
 
+import ast
 import json
 import shutil
 import subprocess
@@ -12,7 +13,9 @@ from pathlib import Path
 
 import pytest
 
+from geolint.factbase.ros_parameters import launch_parameter_keys, yaml_keys
 from geolint.factbase.tf_statements import command_line_frames, xml_frames
+from geolint.factbase.tf_workspace import python_file_frames
 from geolint.knowledge import knowledge_base
 from geolint.rules.frames.geo214_tf_frame_never_published import _misspelt
 
@@ -139,3 +142,86 @@ def test_a_test_folders_robot_description_is_not_the_robots(tmp_path: Path) -> N
     )
     completed = geolint("check", "--no-cache", "--select", "GEO214", "--output-format", "concise", "src", cwd=workspace)
     assert "GEO214" in completed.stdout, completed.stdout + completed.stderr
+
+
+def frames_of(source: str, path: str = "node.py") -> list[tuple[str, str | None, str | None, tuple]]:
+    found = python_file_frames(path, source)
+    return [
+        (type(statement).__name__, *(getattr(statement, role) for role in roles), statement.parameters)
+        for statement, roles in [*((edge, ("parent", "child")) for edge in found.published), *((lookup, ("target", "source")) for lookup in found.looked_up)]
+    ]
+
+
+ROS2_NODE = """
+import rclpy
+from rclpy.node import Node
+from tf2_ros import Buffer, TransformBroadcaster
+from geometry_msgs.msg import TransformStamped
+
+class Odometry(Node):
+    def __init__(self):
+        super().__init__("odometry")
+        self.declare_parameter("odom_frame", "odom")
+        self.odom_frame = self.get_parameter("odom_frame").get_parameter_value().string_value
+        self.base_frame = self.declare_parameter("base_frame", "base_link").value
+        self.declare_parameters(namespace="sensors", parameters=[("laser", "laser_link"), ("rate", 10.0)])
+        self.buffer = Buffer()
+        self.broadcaster = TransformBroadcaster(self)
+
+    def tick(self):
+        t = TransformStamped()
+        t.header.frame_id = self.odom_frame
+        t.child_frame_id = self.base_frame
+        self.broadcaster.sendTransform(t)
+        laser = self.get_parameter("sensors.laser").value
+        return self.buffer.lookup_transform(self.base_frame, laser, rclpy.time.Time())
+"""
+
+
+def test_a_ros2_nodes_frames_come_from_its_declared_parameter_defaults() -> None:
+    assert frames_of(ROS2_NODE) == [
+        ("Published", "odom", "base_link", (("parent", "odom_frame"), ("child", "base_frame"))),
+        ("LookedUp", "base_link", "laser_link", (("target", "base_frame"), ("source", "sensors.laser"))),
+    ]
+
+
+def test_a_parameter_read_without_one_agreed_default_is_unknown() -> None:
+    source = ROS2_NODE.replace('self.declare_parameter("odom_frame", "odom")', 'self.declare_parameter("odom_frame", "odom")\n        self.declare_parameter("odom_frame", "world")')
+    assert frames_of(source)[0][1] is None  # two defaults
+    rebound = ROS2_NODE.replace("self.broadcaster = TransformBroadcaster(self)", "self.broadcaster = TransformBroadcaster(self)\n        self.base_frame = compute()")
+    assert frames_of(rebound)[0][2] is None  # `self.base_frame` also set to something else
+
+
+def test_a_ros1_nodes_frames_come_from_get_param_defaults() -> None:
+    source = "import rospy, tf\nlistener = tf.TransformListener()\nBASE = rospy.get_param('~base_frame', 'base_link')\n" "def run(now):\n    return listener.lookupTransform(BASE, rospy.get_param('/laser_frame', 'laser'), now)\n"
+    assert frames_of(source) == [("LookedUp", "base_link", "laser", (("target", "~base_frame"), ("source", "/laser_frame")))]
+
+
+def test_the_parameters_a_projects_launch_and_parameter_files_set() -> None:
+    assert yaml_keys("odometry:\n  ros__parameters:\n    base_frame: base_link\n    sensors.laser: laser\n---\n/robot/odom_frame: odom\n") == {
+        "odometry", "ros__parameters", "base_frame", "laser", "odom_frame",
+    }  # fmt: skip
+    assert yaml_keys("key: [unclosed") == frozenset()  # not YAML: sets nothing
+    launch = "from launch_ros.actions import Node\nNode(package='p', executable='e', parameters=['a.yaml', {'base_frame': 'base_link', 'use_sim_time': True}])\n"
+    assert launch_parameter_keys(ast.parse(launch)) == {"base_frame", "use_sim_time"}
+    xml = (
+        '<launch><node pkg="p" type="e"><param name="~odom_frame" value="odom"/><rosparam param="gains">[1, 2]</rosparam>'
+        "<rosparam>base_frame: base_link\nmap_frame: $(arg map)</rosparam></node></launch>"
+    )
+    assert xml_frames(knowledge_base(), "a.launch", xml).parameters_set == {"odom_frame", "gains"}  # the text with $(arg) is not read
+
+
+def test_a_parameter_the_project_sets_makes_its_default_unknown(tmp_path: Path) -> None:
+    """The clean workspace's odometry node declares defaults that the launch file and a parameter file
+    override; remove the overrides and its defaults are its frames, with GEO213 and GEO214 findings."""
+    workspace = tmp_path / "ros_ws"
+    shutil.copytree(ROOT / "fixtures" / "clean" / "ros_ws", workspace)
+    node = "src/fleet_nodes/fleet_nodes/odometry.py"
+    assert geolint("check", "--no-cache", node, cwd=workspace).returncode == 0
+    (workspace / "src/fleet_nodes/config/odometry.yaml").unlink()
+    launch = workspace / "src/fleet_nodes/launch/fleet.launch.py"
+    launch.write_text(launch.read_text().replace('{"camera_frame": "camera1_link"}', "{}"))
+    completed = geolint("check", "--no-cache", "--output-format", "concise", node, cwd=workspace)
+    codes = sorted(line.split(": ")[1].split()[0] for line in completed.stdout.splitlines() if ": GEO" in line)
+    assert codes == ["GEO213", "GEO214"], completed.stdout + completed.stderr
+    assert "'camera1_lnk' (the default of parameter 'camera_frame')" in completed.stdout

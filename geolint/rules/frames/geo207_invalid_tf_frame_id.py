@@ -15,6 +15,7 @@ from geolint.factbase import index_of, ros_packages
 from geolint.factbase.index import ModuleIndex, statement_list_fields
 from geolint.factbase.frame_ids import frame_string
 from geolint.factbase.pose_parts import call_name
+from geolint.knowledge import knowledge_base
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
 
@@ -219,7 +220,7 @@ class InvalidTfFrameId(AstRule):
             return TF2
         index = index_of(tree)
         imported = _imported_modules(index)
-        if not any(name == "rospy" or name.split(".")[0].endswith("_msgs") for name in imported):
+        if not any(_is_ros_client(name) or name.split(".")[0].endswith("_msgs") for name in imported):
             return None
         if _uses_old_tf(index, imported):
             return None  # `tf` code: Noetic's tf strips the slash itself (tf.cpp strip_leading_slash)
@@ -366,6 +367,11 @@ def _enclosing(node: AST, parents: dict[AST, AST], kinds: tuple[type, ...]) -> A
     while current is not None and not isinstance(current, kinds):
         current = parents.get(current)
     return current
+
+
+def _is_ros_client(module: str) -> bool:
+    library = knowledge_base().library_of_module(module)
+    return library is not None and library.ros_client is not None
 
 
 def _imported_modules(index: ModuleIndex) -> list[str]:

@@ -46,10 +46,16 @@ class TfFrameNeverPublished(TfTreeRule):
     The fix replaces the frame with the published one. It is unsafe: the frame may be published by a
     node outside the project (a driver) under the name the code uses.
 
+    A frame may come from a ROS parameter's declared default (`declare_parameter("imu_frame",
+    "imu_lnk")`, `rospy.get_param("~imu_frame", "imu_lnk")`), read through names and `self`
+    attributes; the default counts only when no launch file or parameter file of the project sets
+    that parameter (`<param>`, `<rosparam>`, a YAML key, a launch action's `parameters=[{...}]`).
+
     ## Known problems
     Only misspellings of frames the project itself publishes are found; a frame that nothing in the
     project names (published by a driver, a SLAM node, or under a parameter's name) is never
-    reported.
+    reported. Parameters are matched by the last part of their name, so a parameter set for another
+    node of the project under the same name also makes a default unknown.
     """
 
     code = "GEO214"
@@ -78,6 +84,15 @@ class TfFrameNeverPublished(TfTreeRule):
             message="`lookupTransform` asks for frame 'baselink', which nothing in the project publishes; did you mean 'base_link' (published at example.py:5)?",
             range=(6, 37, 6, 47),
         ),
+        Invalid(
+            "import rospy, tf\nbroadcaster = tf.TransformBroadcaster()\nlistener = tf.TransformListener()\n"
+            "base = rospy.get_param('~base_frame', 'base_lnk')\n"
+            "def run(p, q, now):\n    broadcaster.sendTransform(p, q, now, 'laser', 'base_link')\n"
+            "    return listener.lookupTransform(base, 'laser', now)\n",
+            message="`lookupTransform` asks for frame 'base_lnk' (the default of parameter '~base_frame'), which nothing in the "
+            "project publishes; did you mean 'base_link' (published at example.py:6)?",
+            range=(7, 12, 7, 56),
+        ),
     ]
 
     def check_tree(self, tree: ModuleTfTree) -> None:
@@ -88,7 +103,8 @@ class TfFrameNeverPublished(TfTreeRule):
             lookup = found.statement
             if not isinstance(lookup, LookedUp):
                 continue
-            for frame in (lookup.target, lookup.source):
+            defaults = dict(lookup.parameters)
+            for role, frame in (("target", lookup.target), ("source", lookup.source)):
                 if frame is None or frame in frames:
                     continue
                 close = sorted(known for known in frames if _misspelt(frame, known))
@@ -99,9 +115,11 @@ class TfFrameNeverPublished(TfTreeRule):
                 where = min(
                     (edge.child != close[0], edge.place) for edge in tree.graph.published if close[0] in (edge.parent, edge.child)
                 )[1]
+                parameter = defaults.get(role)
+                shown = f"{frame!r} (the default of parameter {parameter!r})" if parameter is not None else repr(frame)
                 self.report(
                     argument if argument is not None else found.call,
-                    f"`{lookup.how}` asks for frame {frame!r}, which nothing in the project publishes; did you mean "
+                    f"`{lookup.how}` asks for frame {shown}, which nothing in the project publishes; did you mean "
                     f"{close[0]!r} (published at {tree.where(where)})?",
                     replacement=repr(close[0]) if argument is not None else None,
                     applicability="unsafe",

@@ -8,7 +8,7 @@ import re
 from typing import ClassVar, Final
 
 from geolint.factbase.model import FactBase
-from geolint.factbase.tf_statements import Place, Published, PythonStatement, python_statements
+from geolint.factbase.tf_statements import Place, Published, PythonStatement, python_statements, settled
 from geolint.factbase.tf_workspace import TfGraph, frames_of_statements, graph_of, project_graph, project_of
 from geolint.knowledge import knowledge_base
 from geolint.rules.base import RuleTrigger
@@ -58,9 +58,13 @@ class ModuleTfTree:
         # a file on disk is judged with its project (its places named as the project's files are); a
         # snippet (an example, standard input) alone
         on_disk = os.path.isfile(facts.path)
-        self.statements: list[PythonStatement] = python_statements(facts, os.path.realpath(facts.path) if on_disk else facts.path)
-        own = frames_of_statements(self.statements)
-        self.graph: TfGraph = project_graph(facts.path, own) if on_disk and self.statements else graph_of([own])
+        statements = python_statements(facts, os.path.realpath(facts.path) if on_disk else facts.path)
+        own = frames_of_statements(statements)
+        self.graph: TfGraph = project_graph(facts.path, own) if on_disk and statements else graph_of([own])
+        # a frame that is the default of a parameter the project's launch files set is unknown here too
+        self.statements: list[PythonStatement] = [
+            PythonStatement(settled(found.statement, self.graph.overridden), found.call) for found in statements
+        ]
         self.root = project_of(facts.path) if on_disk else None
         self._path, self._own = facts.path, own
         self._whole: TfGraph | None = self.graph if self.statements or self.root is None else None
