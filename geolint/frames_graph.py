@@ -35,6 +35,7 @@ from geolint.render import FrameEdge, FrameGraph
 from geolint.factbase import tf_workspace, typed
 from geolint.factbase.conventions import naming_config, orders_for
 from geolint.factbase.model import DST_FIRST, SRC_FIRST
+from geolint.factbase.tf_statements import LookedUp, Published, settled
 from geolint.semantic.names import NameFrames, frames_of_name, order_dependent, same_frame
 
 MISMATCH_PREFIX = "GEO2"
@@ -410,17 +411,27 @@ def _stating_files(root: str) -> set[str]:
 def tf_tree_graph(root: str) -> FrameGraph:
     """The tf tree a project states (`geolint.factbase.tf_workspace`): what its nodes and launch files
     publish and its URDF joins, as edges parent -> child labelled with how; what its nodes look up as
-    dotted edges target -> source."""
+    dotted edges target -> source. A frame that is a parameter's default is drawn when nothing in the
+    project sets the parameter, and the label names it."""
+    files = tf_workspace.project_frames(root)
+    overridden = tf_workspace.graph_of(frames for _, frames in files).overridden
     edges = []
-    for file, frames in tf_workspace.project_frames(root):
+    for file, frames in files:
         shown = _shown_path(file, root)
-        for edge in frames.published:
+        for edge in (settled(published, overridden) for published in frames.published):
             if edge.parent is not None and edge.child is not None:
-                edges.append(FrameEdge(edge.parent, edge.child, edge.how, location=f"{shown}:{edge.place.line}"))
-        for lookup in frames.looked_up:
+                edges.append(FrameEdge(edge.parent, edge.child, _label(edge), location=f"{shown}:{edge.place.line}"))
+        for lookup in (settled(looked_up, overridden) for looked_up in frames.looked_up):
             if lookup.target is not None and lookup.source is not None:
-                edges.append(FrameEdge(lookup.target, lookup.source, lookup.how, location=f"{shown}:{lookup.place.line}", lookup=True))
+                edges.append(FrameEdge(lookup.target, lookup.source, _label(lookup), location=f"{shown}:{lookup.place.line}", lookup=True))
     return FrameGraph(edges=tuple(edges))
+
+
+def _label(statement: Published | LookedUp) -> str:
+    """How a statement is made, with the parameters whose defaults gave its frames."""
+    if not statement.parameters:
+        return statement.how
+    return f"{statement.how} (defaults of {', '.join(parameter for _, parameter in statement.parameters)})"
 
 
 def _shown_path(file: str, root: str) -> str:

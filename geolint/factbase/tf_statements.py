@@ -31,7 +31,7 @@ from typing import Any, Final, Iterable, Iterator, TypeVar
 from geolint.factbase.frame_ids import CHILD_PATH, PARENT_PATH, StampedFrames, frame_string
 from geolint.factbase.library_calls import knowledge, tf_roles
 from geolint.factbase.index import module_constant
-from geolint.factbase.reaching import resolve, scope_of
+from geolint.factbase.reaching import Unpacked, resolve, scope_of
 from geolint.factbase.ros_parameters import parameter_key, yaml_keys
 from geolint.knowledge import Executable, KnowledgeBase
 
@@ -188,7 +188,7 @@ class FrameValues:
         if depth <= 0:
             return None, None
         if isinstance(node, Name):
-            value = resolve(self.index, node)
+            value: ast.expr | Unpacked | None = resolve(self.index, node)
             if isinstance(value, Name):  # a global the reading scope does not rebind
                 value = None if value.id in scope_of(self.index, value).bindings else module_constant(self.index, value.id)
             return self.frame(value, depth - 1) if isinstance(value, ast.expr) and not isinstance(value, Name) else (None, None)

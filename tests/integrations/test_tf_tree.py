@@ -43,6 +43,8 @@ def test_the_graph_holds_every_kind_of_statement_of_a_ros2_workspace() -> None:
     assert ("camera_optical_frame", "dock_marker", False, False) in edges  # a list of messages
     assert edges[("base_link", "laserframe", True, False)]["label"] == "lookup_transform"  # dotted
     assert ("base_link", "odom", False, True) in edges  # GEO211's finding, red
+    # frames from parameters' declared defaults, which the label names
+    assert edges[("base_link", "imu_lnk", True, False)]["label"] == "lookup_transform (defaults of base_frame, imu_frame)"
     # a node's variable names (`laser_to_base = buffer.lookup_transform(...)`) draw nothing of their own
     assert not any(parent == "base" for parent, *_ in edges)
 
@@ -225,3 +227,9 @@ def test_a_parameter_the_project_sets_makes_its_default_unknown(tmp_path: Path) 
     codes = sorted(line.split(": ")[1].split()[0] for line in completed.stdout.splitlines() if ": GEO" in line)
     assert codes == ["GEO213", "GEO214"], completed.stdout + completed.stderr
     assert "'camera1_lnk' (the default of parameter 'camera_frame')" in completed.stdout
+    assert ("odom", "camera1_link", False, True) in drawn(workspace)  # the drawing settles the same way
+
+
+def test_the_drawing_leaves_out_a_default_the_project_overrides() -> None:
+    edges = drawn(ROOT / "fixtures" / "clean" / "ros_ws")
+    assert not any(child == "camera1_link" and parent == "odom" for parent, child, *_ in edges)
