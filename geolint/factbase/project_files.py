@@ -27,6 +27,17 @@ _PROJECT_MARKERS: Final = ("pyproject.toml", "setup.py", "setup.cfg", ".git")
 
 
 
+TEST_FOLDERS: Final = frozenset({"test", "tests"})
+
+
+def is_test_module(path: str) -> bool:
+    """Whether `path` is a test module: `test_*.py`, `*_test.py`, or a file in a `test` / `tests` folder
+    (give a path relative to the project, so that the folders above it do not count)."""
+    parts = path.replace("\\", "/").split("/")
+    name = parts[-1]
+    return name.startswith("test_") or name.endswith("_test.py") or any(part in TEST_FOLDERS for part in parts[:-1])
+
+
 def project_root(path: str) -> Path | None:
     """The nearest folder above `path`, symlinks resolved, that holds a project marker (pyproject.toml,
     setup.py, setup.cfg, .git): the project whose naming votes the file reads, and whose files one

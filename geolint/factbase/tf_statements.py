@@ -63,6 +63,7 @@ class Published:
     how: str  # "sendTransform", "static_transform_publisher", "URDF joint"...
     place: Place
     parameters: tuple[tuple[str, str], ...] = ()  # (role, parameter) for a frame that is a parameter's declared default
+    identity: bool = False  # a command line that publishes the identity transform (either way round the same)
 
 
 @dataclass(frozen=True)
@@ -144,7 +145,8 @@ def python_statements(facts, path: str) -> list[PythonStatement]:  # type: ignor
             if executable is not None:
                 arguments = _command_line(roles.get("arguments"), index)
                 parent, child = (None, None) if arguments is None else command_line_frames(executable, arguments)
-                found.append(PythonStatement(Published(parent, child, executable.name, place), node))
+                identity = arguments is not None and publishes_identity(executable, arguments)
+                found.append(PythonStatement(Published(parent, child, executable.name, place, identity=identity), node))
     return found
 
 
@@ -311,11 +313,41 @@ def command_line_frames(executable: Executable, arguments: Iterable[str | None])
         if role is not None:
             roles[role] = words[position + 1] if position + 1 < len(words) else None
     if roles:
-        return frame_name(roles.get("parent")), frame_name(roles.get("child"))
-    places = executable.positional.get(len(words))
-    if places is None:
-        return None, None
-    return frame_name(words[places[0]]), frame_name(words[places[1]])
+        parent, child = roles.get("parent"), roles.get("child")
+    else:
+        places = executable.positional.get(len(words))
+        if places is None:
+            return None, None
+        parent, child = words[places[0]], words[places[1]]
+    if _number(parent) is not None or _number(child) is not None:
+        return None, None  # a number where a frame goes: another program's command line (ROS 1 tf's period)
+    return frame_name(parent), frame_name(child)
+
+
+def publishes_identity(executable: Executable, arguments: Iterable[str | None]) -> bool:
+    """Whether a static transform publisher's command line gives the identity transform: every number
+    of the transform 0 (the words before the frames, or the values of its options), but a quaternion's
+    w, which is 1."""
+    words = list(arguments)
+    if "--ros-args" in words:
+        words = words[: words.index("--ros-args")]
+    if any(word in executable.options for word in words if word is not None):
+        values = {word: words[position + 1] if position + 1 < len(words) else None for position, word in enumerate(words) if word is not None and word.startswith("--")}
+        numbers = [(value, name == "--qw") for name, value in values.items() if name not in executable.options]
+    else:
+        places = executable.positional.get(len(words))
+        if places is None:
+            return False
+        transform = words[: min(places)]
+        numbers = [(value, len(transform) == 7 and position == 6) for position, value in enumerate(transform)]
+    return all(_number(value) == (1.0 if is_w else 0.0) for value, is_w in numbers)
+
+
+def _number(word: str | None) -> float | None:
+    try:
+        return float(word) if word is not None else None
+    except ValueError:
+        return None
 
 
 def _place_of(node: ast.AST, path: str) -> Place:
@@ -428,8 +460,10 @@ def _launched_publishers(kb: KnowledgeBase, elements: list[_Element], path: str)
         if executable is None:
             continue
         command = element.attributes.get("args")
-        parent, child = command_line_frames(executable, _words(command, arguments)) if command is not None else (None, None)
-        yield Published(parent, child, executable.name, Place(path, element.line, element.column))
+        words = _words(command, arguments) if command is not None else None
+        parent, child = command_line_frames(executable, words) if words is not None else (None, None)
+        identity = words is not None and publishes_identity(executable, words)
+        yield Published(parent, child, executable.name, Place(path, element.line, element.column), identity=identity)
 
 
 _UNKNOWN: Final = "\0"

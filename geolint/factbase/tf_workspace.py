@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Final, Iterable
 
-from geolint.factbase.project_files import PACKAGE_MANIFEST, package_of_folder, project_root
+from geolint.factbase.project_files import PACKAGE_MANIFEST, TEST_FOLDERS, is_test_module, package_of_folder, project_root
 from geolint.factbase.ros_parameters import PARAMETER_FILE_SUFFIXES, launch_parameter_keys, may_launch, yaml_keys
 from geolint.factbase.tf_statements import (
     URDF_SUFFIXES,
@@ -41,7 +41,6 @@ from geolint.knowledge import KnowledgeBase, knowledge_base
 
 _SKIPPED_FOLDERS: Final = frozenset({"node_modules", "__pycache__", "build", "devel", "install", "log", "site-packages"})
 _MAX_FILES: Final = 20000
-_TEST_FOLDERS: Final = frozenset({"test", "tests"})
 _MAX_PYTHON_BYTES: Final = 2_000_000
 
 
@@ -186,10 +185,12 @@ def _candidate_files(root: str) -> list[str]:
             for name in dirnames
             if not name.startswith(".") and name not in _SKIPPED_FOLDERS and not _another_tree(os.path.join(parent, name), root)
         )
-        # a test folder's robot descriptions and launch files describe test set-ups, not the robot
-        in_tests = any(part in _TEST_FOLDERS for part in os.path.relpath(parent, root).split(os.sep))
+        # a test's robot descriptions, launch files and nodes describe test set-ups, not the robot
+        folder = os.path.relpath(parent, root)
+        if any(part in TEST_FOLDERS for part in folder.split(os.sep)):
+            continue
         for filename in sorted(filenames):
-            if filename.endswith(".py") or (not in_tests and filename.endswith((*URDF_SUFFIXES, *XML_LAUNCH_SUFFIXES, *PARAMETER_FILE_SUFFIXES))):
+            if (filename.endswith(".py") and not is_test_module(filename)) or filename.endswith((*URDF_SUFFIXES, *XML_LAUNCH_SUFFIXES, *PARAMETER_FILE_SUFFIXES)):
                 files.append(os.path.realpath(os.path.join(parent, filename)))
                 if len(files) >= _MAX_FILES:
                     return files

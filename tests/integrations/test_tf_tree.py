@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from geolint.factbase.ros_parameters import launch_parameter_keys, yaml_keys
-from geolint.factbase.tf_statements import command_line_frames, xml_frames
+from geolint.factbase.tf_statements import command_line_frames, publishes_identity, xml_frames
 from geolint.factbase.tf_workspace import python_file_frames
 from geolint.knowledge import knowledge_base
 from geolint.rules.frames.geo214_tf_frame_never_published import _misspelt
@@ -65,12 +65,33 @@ def test_an_xml_launch_file_reads_its_arg_defaults() -> None:
         ("tf", "0 0 0 0 0 0 map odom 100", ("map", "odom")),
         ("tf", "0 0 0 0 0 0 1 map odom 100", ("map", "odom")),
         ("tf", "0 0 0 0 0 0 map odom", (None, None)),  # tf wants a period: no form has 8 arguments
+        ("tf2_ros", "0 0 0 0 0 0 map odom 10", (None, None)),  # tf's period under tf2_ros: '10' is no frame
     ],
 )
 def test_a_static_publishers_command_line_as_its_metadata_describes_it(package: str, arguments: str, expected: tuple) -> None:
     executable = knowledge_base().executable(package, "static_transform_publisher")
     assert executable is not None
     assert command_line_frames(executable, arguments.split()) == expected
+
+
+@pytest.mark.parametrize(
+    ("package", "arguments", "identity"),
+    [
+        ("tf2_ros", "0 0 0 0 0 0 map odom", True),
+        ("tf2_ros", "0 0 0 0 0 0 1 map odom", True),  # the quaternion's w is 1
+        ("tf2_ros", "0 0 0 0 0 0 0 map odom", False),
+        ("tf2_ros", "0.1 0 0 0 0 0 map odom", False),
+        ("tf2_ros", "--x 0 --yaw 0 --frame-id map --child-frame-id odom", True),
+        ("tf2_ros", "--qw 1 --frame-id map --child-frame-id odom", True),
+        ("tf2_ros", "--x 0.5 --frame-id map --child-frame-id odom", False),
+        ("tf", "0 0 0 0 0 0 map odom 100", True),  # the period is not part of the transform
+        ("tf", "0 0 0 0 0.3 0 map odom 100", False),
+    ],
+)
+def test_which_command_lines_publish_the_identity(package: str, arguments: str, identity: bool) -> None:
+    executable = knowledge_base().executable(package, "static_transform_publisher")
+    assert executable is not None
+    assert publishes_identity(executable, arguments.split()) is identity
 
 
 def test_a_file_that_is_not_xml_states_nothing() -> None:

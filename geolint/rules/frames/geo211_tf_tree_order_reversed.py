@@ -15,7 +15,9 @@ class TfTreeOrderReversed(TfTreeRule):
     `sendTransform(translation, rotation, time, child, parent)`, a `static_transform_publisher`
     started from a launch file) whose parent and child are both frames of REP 105's chain
     `earth → map → odom → base_link`, with the parent below the child (`base_link` → `odom`,
-    `odom` → `map`).
+    `odom` → `map`). A static publisher of the identity transform (all zeros) is not reported: it is
+    the same either way round, the stand-in tree of a benchmark or a simulator with no localization.
+    Nor is a test module (`test_*.py`, a `tests` folder), which sets up the tree it needs.
 
     ## Why is this bad?
     REP 105 fixes the tree every localization and navigation node expects: `map` is the parent of
@@ -66,6 +68,11 @@ class TfTreeOrderReversed(TfTreeRule):
             "def publish(self):\n    t = TransformStamped()\n    t.header.frame_id = 'camera_link'\n    t.child_frame_id = 'base_link'\n"
             "    self.broadcaster.sendTransform(t)\n"
         ),
+        Valid(  # the identity transform: the same either way round
+            "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+            "def generate_launch_description():\n    return LaunchDescription([Node(package='tf2_ros', executable='static_transform_publisher',\n"
+            "        arguments=['--x', '0', '--yaw', '0', '--frame-id', 'base_link', '--child-frame-id', 'map'])])\n"
+        ),
         Valid(  # a frame read from a parameter
             "import tf2_ros\nfrom geometry_msgs.msg import TransformStamped\n"
             "def publish(self):\n    t = TransformStamped()\n    t.header.frame_id = self.base_frame\n    t.child_frame_id = 'odom'\n"
@@ -87,7 +94,7 @@ class TfTreeOrderReversed(TfTreeRule):
         Invalid(
             "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
             "def generate_launch_description():\n    return LaunchDescription([Node(package='tf2_ros', executable='static_transform_publisher',\n"
-            "        arguments=['0', '0', '0', '0', '0', '0', 'base_link', 'odom'])])\n"
+            "        arguments=['0.2', '0', '0', '0', '0', '0', 'base_link', 'odom'])])\n"
         ),
     ]
 
@@ -95,6 +102,8 @@ class TfTreeOrderReversed(TfTreeRule):
         for found in tree.statements:
             edge = found.statement
             if not isinstance(edge, Published) or edge.parent is None or edge.child is None or not reverses_rep105(edge):
+                continue
+            if edge.identity:  # the same transform either way round: a stand-in tree, not a swapped one
                 continue
             hint = " (ROS 1 tf's `sendTransform` takes the child frame before the parent)" if len(found.call.args) >= 5 else " (parent and child swapped?)"
             self.report(

@@ -30,6 +30,7 @@ from ast import (
 )
 
 from geolint.factbase.index import ParamBinding
+from geolint.factbase.project_files import is_test_module
 from geolint.factbase.model import last_name, number, positional_args, string
 from geolint import knowledge
 from geolint.factbase import library_calls
@@ -396,7 +397,7 @@ class DegreesAsRadians(FactRule):
             too_big = [value for value in angles if abs(value) > _TWO_PI]
             if too_big and last_name(node.func) == "getQuaternionFromEuler" and not all(_round_degrees(value) for value in too_big):
                 too_big = []  # pybullet scene constants tuned by eye (FP20): only round angles are a degree slip
-            if too_big and _is_test_module(self.facts.path):
+            if too_big and is_test_module(self.facts.path):
                 too_big = []  # a test's literal angles are data: any number is a rotation
             if too_big:
                 shown = format_angle(too_big[0])
@@ -746,10 +747,3 @@ def _elements(node: ast.expr) -> list[ast.expr]:
     if isinstance(node, (ast.List, ast.Tuple)):
         return [found for element in node.elts for found in _elements(element)]
     return [node]
-
-
-def _is_test_module(path: str) -> bool:
-    """Whether `path` is a test module: `test_*.py`, `*_test.py`, or a file in a `test` / `tests` folder."""
-    parts = path.replace("\\", "/").split("/")
-    name = parts[-1]
-    return name.startswith("test_") or name.endswith("_test.py") or any(part in ("test", "tests") for part in parts[:-1])
