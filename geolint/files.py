@@ -227,9 +227,20 @@ def _gitignore_matcher(lines: tuple[str, ...]) -> Callable[[str], bool]:
         if pattern.include is None:
             continue  # a comment or a blank line
         if pattern.include is not True or pattern.regex is None:
-            return lambda relative: bool(spec.match_file(relative))
+            return _negating_matcher(spec, lines)
         searches.append(pattern.regex.search)
     return lambda relative: any(search(relative) is not None for search in searches)
+
+
+def _negating_matcher(spec, lines: tuple[str, ...]) -> Callable[[str], bool]:  # type: ignore[no-untyped-def]
+    """For a `.gitignore` that negates: a folder (`relative` ends in "/") is decided by the last pattern
+    that matches it, as git does (`*` then `!src/` keeps `src/`; pathspec's GitIgnoreSpec lets `*`, which
+    matches the name itself, win over a folder pattern); a file by GitIgnoreSpec, whose rule that a file
+    under an excluded folder stays excluded matters for files named one by one."""
+    import pathspec
+
+    folders = pathspec.PathSpec.from_lines("gitwildmatch", lines)
+    return lambda relative: bool(folders.match_file(relative) if relative.endswith("/") else spec.match_file(relative))
 
 
 @dataclass

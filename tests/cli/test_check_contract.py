@@ -134,6 +134,17 @@ def test_default_excludes_and_gitignore(cli):
     assert json.loads(forced.stdout) == []
 
 
+def test_a_gitignore_that_ignores_everything_but_what_it_names(cli):
+    """`*` then `!driver/` and `!*.py` keeps the driver's modules, as git does (`git check-ignore`
+    agrees); a folder it does not name stays out, and so does a file under an ignored folder."""
+    cli.write(".gitignore", "*\n!.gitignore\n!*.py\n!driver/\n!driver/nodes/\n")
+    cli.write("driver/nodes/node.py", "x = bad_thing\n")
+    cli.write("driver/build/gen.py", "x = bad_thing\n")
+    cli.write("setup.py", "x = bad_thing\n")
+    result = cli("check", "--format", "json")
+    assert sorted({f["path"] for f in json.loads(result.stdout)}) == ["driver/nodes/node.py", "setup.py"]
+
+
 def test_stub_files_are_linted(cli):
     cli.write("types.pyi", "bad_thing: int\n")
     result = cli("check", "--format", "json")
