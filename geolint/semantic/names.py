@@ -259,7 +259,15 @@ def _frames_of_name(name: str, naming, known: frozenset[str] = frozenset()) -> N
     return readings.pop() if len(readings) == 1 else None
 
 
+# words that read like frames but name something else: encodings (`image_to_base64`), and acronyms
+# of the `A2B` shape (`I2C` a bus, `A2C` a learning algorithm, `P2P`, `E2E`)
+_NOT_FRAMES: Final = frozenset({"base16", "base32", "base64", "base85"})
+_ACRONYMS: Final = frozenset({"I2C", "A2C", "P2P", "B2B", "B2C", "E2E", "M2M", "D2D", "S2S", "V2V", "V2X"})
+
+
 def _is_known_frame(word: str, known: frozenset[str]) -> bool:
+    if word.lower() in _NOT_FRAMES:
+        return False
     if re.fullmatch(_MONOGRAM_FRAME, word):
         return True  # `A2B`, `p_W`: one capital letter is a frame by convention
     stem = word.lower().rstrip("0123456789") or word.lower()
@@ -283,7 +291,7 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
     if len(raw) == 3:
         yield from _three_word_readings(raw, naming, known)
     if len(raw) == 1 and naming.to_style:
-        match = _TO_STYLE_COMPACT.match(name)
+        match = None if name in _ACRONYMS else _TO_STYLE_COMPACT.match(name)
         if match and _is_known_frame(match.group(1), known) and _is_known_frame(match.group(2), known):
             yield NameFrames(dst=match.group(2).lower(), src=match.group(1).lower(), operator="unknown")
     if len(raw) == 2 and naming.suffix:

@@ -70,6 +70,9 @@ def test_extra_names_from_config() -> None:
         ("cam_to_world", NameFrames(dst="world", src="cam", operator="unknown")),
         ("cam2world", NameFrames(dst="world", src="cam", operator="unknown")),
         ("A2B", NameFrames(dst="b", src="a", operator="unknown")),
+        ("I2C", None),  # a bus, not frames I and C
+        ("A2C", None),  # a learning algorithm
+        ("image_to_base64", None),  # an encoding
         ("p_world", NameFrames(frame="world")),
         ("p_BQ", NameFrames(frame="b")),
         ("point_in_cam", NameFrames(frame="cam")),
