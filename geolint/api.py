@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Callable, Collection, Iterator, Sequence
 
 from geolint import config as config_module
-from geolint import engine
+from geolint import engine, history
 from geolint.cache import DiscoveryCache, FindingsCache, ImportsCache, VotesCache, content_hash, default_cache_dir
 from geolint.config import ConfigError, config_root
 from geolint.factbase import conventions, ros_packages, tf_workspace
@@ -160,7 +160,7 @@ def lint_paths(
             digest = imports.file_digest(key, own)
             # and what its project's declarations say about names: one added elsewhere changes its findings
             naming = conventions.project_key(str(source.path)) + ros_packages.package_key(str(source.path)) + pins_key(str(source.path))
-            naming += tf_workspace.workspace_key(str(source.path), data)
+            naming += tf_workspace.workspace_key(str(source.path), data) + history.history_key(str(source.path), config)
             if naming:
                 digest = hashlib.blake2b(f"{digest}:{naming}".encode(), digest_size=16).hexdigest()
             cached = cache.get(source.real_path(), digest, source.display) if cache is not None else None

@@ -248,6 +248,32 @@ def _positive_int(value: Any, source: Path | None, key: str) -> int:
     return value
 
 
+def _boolean(value: Any, source: Path | None, key: str) -> bool:
+    if not isinstance(value, bool):
+        raise ConfigError(source, key, f"must be true or false, got {_describe(value)}")
+    return value
+
+
+def _known_fixes(value: Any, source: Path | None, key: str) -> tuple[tuple[str, str, str], ...]:
+    """`[{ before = "...", after = "...", reason = "..." }, ...]`: each a statement of one line that parses."""
+    from geolint.history.fix_edits import parse_statement
+
+    if not isinstance(value, list):
+        raise ConfigError(source, key, f"must be a list of tables with `before` and `after`, got {_describe(value)}")
+    found = []
+    for position, item in enumerate(value):
+        where = f"{key}[{position}]"
+        if not isinstance(item, dict) or set(item) - {"before", "after", "reason"} or not {"before", "after"} <= set(item):
+            raise ConfigError(source, where, "must be a table with `before`, `after` and an optional `reason`")
+        if not all(isinstance(text, str) for text in item.values()):
+            raise ConfigError(source, where, "`before`, `after` and `reason` must be strings")
+        for part in ("before", "after"):
+            if parse_statement(item[part]) is None:
+                raise ConfigError(source, f"{where}.{part}", f"must be one Python statement on one line, got {item[part]!r}")
+        found.append((item["before"], item["after"], item.get("reason", "")))
+    return tuple(found)
+
+
 _READERS: dict[str, Callable[[Any, Path | None, str], Any]] = {
     "select": _selectors,
     "extend_select": _selectors,
@@ -262,6 +288,9 @@ _READERS: dict[str, Callable[[Any, Path | None, str], Any]] = {
     "severity": _severity,
     "max_file_size": _positive_int,
     "max_nesting_depth": _positive_int,
+    "history": _boolean,
+    "history_limit": _positive_int,
+    "known_fixes": _known_fixes,
 }
 
 

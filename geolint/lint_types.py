@@ -110,6 +110,10 @@ class Config:
     # Analysis limits (geolint.guards): a file past one gets a single GEO001 finding instead.
     max_file_size: int = 1_000_000  # characters
     max_nesting_depth: int = 150  # levels of the syntax tree
+    # The project's own fixes (geolint.history): shapes its git history fixed, and shapes it names
+    history: bool = False
+    history_limit: int = 1000  # commits read, newest first
+    known_fixes: tuple[tuple[str, str, str], ...] = ()  # (before, after, reason)
     source: Path | None = None
 
     def __hash__(self) -> int:  # mappings are not hashable; the repr is stable

@@ -61,6 +61,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-cache", action="store_true", help="neither read nor write the findings cache")
     parser.add_argument("--cache-dir", type=Path, metavar="DIR", help="where to keep the cache (default: <root>/.geolint_cache)")
     parser.add_argument("--force-exclude", action="store_true", help="apply excludes to files named on the command line too")
+    parser.add_argument("--history", action="store_true", default=None, help="also report copies of statements the repository's git history fixed elsewhere (GEO401)")
+    parser.add_argument("--history-limit", type=_positive_int, metavar="N", help="with --history: read at most the N newest commits (default: the config's, 1000)")
     fixing = parser.add_argument_group("fixes")
     fixing.add_argument("--fix", action="store_true", help="apply safe fixes in place (stdin: print the fixed text)")
     fixing.add_argument("--unsafe-fixes", action="store_true", help="with --fix or --diff, apply unsafe fixes too")
@@ -128,6 +130,7 @@ def check_once(args: argparse.Namespace) -> int:
     stats: dict[str, int] = {}
     try:
         groups = _groups(args, paths)
+        _read_histories(groups)
         if args.verbose:
             for config, _ in groups:
                 _note(f"config: {config.source or 'defaults (no [tool.geolint] found)'}")
@@ -144,6 +147,8 @@ def check_once(args: argparse.Namespace) -> int:
     if not results:
         _warn_nothing_found(paths)
     unchecked = _report_errors(results, args.verbose)
+    if not args.quiet:
+        _note_history(groups)
 
     fixed_codes: dict[str, Counter[str]] = {}
     if args.fix or args.diff:
@@ -172,6 +177,41 @@ def check_once(args: argparse.Namespace) -> int:
             f"time: {time.perf_counter() - started:.2f}s"
         )
     return _report(args, [f for result in results for f in result.findings], fixed_codes, unchecked)
+
+
+def _history_roots(groups: list[tuple[Config, list[SourceFile]]]) -> dict[str | None, Config]:
+    from geolint.history import repository_of_folder
+
+    roots: dict[str | None, Config] = {}
+    for config, files in groups:
+        if config.history and files:
+            roots.setdefault(repository_of_folder(os.path.dirname(os.path.abspath(files[0].path))), config)
+    return roots
+
+
+def _read_histories(groups: list[tuple[Config, list[SourceFile]]]) -> None:
+    """Read each repository's history once, before the workers start (they then find it cached)."""
+    from geolint.history.mining import history_of
+
+    for root, config in _history_roots(groups).items():
+        if root is not None:
+            history_of(root, config.history_limit)
+
+
+def _note_history(groups: list[tuple[Config, list[SourceFile]]]) -> None:
+    """Say when the history the run was asked to read is not there or is cut short (a shallow clone)."""
+    from geolint.history.mining import history_of
+
+    for root, config in _history_roots(groups).items():
+        if root is None:
+            _note("warning: --history: the files are not in a git repository; no fixes were read from history")
+            continue
+        found = history_of(root, config.history_limit)
+        if found.shallow:
+            _note(
+                f"warning: --history: {root} is a shallow clone ({found.commits_read} commits read); fixes in older commits are "
+                "not known (`git fetch --unshallow`, or `fetch-depth: 0` in CI)"
+            )
 
 
 # ---- which config for which file ----------------------------------------------------------------
@@ -238,6 +278,10 @@ def _with_command_line(args: argparse.Namespace, config: Config) -> Config:
         extend_select=parse_selector_list(args.extend_select) if args.extend_select else (),
         extend_ignore=parse_selector_list(args.ignore) if args.ignore else (),
     )
+    if args.history:
+        config = replace(config, history=True)
+    if args.history_limit is not None:
+        config = replace(config, history_limit=args.history_limit)
     if args.exclude:  # as ruff's --exclude: the command line's patterns instead of the config's
         config = replace(config, exclude=_patterns(args.exclude))
     if args.extend_exclude:

@@ -13,7 +13,7 @@ import sys
 import traceback
 from typing import Any, Callable
 
-from geolint import api
+from geolint import api, history
 from geolint.factbase import conventions, ros_packages, tf_workspace
 
 JOBS: dict[str, Callable[..., Any]] = {"lint_text": api.lint_text, "fix_text": api.fix_text}
@@ -33,6 +33,7 @@ def main() -> None:
         conventions.forget_project_totals()
         ros_packages.forget_packages()  # and what each ROS package's files say about its frame ids
         tf_workspace.forget_projects()  # and the tf tree each project's files state
+        history.forget()  # and each repository's HEAD (its mined fixes stay cached by commit)
         try:
             answer: tuple[str, Any] = ("ok", JOBS[function](*args, **kwargs))
         except Exception:

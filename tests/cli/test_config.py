@@ -83,7 +83,7 @@ def test_all_documented_keys_are_accepted_in_kebab_and_snake_case(cli):
         ('[tool.geolint.per-file-ignores]\n"tests/*" = "GEO1"', "per-file-ignores.tests/*"),
         # well-formed codes that name no rule: a typo must not turn geolint off in silence
         ('select = ["GEO999"]', "select"),
-        ('extend-select = ["GEO4"]', "extend-select"),
+        ('extend-select = ["GEO8"]', "extend-select"),
         ('ignore = ["GEO199"]', "ignore"),
         ('[tool.geolint.per-file-ignores]\n"tests/*" = ["GEO55"]', "per-file-ignores.tests/*"),
         ('[tool.geolint.severity]\nGEO999 = "warning"', "severity.GEO999"),

@@ -53,6 +53,7 @@ COVERED: dict[tuple[str, str, int], str] = {
     ("docs/linter.md", "Architecture", 0): "tests/engine/test_layers.py::test_the_architecture_section_names_modules_that_exist",
     ("docs/linter.md", "`geolint check`: command line and configuration", 0): "test_command_lines_run",
     ("docs/linter.md", "text", 0): ILLUSTRATION,  # sample output of the text format
+    ("docs/linter.md", "The project's own fixes: `--history`", 0): "tests/integrations/test_history.py::test_a_fix_in_one_copy_finds_the_others",
     ("docs/linter.md", "text", 1): "test_evidence_sample_is_what_geolint_prints",
     ("docs/linter.md", "Configuration: `[tool.geolint]`", 0): "test_geolint_config_snippets_are_accepted",
     ("docs/linter.md", "Suppressing a finding", 0): ILLUSTRATION,  # comment placements, not a program
