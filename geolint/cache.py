@@ -42,7 +42,7 @@ def content_hash(data: bytes) -> str:
 
 # The parts of the package whose code decides what a file's findings are.
 FINDINGS_SOURCES = (
-    "rules", "semantic", "factbase", "knowledge", "algebra.py", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py",
+    "rules", "semantic", "factbase", "knowledge", "history", "algebra.py", "engine.py", "suppression.py", "config.py", "lint_types.py", "_version.py",
     "files.py",  # which files a folder holds
 )  # fmt: skip
 

@@ -30,6 +30,8 @@ _TRANSPOSES: Final = frozenset({"T", "mT", "transpose", "t", "swapaxes"})
 _EXTRINSICS: Final = (("c2w", "w2c"), ("cam2world", "world2cam"), ("camera_to_world", "world_to_camera"), ("cam_to_world", "world_to_cam"))
 _CONJUGATES: Final = _INVERSES | frozenset({"conjugate", "conj", "quaternion_conjugate", "quaternion_inverse", "T"})
 _MIN_REORDERED: Final = 3
+# the statements a fix is matched as: one line of code each
+SIMPLE_STATEMENTS: Final = (ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Expr, ast.Return)
 
 
 def parse_statement(text: str) -> ast.stmt | None:
@@ -172,7 +174,8 @@ def _angle_unit(old: ast.AST, new: ast.AST) -> str | None:
 def _negated(old: ast.AST, new: ast.AST) -> str | None:
     for first, second in ((old, new), (new, old)):
         if isinstance(second, ast.UnaryOp) and isinstance(second.op, ast.USub) and shape_key(second.operand) == shape_key(first):
-            return "negated"
+            # a number's sign is a setting someone tuned (`mu = -6.` -> `mu = 6.`), not a term's direction
+            return None if isinstance(first, ast.Constant) else "negated"
     return None
 
 

@@ -5,8 +5,8 @@ followed); every hunk that replaces up to three lines by as many is paired line 
 that `fix_edits.fix_shape` calls a geometric fix becomes a `FixedShape`: the statement as it was
 before the fix, which no code of the project should still hold. The commit counts as a fix when its
 message says so (fix, wrong, bug, flip, order...) or it is small (a few changed lines); a shape that
-a later commit changed back, or that two commits changed in opposite directions, is dropped: the
-project's own history disagrees with itself.
+a later commit changed back, that two commits changed in opposite directions, or whose fixed
+statement is no longer in its file at HEAD is dropped: the project's own history disagrees with itself.
 
 What was mined is kept in `<repository>/.geolint_cache/history.json` by the commit it was read up to:
 a later run reads only the commits since (`git log OLD..HEAD`), and a rewritten history is read again.
@@ -14,6 +14,7 @@ a later run reads only the commits since (`git log OLD..HEAD`), and a rewritten 
 
 from __future__ import annotations
 
+import ast
 import json
 import os
 import re
@@ -22,11 +23,12 @@ import threading
 from dataclasses import asdict, dataclass
 from typing import Final, Iterator
 
-from geolint.history.fix_edits import fix_shape, parse_statement, shape_key
+from geolint.history.fix_edits import SIMPLE_STATEMENTS, fix_shape, parse_statement, shape_key
 
 DEFAULT_LIMIT: Final = 1000
 CACHE_VERSION: Final = 1
 _MAX_PAIRED_LINES: Final = 3
+_MAX_HUNK_LINES: Final = 12
 _SMALL_COMMIT_LINES: Final = 6
 _FIX_WORDS: Final = re.compile(r"(?i)\b(?:fix\w*|wrong|bug\w*|flip\w*|order|swap\w*|revers\w*|invert\w*|correct\w*|broken|mistake|typo|sign)\b")
 _COMMIT: Final = "\x00"
@@ -67,13 +69,6 @@ def git(root: str, *arguments: str) -> str | None:
     return completed.stdout if completed.returncode == 0 else None
 
 
-def repository_of(path: str) -> str | None:
-    """The top folder of the git work tree holding `path`, or None."""
-    folder = path if os.path.isdir(path) else os.path.dirname(os.path.abspath(path))
-    found = git(folder, "rev-parse", "--show-toplevel")
-    return found.strip() or None if found is not None else None
-
-
 _lock = threading.Lock()
 _known: dict[tuple[str, int], History] = {}
 
@@ -108,8 +103,8 @@ def _read(root: str, head: str, limit: int, cache: bool) -> History:
     else:
         edits, commits = _mine(root, head, limit)
     if cache:
-        _save(root, limit, {"version": CACHE_VERSION, "head": head, "commits": commits, "edits": [asdict(edit) for edit in edits]})
-    return History(_agreed(edits), head, shallow, commits)
+        _save(root, limit, {"version": CACHE_VERSION, "geolint": _reader_key(), "head": head, "commits": commits, "edits": [asdict(edit) for edit in edits]})
+    return History(_still_fixed(root, _agreed(edits)), head, shallow, commits)
 
 
 def _agreed(edits: list[FixedShape]) -> tuple[FixedShape, ...]:
@@ -120,6 +115,28 @@ def _agreed(edits: list[FixedShape]) -> tuple[FixedShape, ...]:
         if edit.shape and edit.key not in reverted and edit.key not in found:
             found[edit.key] = edit
     return tuple(found.values())
+
+
+def _still_fixed(root: str, shapes: tuple[FixedShape, ...]) -> tuple[FixedShape, ...]:
+    """The fixes whose fixed statement is still in their file: one that a later change undid (a
+    revert, code restored wholesale) says the project went back on it."""
+    statements: dict[str, set[str]] = {}
+    kept = []
+    for shape in shapes:
+        if shape.path not in statements:
+            statements[shape.path] = _statement_keys(os.path.join(root, shape.path))
+        if shape.after_key in statements[shape.path]:
+            kept.append(shape)
+    return tuple(kept)
+
+
+def _statement_keys(path: str) -> set[str]:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as stream:
+            tree = ast.parse(stream.read(), path)
+    except (OSError, SyntaxError, ValueError, RecursionError, MemoryError):
+        return set()
+    return {shape_key(node) for node in ast.walk(tree) if isinstance(node, SIMPLE_STATEMENTS)}
 
 
 def _mine(root: str, revisions: str, limit: int) -> tuple[list[FixedShape], int]:
@@ -133,9 +150,7 @@ def _mine(root: str, revisions: str, limit: int) -> tuple[list[FixedShape], int]
         changed = sum(len(removed) + len(added) for _, _, removed, added in hunks)
         says_fix = bool(_FIX_WORDS.search(subject)) or changed <= _SMALL_COMMIT_LINES
         for path, line, removed, added in hunks:
-            if len(removed) != len(added) or len(removed) > _MAX_PAIRED_LINES:
-                continue
-            for offset, (old, new) in enumerate(zip(removed, added)):
+            for old, new, new_line in _paired(removed, added, line):
                 before, after = parse_statement(old), parse_statement(new)
                 if before is None or after is None:
                     continue
@@ -145,8 +160,41 @@ def _mine(root: str, revisions: str, limit: int) -> tuple[list[FixedShape], int]
                     continue
                 if shape is not None and not says_fix:
                     continue  # a large commit that does not say it fixes: a refactor, no evidence either way
-                edits.append(FixedShape(shape_key(before), shape or "", old.strip(), new.strip(), shape_key(after), commit, subject, path, line + offset))
+                edits.append(FixedShape(shape_key(before), shape or "", old.strip(), new.strip(), shape_key(after), commit, subject, path, new_line))
     return edits, commits
+
+
+def _paired(removed: list[str], added: list[str], first_line: int) -> Iterator[tuple[str, str, int]]:
+    """(old line, new line, its line number) of a hunk's edits: line by line when as many lines of code
+    went as came, else each removed assignment with the added one to the same target (a fix that also
+    added comments and a conversion after it)."""
+    old_code = [text for text in removed if _is_code(text)]
+    new_code = [(text, first_line + position) for position, text in enumerate(added) if _is_code(text)]
+    if not old_code or len(old_code) > _MAX_PAIRED_LINES or len(new_code) > _MAX_HUNK_LINES:
+        return
+    if len(old_code) == len(new_code):
+        yield from ((old, new, number) for old, (new, number) in zip(old_code, new_code))
+        return
+    for old in old_code:
+        target = _target(old)
+        if target is None:
+            continue
+        for new, number in new_code:
+            if _target(new) == target:
+                yield old, new, number
+                break
+
+
+def _is_code(text: str) -> bool:
+    stripped = text.strip()
+    return bool(stripped) and not stripped.startswith("#")
+
+
+def _target(text: str) -> str | None:
+    statement = parse_statement(text)
+    if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+        return shape_key(statement.targets[0])
+    return None
 
 
 def _commits(text: str) -> Iterator[tuple[str, str, list[tuple[str, int, list[str], list[str]]]]]:
@@ -179,7 +227,15 @@ def _load(root: str, limit: int) -> dict | None:  # type: ignore[type-arg]
             stored = json.load(stream)
     except (OSError, ValueError):
         return None
-    return stored if isinstance(stored, dict) and stored.get("version") == CACHE_VERSION else None
+    if not isinstance(stored, dict) or stored.get("version") != CACHE_VERSION or stored.get("geolint") != _reader_key():
+        return None  # another geolint classified these edits
+    return stored
+
+
+def _reader_key() -> str:
+    from geolint.cache import package_fingerprint
+
+    return package_fingerprint()
 
 
 def _save(root: str, limit: int, data: dict) -> None:  # type: ignore[type-arg]

@@ -72,6 +72,22 @@ def test_a_fix_in_one_copy_finds_the_others(repository: Path) -> None:
     assert (repository / "envs/mara_v2.py").read_text() == ENVIRONMENT.replace(BUGGY, FIXED)
 
 
+def test_a_fix_that_also_adds_comments_and_lines(repository: Path) -> None:
+    """The real shape of such commits: the old line commented out, the fix, and more code after it."""
+    path = repository / "envs/mara_v0.py"
+    path.write_text(
+        path.read_text().replace(
+            BUGGY,
+            "    # this is wrong: the difference of two quaternions is no rotation\n"
+            "    # quat_error = current_quaternion - tgt_quaternion\n\n"
+            + FIXED
+            + "    quat_error = quaternion.as_float_array(quat_error)\n",
+        )
+    )
+    commit(repository, "fixes rew")
+    assert codes(geolint("--history", "--no-cache", ".", cwd=repository)) == ["envs/mara_v1.py", "envs/mara_v2.py"]
+
+
 def test_the_history_is_read_once_and_then_only_its_new_commits(repository: Path) -> None:
     fix(repository / "envs/mara_v0.py")
     commit(repository, "fixes rew")
@@ -163,6 +179,7 @@ def test_the_config_turns_it_on_and_names_fixes(repository: Path) -> None:
         ("vy = twist.y", "vy = -twist.y", "negated"),
         ("C = c2w[:3, 3]", "C = w2c[:3, 3]", "extrinsics direction"),
         ("e = q1 - q2", "e = quaternion_multiply(q1, quaternion_inverse(q2))", "difference for relative rotation"),
+        ("mu = -6.0", "mu = 6.0", None),  # a tuned number, not a direction
         ("x = f(a, b)", "x = f(a, b, c)", None),  # an argument added
         ("speed = old_speed", "speed = new_speed", None),  # a rename
         ("e = a - b", "e = a * b", None),  # no inverse: not a relative rotation

@@ -3,15 +3,14 @@
 from __future__ import annotations
 
 import ast
-from ast import AnnAssign, Assign, AugAssign, Expr, Return
+from ast import Module
 from typing import Final
 
 from geolint.history import FixedShape, fixed_shapes
-from geolint.history.fix_edits import shape_key
+from geolint.history.fix_edits import SIMPLE_STATEMENTS, shape_key
 from geolint.lint_types import Config
 from geolint.rules.base import AstRule, Invalid, Valid
 
-_SIMPLE: Final = (Assign, AugAssign, AnnAssign, Expr, Return)
 _KNOWN: Final = {"known-fixes": [{"before": "error = current - target", "after": "error = current * target.conjugate()", "reason": "quaternions compare by their relative rotation"}]}
 
 
@@ -68,7 +67,7 @@ class UnfixedCopy(AstRule):
     A statement matches only as a whole and by its names (a copy that renamed a variable is not
     found); an edit counts as a fix when its commit message says so or the commit is small, so a
     small refactor of one of these shapes can be read as a fix. A shape the history also changed
-    back is never reported. A shallow clone (CI's default) holds few commits: `geolint check` says
+    back, or whose fixed statement is gone from its file, is never reported. A shallow clone (CI's default) holds few commits: `geolint check` says
     so; fetch the history (`fetch-depth: 0`) to use it.
     """
 
@@ -91,13 +90,13 @@ class UnfixedCopy(AstRule):
         ),
     ]
 
-    def check(self, tree: ast.Module) -> None:
+    def check(self, tree: Module) -> None:
         shapes = fixed_shapes(self.context.path, self.context.config)
         if not shapes:
             return
         source = self.context.source
         for node in ast.walk(tree):
-            if not isinstance(node, _SIMPLE):
+            if not isinstance(node, SIMPLE_STATEMENTS):
                 continue
             fixed = shapes.get(shape_key(node))
             if fixed is None:
