@@ -116,15 +116,25 @@ class StampedFrames:
         self.index = index
         # (scope id, owner name, attribute path) -> [(position, value)] in source order
         self.stores: dict[tuple[int, str, tuple[str, ...]], list[tuple[tuple[int, int], ast.expr]]] = {}
+        # (attribute, attribute path) -> values, for a message kept on `self` (`self.t.header.frame_id = ...`)
+        self.self_stores: dict[tuple[str, tuple[str, ...]], list[ast.expr]] = {}
         for node in index.nodes(Assign):
             assert isinstance(node, Assign)
             if len(node.targets) != 1:
                 continue
             owner, path = _owner_and_path(node.targets[0])
+            if owner == "self" and len(path) > 1 and path[1:] in STAMP_PATHS:
+                self.self_stores.setdefault((path[0], path[1:]), []).append(node.value)
             if owner is None or path not in STAMP_PATHS:
                 continue
             key = (id(scope_of(index, node)), owner, path)
             self.stores.setdefault(key, []).append(((node.lineno, node.col_offset), node.value))
+
+    def frame_of_attribute(self, attribute: str, path: tuple[str, ...]) -> ast.expr | None:
+        """The value every `self.<attribute>.<path> = value` of the module sets, when there is one store
+        (a message built once in `__init__` and sent from a callback)."""
+        values = self.self_stores.get((attribute, path), [])
+        return values[0] if len(values) == 1 else None
 
     def frame_before(self, owner: Name, call: ast.AST, path: tuple[str, ...]) -> ast.expr | None:
         """The value of the last `owner.<path> = value` before `call` in its function, set on the object

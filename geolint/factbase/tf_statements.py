@@ -269,6 +269,11 @@ def _published_messages(argument: ast.expr, call: Call, values: FrameValues, sta
                 stamped = stamps.frame_before(message, call, path)
                 if stamped is not None:
                     roles[role] = stamped
+        elif isinstance(message, Attribute) and isinstance(message.value, Name) and message.value.id == "self":
+            for role, path in (("parent", PARENT_PATH), ("child", CHILD_PATH)):
+                stamped = stamps.frame_of_attribute(message.attr, path)
+                if stamped is not None:
+                    roles[role] = stamped
         elif isinstance(message, Call):  # `TransformStamped(header=Header(frame_id="map"), child_frame_id="odom")`
             keywords = {keyword.arg: keyword.value for keyword in message.keywords if keyword.arg}
             header = keywords.get("header")

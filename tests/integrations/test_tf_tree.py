@@ -254,3 +254,17 @@ def test_a_parameter_the_project_sets_makes_its_default_unknown(tmp_path: Path) 
 def test_the_drawing_leaves_out_a_default_the_project_overrides() -> None:
     edges = drawn(ROOT / "fixtures" / "clean" / "ros_ws")
     assert not any(child == "camera1_link" and parent == "odom" for parent, child, *_ in edges)
+
+
+def test_a_transform_kept_on_self_and_sent_from_a_callback() -> None:
+    source = (
+        "from geometry_msgs.msg import TransformStamped\nfrom tf2_ros import TransformBroadcaster\n\n"
+        "class Odometry:\n    def __init__(self, node):\n        self.broadcaster = TransformBroadcaster(node)\n"
+        "        self.transform = TransformStamped()\n        self.transform.header.frame_id = 'odom'\n"
+        "        self.transform.child_frame_id = 'base_footprint'\n\n"
+        "    def on_wheels(self, x):\n        self.transform.transform.translation.x = x\n        self.broadcaster.sendTransform(self.transform)\n"
+    )
+    assert frames_of(source) == [("Published", "odom", "base_footprint", ())]
+    # stamped in two places: which one is sent is not known here
+    twice = source.replace("        self.transform.transform.translation.x = x\n", "        self.transform.header.frame_id = 'world'\n")
+    assert frames_of(twice) == [("Published", None, "base_footprint", ())]
