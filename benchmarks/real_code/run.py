@@ -194,10 +194,10 @@ def match(seen: list[Seen], ledger: list[Entry]) -> tuple[list[tuple[Seen, Entry
 # --------------------------------------------------------------------------- linting
 
 
-def geolint_config(select: tuple[str, ...]):
+def geolint_config(select: tuple[str, ...], own_fixes: bool = False):
     from geolint.lint_types import Config
 
-    return Config(select=select)
+    return Config(select=select, history=own_fixes)
 
 
 def non_empty_lines(text: str) -> int:
@@ -214,12 +214,12 @@ class RepoRun:
     errors: list[str] = field(default_factory=list)
 
 
-def lint_repo(repo: Repo, checkout: Path, select: tuple[str, ...], jobs: int) -> RepoRun:
+def lint_repo(repo: Repo, checkout: Path, select: tuple[str, ...], jobs: int, own_fixes: bool = False) -> RepoRun:
     from geolint import api
 
     run = RepoRun(repo)
     started = time.perf_counter()
-    results = list(api.lint_paths([checkout], geolint_config(select), jobs=jobs, use_cache=False))
+    results = list(api.lint_paths([checkout], geolint_config(select, own_fixes), jobs=jobs, use_cache=False))
     run.seconds = time.perf_counter() - started
     for result in results:
         location = result.location or Path(result.path)
@@ -261,7 +261,7 @@ def compare(args: argparse.Namespace) -> int:
             status = 2
             continue
         warn_if_not_pinned(repo, checkout)
-        run = lint_repo(repo, checkout, select, args.jobs)
+        run = lint_repo(repo, checkout, select, args.jobs, args.own_fixes)
         for error in run.errors:
             print(f"{repo.name}: geolint failed on {error}", file=sys.stderr)
             status = 2
@@ -620,6 +620,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--select", default=",".join(DEFAULT_SELECT))
     parser.add_argument("--only", help="comma-separated repository names (owner/repo or owner+repo)")
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--own-fixes", action="store_true", help="lint with `history = true`: GEO401 reads each checkout's git history (select GEO4)")
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--history", action="store_true", help="lint files before and after each candidate commit")
     mode.add_argument("--throughput", action="store_true", help="time geolint -j1/-j2, ruff and ast.parse on the corpus")

@@ -20,7 +20,7 @@ import os
 import re
 import subprocess
 import threading
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from typing import Final, Iterator
 
 from geolint.history.fix_edits import SIMPLE_STATEMENTS, fix_shape, parse_statement, shape_key
@@ -48,6 +48,7 @@ class FixedShape:
     subject: str
     path: str
     line: int
+    imports: tuple[str, ...] = ()  # the top-level modules the fixed file imports at HEAD
 
 
 @dataclass(frozen=True)
@@ -95,16 +96,20 @@ def _read(root: str, head: str, limit: int, cache: bool) -> History:
     edits: list[FixedShape] = []
     commits = 0
     if stored is not None and stored["head"] == head:
-        edits, commits = [FixedShape(**edit) for edit in stored["edits"]], int(stored["commits"])
+        edits, commits = [_edit(edit) for edit in stored["edits"]], int(stored["commits"])
     elif stored is not None and git(root, "merge-base", "--is-ancestor", stored["head"], head) is not None:
         new, read = _mine(root, f"{stored['head']}..{head}", limit)
-        edits = new + [FixedShape(**edit) for edit in stored["edits"]]
+        edits = new + [_edit(edit) for edit in stored["edits"]]
         commits = min(limit, read + int(stored["commits"]))
     else:
         edits, commits = _mine(root, head, limit)
     if cache:
         _save(root, limit, {"version": CACHE_VERSION, "geolint": _reader_key(), "head": head, "commits": commits, "edits": [asdict(edit) for edit in edits]})
     return History(_still_fixed(root, _agreed(edits)), head, shallow, commits)
+
+
+def _edit(stored: dict) -> FixedShape:  # type: ignore[type-arg]
+    return FixedShape(**{**stored, "imports": tuple(stored.get("imports", ()))})
 
 
 def _agreed(edits: list[FixedShape]) -> tuple[FixedShape, ...]:
@@ -118,25 +123,37 @@ def _agreed(edits: list[FixedShape]) -> tuple[FixedShape, ...]:
 
 
 def _still_fixed(root: str, shapes: tuple[FixedShape, ...]) -> tuple[FixedShape, ...]:
-    """The fixes whose fixed statement is still in their file: one that a later change undid (a
-    revert, code restored wholesale) says the project went back on it."""
-    statements: dict[str, set[str]] = {}
+    """The fixes whose fixed statement is still in their file (one that a later change undid, a revert
+    or code restored wholesale, says the project went back on it), with that file's imports."""
+    files: dict[str, tuple[set[str], tuple[str, ...]]] = {}
     kept = []
     for shape in shapes:
-        if shape.path not in statements:
-            statements[shape.path] = _statement_keys(os.path.join(root, shape.path))
-        if shape.after_key in statements[shape.path]:
-            kept.append(shape)
+        if shape.path not in files:
+            files[shape.path] = _statements_and_imports(os.path.join(root, shape.path))
+        statements, imports = files[shape.path]
+        if shape.after_key in statements:
+            kept.append(replace(shape, imports=imports))
     return tuple(kept)
 
 
-def _statement_keys(path: str) -> set[str]:
+def _statements_and_imports(path: str) -> tuple[set[str], tuple[str, ...]]:
     try:
         with open(path, encoding="utf-8", errors="replace") as stream:
             tree = ast.parse(stream.read(), path)
     except (OSError, SyntaxError, ValueError, RecursionError, MemoryError):
-        return set()
-    return {shape_key(node) for node in ast.walk(tree) if isinstance(node, SIMPLE_STATEMENTS)}
+        return set(), ()
+    return {shape_key(node) for node in ast.walk(tree) if isinstance(node, SIMPLE_STATEMENTS)}, tuple(sorted(imported_modules(tree)))
+
+
+def imported_modules(tree: ast.AST) -> set[str]:
+    """The top-level modules a module imports (absolute imports only)."""
+    found: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found.update(alias.name.partition(".")[0] for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            found.add(node.module.partition(".")[0])
+    return found
 
 
 def _mine(root: str, revisions: str, limit: int) -> tuple[list[FixedShape], int]:

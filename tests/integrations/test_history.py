@@ -72,6 +72,19 @@ def test_a_fix_in_one_copy_finds_the_others(repository: Path) -> None:
     assert (repository / "envs/mara_v2.py").read_text() == ENVIRONMENT.replace(BUGGY, FIXED)
 
 
+def test_no_fix_is_offered_where_the_names_may_hold_other_kinds(repository: Path) -> None:
+    """A copy that does not import numpy-quaternion holds arrays: `a * b.conjugate()` would multiply them
+    componentwise, so the finding comes without the fix."""
+    copy = repository / "envs/mara_v2.py"
+    copy.write_text(copy.read_text().replace("import quaternion\n", "import numpy as np\n"))
+    commit(repository, "v2 on arrays")
+    fix(repository / "envs/mara_v0.py")
+    commit(repository, "fixes rew")
+    completed = geolint("--history", "--no-cache", "--fix", "--unsafe-fixes", ".", cwd=repository)
+    assert codes(completed) == ["envs/mara_v2.py"]  # v1 fixed, v2 left with its finding
+    assert BUGGY in copy.read_text()
+
+
 def test_a_fix_that_also_adds_comments_and_lines(repository: Path) -> None:
     """The real shape of such commits: the old line commented out, the fix, and more code after it."""
     path = repository / "envs/mara_v0.py"

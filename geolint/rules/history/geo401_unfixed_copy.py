@@ -8,6 +8,7 @@ from typing import Final
 
 from geolint.history import FixedShape, fixed_shapes
 from geolint.history.fix_edits import SIMPLE_STATEMENTS, shape_key
+from geolint.history.mining import imported_modules
 from geolint.lint_types import Config
 from geolint.rules.base import AstRule, Invalid, Valid
 
@@ -57,7 +58,9 @@ class UnfixedCopy(AstRule):
 
     ## Fix safety
     The fix replaces the statement with the one the project's commit wrote, when the copy's text is
-    the same as the fixed line's was. It is unsafe: the copy may differ in what it needs.
+    the same as the fixed line's was and its module imports what the fixed file imports (the same
+    names may hold other kinds of values elsewhere: numpy arrays where the fix had quaternion
+    objects). It is unsafe: the copy may still differ in what it needs.
 
     ## Options
     `history` (default false), `history-limit` (commits read, newest first; default 1000),
@@ -95,6 +98,7 @@ class UnfixedCopy(AstRule):
         if not shapes:
             return
         source = self.context.source
+        imports = imported_modules(tree)
         for node in ast.walk(tree):
             if not isinstance(node, SIMPLE_STATEMENTS):
                 continue
@@ -102,11 +106,13 @@ class UnfixedCopy(AstRule):
             if fixed is None:
                 continue
             text = ast.get_source_segment(source, node)
-            same_text = text is not None and text.strip() == fixed.before
+            # the same text, in a module with the fixed file's imports (else its names may hold other kinds:
+            # numpy arrays where the fix had numpy-quaternion's objects)
+            applies = text is not None and text.strip() == fixed.before and imports.issuperset(fixed.imports)
             self.report(
                 node,
                 _message(fixed),
-                replacement=fixed.after if same_text else None,
+                replacement=fixed.after if applies else None,
                 applicability="unsafe",
                 fix_description=f"Write `{fixed.after}`",
             )
