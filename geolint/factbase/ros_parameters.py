@@ -21,6 +21,7 @@ PARAMETER_FILE_SUFFIXES: Final = (".yaml", ".yml")
 _MAX_PARAMETER_FILE_BYTES: Final = 1_000_000
 _MAX_KEYS: Final = 100_000
 _LAUNCH_WORDS: Final = (b"LaunchDescription", b"launch_ros")
+_LAUNCH_FILE: Final = re.compile(r"[._]launch\.py$")  # `bringup.launch.py`, `bringup_launch.py`
 
 try:  # libyaml's parser when PyYAML was built with it (most wheels), else the pure-Python one
     _Loader: type = yaml.CSafeLoader
@@ -63,7 +64,7 @@ def _keys(documents: Iterable[object]) -> Iterable[str]:
 
 def may_launch(path: str, data: bytes) -> bool:
     """Whether a Python file can be a launch file that sets parameters (a cheap test before parsing)."""
-    return b"parameters" in data and (path.endswith("launch.py") or any(word in data for word in _LAUNCH_WORDS))
+    return b"parameters" in data and (_LAUNCH_FILE.search(path) is not None or any(word in data for word in _LAUNCH_WORDS))
 
 
 def launch_parameter_keys(tree: ast.AST) -> frozenset[str]:

@@ -140,6 +140,14 @@ def python_statements(facts, path: str) -> list[PythonStatement]:  # type: ignor
                 stamps = StampedFrames(index)
             for stamped, parameters in _published_messages(roles["published"], node, values, stamps):
                 found.append(PythonStatement(Published(stamped.get("parent"), stamped.get("child"), how, place, parameters), node))
+        elif "command" in roles:  # `ExecuteProcess(cmd=["ros2", "run", "tf2_ros", "static_transform_publisher", ...])`
+            command = _command_line(roles["command"], index)
+            run = _ros_run(command) if command is not None else None
+            executable = kb.executable(run[0], run[1]) if run is not None else None
+            if executable is not None and run is not None:
+                parent, child = command_line_frames(executable, run[2])
+                identity = publishes_identity(executable, run[2])
+                found.append(PythonStatement(Published(parent, child, executable.name, place, identity=identity), node))
         elif "executable" in roles:
             executable = _launched(kb, roles, index)
             if executable is not None:
@@ -303,6 +311,30 @@ def _command_line(node: ast.expr | None, index) -> list[str | None] | None:  # t
     if isinstance(node, Call) and isinstance(node.func, Attribute) and node.func.attr == "split" and not node.args and not node.keywords:
         text = frame_string(node.func.value, index)
         return None if text is None else list(text.split())
+    return None
+
+
+def _ros_run(words: list[str | None]) -> tuple[str, str, list[str | None]] | None:
+    """(package, executable, its arguments) of `ros2 run PACKAGE EXECUTABLE ...`, `rosrun PACKAGE
+    EXECUTABLE ...` or an installed executable's path (`/opt/ros/humble/lib/PACKAGE/EXECUTABLE ...`);
+    None for another command."""
+    parts = (words[0] or "").split("/") if words else []
+    if len(parts) >= 3 and parts[-3] == "lib":
+        return parts[-2], parts[-1], words[1:]
+    for start in range(len(words)):
+        if words[start] == "rosrun":
+            rest = words[start + 1 :]
+        elif words[start] == "ros2" and start + 1 < len(words) and words[start + 1] == "run":
+            rest = words[start + 2 :]
+        else:
+            continue
+        options = 0
+        while options < len(rest) and (rest[options] or "").startswith("-"):
+            options += 1  # `ros2 run --prefix ...` style options before the package
+        package, executable = (rest[options : options + 2] + [None, None])[:2]
+        if package is None or executable is None:
+            return None
+        return package, executable, rest[options + 2 :]
     return None
 
 

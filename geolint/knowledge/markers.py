@@ -77,6 +77,7 @@ class LaunchNode:
     PACKAGE: Final = "package"
     EXECUTABLE: Final = "executable"
     ARGUMENTS: Final = "arguments"  # its command line, a list of strings
+    COMMAND: Final = "command"  # a whole process's command line: `ros2 run <package> <executable> ...`
 
 
 class RosParameter:

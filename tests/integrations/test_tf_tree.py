@@ -268,3 +268,20 @@ def test_a_transform_kept_on_self_and_sent_from_a_callback() -> None:
     # stamped in two places: which one is sent is not known here
     twice = source.replace("        self.transform.transform.translation.x = x\n", "        self.transform.header.frame_id = 'world'\n")
     assert frames_of(twice) == [("Published", None, "base_footprint", ())]
+
+
+def test_a_static_publisher_started_as_a_process() -> None:
+    source = (
+        "from launch import LaunchDescription\nfrom launch.actions import ExecuteProcess\n\n"
+        "def generate_launch_description():\n    return LaunchDescription([\n"
+        "        ExecuteProcess(cmd=['ros2', 'run', 'tf2_ros', 'static_transform_publisher', '0.1', '0', '0', '0', '0', '0', 'base_link', 'laser']),\n"
+        "        ExecuteProcess(cmd='rosrun tf static_transform_publisher 0 0 0 0 0 0 map odom 100'.split()),\n"
+        "        ExecuteProcess(cmd=['/opt/ros/humble/lib/tf2_ros/static_transform_publisher', '--frame-id', 'base_link', '--child-frame-id', 'imu']),\n"
+        "        ExecuteProcess(cmd=['ros2', 'launch', 'nav2_bringup', 'navigation_launch.py']),\n"
+        "    ])\n"
+    )
+    assert [(kind, parent, child) for kind, parent, child, _ in frames_of(source, "bringup.launch.py")] == [
+        ("Published", "base_link", "laser"),
+        ("Published", "map", "odom"),
+        ("Published", "base_link", "imu"),
+    ]

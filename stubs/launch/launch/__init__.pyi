@@ -1,0 +1,1 @@
+# launch/launch/__init__.py: `from . import actions` (ExecuteProcess is imported from launch.actions)
