@@ -67,7 +67,7 @@ def _mined_shapes(root: str, limit: int) -> dict[str, FixedShape]:
     with _lock:
         known = _mined.get(key)
     if known is None:
-        known = {shape.key: shape for shape in history_of(root, limit).shapes}
+        known = {shape.key: shape for shape in history_of(root, limit, head=head).shapes}
         with _lock:
             _mined[key] = known
     return known

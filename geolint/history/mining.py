@@ -74,12 +74,14 @@ _lock = threading.Lock()
 _known: dict[tuple[str, int], History] = {}
 
 
-def history_of(root: str, limit: int = DEFAULT_LIMIT, cache: bool = True) -> History:
-    """The fixed shapes of the repository at `root`, read at most once per process and HEAD."""
-    head = git(root, "rev-parse", "HEAD")
+def history_of(root: str, limit: int = DEFAULT_LIMIT, cache: bool = True, head: str | None = None) -> History:
+    """The fixed shapes of the repository at `root` (whose HEAD the caller may know already), read at
+    most once per process and HEAD."""
     if head is None:
-        return History((), None)
-    head = head.strip()
+        asked = git(root, "rev-parse", "HEAD")
+        if asked is None:
+            return History((), None)
+        head = asked.strip()
     with _lock:
         known = _known.get((root, limit))
     if known is not None and known.head == head:
