@@ -42,6 +42,7 @@ from geolint.factbase.declarations import declared_call_frames
 from geolint.factbase.fact_types import DST_FIRST, SRC_FIRST
 from geolint.factbase.syntax import statements_under
 from geolint.factbase.project_files import project_root
+from geolint.knowledge import MONOGRAM, knowledge_base
 from geolint.lint_types import Config
 from geolint.parsing import parse_module
 from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS, NameFrames, is_frame
@@ -66,7 +67,7 @@ class Votes:
     declared_src: int = 0
     composed_dst: int = 0
     composed_src: int = 0
-    drake_modules: int = 0  # modules that import pydrake: Drake's monogram names (`X_WB`) read as frames
+    monogram_modules: int = 0  # modules that import a library named in monogram notation (Drake: `X_WB` read as frames)
     tf2_modules: int = 0  # modules that import tf2 (`ros_packages`: a ROS 1 package's frame ids are tf2's)
 
     def __add__(self, other: Votes) -> Votes:
@@ -75,7 +76,7 @@ class Votes:
             self.declared_src + other.declared_src,
             self.composed_dst + other.composed_dst,
             self.composed_src + other.composed_src,
-            self.drake_modules + other.drake_modules,
+            self.monogram_modules + other.monogram_modules,
             self.tf2_modules + other.tf2_modules,
         )
 
@@ -152,11 +153,16 @@ def votes_of_text(text: str) -> Votes:
     return Votes(composed_dst=dst, composed_src=src)
 
 
+def _names_monogram_library(source: str) -> bool:
+    """Whether the text names a library whose users name frames in monogram notation (Drake's `X_WB`)."""
+    return any(package in source for package in knowledge_base().packages_naming_frames(MONOGRAM))
+
+
 def votes_of_source(source: str, tree: Module | None = None, file: tuple[str, tuple[int, int]] | None = None) -> Votes:
     """What one module's text says; `file` (its path, size and mtime) lets a parse serve its lint too."""
     votes = votes_of_text(source) if "_" in source else Votes()
-    if "pydrake" in source:
-        votes = votes + Votes(drake_modules=1)
+    if _names_monogram_library(source):
+        votes = votes + Votes(monogram_modules=1)
     if "tf2_" in source and _TF2_IMPORT.search(source):
         votes = votes + Votes(tf2_modules=1)
     if any(word in source for word in _DECLARING):
@@ -237,7 +243,7 @@ def _votes_of_file(path: str) -> Votes:
         return Votes()
     text = data.decode("utf-8", errors="replace")
     votes = Votes()
-    if "pydrake" in text or "tf2_" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
+    if _names_monogram_library(text) or "tf2_" in text or "_" in text and ("from_frame" in text or "as_frames" in text or "lookup" in text or "T_" in text or "H_" in text or "X_" in text):
         whole = len(data) < _MAX_BYTES  # a truncated text is not the file's
         votes = votes_of_source(text, file=(path, (stat.st_size, stat.st_mtime_ns)) if whole else None)
     _file_votes[path] = (stat.st_mtime_ns, stat.st_size, votes)
@@ -257,7 +263,7 @@ def project_key(path: str) -> str:
     if root is None:
         return ""
     votes = project_votes(root)  # what the findings read of it, not the counts (an edited composition elsewhere)
-    return repr((votes.orders(), votes.mixed, votes.stated, bool(votes.drake_modules)))
+    return repr((votes.orders(), votes.mixed, votes.stated, bool(votes.monogram_modules)))
 
 
 def remembered_file_votes() -> dict[str, list[int]]:
@@ -280,17 +286,17 @@ class NameReading(NamedTuple):
     orders: tuple[str, ...]  # the readings of `T_a_b` names left open
     mixed: bool  # both orders declared: a `T_a_b` name alone says nothing
     stated: bool  # the convention is stated (config, or declarations in one order): names alone are evidence
-    drake: bool = False  # the project imports pydrake: monogram names (`X_WB`, `p_BQ`) are frames
+    monogram: bool = False  # the project imports a library named in monogram notation (Drake): `X_WB`, `p_BQ` are frames
 
 
 def naming_config(config: Config, reading: NameReading) -> Config:
     """`config` with the monogram convention decided for this file: as configured, else on in Drake projects."""
     if config.naming.monogram is not None:
         return config
-    key = (id(config), reading.drake)
+    key = (id(config), reading.monogram)
     decided = _decided_configs.get(key)
     if decided is None or decided[0] is not config:  # one copy per run's config, not one per file
-        decided = _decided_configs[key] = (config, replace(config, naming=replace(config.naming, monogram=reading.drake)))
+        decided = _decided_configs[key] = (config, replace(config, naming=replace(config.naming, monogram=reading.monogram)))
     return decided[1]
 
 
@@ -301,12 +307,12 @@ def orders_for(path: str, source: str, tree: Module, setting: str = "auto") -> N
     """How this file's `T_a_b` names read: the config's order, or what the project's code says."""
     root = project_root(path) if os.path.isfile(path) else None
     votes = project_votes(root) if root is not None else votes_of_source(source, tree)
-    drake = bool(votes.drake_modules) or "pydrake" in source
+    monogram = bool(votes.monogram_modules) or _names_monogram_library(source)
     if setting == DST_FIRST:
-        return NameReading((DST_FIRST,), False, True, drake)
+        return NameReading((DST_FIRST,), False, True, monogram)
     if setting == SRC_FIRST:
-        return NameReading((SRC_FIRST,), False, True, drake)
-    return NameReading(votes.orders(), votes.mixed, votes.stated, drake)
+        return NameReading((SRC_FIRST,), False, True, monogram)
+    return NameReading(votes.orders(), votes.mixed, votes.stated, monogram)
 
 
 def learned_aliases(tree: Module, source: str, orders: tuple[str, ...]) -> dict[str, str]:

@@ -45,7 +45,7 @@ def _kind(facts: FactBase, node: AST) -> Kind | None:
         attr = node.attr
         if attr in ("T", "mT"):
             return kind_of(facts, node.value)
-        if attr in messages.VECTOR_FIELD_NAMES:  # `odometry.twist.twist.linear`: the message type says
+        if attr in messages.vector_field_names():  # `odometry.twist.twist.linear`: the message type says
             declared = facts.shared(messages.MessageTypes).field_kind(node)
             if declared is not None:
                 return declared
@@ -290,41 +290,6 @@ def _evidence(facts: FactBase, node: AST) -> bool:
 
 def _evidence_of_bindings(facts: FactBase, name: str, bindings: Sequence[Binding], order: str = "") -> bool:
     return any(isinstance(binding, ast.expr) and has_geometric_evidence(facts, binding) for binding in bindings)
-
-
-# -- library transforms ------------------------------------------------------------------
-def translating_library_object(facts: FactBase, node: AST) -> str | None:
-    """"PyKDL.Frame" or "spatialmath.SE3" when `node` is one (built directly, through a
-    variable, or returned by a helper of this module): `*` with them translates vectors."""
-    return facts.cached("library", node, _library_object)
-
-
-def _library_object(facts: FactBase, node: AST) -> str | None:
-    if isinstance(node, Name):
-        return facts.of_bindings("variable library", node, _library_object_of_bindings)
-    if isinstance(node, BinOp) and isinstance(node.op, Mult):
-        left, right = translating_library_object(facts, node.left), translating_library_object(facts, node.right)
-        return left if left is not None and left == right else None  # SE3 * SE3 is an SE3
-    if not isinstance(node, Call):
-        return None
-    qualified = facts.qualified_name(node.func) or ""
-    parts = qualified.split(".")
-    if parts[-1] == "Frame" and (parts[0] in ("PyKDL", "kdl") or "PyKDL" in parts):
-        return "PyKDL.Frame"
-    if "SE3" in parts and parts[0] in ("spatialmath", "SE3") and parts[-1] != "inv":
-        return "spatialmath.SE3"
-    if isinstance(node.func, Name) and node.func.id in facts.index.functions:
-        scope = facts.index.scopes.get(facts.index.functions[node.func.id])
-        if scope is not None and scope.returns:
-            found = {translating_library_object(facts, value) for value in scope.returns}
-            return found.pop() if len(found) == 1 else None
-    return None
-
-
-def _library_object_of_bindings(facts: FactBase, name: str, bindings: Sequence[Binding], order: str = "") -> str | None:
-    values = [b for b in bindings if isinstance(b, ast.expr)]
-    found = {translating_library_object(facts, b) for b in values}
-    return found.pop() if len(found) == 1 and len(bindings) == len(values) else None
 
 
 def valid_kind(outcome: algebra.Outcome | None) -> Kind | None:

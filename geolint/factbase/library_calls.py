@@ -345,16 +345,18 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
     if isinstance(node, Call):
         api = called_api(facts, node)
         if api is None:
-            return None
+            return _returned_by_helper(facts, node, depth)
         if api.is_class:
             return api.qualified_name
         return agreed(library_call(facts, node), lambda bound: _returned(bound).type_name)
     if isinstance(node, Name):
         return _type_of_name(facts, node, depth)
-    if isinstance(node, BinOp) and isinstance(node.op, Mult):  # `r1 * r2`: what the left class's `__mul__` returns
-        left = _library_type(facts, node.left, depth - 1)
-        product = knowledge(facts).api(f"{left}.__mul__") if left is not None else None
-        returned = {(signature.returns or Geometry()).type_name for signature in product.signatures} if product is not None else set()
+    if isinstance(node, BinOp) and isinstance(node.op, Mult):  # `r1 * r2`: what the left class's `__mul__` returns for r2
+        product = _product(facts, node.left, depth - 1)
+        if product is None:
+            return None
+        right = _library_type(facts, node.right, depth - 1)
+        returned = {(signature.returns or Geometry()).type_name for signature in product.signatures if _takes_type(facts, signature, right)}
         return returned.pop() if len(returned) == 1 else None
     if isinstance(node, Attribute) and (held := _attribute_api(facts, node, depth)) is not None:
         return held[1].type_name  # `q.inverse`: a property that returns another library object
@@ -362,6 +364,45 @@ def _library_type(facts: FactBase, node: AST, depth: int) -> str | None:
         stores = facts.index.self_attribute_stores.get(node.attr, [])  # `self.volume = ScalableTSDFVolume(...)`
         return _one_type(facts, stores, depth) if all(isinstance(value, ast.expr) for value in stores) else None
     return None
+
+
+def _returned_by_helper(facts: FactBase, call: Call, depth: int) -> str | None:
+    """`make_pose(q) * offset`: a function of this module every `return` of which is one library type."""
+    if not isinstance(call.func, Name) or call.func.id not in facts.index.functions:
+        return None
+    scope = facts.index.scopes.get(facts.index.functions[call.func.id])
+    return _one_type(facts, scope.returns, depth) if scope is not None and scope.returns else None
+
+
+def _product(facts: FactBase, node: AST, depth: int) -> Api | None:
+    """The `__mul__` of `node`'s library class."""
+    owner = _library_type(facts, node, depth)
+    return knowledge(facts).api(f"{owner}.__mul__") if owner is not None else None
+
+
+def _takes_type(facts: FactBase, signature: Signature, class_name: str | None) -> bool:
+    """Whether an operator overload takes an operand of this library class (None: not a library object)."""
+    operand = next((parameter.geometry for parameter in signature.parameters), None)
+    taken = knowledge(facts).api(operand.type_name) if operand is not None and operand.type_name is not None else None
+    return class_name is not None and taken is not None and taken.qualified_name == class_name
+
+
+def translating_product(facts: FactBase, node: AST) -> str | None:
+    """The library class of `node` when `node * value` moves `value` as a point, R p + t (PyKDL's `Frame`,
+    spatialmath's `SE3`): its `__mul__` is a transform's and takes points, by its stub. Named as the library
+    and the class (`PyKDL.Frame`, `spatialmath.SE3`)."""
+    product = _product(facts, node, _TYPE_DEPTH)
+    if product is None or not any(_translates_points(signature) for signature in product.signatures):
+        return None
+    owner = product.qualified_name.rpartition(".")[0]
+    return f"{owner.partition('.')[0]}.{owner.rpartition('.')[2]}"
+
+
+def _translates_points(signature: Signature) -> bool:
+    receiver = signature.receiver
+    return receiver is not None and receiver.kind is Kind.TRANSFORM and any(
+        parameter.geometry is not None and parameter.geometry.kind is Kind.POINT for parameter in signature.parameters
+    )
 
 
 def attribute_geometry(facts: FactBase, node: Attribute) -> tuple[Api, Geometry] | None:

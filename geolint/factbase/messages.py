@@ -10,6 +10,7 @@ resolved through the module's imports, so `q` alone, or an unimported `VehicleOd
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Final, TYPE_CHECKING
 
 import ast
@@ -19,72 +20,41 @@ from geolint.algebra import Kind
 from geolint.factbase.index import FUNCTION_NODES, ParamBinding
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.syntax import keyword, last_name, positional_args
-from geolint.factbase.rotations import SCALAR_FIRST
+from geolint.knowledge import SCALAR_LAST, Geometry, knowledge_base
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
 
-# px4_msgs (PX4's uORB topics on the ROS 2 bridge): every quaternion is Hamilton (w, x, y, z), PX4's
-# matrix::Quatf layout ("the order is q(w, x, y, z)" in VehicleAttitude.msg).
-MESSAGE_QUATERNION_FIELDS: Final[dict[str, dict[str, str]]] = {
-    "px4_msgs.msg.VehicleOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
-    "px4_msgs.msg.VehicleAttitude": {"q": SCALAR_FIRST, "delta_q_reset": SCALAR_FIRST},
-    "px4_msgs.msg.VehicleAttitudeSetpoint": {"q_d": SCALAR_FIRST},
-    "px4_msgs.msg.VehicleVisualOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
-    "px4_msgs.msg.VehicleMocapOdometry": {"q": SCALAR_FIRST, "q_offset": SCALAR_FIRST},
-}
-# The attribute names above: the one cheap test before any type is looked for.
-QUATERNION_FIELD_NAMES: Final = frozenset(field for fields in MESSAGE_QUATERNION_FIELDS.values() for field in fields)
-
-
-def _ros(package: str, fields: dict[str, dict[str, tuple[str | None, Kind | None]]]) -> dict[str, dict[str, tuple[str | None, Kind | None]]]:
-    def qualify(name: str | None) -> str | None:
-        return name if name is None or "." in name else f"geometry_msgs.msg.{name}"
-
-    return {f"{package}.msg.{cls}": {field: (qualify(held), kind) for field, (held, kind) in held_fields.items()} for cls, held_fields in fields.items()}
-
-
-# ROS geometry messages (the same Python names in ROS 1 and ROS 2): the message class each field holds,
-# and the kind of the 3-vectors among them. A Point is a position; the parts of a Twist, an Accel and a
-# Wrench are free vectors (velocities, accelerations, forces, torques), and so are a Vector3Stamped's
-# `vector` and an Imu's rates; a Transform's `translation` is a translation.
-MESSAGE_FIELDS: Final[dict[str, dict[str, tuple[str | None, Kind | None]]]] = {
-    **_ros("geometry_msgs", {
-        "PointStamped": {"point": ("Point", Kind.POINT)},
-        "Vector3Stamped": {"vector": ("Vector3", Kind.VECTOR)},
-        "Pose": {"position": ("Point", Kind.POINT), "orientation": ("Quaternion", None)},
-        "PoseStamped": {"pose": ("Pose", None)},
-        "PoseWithCovariance": {"pose": ("Pose", None)},
-        "PoseWithCovarianceStamped": {"pose": ("PoseWithCovariance", None)},
-        "Twist": {"linear": ("Vector3", Kind.VECTOR), "angular": ("Vector3", Kind.VECTOR)},
-        "TwistStamped": {"twist": ("Twist", None)},
-        "TwistWithCovariance": {"twist": ("Twist", None)},
-        "TwistWithCovarianceStamped": {"twist": ("TwistWithCovariance", None)},
-        "Accel": {"linear": ("Vector3", Kind.VECTOR), "angular": ("Vector3", Kind.VECTOR)},
-        "AccelStamped": {"accel": ("Accel", None)},
-        "Wrench": {"force": ("Vector3", Kind.VECTOR), "torque": ("Vector3", Kind.VECTOR)},
-        "WrenchStamped": {"wrench": ("Wrench", None)},
-        "Transform": {"translation": ("Vector3", Kind.TRANSLATION), "rotation": ("Quaternion", None)},
-        "TransformStamped": {"transform": ("Transform", None)},
-    }),
-    **_ros("nav_msgs", {"Odometry": {"pose": ("PoseWithCovariance", None), "twist": ("TwistWithCovariance", None)}}),
-    **_ros("sensor_msgs", {
-        "Imu": {
-            "orientation": ("Quaternion", None), "angular_velocity": ("Vector3", Kind.VECTOR),
-            "linear_acceleration": ("Vector3", Kind.VECTOR),
-        },
-        "MagneticField": {"magnetic_field": ("Vector3", Kind.VECTOR)},
-    }),
-}  # fmt: skip
-# The fields above that hold a 3-vector of known kind: the cheap test before a message class is looked for.
-VECTOR_FIELD_NAMES: Final = frozenset(field for fields in MESSAGE_FIELDS.values() for field, (_, kind) in fields.items() if kind is not None)
-_KNOWN_CLASSES = frozenset(MESSAGE_QUATERNION_FIELDS) | frozenset(MESSAGE_FIELDS)
 _MAX_DEPTH: Final = 8
+
+
+def _fields(cls: str | None) -> dict[str, Geometry]:
+    return knowledge_base().record_fields(cls) if cls else {}
+
+
+def quaternion_field_names() -> frozenset[str]:
+    """The record fields that hold a quaternion of known order (px4_msgs `VehicleOdometry.q`): the one cheap
+    test by attribute name before any type is looked for."""
+    return knowledge_base().record_field_names("quaternion_order")
+
+
+@lru_cache(maxsize=1)
+def quaternion_record_modules() -> tuple[str, ...]:
+    """The modules of the record classes that have such a field (`px4_msgs.msg`)."""
+    base = knowledge_base()
+    return tuple(sorted({cls.rpartition(".")[0] for cls in base.record_classes() if any(g.quaternion_order for g in base.record_fields(cls).values())}))
+
+
+def vector_field_names() -> frozenset[str]:
+    """The record fields that hold a 3-vector of known kind (`Twist.linear`): the cheap test before a
+    message class is looked for."""
+    return knowledge_base().record_field_names("kind")
 
 
 def field_order(cls: str | None, field: str) -> str | None:
     """The component order of quaternion field `field` of message class `cls`, or None."""
-    return MESSAGE_QUATERNION_FIELDS.get(cls or "", {}).get(field)
+    geometry = _fields(cls).get(field)
+    return geometry.quaternion_order if geometry is not None else None
 
 
 def short_name(cls: str) -> str:
@@ -94,6 +64,13 @@ def short_name(cls: str) -> str:
 def field_label(cls: str, field: str) -> str:
     """How a finding names a message field: "px4_msgs `VehicleOdometry.q`"."""
     return f"{cls.split('.', 1)[0]} `{short_name(cls)}.{field}`"
+
+
+def holds_quaternion_components(cls: str | None) -> bool:
+    """Whether `cls` is a record of a quaternion's four components, x, y, z and w, each a field of its own
+    (geometry_msgs' Quaternion): what is built empty and filled in component by component."""
+    api = knowledge_base().api(cls) if cls else None
+    return api is not None and api.is_class and any(signature.components == SCALAR_LAST for signature in api.signatures)
 
 
 class MessageTypes:
@@ -110,14 +87,14 @@ class MessageTypes:
 
     def field_kind(self, node: Attribute) -> Kind | None:
         """The kind of a message field's 3-vector (`msg.twist.twist.linear` of an Odometry: a free vector)."""
-        owner = self.class_of(node.value)
-        return None if owner is None else MESSAGE_FIELDS.get(owner, {}).get(node.attr, (None, None))[1]
+        geometry = _fields(self.class_of(node.value)).get(node.attr)
+        return geometry.kind if geometry is not None else None
 
     def _class(self, node: ast.expr) -> str | None:
         facts = self.facts
         if isinstance(node, Call):
             qualified = facts.qualified_name(node.func)
-            return qualified if qualified in _KNOWN_CLASSES and not node.args else None
+            return qualified if _fields(qualified) and not node.args else None
         if isinstance(node, Name):
             bound = facts.bindings(node) or []
             return _agreed([self._class_of_binding(binding) for binding in bound])
@@ -127,8 +104,8 @@ class MessageTypes:
             # the same name: reading `.q` from either would fail, so where `.q` is read it is the message
             return _agreed([self.class_of(store) for store in stores if not _has_no_fields(store)])
         if isinstance(node, Attribute):  # `msg.twist.twist`: the field's own message class
-            owner = self.class_of(node.value)
-            return None if owner is None else MESSAGE_FIELDS.get(owner, {}).get(node.attr, (None, None))[0]
+            geometry = _fields(self.class_of(node.value)).get(node.attr)
+            return geometry.type_name if geometry is not None else None
         return None
 
     def _class_of_binding(self, binding: object) -> str | None:
@@ -139,7 +116,7 @@ class MessageTypes:
         annotation = binding.arg.annotation
         if annotation is not None:
             qualified = self.facts.qualified_name(annotation)
-            return qualified if qualified in _KNOWN_CLASSES else None
+            return qualified if _fields(qualified) else None
         return self._callback_class(binding)
 
     def _callback_class(self, binding: ParamBinding) -> str | None:
@@ -169,7 +146,7 @@ class MessageTypes:
             name = _function_name(registered[1]) if registered is not None else None
             if registered is not None and name is not None:
                 qualified = facts.qualified_name(registered[0])
-                found.setdefault(name, set()).add(qualified if qualified in _KNOWN_CLASSES else None)
+                found.setdefault(name, set()).add(qualified if _fields(qualified) else None)
         for name in found.keys() & called:
             found[name].add(None)  # also called directly: its parameter may hold anything
         self._callbacks = found

@@ -30,7 +30,7 @@ from typing import Callable, Final, Sequence, TypeVar
 
 from geolint import algebra
 from geolint.algebra import Kind
-from geolint.factbase import calls, frames, homogeneous_forms, kinds, products, summaries, transform_blocks
+from geolint.factbase import calls, frames, homogeneous_forms, kinds, library_calls, products, summaries, transform_blocks
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.declarations import declared_call_frames
 from geolint.factbase.frames import EXTRINSICS_EVIDENCE
@@ -330,9 +330,10 @@ class FactBase:
 
     # -- library transforms ------------------------------------------------------------------
     def translating_library_object(self, node: AST) -> str | None:
-        """"PyKDL.Frame" or "spatialmath.SE3" when `node` is one (built directly, through a variable, or
-        returned by a helper of this module): `*` with them translates vectors."""
-        return kinds.translating_library_object(self, node)
+        """The library class of `node` (`PyKDL.Frame`, `spatialmath.SE3`) when `*` with it moves what it
+        multiplies as a point, R p + t (built directly, through a variable, or returned by a helper of this
+        module), by the stubs."""
+        return library_calls.translating_product(self, node)
 
     # -- frames ------------------------------------------------------------------------------
     def frames_of(self, node: AST, order: str = DST_FIRST) -> NameFrames | None:

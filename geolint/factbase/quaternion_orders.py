@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import LoopBinding, ParamBinding, UnpackBinding
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.messages import QUATERNION_FIELD_NAMES, MessageTypes, field_label, field_order
+from geolint.factbase.messages import MessageTypes, field_label, field_order, quaternion_field_names
 from geolint.factbase.syntax import is_full_slice, keyword, last_name, number, positional_args, string, subscript_parts, walk_within
 from geolint.factbase.quaternion_formulas import formula_reads_within
 from geolint.factbase.reaching import value_of
@@ -372,7 +372,7 @@ class QuaternionFlow:
         order = held[1].quaternion_order if held is not None else None
         if held is not None and order is not None:
             return Order(order, f"from {held[0].library}'s `{attr}`", batch=held[1].stacked)
-        if attr in QUATERNION_FIELD_NAMES:
+        if attr in quaternion_field_names():
             cls = self.messages.class_of(node.value)
             order = field_order(cls, attr)
             if cls is not None and order is not None:

@@ -12,11 +12,11 @@ from functools import lru_cache
 from pathlib import Path
 
 from geolint.knowledge.binding import Bound, agreed, bind
-from geolint.knowledge.model import DEGREES, RADIANS, SCALAR_FIRST, SCALAR_LAST, Api, Executable, Geometry, Library, Parameter, Signature
+from geolint.knowledge.model import DEGREES, MONOGRAM, RADIANS, SCALAR_FIRST, SCALAR_LAST, Api, Executable, Geometry, Library, Parameter, Signature
 from geolint.knowledge.reader import StubError, read_library
 
 __all__ = [
-    "DEGREES", "RADIANS", "SCALAR_FIRST", "SCALAR_LAST", "Api", "Bound", "Executable", "Geometry", "KnowledgeBase", "Library",
+    "DEGREES", "MONOGRAM", "RADIANS", "SCALAR_FIRST", "SCALAR_LAST", "Api", "Bound", "Executable", "Geometry", "KnowledgeBase", "Library",
     "Parameter", "Signature", "StubError", "agreed", "bind", "knowledge_base", "stubs_folder",
 ]  # fmt: skip
 
@@ -38,6 +38,8 @@ class KnowledgeBase:
         self._tf_apis: dict[str, list[Api]] = {}
         self._parameter_apis: dict[str, list[Api]] = {}
         self._executables: dict[tuple[str, str], Executable] = {}
+        self._records: dict[str, dict[str, Geometry]] | None = None
+        self._record_field_names: dict[str, frozenset[str]] = {}
         for library in libraries:
             for name, target in library.extends.items():
                 self._extensions[name] = (library.packages, target)
@@ -124,12 +126,51 @@ class KnowledgeBase:
         """The library class a bare local name means by convention (METADATA.toml's `conventional_names`)."""
         return self._conventional.get(name)
 
+    def packages_naming_frames(self, style: str) -> tuple[str, ...]:
+        """The import names of the libraries whose users name frames in this style (METADATA.toml's
+        `frame_naming`: "monogram" for Drake's `X_WB`)."""
+        return tuple(sorted(package for library in self.libraries.values() if library.frame_naming == style for package in library.packages))
+
     def library_of_module(self, module: str) -> Library | None:
         """The library whose import names include `module`'s top package."""
         return self._roots.get(module.partition(".")[0])
 
     def apis(self) -> list[Api]:
         return list(self._apis.values())
+
+    def record_fields(self, class_name: str) -> dict[str, Geometry]:
+        """The fields of a record class (a ROS message, a dataset record) that state something, with what
+        each states: a class whose one constructor has a default for every parameter, which the stub lists
+        in the record's field order; {} for any other name."""
+        api = self.api(class_name)
+        return self._record_classes().get(api.qualified_name, {}) if api is not None else {}
+
+    def record_classes(self) -> list[str]:
+        """The qualified names of the record classes (see `record_fields`)."""
+        return list(self._record_classes())
+
+    def record_field_names(self, field: str) -> frozenset[str]:
+        """The names of the record fields whose geometry states `field` (`"kind"`, `"quaternion_order"`):
+        a cheap first test by attribute name, before a value's class is looked for."""
+        found = self._record_field_names.get(field)
+        if found is None:
+            records = self._record_classes().values()
+            found = frozenset(name for fields in records for name, geometry in fields.items() if getattr(geometry, field) is not None)
+            self._record_field_names[field] = found
+        return found
+
+    def _record_classes(self) -> dict[str, dict[str, Geometry]]:
+        if self._records is None:
+            self._records = {}
+            for api in self._apis.values():
+                if not api.is_class or len(api.signatures) != 1:
+                    continue
+                parameters = [parameter for parameter in api.signatures[0].parameters if not parameter.variadic]
+                if parameters and all(parameter.has_default and parameter.keyword for parameter in parameters):
+                    stated = {parameter.name: parameter.geometry for parameter in parameters if parameter.geometry is not None}
+                    if stated:
+                        self._records[api.qualified_name] = stated
+        return self._records
 
     def names_reading(self, field: str, value: str) -> frozenset[str]:
         """The last parts of the qualified names of APIs with a parameter whose geometry states `value`

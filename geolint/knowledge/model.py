@@ -16,6 +16,7 @@ SCALAR_LAST = "xyzw"
 SCALAR_FIRST = "wxyz"
 RADIANS = "radians"
 DEGREES = "degrees"
+MONOGRAM = "monogram"  # METADATA.toml's `frame_naming`: Drake's `X_WB` (B's pose in W), `p_BQ`
 
 
 @dataclass(frozen=True)
@@ -149,3 +150,5 @@ class Library:
     # a node that imports tf2_geometry_msgs is handed a tf2 buffer)
     recognised_with: tuple[str, ...] = ()
     ros_client: int | None = None  # 1 or 2: a ROS client library (a module that imports it is a ROS node)
+    # how code that imports it names frames: "monogram" (Drake's `X_WB`, `p_BQ`: the frames are in the name)
+    frame_naming: str | None = None

@@ -17,6 +17,7 @@ from pathlib import Path
 from geolint.algebra import Kind
 from geolint.knowledge.model import (
     DEGREES,
+    MONOGRAM,
     RADIANS,
     SCALAR_FIRST,
     SCALAR_LAST,
@@ -77,6 +78,7 @@ def read_library(folder: Path) -> Library:
         executables=_executables(metadata_path, metadata.get("executables", {})),
         recognised_with=tuple(str(name) for name in metadata.get("recognised_with", ())),
         ros_client=int(metadata["ros_client"]) if "ros_client" in metadata else None,
+        frame_naming=_frame_naming(metadata_path, metadata.get("frame_naming")),
     )
     for stub in sorted(folder.rglob("*.pyi")):
         relative = stub.relative_to(folder).with_suffix("")
@@ -85,6 +87,12 @@ def read_library(folder: Path) -> Library:
             parts.pop()
         _ModuleReader(library, ".".join(parts), stub, stub.relative_to(folder.parent).as_posix()).read()
     return library
+
+
+def _frame_naming(path: Path, value: object) -> str | None:
+    if value is not None and value != MONOGRAM:
+        raise StubError(f"{path}: frame_naming = {value!r}: the one style known is {MONOGRAM!r}")
+    return None if value is None else MONOGRAM
 
 
 def _executables(path: Path, table: dict[str, dict[str, object]]) -> dict[str, Executable]:

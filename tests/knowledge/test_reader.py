@@ -171,3 +171,35 @@ def test_keywords_caught_by_options_bind_and_say_nothing(tmp_path: Path) -> None
     (tmp_path / "other").mkdir()
     strict = _library(tmp_path / "other", {"rotlib/core.pyi": stub_without_options}).api("rotlib.core.spawn")
     assert strict is not None and bind(strict, _call("spawn(file='a.urdf', euler=e)")) == []
+
+
+def test_a_record_class_s_fields_are_its_defaulted_constructor_parameters(tmp_path: Path) -> None:
+    """A message or dataset record is a class whose one constructor gives every field a default: its fields
+    are what the linter reads on `msg.field` (the kind of a 3-vector, the class a field holds, a quaternion's
+    order). A constructor with a required parameter is not a record."""
+    kb = _library(
+        tmp_path,
+        {
+            "rotlib/msg.pyi": """
+                from typing import Annotated
+                from geolint.typing import QuaternionWXYZ, VectorArray
+
+                class Vec:
+                    def __init__(self, x: float = ..., y: float = ..., z: float = ...) -> None: ...
+
+                class Motion:
+                    def __init__(self, header: object = ..., rate: Annotated[Vec, VectorArray] = ..., *, q: QuaternionWXYZ = ..., **more: object) -> None: ...
+
+                class Solver:
+                    def __init__(self, rate: VectorArray, tolerance: float = ...) -> None: ...
+            """
+        },
+    )
+    fields = kb.record_fields("rotlib.msg.Motion")
+    assert {name: (geometry.type_name, geometry.kind, geometry.quaternion_order) for name, geometry in fields.items()} == {
+        "rate": ("rotlib.msg.Vec", Kind.VECTOR, None),
+        "q": (None, Kind.ROTATION, SCALAR_FIRST),
+    }
+    assert kb.record_fields("rotlib.msg.Solver") == {} and kb.record_fields("rotlib.msg.Vec") == {}
+    assert kb.record_classes() == ["rotlib.msg.Motion"]
+    assert kb.record_field_names("quaternion_order") == {"q"} and kb.record_field_names("kind") == {"rate", "q"}

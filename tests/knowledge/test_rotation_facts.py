@@ -13,6 +13,7 @@ import math
 import numpy as np
 import pytest
 
+from geolint.algebra import Kind
 from geolint.knowledge import agreed, bind, knowledge_base
 from tests.knowledge.facts_helpers import (
     QUARTER_TURN_Z,
@@ -231,6 +232,16 @@ class TestSpatialmath:
         words = {"unit": "deg" if unit == "degrees" else "rad"}
         pose = self.spatialmath.SE3.RPY(0.0, 0.0, quarter, **words) if method == "RPY" else self.spatialmath.SE3.Rz(quarter, **words)
         assert np.allclose(pose.R, QUARTER_TURN_Z)
+
+    def test_a_pose_times_an_array_moves_it_as_the_stub_says(self) -> None:
+        # the stub: `SE3 * PointArray` takes points, so the translation is applied (R p + t)
+        api = knowledge_base().api("spatialmath.SE3.__mul__")
+        assert api is not None
+        taken = {parameter.geometry.kind for signature in api.signatures for parameter in signature.parameters if parameter.geometry is not None}
+        assert Kind.POINT in taken
+        pose = self.spatialmath.SE3.Trans(1.0, 0.0, 0.0) * self.spatialmath.SE3.Rz(math.pi / 2)
+        assert np.allclose(np.ravel(pose * np.array([1.0, 0.0, 0.0])), [1.0, 1.0, 0.0])
+        assert type(pose * pose).__name__ == "SE3"
 
     @pytest.mark.parametrize("call", ["T.rpy()", "T.rpy(unit='deg')", "T.rpy('deg')"])
     def test_rpy_returns_the_stated_unit(self, call: str) -> None:

@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 
 from geolint.rules.base import Invalid, Valid
-from geolint.factbase.messages import QUATERNION_FIELD_NAMES, field_label, field_order
+from geolint.factbase.messages import field_label, field_order, quaternion_field_names, quaternion_record_modules
 from geolint.factbase.model import FactBase, last_name, number, positional_args, replace_span, string, subscript_parts
 from geolint.factbase.rotations import (
     IDENTITY_NAME,
@@ -90,10 +90,10 @@ class _MessageField:
 
 class _GateOrOrderName:
     """The fact rules' gate, a name that states a component order (`q_wxyz`, `quats_xyzw`), an angle
-    formula's function (`atan2`, `asin`: quaternion formulas written by index), or PX4's messages
-    (whose `q` may go to a helper that reads it by index)."""
+    formula's function (`atan2`, `asin`: formulas written by index), or the module of a record with a
+    quaternion field of known order (PX4's messages, whose `q` may go to a helper that reads by index)."""
 
-    _ORDER_WORDS = ("wxyz", "xyzw", "atan2", "asin", "arcsin", "px4_msgs")  # in any case
+    _ORDER_WORDS = ("wxyz", "xyzw", "atan2", "asin", "arcsin")  # in any case
 
     def search(self, source: str, /) -> bool:
         return bool(GATE_TRIGGER.search(source) or self._mentions_order(source))
@@ -105,7 +105,7 @@ class _GateOrOrderName:
         # one lowercase copy and a substring test per word: a case-insensitive alternation has no
         # literal for the regex engine to scan for, and this runs on every module the gate turns away
         lowered = source.lower()
-        return any(word in lowered for word in self._ORDER_WORDS)
+        return any(word in lowered for word in self._ORDER_WORDS) or any(module in source for module in quaternion_record_modules())
 
 
 _GATE_OR_ORDER_NAME: Final = _GateOrOrderName()
@@ -576,7 +576,7 @@ class QuaternionOrder(FactRule):
     def _check_message_field(self, node: Assign, flow: QuaternionFlow) -> None:
         """`setpoint.q_d = Rotation.from_euler(...).as_quat()`: a quaternion written into a message field
         whose order the message class fixes (px4_msgs: w, x, y, z)."""
-        if len(node.targets) != 1 or not isinstance(node.targets[0], Attribute) or node.targets[0].attr not in QUATERNION_FIELD_NAMES:
+        if len(node.targets) != 1 or not isinstance(node.targets[0], Attribute) or node.targets[0].attr not in quaternion_field_names():
             return
         target = node.targets[0]
         cls = flow.messages.class_of(target.value)

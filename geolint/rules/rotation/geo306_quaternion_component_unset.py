@@ -21,7 +21,7 @@ from ast import (
 from geolint.factbase import library_calls
 from geolint.factbase.angles import EULER_METHOD_NAMES
 from geolint.factbase.index import FUNCTION_NODES
-from geolint.factbase.messages import MessageTypes
+from geolint.factbase.messages import MessageTypes, holds_quaternion_components
 from geolint.factbase.model import FactBase, dotted_name, number, walk_within
 from geolint.factbase.rotations import IDENTITY_NAME
 from geolint.rules.fact_rule import FactRule
@@ -29,7 +29,6 @@ from geolint.rules.base import Invalid, Valid
 from geolint.factbase.quaternion_orders import QuaternionFlow, convention
 from geolint.rules.triggers import AllOf
 
-_QUATERNION: Final = "geometry_msgs.msg.Quaternion"
 _COMPONENTS: Final = ("x", "y", "z", "w")
 # Words that make a source's `.x`, `.y`, `.z` a quaternion's (so it has a `.w` to copy too): a Quaternion
 # message misused to carry three angles (`q.x = rpy.x`) leaves w alone on purpose.
@@ -309,7 +308,7 @@ class QuaternionComponentUnset(FactRule):
         call = bindings[0]
         if call.args or call.keywords or not isinstance(facts.parent(call), Assign):
             return None
-        if facts.shared(MessageTypes).class_of(quaternion) != _QUATERNION:
+        if not holds_quaternion_components(facts.shared(MessageTypes).class_of(quaternion)):
             return None  # the fact base's message classes, field by field from the constructor
         return f"{facts.code_of(call.func)}()"
 

@@ -17,14 +17,13 @@ from geolint.factbase.angles import (
     RETURNED_EULER_METHODS,
 )
 from geolint.factbase.index import Scope, UnpackBinding
-from geolint.factbase.messages import MessageTypes
+from geolint.factbase.messages import MessageTypes, holds_quaternion_components
 from geolint.factbase.model import dotted_name, last_name, number, positional_args, walk_within
 from geolint.factbase.rotations import PYBULLET_QUATERNION_CALLS, TRIG_FUNCTIONS, pybullet_quaternion_values
 from geolint.rules.fact_rule import FactRule
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.triggers import AllOf
 
-_QUATERNION: Final = "geometry_msgs.msg.Quaternion"
 _COMPONENTS: Final = ("x", "y", "z", "w")
 # Fields that hold a message's orientation: a Quaternion message placed there is read as a rotation.
 _ORIENTATION_FIELDS: Final = frozenset({"orientation", "rotation"})
@@ -207,7 +206,7 @@ class EulerAnglesInQuaternion(FactRule):
                 if self._is_quaternion(types, quaternion) and self._read_as_rotation(quaternion):
                     self._check(path, [(component, value) for component, value, _ in written], written[0][2])
         for call in facts.index.nodes(Call):
-            if facts.called_name(call.func) == "Quaternion" and facts.qualified_name(call.func) == _QUATERNION:  # type: ignore[attr-defined]
+            if facts.called_name(call.func) == "Quaternion" and holds_quaternion_components(facts.qualified_name(call.func)):  # type: ignore[attr-defined]
                 given = [(component, value) for component, value in zip(_COMPONENTS, positional_args(call))]  # type: ignore[arg-type]
                 given += [(item.arg, item.value) for item in call.keywords if item.arg in _COMPONENTS]  # type: ignore[attr-defined]
                 if given and self._placed_as_rotation(call):  # type: ignore[arg-type]
@@ -259,13 +258,13 @@ class EulerAnglesInQuaternion(FactRule):
         """A Quaternion message: a field the fact base knows (`msg.orientation` of an `Imu()`), or a name
         bound only to `Quaternion()`."""
         if isinstance(node, Attribute):
-            return types.class_of(node) == _QUATERNION
+            return holds_quaternion_components(types.class_of(node))
         if not isinstance(node, Name):
             return False
         bound = self.facts.bindings(node) or []
         facts = self.facts
         return bool(bound) and all(
-            isinstance(binding, Call) and facts.qualified_name(binding.func) == _QUATERNION for binding in bound
+            isinstance(binding, Call) and holds_quaternion_components(facts.qualified_name(binding.func)) for binding in bound
         )
 
     # -- where the quaternion goes ------------------------------------------------------------------

@@ -1,4 +1,6 @@
-from geolint.typing import QuaternionXYZW, Radians
+from typing import Annotated, overload
+
+from geolint.typing import PointArray, QuaternionXYZW, Radians, TransformMatrix
 
 class Rotation:
     """Source: orocos_kinematics_dynamics (commit 9d586388), orocos_kdl/src/frames.hpp: "static Rotation
@@ -25,3 +27,22 @@ class Rotation:
     def GetRPY(self) -> tuple[Radians, Radians, Radians]: ...
     def GetEulerZYX(self) -> tuple[Radians, Radians, Radians]: ...
     def GetEulerZYZ(self) -> tuple[Radians, Radians, Radians]: ...
+
+class Vector:
+    """Source: orocos_kdl/src/frames.hpp (commit 9d586388): "A concrete implementation of a 3 dimensional vector
+    class"; the Python binding's `Vector(x, y, z)`. The same class holds points and free vectors."""
+
+    def __init__(self, x: float = ..., y: float = ..., z: float = ...) -> None: ...
+
+class Frame:
+    """Source: orocos_kdl/src/frames.hpp (commit 9d586388): "represents a frame transformation in 3D space
+    (rotation + translation)", `Vector operator *(const Vector& arg) const`, whose body in frames.inl is
+    `return M*arg+p;` (the translation is applied, as to a point), and `Frame operator *(const Frame& lhs, const
+    Frame& rhs)`; python_orocos_kdl binds both as `__mul__`."""
+
+    def __init__(self, *args: object) -> None: ...
+    @overload
+    def __mul__(self: TransformMatrix, other: Frame) -> Frame: ...
+    @overload
+    def __mul__(self: TransformMatrix, other: Annotated[Vector, PointArray]) -> Annotated[Vector, PointArray]: ...
+    def Inverse(self) -> Frame: ...

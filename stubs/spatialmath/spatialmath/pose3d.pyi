@@ -1,6 +1,6 @@
 from typing import Literal, overload
 
-from geolint.typing import Degrees, Radians
+from geolint.typing import Degrees, PointArray, Radians, TransformMatrix
 
 class SO3:
     """Source: spatialmath/pose3d.py (1.1.18), SO3: a rotation (or a sequence of them); angles in radians unless `unit="deg"`."""
@@ -55,6 +55,26 @@ class SO3:
 
 class SE3:
     """Source: spatialmath/pose3d.py (1.1.18), SE3: a pose (or a sequence of them); angles in radians unless `unit="deg"`."""
+
+    def __init__(self, *args: object, **kwargs: object) -> None: ...
+    @classmethod
+    def Trans(cls, x: object, y: float = ..., z: float = ...) -> SE3:
+        """Source: spatialmath/pose3d.py (1.1.18), SE3.Trans: "Create SE(3) from translation vector"."""
+    @classmethod
+    def Tx(cls, x: float) -> SE3: ...
+    @classmethod
+    def Ty(cls, y: float) -> SE3: ...
+    @classmethod
+    def Tz(cls, z: float) -> SE3: ...
+    def inv(self) -> SE3: ...
+    @overload
+    def __mul__(self: TransformMatrix, right: SE3) -> SE3: ...
+    @overload
+    def __mul__(self: TransformMatrix, right: PointArray) -> PointArray:
+        """Source: spatialmath/baseposematrix.py (1.1.18), BasePoseMatrix.__mul__: "Pose * Pose: matrix product",
+        "Pose * N-vector: vector transform", "Pose * NxM matrix: transform each column"; for an SE3 the vector is
+        made homogeneous with a 1 (checked: `SE3.Trans(1, 0, 0) * SE3.Rz(pi / 2) * [1, 0, 0]` is [1, 1, 0]):
+        the translation is applied, as to a point."""
 
     @overload
     @classmethod

@@ -1,6 +1,6 @@
 from typing import Annotated
 
-from geometry_msgs.msg import Quaternion
+from geometry_msgs.msg import Quaternion, Vector3
 
 from geolint.knowledge.markers import CameraAxes
 from geolint.typing import Degrees, VectorArray
@@ -39,11 +39,18 @@ class Imu:
         header: object = ...,
         orientation: Quaternion = ...,
         orientation_covariance: object = ...,
-        angular_velocity: VectorArray = ...,
+        angular_velocity: Annotated[Vector3, VectorArray] = ...,
         angular_velocity_covariance: object = ...,
-        linear_acceleration: VectorArray = ...,
+        linear_acceleration: Annotated[Vector3, VectorArray] = ...,
         linear_acceleration_covariance: object = ...,
     ) -> None: ...
+
+class MagneticField:
+    """Source: sensor_msgs/msg/MagneticField.msg (ros2/common_interfaces 5.4.2, commit c0c0bc57; ros/common_msgs, the same
+    fields): "Measurement of the Magnetic Field vector at a specific location"; `geometry_msgs/Vector3 magnetic_field`
+    ("x, y, and z components of the field vector in Tesla"), then its covariance. A free vector."""
+
+    def __init__(self, header: object = ..., magnetic_field: Annotated[Vector3, VectorArray] = ..., magnetic_field_covariance: object = ...) -> None: ...
 
 class Image:
     """Source: sensor_msgs/msg/Image.msg (ros2/common_interfaces 5.4.2, commit c0c0bc57; ros/common_msgs, the same text):

@@ -1,0 +1,1 @@
+from nav_msgs import msg as msg

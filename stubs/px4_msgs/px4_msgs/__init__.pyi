@@ -1,0 +1,1 @@
+from px4_msgs import msg as msg
