@@ -472,8 +472,8 @@ def _called_api(facts: FactBase, call: Call) -> Api | None:
                 return extended
     if isinstance(func, Attribute):
         receiver = _library_type(facts, func.value, _TYPE_DEPTH)
-        if receiver is not None:
-            return kb.api(f"{receiver}.{func.attr}")
+        if receiver is not None:  # its class's method, or one every object has where the module allows it
+            return kb.api(f"{receiver}.{func.attr}") or _any_receiver(facts, kb, func.attr)
         conventional = _conventional(facts, kb, func.value)
         if conventional is not None:
             return kb.api(f"{conventional}.{func.attr}")
@@ -569,6 +569,7 @@ def _any_receiver(facts: FactBase, kb: KnowledgeBase, method: str) -> Api | None
         for api in candidates
         if api.receiver is not None
         and (not api.receiver.when_imported or any(name.startswith(api.receiver.when_imported) for name in imported))
+        and not (api.receiver.unless_imported and any(name.startswith(api.receiver.unless_imported) for name in imported))
     ]
     return fitting[0] if len(fitting) == 1 else None
 

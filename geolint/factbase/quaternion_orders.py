@@ -35,7 +35,6 @@ from geolint.factbase.rotations import (
     SCALAR_FIRST,
     SCALAR_LAST,
     component_writes_of_parameter,
-    isaac_orientation_arguments,
     pybullet_orientation_arguments,
     quaternion_argument,
     quaternion_order,
@@ -597,8 +596,6 @@ def quaternion_read_by(facts: FactBase, call: Call, argument: ast.expr) -> str |
     `from_quat(q)`, pybullet's orientation arguments...) and the call runs whenever its function does."""
     if any(found is argument for found in pybullet_orientation_arguments(call)):
         order: str | None = SCALAR_LAST
-    elif any(found is argument for found in isaac_orientation_arguments(facts, call)):
-        order = SCALAR_FIRST
     else:
         order = quaternion_order(facts, call)
         if order is None or quaternion_argument(facts, call) is not argument:

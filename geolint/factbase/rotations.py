@@ -32,28 +32,9 @@ TRIG_FUNCTIONS: Final = frozenset({"sin", "cos", "tan"})
 
 def quaternion_order(facts: FactBase, call: Call) -> str | None:
     """The component order the called API expects for its quaternion argument, or None if unknown."""
-    func = call.func
-    called = facts.called_name(func) or ""
-    if called in _TRANSFORMS3D_OPERATIONS:
-        operation = _operation_order(facts, func)
-        if operation is not None:
-            return operation
     if library_calls.called_api(facts, call) is not None:  # the knowledge base (stubs/) knows the call
         known = library_calls.expected_quaternion_order(facts, call)
         return known[0] if known is not None else None
-    return None
-
-
-# transforms3d's quaternion operations (w, x, y, z; the first argument is a quaternion), also under the
-# ROS names they are imported as when a module supports ROS 1 (`tf.transformations`) and ROS 2
-_TRANSFORMS3D_OPERATIONS: Final = frozenset({"qmult", "qconjugate", "qinverse"})
-
-
-def _operation_order(facts: FactBase, func: ast.expr) -> str | None:
-    qualified = branch_qualified_name(facts, func) or ""
-    module, _, name = qualified.rpartition(".")
-    if module.startswith("transforms3d") and name in _TRANSFORMS3D_OPERATIONS:
-        return SCALAR_FIRST
     return None
 
 
@@ -67,32 +48,6 @@ def quaternion_argument(facts: FactBase, call: Call) -> ast.expr | None:
         known = library_calls.expected_quaternion_order(facts, call)
         return known[1] if known is not None else None
     return positional[0] if positional else None
-
-
-# pyquaternion's Quaternion class (a module that re-exports it, as the nuScenes devkit does, is in stubs/)
-PYQUATERNION_CLASSES: Final = frozenset({"pyquaternion.Quaternion", "pyquaternion.quaternion.Quaternion"})
-
-
-def means_pyquaternion(qualified: str | None) -> bool:
-    """Whether a qualified name is pyquaternion's Quaternion, directly or through a re-export the knowledge
-    base knows (`nuscenes.eval.common.utils.Quaternion`)."""
-    if qualified is None:
-        return False
-    if qualified in PYQUATERNION_CLASSES:
-        return True
-    api = knowledge_base().api(qualified)
-    return api is not None and api.qualified_name in PYQUATERNION_CLASSES
-# pyquaternion Quaternion properties and methods that return another Quaternion
-PYQUATERNION_RETURNS_QUATERNION: Final = frozenset({"inverse", "conjugate", "normalised", "unit"})
-
-
-def is_numpy_quaternion_constructor(facts: FactBase, qualified: str) -> bool:
-    """numpy-quaternion's `np.quaternion(w, x, y, z)` / `quaternion.quaternion(...)`: numpy has the
-    type only once the module imports `quaternion`, and a bare `quaternion` must be that import."""
-    imported = facts.index.imports.values()
-    if qualified == "quaternion.quaternion":
-        return "quaternion" in imported or "quaternion.quaternion" in imported
-    return qualified == "numpy.quaternion" and "quaternion" in imported
 
 
 def spread_argument(facts: FactBase, call: Call) -> ast.expr | None:
@@ -177,55 +132,9 @@ _PYBULLET_FRAME_ORIENTATIONS: Final[dict[str, tuple[frozenset[str], frozenset[st
 PYBULLET_QUATERNION_CALLS = PYBULLET_ORIENTATION_CALLS | frozenset(_PYBULLET_FRAME_ORIENTATIONS)
 
 
-def isaac_orientation_arguments(facts: FactBase, call: Call) -> list[ast.expr]:
-    """The (w, x, y, z) orientation arguments of an Isaac Sim core call: `orientation=` / `orientations=`
-    of a prim, object or view constructor (`XFormPrim(path, orientation=q)`, `DynamicCuboid(...)`,
-    `RigidPrimView(...)`) or of `create_prim`, and the orientation of `set_world_pose(position, orientation)`,
-    `set_local_pose`, `set_default_state`, `set_world_poses`, `set_local_poses` in a module that imports
-    Isaac Sim's core (OmniGibson's prims, which take x, y, z, w, are left alone)."""
-    if not mentions_isaac_core(facts):
-        return []  # every call below is Isaac Sim's, which only an import of its core can bring in
-    func = call.func
-    if isinstance(func, Attribute) and func.attr in _ISAAC_POSE_SETTERS:
-        if not _imports_isaac_core(facts) or any(isinstance(arg, Starred) for arg in call.args):
-            return []
-        found = [call.args[1]] if len(call.args) > 1 else []
-        return found + [given.value for given in call.keywords if given.arg in ("orientation", "orientations")]
-    qualified = facts.qualified_name(func) or ""
-    name = qualified.rpartition(".")[2]
-    if not qualified.startswith(_ISAAC_CORE) or not (name[:1].isupper() or qualified == _ISAAC_CREATE_PRIM):
-        return []
-    return [given.value for given in call.keywords if given.arg in ("orientation", "orientations")]
-
-
-def mentions_isaac_core(facts: FactBase) -> bool:
-    """Whether the module imports something of Isaac Sim's core: without it `isaac_orientation_arguments`
-    is [] for every call (a rule asking of every call may test this once per module)."""
-    return facts.module_fact("mentions isaac core", lambda: any(name.startswith(_ISAAC_CORE) for name in imported_modules(facts)))
-
-
-def _imports_isaac_core(facts: FactBase) -> bool:
-    """Isaac Sim's core, and not OmniGibson (whose prims take x, y, z, w)."""
-
-    def compute() -> bool:
-        return mentions_isaac_core(facts) and not any(name.startswith("omnigibson") for name in imported_modules(facts))
-
-    return facts.module_fact("imports isaac core", compute)
-
-
 def accepts_stacks(facts: FactBase, call: Call) -> bool:
-    """Whether the call takes (N, 4) stacks as well as one quaternion: its stub says so (`STACKED`), or it
-    is an Isaac Sim prim or view with orientations."""
-    return library_calls.quaternion_stacks(facts, call) or bool(isaac_orientation_arguments(facts, call))
-
-
-# Isaac Sim core (`omni.isaac.core` up to 4.2, `isaacsim.core.api` / `isaacsim.core.prims` from 4.5): prims,
-# objects and views take `orientation(s)` "quaternion is scalar-first (w, x, y, z)" (docstrings of
-# XFormPrim, XFormPrimView and DynamicCuboid in Isaac Sim 4.1; the isaacsim.core.api 4.8.0 API page).
-_ISAAC_CORE: Final = ("omni.isaac.core.", "isaacsim.core.")
-# `create_prim(path, prim_type, position=..., orientation=...)` hands `orientation` to XFormPrim (its source, 4.1)
-_ISAAC_CREATE_PRIM: Final = "omni.isaac.core.utils.prims.create_prim"
-_ISAAC_POSE_SETTERS: Final = frozenset({"set_world_pose", "set_local_pose", "set_default_state", "set_world_poses", "set_local_poses"})
+    """Whether the call takes (N, 4) stacks as well as one quaternion: its stub says so (`STACKED`)."""
+    return library_calls.quaternion_stacks(facts, call)
 
 
 def api_label(order: str) -> str:

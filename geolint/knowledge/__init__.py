@@ -40,6 +40,7 @@ class KnowledgeBase:
         self._executables: dict[tuple[str, str], Executable] = {}
         self._records: dict[str, dict[str, Geometry]] | None = None
         self._record_field_names: dict[str, frozenset[str]] = {}
+        self._float_converted: frozenset[str] | None = None
         for library in libraries:
             for name, target in library.extends.items():
                 self._extensions[name] = (library.packages, target)
@@ -125,6 +126,22 @@ class KnowledgeBase:
     def conventional_name(self, name: str) -> str | None:
         """The library class a bare local name means by convention (METADATA.toml's `conventional_names`)."""
         return self._conventional.get(name)
+
+    def converted_with_float(self, class_name: str) -> bool:
+        """Whether numpy reads an instance of this library class as one number: its stub defines `__float__`
+        and none of `__len__`, `__iter__`, `__array__` (pyquaternion's Quaternion, whose float() is w)."""
+        api = self.api(class_name)
+        return api is not None and api.qualified_name in self.classes_converted_with_float()
+
+    def classes_converted_with_float(self) -> frozenset[str]:
+        if self._float_converted is None:
+            methods: dict[str, set[str]] = {}
+            for name in self._apis:
+                owner, _, method = name.rpartition(".")
+                if method in ("__float__", "__len__", "__iter__", "__array__"):
+                    methods.setdefault(owner, set()).add(method)
+            self._float_converted = frozenset(owner for owner, found in methods.items() if found == {"__float__"})
+        return self._float_converted
 
     def packages_naming_frames(self, style: str) -> tuple[str, ...]:
         """The import names of the libraries whose users name frames in this style (METADATA.toml's

@@ -8,7 +8,8 @@ with its meaning.
   project's pinned versions all satisfy it, and says nothing when it cannot tell.
 - ``@any_receiver(when_imported=(...))`` on a class: its methods are recognised by their name on any
   object (pybullet's ``BulletClient`` wraps the module's functions; Isaac Sim's pose setters exist on
-  every prim class), optionally only in modules that import one of the given modules.
+  every prim class), optionally only in modules that import one of the given modules
+  (``unless_imported``: and none of those, a library whose same-named methods mean something else).
 - ``Annotated[T, CameraAxes.OPENCV]``: the camera axes of a pose or of image coordinates (OpenCV: x
   right, y down, z forward; OpenGL/Blender: x right, y up, z backward; PyTorch3D: x left, y up, z forward).
 - ``Annotated[T, ROW_VECTORS]``: the library applies its matrices to row vectors (``p @ R``), so a
@@ -44,8 +45,9 @@ def versions(specifier: str) -> Callable[[_Decorated], _Decorated]:
     return mark
 
 
-def any_receiver(*, when_imported: tuple[str, ...] = ()) -> Callable[[_Decorated], _Decorated]:
-    """The class's methods are recognised by name on any object (in modules importing `when_imported`)."""
+def any_receiver(*, when_imported: tuple[str, ...] = (), unless_imported: tuple[str, ...] = ()) -> Callable[[_Decorated], _Decorated]:
+    """The class's methods are recognised by name on any object (in modules importing `when_imported`, and
+    none of `unless_imported`)."""
 
     def mark(decorated: _Decorated) -> _Decorated:
         return decorated

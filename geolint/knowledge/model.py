@@ -84,6 +84,7 @@ class Receiver:
     """`@any_receiver`: the class's methods are recognised by name on any object."""
 
     when_imported: tuple[str, ...] = ()
+    unless_imported: tuple[str, ...] = ()  # not in modules that import one of these
 
 
 @dataclass(frozen=True)

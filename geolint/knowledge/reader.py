@@ -185,9 +185,7 @@ class _ModuleReader:
         receiver = None
         for decorator in node.decorator_list:
             if isinstance(decorator, ast.Call) and _last(decorator.func) == "any_receiver":
-                modules = next((keyword.value for keyword in decorator.keywords if keyword.arg == "when_imported"), None)
-                names = tuple(_string(item) or "" for item in modules.elts) if isinstance(modules, (ast.Tuple, ast.List)) else ()
-                receiver = Receiver(tuple(name for name in names if name))
+                receiver = Receiver(_module_names(decorator, "when_imported"), _module_names(decorator, "unless_imported"))
         source = _source_of(node)
         versions = _versions(node.decorator_list)
         constructors = [
@@ -333,6 +331,12 @@ def _frame(node: ast.expr) -> str:
     if isinstance(node, ast.Subscript) and _last(node.value) == "Literal":
         node = node.slice
     return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else ""
+
+
+def _module_names(decorator: ast.Call, keyword_name: str) -> tuple[str, ...]:
+    modules = next((keyword.value for keyword in decorator.keywords if keyword.arg == keyword_name), None)
+    names = tuple(_string(item) or "" for item in modules.elts) if isinstance(modules, (ast.Tuple, ast.List)) else ()
+    return tuple(name for name in names if name)
 
 
 def _versions(decorators: list[ast.expr]) -> str | None:

@@ -1,5 +1,5 @@
 """GEO304's second shape: a pyquaternion Quaternion object written into an array slice, which numpy fills
-with the object's float(), its scalar part w. Which values count as Quaternion objects, which targets
+with the object's float() (pyquaternion's is the scalar part w). Which values count as Quaternion objects, which targets
 are left alone, and the imports that make `Quaternion` pyquaternion's."""
 
 from __future__ import annotations
@@ -35,7 +35,7 @@ def test_a_quaternion_through_the_nuscenes_reexport_into_a_feature_slice() -> No
     ((line, message),) = findings(source)
     assert line == 8
     assert "`rotation` is a pyquaternion Quaternion written into the slice `features[3:7]`" in message
-    assert "every slot holds w" in message and "`rotation.q`" in message
+    assert "every slot holds that number" in message and "`rotation.q` (w, x, y, z)" in message
 
 
 def test_built_in_place_through_a_module_import_and_a_two_dimensional_slice() -> None:

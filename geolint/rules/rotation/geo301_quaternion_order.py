@@ -24,8 +24,6 @@ from geolint.factbase.rotations import (
     SCALAR_LAST,
     accepts_stacks,
     api_label,
-    isaac_orientation_arguments,
-    mentions_isaac_core,
     pybullet_orientation_arguments,
     quaternion_argument,
     quaternion_order,
@@ -469,9 +467,8 @@ class QuaternionOrder(FactRule):
     def run(self) -> None:
         facts = self.facts
         flow = facts.shared(QuaternionFlow)
-        isaac = mentions_isaac_core(facts)  # else no call has Isaac Sim orientation arguments
         for node in facts.index.nodes(Call):
-            self._check(node, flow, isaac)  # type: ignore[arg-type]
+            self._check(node, flow)  # type: ignore[arg-type]
         self._check_component_writes(flow)
         self._check_formula_reads(flow)
         if mentions_order_flag(facts.index.source):
@@ -604,21 +601,18 @@ class QuaternionOrder(FactRule):
                     return True
         return False
 
-    def _check(self, node: Call, flow: QuaternionFlow, isaac: bool) -> None:
+    def _check(self, node: Call, flow: QuaternionFlow) -> None:
         self._check_helper(node, flow)
-        self._check_stated_parameters(node, flow, isaac)
+        self._check_stated_parameters(node, flow)
         expected = quaternion_order(self.facts, node)
         if expected is not None and not keyword_states_order(self.facts, node, expected):  # else checked above
             self._check_arguments(node, expected, flow)
 
-    def _check_stated_parameters(self, node: Call, flow: QuaternionFlow, isaac: bool) -> None:
+    def _check_stated_parameters(self, node: Call, flow: QuaternionFlow) -> None:
         """Arguments whose order the simulator's API or the parameter's own name states."""
         if last_name(node.func) in PYBULLET_ORIENTATION_CALLS:
             for orientation in pybullet_orientation_arguments(node):
                 self._check_value(node, orientation, SCALAR_LAST, flow)
-        if isaac:
-            for orientation in isaac_orientation_arguments(self.facts, node):
-                self._check_value(node, orientation, SCALAR_FIRST, flow)
         for given in node.keywords:  # `PoseTrajectory3D(orientations_quat_wxyz=q)`: the parameter states its order
             stated = name_order(given.arg) if given.arg is not None else None
             if given.arg is not None and stated in STANDARD_ORDERS:

@@ -14,7 +14,9 @@ import re
 import string
 
 from geolint.factbase.model import replace_span, subscript_parts
-from geolint.factbase.rotations import PYQUATERNION_RETURNS_QUATERNION, means_pyquaternion, quaternion_argument, quaternion_order
+from geolint.factbase.library_calls import library_type
+from geolint.factbase.rotations import quaternion_argument, quaternion_order
+from geolint.knowledge import knowledge_base
 from geolint.rules.fact_rule import FactRule
 from geolint.factbase.vocabulary import any_match_at
 from geolint.rules.base import Invalid, Valid
@@ -63,10 +65,11 @@ class QuaternionComponentReused(FactRule):
     or the value is passed straight to a quaternion API (scipy `from_quat`, transforms3d
     `quat2mat`, pyquaternion `Quaternion`...).
 
-    It also flags a pyquaternion `Quaternion` object (a `Quaternion(...)` built in the module, or a
-    name bound only to one, or its `.inverse` / `.conjugate` / `.normalised` / `.unit`) assigned
-    into a slice of an array (`can_bus[3:7] = rotation`), in a module that imports pyquaternion's
-    class (directly or through the nuScenes devkit's `nuscenes.eval.common.utils`).
+    It also flags a library quaternion object that numpy reads as one number (its stub defines
+    `__float__` and no `__len__`, `__iter__` or `__array__`: pyquaternion's `Quaternion`, built in the
+    module, a name bound only to one, or its `.inverse` / `.conjugate` / `.normalised` / `.unit`)
+    assigned into a slice of an array (`can_bus[3:7] = rotation`), imported directly or through a
+    re-export the stubs know (the nuScenes devkit's `nuscenes.eval.common.utils`).
 
     ## Why is this bad?
     Converting between the scalar-first and scalar-last conventions moves each of the four
@@ -143,39 +146,32 @@ class QuaternionComponentReused(FactRule):
             if len(elements) != 4 or any(isinstance(element, Starred) for element in elements):
                 continue
             self._check(node, elements)  # type: ignore[arg-type]
-        if any(means_pyquaternion(name) or name == "pyquaternion" for name in facts.index.imports.values()):
+        if any(_has_float_converted_class(name) for name in facts.index.imports.values()):
             for assign in facts.index.nodes(Assign):
                 if isinstance(assign, Assign):
                     self._check_slice_broadcast(assign)
 
     def _check_slice_broadcast(self, assign: Assign) -> None:
-        """`array[3:7] = Quaternion(...)`: numpy fills the slice with the Quaternion's `float()`, its w."""
+        """`array[3:7] = Quaternion(...)`: numpy fills the slice with the object's `float()`, one number."""
         target = assign.targets[0]
         if len(assign.targets) != 1 or not isinstance(target, Subscript) or not _has_slice(target.slice):
             return
-        if not self._is_pyquaternion(assign.value, 0) or self._is_list(target.value):
+        kb = knowledge_base()
+        held = library_type(self.facts, assign.value)
+        if held is None or not kb.converted_with_float(held) or self._is_list(target.value):
             return
+        components = _components_attribute(held)
+        if components is None:
+            return
+        api = kb.api(held)
+        assert api is not None
         value = self.facts.code_of(assign.value)
+        attribute, order = components
         self.report(
             assign.value,
-            f"`{value}` is a pyquaternion Quaternion written into the slice `{self.facts.code_of(target)}`: numpy converts it "
-            f"with float(), which is its scalar part w, so every slot holds w; write `{value}.q` (w, x, y, z)",
+            f"`{value}` is a {api.library} {held.rpartition('.')[2]} written into the slice `{self.facts.code_of(target)}`: numpy "
+            f"converts it with float(), one number, so every slot holds that number; write `{value}.{attribute}` ({', '.join(order)})",
         )
-
-    def _is_pyquaternion(self, node: ast.expr, depth: int) -> bool:
-        """A pyquaternion Quaternion object: built here, a property of one that returns another, or a name
-        bound only to those."""
-        facts = self.facts
-        if depth > 4:
-            return False
-        if isinstance(node, Call):
-            return means_pyquaternion(facts.qualified_name(node.func))
-        if isinstance(node, Attribute):
-            return node.attr in PYQUATERNION_RETURNS_QUATERNION and self._is_pyquaternion(node.value, depth + 1)
-        if isinstance(node, Name):
-            bound = facts.bindings(node) or []
-            return bool(bound) and all(isinstance(value, ast.expr) and self._is_pyquaternion(value, depth + 1) for value in bound)
-        return False
 
     def _is_list(self, node: ast.expr) -> bool:
         """A name bound here to a Python list (a literal, `[...] * n`, a comprehension, `list(...)`)."""
@@ -281,3 +277,22 @@ def _name_of(node: AST) -> str | None:
 def _words(name: str) -> list[str]:
     """`q_core` -> [q, core]; `coreQToRosQ` -> [core, q, to, ros, q]; `quat2mat` -> [quat, 2, mat]."""
     return [word.lower() for word in re.findall(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|\d+", name)]
+
+
+def _has_float_converted_class(module: str) -> bool:
+    """Whether an imported name is, or is a module of a library that has, a class numpy reads as one number."""
+    kb = knowledge_base()
+    if kb.converted_with_float(module):
+        return True
+    library = kb.library_of_module(module)
+    return library is not None and any(kb.library_of_module(name) is library for name in kb.classes_converted_with_float())
+
+
+def _components_attribute(class_name: str) -> tuple[str, str] | None:
+    """The first attribute of the class that holds its four components in a stated order (`q`: w, x, y, z)."""
+    for api in knowledge_base().apis():
+        if api.is_attribute and api.qualified_name.rpartition(".")[0] == class_name:
+            orders = {signature.returns.quaternion_order for signature in api.signatures if signature.returns is not None}
+            if len(orders) == 1 and None not in orders:
+                return api.qualified_name.rpartition(".")[2], orders.pop()  # type: ignore[return-value]
+    return None

@@ -26,9 +26,14 @@ class Quaternion:
     @overload
     def __init__(self, *, scalar: float, vector: VectorArray) -> None: ...
     @property
-    def elements(self) -> QuaternionWXYZ: ...
-    @property
     def q(self) -> QuaternionWXYZ: ...
+    @property
+    def elements(self) -> QuaternionWXYZ: ...
+    def __float__(self) -> float:
+        """Source: pyquaternion/quaternion.py (0.9.9), Quaternion.__float__: "Truncates the Quaternion object by only
+        considering the real component", `return float(self.q[0])`. The class defines no `__len__`, `__iter__` or
+        `__array__`, so numpy writes it into a slice through float() (checked: numpy 2, `a[3:7] = Quaternion(axis=[0, 0,
+        1], angle=1.0)` gives [0.878, 0.878, 0.878, 0.878])."""
     @property
     def rotation_matrix(self) -> RotationMatrix: ...
     @property

@@ -1,0 +1,1 @@
+from omni.isaac.core.articulations import Articulation as Articulation

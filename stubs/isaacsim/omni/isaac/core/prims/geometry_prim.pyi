@@ -1,0 +1,1 @@
+from omni.isaac.core.prims import GeometryPrim as GeometryPrim

@@ -1,0 +1,1 @@
+from omni.isaac.core.prims import GeometryPrimView as GeometryPrimView

@@ -1,0 +1,1 @@
+from omni.isaac.core.robots import Robot as Robot

@@ -1,0 +1,1 @@
+from omni.isaac.core.robots import RobotView as RobotView
