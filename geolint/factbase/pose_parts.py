@@ -28,7 +28,10 @@ from ast import (
 )
 from dataclasses import dataclass
 
+from geolint.algebra import Kind
 from geolint.factbase.index import ModuleIndex
+from geolint.knowledge import knowledge_base
+from geolint.knowledge.markers import ArrayOperation
 from geolint.factbase.syntax import dotted_name, einsum_operands, is_full_slice, is_slice_upto, last_name, subscript_parts
 from geolint.factbase.reaching import Unpacked, assigned_values, binding_of, resolve
 
@@ -42,7 +45,6 @@ _SAME_VALUE_FUNCTIONS: Final = frozenset(
     {"asarray", "array", "as_tensor", "tensor", "from_numpy", "copy", "deepcopy", "expand_dims", "squeeze",
      "reshape", "float32", "float64", "ascontiguousarray", "atleast_2d", "Tensor", "FloatTensor"}
 )  # fmt: skip
-_INVERTING_FUNCTIONS: Final = frozenset({"inv", "pinv", "inverse"})
 
 
 def same_code(first: AST, second: AST) -> bool:
@@ -303,7 +305,7 @@ def translation_source(node: ast.expr, index: ModuleIndex, depth: int = 8) -> Po
         return None
     if isinstance(node, Call) and call_name(node) in _AGGREGATES:
         func = node.func
-        if isinstance(func, Attribute) and dotted_name(func.value) in ("np", "numpy", "torch", "jnp"):
+        if isinstance(func, Attribute) and knowledge_base().is_array_namespace(dotted_name(func.value) or ""):
             return translation_source(node.args[0], index, depth - 1) if node.args else None
         return translation_source(func.value, index, depth - 1) if isinstance(func, Attribute) else None
     if isinstance(node, IfExp):
@@ -372,16 +374,22 @@ def transposed_operand(node: ast.expr) -> ast.expr | None:
             return func.value
         if name == "permute" and len(axes) >= 2 and _permutes_last_two(axes):
             return func.value
-        if name in ("transpose", "swapaxes") and len(node.args) >= 1:
-            # np.transpose(R) / torch.transpose(R, 1, 2) called through a module
-            if dotted_name(func.value) in ("np", "numpy", "torch", "jnp") and not isinstance(node.args[0], Starred):
-                rest = [int_value(argument) for argument in node.args[1:]]
-                if not rest or _swaps_last_two(rest):
-                    return node.args[0]
-    if name in _INVERTING_FUNCTIONS and len(node.args) == 1 and isinstance(func, Attribute):
-        if dotted_name(func.value) in ("np.linalg", "numpy.linalg", "torch.linalg", "torch", "la", "linalg", "scipy.linalg"):
+    operation = _array_operation(func)
+    if operation == ArrayOperation.TRANSPOSE and node.args and not isinstance(node.args[0], Starred):
+        # np.transpose(R) / torch.transpose(R, 1, 2) called through an array namespace
+        rest = [int_value(argument) for argument in node.args[1:]]
+        if not rest or _swaps_last_two(rest):
             return node.args[0]
+    if operation == ArrayOperation.INVERSE and len(node.args) == 1:
+        return node.args[0]
     return None
+
+
+def _array_operation(func: ast.expr) -> str | None:
+    """What an array namespace's function called by its module's name (`np.linalg.inv`, `torch.bmm`) does
+    to matrices, by the stubs; None for a method of a value or anything else."""
+    dotted = dotted_name(func) if isinstance(func, Attribute) else None
+    return knowledge_base().array_operation(dotted) if dotted is not None else None
 
 
 def _swaps_last_two(axes: list[int | None]) -> bool:
@@ -411,7 +419,6 @@ class Application:
 
 
 _MATMUL_FUNCTIONS: Final = frozenset({"dot", "matmul", "bmm", "mm"})
-_ARRAY_LIBRARIES: Final = frozenset({"np", "numpy", "torch", "jnp", "tf", "cp"})
 
 
 def matmul_operands(node: AST) -> tuple[ast.expr, ast.expr] | None:
@@ -421,15 +428,18 @@ def matmul_operands(node: AST) -> tuple[ast.expr, ast.expr] | None:
     if not isinstance(node, Call) or node.keywords:
         return None
     name = call_name(node)
-    if name == "einsum" and len(node.args) == 3 and dotted_name(node.func.value if isinstance(node.func, Attribute) else node.func) in _ARRAY_LIBRARIES:
-        return einsum_operands(*node.args)
-    if name not in _MATMUL_FUNCTIONS:
+    if name not in _MATMUL_FUNCTIONS and name != "einsum":
         return None
     func = node.func
     if not isinstance(func, Attribute):
         return None
-    if dotted_name(func.value) in _ARRAY_LIBRARIES:
+    operation = _array_operation(func)
+    if operation == ArrayOperation.EINSUM:
+        return einsum_operands(*node.args) if len(node.args) == 3 else None
+    if operation == ArrayOperation.MATMUL:
         return (node.args[0], node.args[1]) if len(node.args) == 2 and not _has_starred(node.args) else None
+    if name == "einsum":
+        return None
     if len(node.args) == 1 and not _has_starred(node.args):
         return func.value, node.args[0]
     return None
@@ -566,7 +576,7 @@ def _square_of_reshape(node: ast.expr, index: ModuleIndex, depth: int) -> tuple[
             if len(sizes) == 1 and isinstance(node.args[0], (ast.Tuple, ast.List)):
                 sizes = [int_value(element) for element in node.args[0].elts]
             return _square_of_sizes(sizes)
-        if method in ("tile", "repeat", "broadcast_to") and node.args and dotted_name(node.func.value) in ("np", "numpy", "torch"):
+        if method in ("tile", "repeat", "broadcast_to") and node.args and knowledge_base().is_array_namespace(dotted_name(node.func.value) or ""):
             return _batched(square_shape(node.args[0], index, depth - 1))
         if method in ("repeat", "expand") or (method == "unsqueeze" and int_value(node.args[0] if node.args else None) == 0):
             return _batched(square_shape(node.func.value, index, depth - 1))
@@ -628,13 +638,10 @@ def _square_of_maker(node: Call) -> tuple[int, bool] | None:
     return None
 
 
-# Module names under which `eye`/`zeros`/... are array makers (as written, or as conventionally imported).
-_ARRAY_MODULE_ROOTS: Final = frozenset({"np", "numpy", "torch", "jnp", "jax", "cp", "cupy", "onp"})
-
-
 def _array_module_call(node: Call) -> bool:
-    """`np.eye(3)`, `torch.zeros(4, 4)`, `numpy.identity(4)`: a maker called through an array module."""
-    return (dotted_name(node.func) or "").split(".")[0] in _ARRAY_MODULE_ROOTS
+    """`np.eye(3)`, `torch.zeros(4, 4)`, `numpy.identity(4)`: a maker called through an array namespace's
+    module (as written, or as conventionally imported), by the stubs."""
+    return isinstance(node.func, Attribute) and knowledge_base().is_array_namespace(dotted_name(node.func) or "")
 
 
 def _square_of_sizes(sizes: list[int | None]) -> tuple[int, bool] | None:
@@ -654,8 +661,13 @@ def _stacks(node: Call) -> bool:
 
 
 def _is_tf_style_maker(node: Call) -> bool:
-    """tf.transformations / transforms3d style 4x4 makers, not a method of some object."""
-    return call_name(node) != "rotation_matrix" or dotted_name(node.func) in ("tf.transformations.rotation_matrix", "tft.rotation_matrix", "transformations.rotation_matrix")
+    """tf.transformations / transforms3d style 4x4 makers, not a method of some object: `rotation_matrix`
+    only as a module function whose stub returns a 4x4 transform."""
+    if call_name(node) != "rotation_matrix":
+        return True
+    api = knowledge_base().api_as_written(dotted_name(node.func) or "")
+    returned = {signature.returns.kind for signature in api.signatures if signature.returns is not None} if api is not None else set()
+    return returned == {Kind.TRANSFORM}
 
 
 def _literal_square(node: ast.expr) -> int | None:

@@ -41,10 +41,13 @@ class KnowledgeBase:
         self._records: dict[str, dict[str, Geometry]] | None = None
         self._record_field_names: dict[str, frozenset[str]] = {}
         self._float_converted: frozenset[str] | None = None
+        self._conventional_modules: dict[str, str] = {}
+        self._array_operations: dict[str, str] = {}
         for library in libraries:
             for name, target in library.extends.items():
                 self._extensions[name] = (library.packages, target)
             self._conventional.update(library.conventional_names)
+            self._conventional_modules.update(library.conventional_modules)
             self._apis.update(library.apis)
             self._aliases.update(library.aliases)
             for package in library.packages:
@@ -56,8 +59,13 @@ class KnowledgeBase:
                     self._tf_apis.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
                 if _names_ros_parameters(api):
                     self._parameter_apis.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
+            for api in library.apis.values():
+                operations = {signature.returns.array_operation for signature in api.signatures if signature.returns is not None}
+                if len(operations) == 1 and None not in operations:
+                    self._array_operations[api.qualified_name] = operations.pop()  # type: ignore[assignment]
             for executable in library.executables.values():
                 self._executables[(executable.package, executable.name)] = executable
+        self._array_libraries = frozenset(self._apis[name].library for name in self._array_operations)
 
     def api(self, qualified_name: str) -> Api | None:
         """The API a qualified name means, through re-exports (`scipy.spatial.transform.Rotation.from_quat`)."""
@@ -126,6 +134,40 @@ class KnowledgeBase:
     def conventional_name(self, name: str) -> str | None:
         """The library class a bare local name means by convention (METADATA.toml's `conventional_names`)."""
         return self._conventional.get(name)
+
+    def conventional_module(self, name: str) -> str | None:
+        """The module a bare local name means by convention where no import says (`np`: numpy, `jnp`:
+        jax.numpy), from METADATA.toml's `[conventional_modules]`."""
+        return self._conventional_modules.get(name)
+
+    def module_names(self) -> frozenset[str]:
+        """Every local name that is a library's module by convention, and every stubbed import name."""
+        return frozenset(self._conventional_modules) | frozenset(self._roots)
+
+    def api_as_written(self, dotted: str) -> Api | None:
+        """The API a dotted name means as written in a file, without its imports (`np.linalg.inv`,
+        `tft.rotation_matrix`): the name itself, else with its head read as the module it conventionally
+        means (`numpy.linalg.inv`)."""
+        found = self.api(dotted)
+        if found is not None:
+            return found
+        head, dot, rest = dotted.partition(".")
+        module = self._conventional_modules.get(head)
+        return self.api(f"{module}{dot}{rest}") if module is not None else None
+
+    def array_operation(self, dotted: str) -> str | None:
+        """What an array namespace's function does to matrices (`markers.ArrayOperation`), for a name as
+        written (`np.linalg.inv`, `torch.bmm`)."""
+        api = self.api_as_written(dotted)
+        return self._array_operations.get(api.qualified_name) if api is not None else None
+
+    def is_array_namespace(self, dotted: str) -> bool:
+        """Whether a module name as written (`np`, `torch`, `jnp`) is an array namespace's: a library with
+        array operations in its stub."""
+        head = dotted.partition(".")[0]
+        module = self._conventional_modules.get(head, head)
+        library = self.library_of_module(module)
+        return library is not None and library.name in self._array_libraries
 
     def converted_with_float(self, class_name: str) -> bool:
         """Whether numpy reads an instance of this library class as one number: its stub defines `__float__`

@@ -12,6 +12,8 @@ with its meaning.
   (``unless_imported``: and none of those, a library whose same-named methods mean something else).
 - ``Annotated[T, CameraAxes.OPENCV]``: the camera axes of a pose or of image coordinates (OpenCV: x
   right, y down, z forward; OpenGL/Blender: x right, y up, z backward; PyTorch3D: x left, y up, z forward).
+- ``Annotated[T, ArrayOperation.INVERSE]`` (``TRANSPOSE``, ``MATMUL``, ``EINSUM``) on the return of an array
+  namespace's function (numpy, torch, jax.numpy, cupy...): what it does to the matrices it is given.
 - ``Annotated[T, ROW_VECTORS]``: the library applies its matrices to row vectors (``p @ R``), so a
   matrix it is given or returns is the transpose of the column-vector one.
 - ``Annotated[T, STACKED]``: the parameter also accepts a stack (``(..., 4)`` quaternions, ``(N, 3)``
@@ -89,6 +91,16 @@ class RosParameter:
     DEFAULT: Final = "default"  # the value the parameter has when nothing overrides it
     DECLARATIONS: Final = "declarations"  # a list of (name, default[, descriptor]) tuples
     NAMESPACE: Final = "namespace"  # put before each declared name, with a dot
+
+
+class ArrayOperation:
+    """What an array namespace's function does to the matrices it is given, as `Annotated` metadata on its
+    return (`def inv(a) -> Annotated[object, ArrayOperation.INVERSE]`): what the pose rules see through."""
+
+    TRANSPOSE: Final = "transpose"  # swaps the last two axes (`np.transpose(R)`, `torch.transpose(R, -1, -2)`)
+    INVERSE: Final = "inverse"  # the matrix inverse (`np.linalg.inv`, `torch.inverse`)
+    MATMUL: Final = "matmul"  # the matrix product of its two arguments (`np.dot`, `torch.bmm`)
+    EINSUM: Final = "einsum"  # a product spelled by subscripts (`np.einsum("ij,nj->ni", R, p)`)
 
 
 ROW_VECTORS: Final = "row vectors"

@@ -35,6 +35,7 @@ class Geometry:
     tf_frame: str | None = None  # markers.TfFrame values: the role of a tf frame id (or of published transforms)
     launch_part: str | None = None  # markers.LaunchNode values: a part of a launched ROS executable
     ros_parameter: str | None = None  # markers.RosParameter values: a part of a declared or read ROS parameter
+    array_operation: str | None = None  # markers.ArrayOperation values: what an array function does to matrices
 
 
 @dataclass(frozen=True)
@@ -151,5 +152,7 @@ class Library:
     # a node that imports tf2_geometry_msgs is handed a tf2 buffer)
     recognised_with: tuple[str, ...] = ()
     ros_client: int | None = None  # 1 or 2: a ROS client library (a module that imports it is a ROS node)
+    # local names that mean one of its modules where a file shows no import (`np` for numpy)
+    conventional_modules: dict[str, str] = field(default_factory=dict)
     # how code that imports it names frames: "monogram" (Drake's `X_WB`, `p_BQ`: the frames are in the name)
     frame_naming: str | None = None

@@ -74,6 +74,7 @@ def read_library(folder: Path) -> Library:
         checked=str(metadata.get("checked", "")),
         upstream=str(metadata.get("upstream", "")),
         conventional_names={str(name): str(target) for name, target in metadata.get("conventional_names", {}).items()},
+        conventional_modules={str(name): str(target) for name, target in metadata.get("conventional_modules", {}).items()},
         extends={str(name): str(target) for name, target in metadata.get("extends", {}).items()},
         executables=_executables(metadata_path, metadata.get("executables", {})),
         recognised_with=tuple(str(name) for name in metadata.get("recognised_with", ())),
@@ -292,7 +293,7 @@ class _ModuleReader:
 
 def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
     kind, camera_axes, row_vectors, stacked = base.kind, base.camera_axes, base.row_vectors, base.stacked
-    tf_frame, launch_part, ros_parameter = base.tf_frame, base.launch_part, base.ros_parameter
+    tf_frame, launch_part, ros_parameter, array_operation = base.tf_frame, base.launch_part, base.ros_parameter, base.array_operation
     for marker in markers:
         name = _last(marker)
         if name in _FRAMED and kind is None:  # `Annotated[PointCloud, PointArray]`: a library object that holds points
@@ -309,6 +310,8 @@ def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
             launch_part = marker.attr.lower()
         elif isinstance(marker, ast.Attribute) and _last(marker.value) == "RosParameter":
             ros_parameter = marker.attr.lower()
+        elif isinstance(marker, ast.Attribute) and _last(marker.value) == "ArrayOperation":
+            array_operation = marker.attr.lower()
     return Geometry(
         kind=kind,
         quaternion_order=base.quaternion_order,
@@ -322,6 +325,7 @@ def _annotated(base: Geometry, markers: list[ast.expr]) -> Geometry:
         tf_frame=tf_frame,
         launch_part=launch_part,
         ros_parameter=ros_parameter,
+        array_operation=array_operation,
     )
 
 

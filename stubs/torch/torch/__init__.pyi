@@ -1,0 +1,26 @@
+from typing import Annotated
+
+from geolint.knowledge.markers import ArrayOperation
+
+from torch import linalg as linalg
+
+def transpose(input: object, dim0: int, dim1: int) -> Annotated[object, ArrayOperation.TRANSPOSE]:
+    """Source: torch torch.transpose (PyTorch 2.x documentation): "Returns a tensor that is a transposed version of input. The given dimensions dim0 and dim1 are swapped"."""
+
+def swapaxes(input: object, axis0: int, axis1: int) -> Annotated[object, ArrayOperation.TRANSPOSE]:
+    """Source: torch torch.swapaxes (PyTorch 2.x documentation): "Alias for torch.transpose()"."""
+
+def inverse(input: object, *, out: object = ...) -> Annotated[object, ArrayOperation.INVERSE]:
+    """Source: torch torch.inverse (PyTorch 2.x documentation): "Alias for torch.linalg.inv()"."""
+
+def matmul(input: object, other: object, *, out: object = ...) -> Annotated[object, ArrayOperation.MATMUL]:
+    """Source: torch torch.matmul (PyTorch 2.x documentation): "Matrix product of two tensors"; batched for more than two dimensions."""
+
+def bmm(input: object, mat2: object, *, out: object = ...) -> Annotated[object, ArrayOperation.MATMUL]:
+    """Source: torch torch.bmm (PyTorch 2.x documentation): "Performs a batch matrix-matrix product of matrices stored in input and mat2"."""
+
+def mm(input: object, mat2: object, *, out: object = ...) -> Annotated[object, ArrayOperation.MATMUL]:
+    """Source: torch torch.mm (PyTorch 2.x documentation): "Performs a matrix multiplication of the matrices input and mat2"."""
+
+def einsum(equation: str, *operands: object) -> Annotated[object, ArrayOperation.EINSUM]:
+    """Source: torch torch.einsum (PyTorch 2.x documentation): "Sums the product of the elements of the input operands along dimensions specified using a notation based on the Einstein summation convention"."""
