@@ -15,6 +15,8 @@ _FACTS = (
     ("points and vectors", lambda geometry: geometry.kind is not None and geometry.kind.value in ("point", "vector", "direction")),
     ("rotations and poses", lambda geometry: geometry.kind is not None and geometry.kind.value in ("rotation", "transform", "translation")),
     ("camera axes", lambda geometry: geometry.camera_axes is not None),
+    ("array operations", lambda geometry: geometry.array_operation is not None),
+    ("products", lambda geometry: False),  # stated by `__mul__` (see `_states`)
 )
 
 
@@ -29,6 +31,8 @@ def _states(api: Api) -> set[str]:
     stated = {label for label, test in _FACTS for geometry in geometries if test(geometry)}
     if any(signature.components for signature in api.signatures):
         stated.add("quaternion order")
+    if api.qualified_name.endswith(".__mul__") and stated:
+        stated.add("products")
     return stated
 
 
@@ -47,10 +51,13 @@ def catalog_markdown(kb: KnowledgeBase | None = None) -> str:
         "arguments it reads in radians or degrees and in which unit it returns angles (GEO302, GEO305, GEO306,",
         "GEO307, with the keyword that says degrees as the fix), which arguments a transform call moves as points",
         "or as free vectors and the call or keyword that moves them the other way (GEO101, GEO102), which poses",
-        "it reads as world-to-camera (GEO209), and the kind of matrix a call returns. The mypy plugin reads the",
-        "same quaternion orders (`geo-quaternion-order`) and moving calls. Some rules still read older tables",
-        "of the fact base as well (ROS messages, Drake's monogram names, tf's frame ids, Isaac Sim's prims,",
-        "numpy-quaternion, PyKDL and spatialmath products).",
+        "it reads as world-to-camera (GEO209), and the kind of matrix a call returns; what a message or record",
+        "field holds (`Twist.linear` is a free vector, px4_msgs `VehicleOdometry.q` is w, x, y, z), what `*` with a",
+        "library pose does to what it multiplies (PyKDL's `Frame`, spatialmath's `SE3` translate it), which array",
+        "functions transpose, invert and multiply matrices (numpy, torch, jax.numpy, cupy, tensorflow), and that",
+        "a project importing Drake names poses in monogram notation. The mypy plugin reads the same quaternion",
+        "orders (`geo-quaternion-order`) and moving calls. Some rules still read older tables of the fact base as",
+        "well (tf's frame ids, angle constants of the array namespaces).",
         "",
         "| library | import names | checked against | APIs | what the stubs state |",
         "|---|---|---|---|---|",
