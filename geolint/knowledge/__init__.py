@@ -42,6 +42,7 @@ class KnowledgeBase:
         self._record_field_names: dict[str, frozenset[str]] = {}
         self._float_converted: frozenset[str] | None = None
         self._conventional_modules: dict[str, str] = {}
+        self._frameless: dict[str, bool] = {}
         self._array_operations: dict[str, str] = {}
         for library in libraries:
             for name, target in library.extends.items():
@@ -184,6 +185,21 @@ class KnowledgeBase:
                     methods.setdefault(owner, set()).add(method)
             self._float_converted = frozenset(owner for owner, found in methods.items() if found == {"__float__"})
         return self._float_converted
+
+    def frameless_module(self, dotted: str) -> bool:
+        """Whether `dotted` is in a module of stubbed functions none of which names a tf frame
+        (`tf.transformations.quaternion_matrix`, or the module itself): a library's math helpers, beside its
+        listeners and broadcasters."""
+        parts = dotted.split(".")
+        for end in range(len(parts), 1, -1):
+            prefix = ".".join(parts[:end])
+            found = self._frameless.get(prefix)
+            if found is None:
+                under = [api for name, api in self._apis.items() if name.startswith(prefix + ".")]
+                found = self._frameless[prefix] = bool(under) and not any(_names_tf_frames(api) for api in under)
+            if found:
+                return True
+        return False
 
     def packages_naming_frames(self, style: str) -> tuple[str, ...]:
         """The import names of the libraries whose users name frames in this style (METADATA.toml's

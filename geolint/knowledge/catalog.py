@@ -57,7 +57,7 @@ def catalog_markdown(kb: KnowledgeBase | None = None) -> str:
         "functions transpose, invert and multiply matrices (numpy, torch, jax.numpy, cupy, tensorflow), and that",
         "a project importing Drake names poses in monogram notation. The mypy plugin reads the same quaternion",
         "orders (`geo-quaternion-order`) and moving calls. Some rules still read older tables of the fact base as",
-        "well (tf's frame ids, angle constants of the array namespaces).",
+        "well (the array namespaces' angle constants and padding, a few module names).",
         "",
         "| library | import names | checked against | APIs | what the stubs state |",
         "|---|---|---|---|---|",

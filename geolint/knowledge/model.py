@@ -154,5 +154,7 @@ class Library:
     ros_client: int | None = None  # 1 or 2: a ROS client library (a module that imports it is a ROS node)
     # local names that mean one of its modules where a file shows no import (`np` for numpy)
     conventional_modules: dict[str, str] = field(default_factory=dict)
+    # its frame ids may start with a slash: it strips one itself before asking tf2 (ROS 1's tf)
+    strips_leading_slash: bool = False
     # how code that imports it names frames: "monogram" (Drake's `X_WB`, `p_BQ`: the frames are in the name)
     frame_naming: str | None = None

@@ -80,6 +80,7 @@ def read_library(folder: Path) -> Library:
         recognised_with=tuple(str(name) for name in metadata.get("recognised_with", ())),
         ros_client=int(metadata["ros_client"]) if "ros_client" in metadata else None,
         frame_naming=_frame_naming(metadata_path, metadata.get("frame_naming")),
+        strips_leading_slash=bool(metadata.get("strips_leading_slash", False)),
     )
     for stub in sorted(folder.rglob("*.pyi")):
         relative = stub.relative_to(folder).with_suffix("")

@@ -104,3 +104,30 @@ def test_the_findings_cache_follows_the_package_evidence(tmp_path: Path) -> None
     assert _geo207(tmp_path, *cache) == []
     (package / "nodes" / "lookup.py").write_text("import rospy\nimport tf2_ros\n")
     assert _geo207(tmp_path, *cache) == [("cloud_node.py", 8)]
+
+
+def test_a_module_using_ros1_tf_itself_is_left_alone_but_not_one_using_only_its_math(tmp_path: Path) -> None:
+    """ROS 1 tf strips a leading slash before asking tf2 (stubs/tf/METADATA.toml `strips_leading_slash`), so a
+    tf2 package's node that uses tf's listener or broadcaster may stamp '/camera_link'; one that imports only
+    tf.transformations (frame-free helpers, however it is imported) is tf2 code like any other."""
+    uses = {
+        "math_from": "from tf.transformations import quaternion_from_euler\n",
+        "math_module": "from tf import transformations\n",
+        "math_attribute": "import tf\nQ = tf.transformations.quaternion_from_euler(0, 0, 1)\n",
+        "listener_from": "from tf import TransformListener\n",
+        "listener_attribute": "import tf\nLISTENER = tf.TransformListener()\n",
+    }
+    for name, header in uses.items():
+        folder = _package(tmp_path, name, "  <depend>tf2_ros</depend>\n")
+        (folder / "nodes" / "cloud_node.py").write_text(header + NODE)
+    flagged = {Path(path).parent.parent.name for path, _ in _geo207_paths(tmp_path)}
+    assert flagged == {"math_from", "math_module", "math_attribute"}
+
+
+def _geo207_paths(root: Path) -> list[tuple[str, int]]:
+    completed = subprocess.run(
+        [sys.executable, "-m", "geolint", "check", "--select", "GEO207", "--format", "json", "--no-cache", "."],
+        cwd=root, capture_output=True, text=True, timeout=120,
+    )  # fmt: skip
+    assert completed.returncode in (0, 1), completed.stderr
+    return sorted((f["path"], f["line"]) for f in json.loads(completed.stdout))

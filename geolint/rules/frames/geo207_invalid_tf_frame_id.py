@@ -385,23 +385,32 @@ def _imported_modules(index: ModuleIndex) -> list[str]:
 
 
 def _uses_old_tf(index: ModuleIndex, imported: list[str]) -> bool:
-    """The module uses ROS 1 `tf` itself (a listener, a broadcaster, tf messages), not only
-    `tf.transformations`, the quaternion and matrix helpers tf2 code imports as well."""
-    if not any(name == "tf" or name.startswith("tf.") for name in imported):
+    """The module uses a tf library that strips a leading slash itself (ROS 1 `tf`: a listener, a
+    broadcaster, tf messages), by its METADATA.toml, and not only its frame-free helpers (`tf.transformations`,
+    the quaternion and matrix functions tf2 code imports as well)."""
+    kb = knowledge_base()
+
+    def strips(name: str) -> bool:
+        library = kb.library_of_module(name)
+        return library is not None and library.strips_leading_slash
+
+    def lenient(name: str) -> bool:
+        return strips(name) and not kb.frameless_module(name)
+
+    if not any(strips(name) for name in imported):
         return False
-    aliases: set[str] = set()
+    packages: set[str] = set()  # `import tf`: read through its attributes
     for node in index.nodes(Import, ImportFrom):
         if isinstance(node, ImportFrom) and node.module and not node.level:
-            if node.module == "tf" and any(alias.name != "transformations" for alias in node.names):
-                return True
-            if node.module.startswith("tf.") and node.module != "tf.transformations":
+            if any(lenient(f"{node.module}.{alias.name}") for alias in node.names):
                 return True
         elif isinstance(node, Import):
-            aliases.update(alias.asname or alias.name for alias in node.names if alias.name == "tf")
-            if any(alias.name.startswith("tf.") and alias.name != "tf.transformations" for alias in node.names):
+            if any("." in alias.name and lenient(alias.name) for alias in node.names):
                 return True
+            packages.update(alias.asname or alias.name for alias in node.names if "." not in alias.name and strips(alias.name))
     return any(
-        isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id in aliases and node.attr != "transformations"
+        isinstance(node, Attribute) and isinstance(node.value, Name) and node.value.id in packages
+        and lenient(f"{index.imports.get(node.value.id, node.value.id)}.{node.attr}")
         for node in index.nodes(Attribute)
     )
 
