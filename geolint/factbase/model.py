@@ -241,7 +241,7 @@ class FactBase:
         """`np`, `np.linalg`, `scipy.spatial`: a (dotted) module name, never a value."""
         if isinstance(node, Attribute):
             return node.attr not in ("T", "mT") and self.is_module_like(node.value)
-        return isinstance(node, Name) and (node.id in vocab.MODULE_LIKE or node.id in self.index.imported_modules)
+        return isinstance(node, Name) and (vocab.is_module_name(node.id) or node.id in self.index.imported_modules)
 
     def is_norm_call(self, node: AST) -> bool:
         """`np.linalg.norm(x, ...)`, `torch.norm(x)`, `x.norm(dim=-1)`, possibly indexed (`[:, None]`)."""

@@ -36,8 +36,13 @@ def is_third_party_root(top: str) -> bool:
 
 # Local names that mean a module by convention even when the import is not in this file.
 CONVENTIONAL_ALIASES: Final = {"np": "numpy", "jnp": "jax.numpy", "cp": "cupy"}
-# Module aliases that are never geometric values themselves (`np.random.normal` is not a normal).
-MODULE_LIKE: Final = frozenset({"np", "numpy", "math", "random", "torch", "scipy", "stats", "tf", "jnp", "cp", "os", "sys", "F"})
+# Module names that are never geometric values themselves (`np.random.normal` is not a normal): the standard
+# library's, and the array namespaces' by their stubs (`knowledge_base().array_module_names()`).
+STDLIB_MODULE_LIKE: Final = frozenset({"math", "random", "os", "sys"})
+
+
+def is_module_name(name: str) -> bool:
+    return name in STDLIB_MODULE_LIKE or name in knowledge_base().array_module_names()
 
 DIRECTION_ATTRIBUTES: Final = frozenset({"normals", "vertex_normals", "face_normals", "normal"})
 POINT_ATTRIBUTES: Final = frozenset({"vertices", "points", "centroid", "origin", "position"})

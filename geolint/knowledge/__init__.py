@@ -141,9 +141,13 @@ class KnowledgeBase:
         jax.numpy), from METADATA.toml's `[conventional_modules]`."""
         return self._conventional_modules.get(name)
 
-    def module_names(self) -> frozenset[str]:
-        """Every local name that is a library's module by convention, and every stubbed import name."""
-        return frozenset(self._conventional_modules) | frozenset(self._roots)
+    def array_module_names(self) -> frozenset[str]:
+        """The names a file calls array namespaces by: their import names and the local names conventional
+        for their modules (`np`, `jnp`, `la`, `F`), never values."""
+        packages = {package for name in self._array_libraries for package in self.libraries[name].packages}
+        return frozenset(packages) | frozenset(
+            name for name, module in self._conventional_modules.items() if self.library_of_module(module) in map(self.libraries.get, self._array_libraries)
+        )
 
     def api_as_written(self, dotted: str) -> Api | None:
         """The API a dotted name means as written in a file, without its imports (`np.linalg.inv`,

