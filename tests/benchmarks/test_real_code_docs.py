@@ -85,7 +85,7 @@ def test_the_blind_round_totals_add_up_and_name_real_manifests() -> None:
 
 def test_the_readme_quotes_the_blind_figures() -> None:
     rows = table_after("## Blind rounds: first contact")
-    end_states = next(row for row in rows if row[0] == "**5 to 12**")
+    end_states = next(row for row in rows if row[0] == "**5 to 13**")
     latest = [row for row in rows if not row[0].startswith("**")][-1]
     repositories, lines, findings, true = (number(end_states[column]) for column in (3, 4, 5, 6))
     caught, bugs = map(int, end_states[7].strip("*").split(" / "))
