@@ -174,14 +174,16 @@ class AngleUnits:
         values = [factor for factor in numerator + denominator if number(factor) is None and not self._is_pi(factor)]
         if len(values) != 1 or values[0] not in numerator:
             return None
-        pi_above = any(self._is_pi(factor) for factor in numerator)
-        pi_below = any(self._is_pi(factor) for factor in denominator)
+        # the product of the other factors: pi by name or written out (3.14159), 180, 0.0174533, a halving
+        pis = sum(self._is_pi(factor) for factor in numerator) - sum(self._is_pi(factor) for factor in denominator)
         above = [abs(value) for value in map(number, numerator) if value is not None]
         below = [abs(value) for value in map(number, denominator) if value is not None]
-        only = above[0] if len(above) == 1 and not (pi_above or pi_below or below) else None  # `x * 0.0174533`
-        if (pi_above and below == [180] and not above) or (only is not None and _is_radians_per_degree(only)):
+        if 0 in below:
+            return None
+        scale = math.prod(above) / math.prod(below) * math.pi**pis
+        if _is_radians_per_degree(scale) or _is_radians_per_degree(2 * scale):  # `x * pi / 180`, `fov * pi / 360`
             return RADIANS, values[0]
-        if (pi_below and above == [180] and not below) or (only is not None and _is_degrees_per_radian(only)):
+        if _is_degrees_per_radian(scale) or _is_degrees_per_radian(scale / 2):
             return DEGREES, values[0]
         return None
 
@@ -458,7 +460,7 @@ def _is_conversion_factor(value: float | None) -> bool:
 
 
 def _is_radians_per_degree(value: float) -> bool:
-    """pi / 180 written as a number (0.0174533)."""
+    """pi / 180 written as a number (0.0174533), or the product of factors that make it (3.14159 / 180)."""
     return abs(abs(value) - 0.0174533) < 1e-4
 
 

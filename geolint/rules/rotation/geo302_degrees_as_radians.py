@@ -183,6 +183,10 @@ class DegreesAsRadians(FactRule):
             "        return height / (2 * np.tan(self.fovy / 2))\n"
         ),
         Valid("import numpy as np\ndef f(fov_rad=30):\n    return np.tan(fov_rad / 2)\n"),
+        Valid(  # pi written out, and halved with it: the half field of view in radians
+            "import math\ndef focal(fov_degrees):\n    return 1 / math.tan(fov_degrees * 3.14159 / 360)\n"
+        ),
+        Valid("import numpy as np\ndef focal(fov_deg):\n    return 0.5 / np.tan(fov_deg * np.pi / 360)\n"),
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 90], degrees=True)\n'),
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 1.57])\n'),
         Valid("import numpy as np\nc = np.cos(np.pi / 2)\n"),
