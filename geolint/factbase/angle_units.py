@@ -178,9 +178,13 @@ class AngleUnits:
         pis = sum(self._is_pi(factor) for factor in numerator) - sum(self._is_pi(factor) for factor in denominator)
         above = [abs(value) for value in map(number, numerator) if value is not None]
         below = [abs(value) for value in map(number, denominator) if value is not None]
-        if 0 in below:
-            return None
-        scale = math.prod(above) / math.prod(below) * math.pi**pis
+        scale: float = math.pi**pis
+        for value in above:
+            scale *= value
+        for value in below:
+            if value == 0:
+                return None
+            scale /= value
         if _is_radians_per_degree(scale) or _is_radians_per_degree(2 * scale):  # `x * pi / 180`, `fov * pi / 360`
             return RADIANS, values[0]
         if _is_degrees_per_radian(scale) or _is_degrees_per_radian(scale / 2):
