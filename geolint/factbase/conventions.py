@@ -42,7 +42,7 @@ from geolint.factbase.declarations import declared_call_frames
 from geolint.factbase.fact_types import DST_FIRST, SRC_FIRST
 from geolint.factbase.syntax import statements_under
 from geolint.factbase.project_files import project_root
-from geolint.knowledge import MONOGRAM, knowledge_base
+from geolint.knowledge import knowledge_base
 from geolint.lint_types import Config
 from geolint.parsing import parse_module
 from geolint.semantic.names import ROTATION_LETTERS, TRANSFORM_LETTERS, NameFrames, is_frame
@@ -155,7 +155,7 @@ def votes_of_text(text: str) -> Votes:
 
 def _names_monogram_library(source: str) -> bool:
     """Whether the text names a library whose users name frames in monogram notation (Drake's `X_WB`)."""
-    return any(package in source for package in knowledge_base().packages_naming_frames(MONOGRAM))
+    return any(package in source for package in knowledge_base().monogram_packages())
 
 
 def votes_of_source(source: str, tree: Module | None = None, file: tuple[str, tuple[int, int]] | None = None) -> Votes:

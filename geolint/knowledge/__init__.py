@@ -60,13 +60,18 @@ class KnowledgeBase:
                     self._tf_apis.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
                 if _names_ros_parameters(api):
                     self._parameter_apis.setdefault(api.qualified_name.rpartition(".")[2], []).append(api)
-            for api in library.apis.values():
                 operations = {signature.returns.array_operation for signature in api.signatures if signature.returns is not None}
                 if len(operations) == 1 and None not in operations:
                     self._array_operations[api.qualified_name] = operations.pop()  # type: ignore[assignment]
             for executable in library.executables.values():
                 self._executables[(executable.package, executable.name)] = executable
         self._array_libraries = frozenset(self._apis[name].library for name in self._array_operations)
+        # asked per name and per file on the hot path: derived once here
+        array_packages = {package for name in self._array_libraries for package in self.libraries[name].packages}
+        self._array_module_names = frozenset(array_packages) | frozenset(
+            name for name, module in self._conventional_modules.items() if module.partition(".")[0] in array_packages
+        )
+        self._monogram_packages = tuple(sorted(package for library in libraries if library.frame_naming == MONOGRAM for package in library.packages))
 
     def api(self, qualified_name: str) -> Api | None:
         """The API a qualified name means, through re-exports (`scipy.spatial.transform.Rotation.from_quat`)."""
@@ -136,18 +141,10 @@ class KnowledgeBase:
         """The library class a bare local name means by convention (METADATA.toml's `conventional_names`)."""
         return self._conventional.get(name)
 
-    def conventional_module(self, name: str) -> str | None:
-        """The module a bare local name means by convention where no import says (`np`: numpy, `jnp`:
-        jax.numpy), from METADATA.toml's `[conventional_modules]`."""
-        return self._conventional_modules.get(name)
-
     def array_module_names(self) -> frozenset[str]:
         """The names a file calls array namespaces by: their import names and the local names conventional
         for their modules (`np`, `jnp`, `la`, `F`), never values."""
-        packages = {package for name in self._array_libraries for package in self.libraries[name].packages}
-        return frozenset(packages) | frozenset(
-            name for name, module in self._conventional_modules.items() if self.library_of_module(module) in map(self.libraries.get, self._array_libraries)
-        )
+        return self._array_module_names
 
     def api_as_written(self, dotted: str) -> Api | None:
         """The API a dotted name means as written in a file, without its imports (`np.linalg.inv`,
@@ -205,10 +202,10 @@ class KnowledgeBase:
                 return True
         return False
 
-    def packages_naming_frames(self, style: str) -> tuple[str, ...]:
-        """The import names of the libraries whose users name frames in this style (METADATA.toml's
-        `frame_naming`: "monogram" for Drake's `X_WB`)."""
-        return tuple(sorted(package for library in self.libraries.values() if library.frame_naming == style for package in library.packages))
+    def monogram_packages(self) -> tuple[str, ...]:
+        """The import names of the libraries whose users name frames in monogram notation (METADATA.toml's
+        `frame_naming = "monogram"`: Drake's `X_WB`)."""
+        return self._monogram_packages
 
     def library_of_module(self, module: str) -> Library | None:
         """The library whose import names include `module`'s top package."""

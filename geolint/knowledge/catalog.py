@@ -16,8 +16,9 @@ _FACTS = (
     ("rotations and poses", lambda geometry: geometry.kind is not None and geometry.kind.value in ("rotation", "transform", "translation")),
     ("camera axes", lambda geometry: geometry.camera_axes is not None),
     ("array operations", lambda geometry: geometry.array_operation is not None),
-    ("products", lambda geometry: False),  # stated by `__mul__` (see `_states`)
 )
+# what a table row lists, in this order: the facts above, and the products a class's `__mul__` states
+_LABELS = (*(label for label, _ in _FACTS), "products")
 
 
 def _states(api: Api) -> set[str]:
@@ -66,7 +67,7 @@ def catalog_markdown(kb: KnowledgeBase | None = None) -> str:
         library = kb.libraries[name]
         apis = [api for api in library.apis.values() if api.signatures or api.is_class]
         stated = set().union(*(_states(api) for api in apis)) if apis else set()
-        facts = ", ".join(label for label, _ in _FACTS if label in stated) or "-"
+        facts = ", ".join(label for label in _LABELS if label in stated) or "-"
         packages = ", ".join(f"`{package}`" for package in library.packages)
         lines.append(f"| [{library.name}]({library.upstream}) | {packages} | {library.checked} | {len(apis)} | {facts} |")
     return "\n".join(lines) + "\n"
