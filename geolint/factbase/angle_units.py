@@ -283,8 +283,8 @@ class AngleUnits:
         angle that is no plausible radian value (above 2 pi) but a plausible degree value
         (`PHI = 73.17`, `self.tilt = 30`); None otherwise (any other store, `+=`, `global`)."""
         found = self._literal_binding(node)
-        if found is None:
-            return None
+        if found is None or isinstance(node, Name) and node.id in _index_names(self.facts):
+            return None  # `sigma[k]` beside `np.sin(k)`: an index encoded periodically, not an angle
         value, where = found
         if not plausible_degrees(value):
             return None
@@ -365,6 +365,21 @@ def _literal_at(value: ast.expr, where: str) -> tuple[float, str] | None:
         return None
     place = f"line {value.lineno}" + (f" {where}" if where else "")
     return float(literal), place
+
+
+def _index_names(facts: FactBase) -> frozenset[str]:
+    """Names the module uses to index a sequence (`sigma[k]`, `poses[i, :3]`): counts and positions."""
+
+    def compute() -> frozenset[str]:
+        found: set[str] = set()
+        for node in facts.index.nodes(Subscript):
+            index = node.slice  # type: ignore[attr-defined]
+            for item in index.elts if isinstance(index, ast.Tuple) else [index]:
+                if isinstance(item, Name):
+                    found.add(item.id)
+        return frozenset(found)
+
+    return facts.module_fact("index names", compute)
 
 
 def _declared_global(facts: FactBase) -> frozenset[str]:

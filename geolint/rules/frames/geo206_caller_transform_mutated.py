@@ -12,18 +12,22 @@ from ast import (
     AsyncFunctionDef,
     Attribute,
     AugAssign,
+    Call,
     Constant,
+    For,
     FunctionDef,
+    Load,
     Module,
     Name,
     Return,
     Subscript,
+    While,
 )
 
 from geolint.factbase import ModuleIndex, index_of
 from geolint.factbase.model import is_slice_upto, statements_under
 from geolint.factbase.pose_parts import int_value, matrix_indices
-from geolint.factbase.reaching import parameter_of, value_of
+from geolint.factbase.reaching import parameter_of, reaching_bindings, value_of
 from geolint.rules.base import AstRule, Invalid, Valid
 from geolint.rules.triggers import AllOf
 
@@ -79,8 +83,9 @@ class CallerTransformMutated(AstRule):
     those (an in-place API such as `fill(uv, z, T)` that returns `uv, z`: the transform it
     rewrites is taken for a scratch slot of that API, though a caller could still be surprised),
     or by their name (`set_*`, `update_*`, `apply_*`, `*_inplace`, a trailing underscore); an
-    in-place helper that also returns a status value is flagged. Callers are not read: a helper
-    with no caller in the project, or whose every caller passes a copy, is judged all the same.
+    in-place helper that also returns a status value is flagged. Callers are read in the module only:
+    a helper whose every call there passes a name the caller never reads again is left alone, but
+    callers in other modules are not seen, and one that passes a copy is judged all the same.
     """
 
     code = "GEO206"
@@ -97,6 +102,14 @@ class CallerTransformMutated(AstRule):
         Valid("def f(K, s):\n    K[:2, 2] *= s\n    return K\n"),
         Valid("def f(poses, c):\n    poses[:, :3, 3] -= c\n    return poses, c\n"),  # handed back: the caller rebinds
         Valid("def snap(obj, y):\n    obj.translation = y\n    return True\n"),  # moving a simulated object
+        Valid(  # its one caller never reads its own `poses` again
+            "def center(poses, c):\n    poses[:, :3, 3] -= c\n    return R @ poses\n"
+            "def load(self, poses, c):\n    self.poses = center(poses, c)\n    return self.poses\n"
+        ),
+        Valid(  # the caller rebinds `poses` before it reads the name again
+            "def center(poses, c):\n    poses[:, :3, 3] -= c\n    return R @ poses\n"
+            "def load(poses, c):\n    centred = center(poses, c)\n    poses = []\n    poses.append(centred)\n    return poses\n"
+        ),
         Valid(  # an in-place API: fills uv and z and hands them back; T's translation is its scratch slot
             "def reproject(uv, z, T, A):\n    for i in range(len(uv)):\n        T[:3, 3] = lift(uv[i], z[i])\n"
             "        p = (A @ T)[:3, 3]\n        z[i] = p[2]\n        uv[i] = p[:2] / p[2]\n    return uv, z\n"
@@ -114,6 +127,10 @@ class CallerTransformMutated(AstRule):
         ),
         Invalid("def f(poses, center, pts):\n    out = poses\n    out[:, :3, 3] -= center\n    return pts @ out\n"),
         Invalid("def heading(pose):\n    pose.pose.orientation.w = 1.0\n    return yaw_of(pose)\n"),
+        Invalid(  # the caller reads `poses` after the call
+            "def center(poses, c):\n    poses[:, :3, 3] -= c\n    return R @ poses\n"
+            "def load(poses, c):\n    centred = center(poses, c)\n    return poses, centred\n"
+        ),
         Invalid(  # returns a parameter it never writes: not an in-place API
             "def reproject(uv, T, A):\n    T[:3, 3] = lift(uv)\n    return uv, A @ T\n"
         ),
@@ -139,12 +156,56 @@ class CallerTransformMutated(AstRule):
                     continue  # returned: an update-and-return helper whose caller rebinds
                 if _returns_name(function, _parameters_written_in_place(function, index) - {parameter}):
                     continue  # an in-place API: it fills other arguments and hands them back
+                if _no_caller_reads_it_again(function, parameter, index):
+                    continue  # every call in the module passes a name its caller never reads after the call
                 self.report(
                     target,
                     f"`{function.name}` rewrites part of the transform its caller passed as "
                     f"`{parameter}` (`{ast.unparse(target)}`), so the caller's transform changes "
                     f"too; copy it first (`{parameter}.copy()`, `copy.deepcopy({parameter})`)",
                 )
+
+
+def _no_caller_reads_it_again(function: FunctionDef | AsyncFunctionDef, parameter: str, index: ModuleIndex) -> bool:
+    """The module calls `function` by name, and at every call the argument for `parameter` is a name whose
+    value the calling scope never reads after the call, outside a loop (`self.poses = center(poses)`, and
+    `poses` is done with or rebound): the write changes nothing anyone reads. False when there is no call."""
+    arguments = function.args
+    positional = [argument.arg for argument in (*arguments.posonlyargs, *arguments.args)]
+    calls = [call for call in index.nodes(Call) if isinstance(call, Call) and isinstance(call.func, Name) and call.func.id == function.name]
+    if not calls:
+        return False
+    for call in calls:
+        given = _argument_for(call, positional, parameter)
+        if not isinstance(given, Name) or _in_loop(call, index):
+            return False
+        scope = index.scope_of(call)
+        bindings = index.lookup(given.id, scope) or []
+        passed = {id(binding) for binding in reaching_bindings(index, scope, given, bindings)}
+        after = call.end_lineno or call.lineno
+        for node in ast.walk(scope.node):
+            if not (isinstance(node, Name) and node.id == given.id and isinstance(node.ctx, Load) and node.lineno > after):
+                continue
+            if index.scope_of(node) is scope and passed & {id(binding) for binding in reaching_bindings(index, scope, node, bindings)}:
+                return False  # a later read of the value it was handed (not of a later rebinding)
+    return True
+
+
+def _argument_for(call: Call, positional: list[str], parameter: str) -> ast.expr | None:
+    if parameter in positional and positional.index(parameter) < len(call.args):
+        return call.args[positional.index(parameter)]
+    return next((given.value for given in call.keywords if given.arg == parameter), None)
+
+
+def _in_loop(node: AST, index: ModuleIndex) -> bool:
+    """Inside a `for` or `while` of its own scope (a later iteration may read what an earlier one wrote)."""
+    scope = index.scope_of(node).node
+    current = index.parent(node)
+    while current is not None and current is not scope:
+        if isinstance(current, (For, While)):
+            return True
+        current = index.parent(current)
+    return False
 
 
 def _returns_value(function: FunctionDef | AsyncFunctionDef) -> bool:

@@ -187,6 +187,10 @@ class DegreesAsRadians(FactRule):
             "import math\ndef focal(fov_degrees):\n    return 1 / math.tan(fov_degrees * 3.14159 / 360)\n"
         ),
         Valid("import numpy as np\ndef focal(fov_deg):\n    return 0.5 / np.tan(fov_deg * np.pi / 360)\n"),
+        Valid(  # an index (it picks `sigma[k_plot]`) encoded as a periodic feature, not an angle
+            "import numpy as np\nk_plot = 50\nassert k_plot >= 0 and k_plot < K\n"
+            "X = np.vstack((xs.flatten(), 0 * xs.flatten() + np.sin(k_plot)))\nplt.plot(X[0, :] - sigma[k_plot] * Y[0, :])\n"
+        ),
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 90], degrees=True)\n'),
         Valid('from scipy.spatial.transform import Rotation\nr = Rotation.from_euler("xyz", [0, 0, 1.57])\n'),
         Valid("import numpy as np\nc = np.cos(np.pi / 2)\n"),
