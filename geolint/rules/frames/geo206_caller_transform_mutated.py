@@ -175,25 +175,32 @@ def _no_caller_reads_it_again(function: FunctionDef | AsyncFunctionDef, paramete
     calls = [call for call in index.nodes(Call) if isinstance(call, Call) and isinstance(call.func, Name) and call.func.id == function.name]
     if not calls:
         return False
+    reads: dict[tuple[int, str], list[Name]] = {}  # one walk per calling scope and name, however many calls it makes
     for call in calls:
         given = _argument_for(call, positional, parameter)
         if not isinstance(given, Name) or _in_loop(call, index):
             return False
         scope = index.scope_of(call)
+        key = (id(scope.node), given.id)
+        if key not in reads:
+            reads[key] = [
+                node
+                for node in ast.walk(scope.node)
+                if isinstance(node, Name) and node.id == given.id and isinstance(node.ctx, Load) and index.scope_of(node) is scope
+            ]
         bindings = index.lookup(given.id, scope) or []
         passed = {id(binding) for binding in reaching_bindings(index, scope, given, bindings)}
         after = call.end_lineno or call.lineno
-        for node in ast.walk(scope.node):
-            if not (isinstance(node, Name) and node.id == given.id and isinstance(node.ctx, Load) and node.lineno > after):
-                continue
-            if index.scope_of(node) is scope and passed & {id(binding) for binding in reaching_bindings(index, scope, node, bindings)}:
+        for node in reads[key]:
+            if node.lineno > after and passed & {id(binding) for binding in reaching_bindings(index, scope, node, bindings)}:
                 return False  # a later read of the value it was handed (not of a later rebinding)
     return True
 
 
 def _argument_for(call: Call, positional: list[str], parameter: str) -> ast.expr | None:
-    if parameter in positional and positional.index(parameter) < len(call.args):
-        return call.args[positional.index(parameter)]
+    position = positional.index(parameter) if parameter in positional else len(call.args)
+    if position < len(call.args):
+        return call.args[position]
     return next((given.value for given in call.keywords if given.arg == parameter), None)
 
 
