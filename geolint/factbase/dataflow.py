@@ -18,8 +18,14 @@ from geolint.factbase.model import walk_within
 
 def writes_into(index: ModuleIndex, scope: Scope, name: str) -> bool:
     """Whether `scope` writes into the value `name` holds: `name[:3, 3] = t`, `name += d`,
-    `name.translation = t` (or `-=`)."""
-    return name in scope.subscript_stores or name in scope.augmented or name in _attribute_owners(index, scope)
+    `name[:3, 1:3] *= -1`, `name.translation = t` (or `-=`)."""
+    return name in scope.subscript_stores or updates_in_place(index, scope, name)
+
+
+def updates_in_place(index: ModuleIndex, scope: Scope, name: str) -> bool:
+    """Whether `scope` updates the value `name` holds other than by storing into a block of it:
+    `name += d`, `name[:3, 1:3] *= -1`, `name.translation = t`."""
+    return name in scope.augmented or name in scope.item_augmented or name in _attribute_owners(index, scope)
 
 
 def last_update_from_itself(index: ModuleIndex, scope: Scope, name: str) -> int:

@@ -20,6 +20,11 @@ A pycolmap attribute's frames belong to its owner (`image1.cam_from_world` is ca
 its direction does not: every `cam_from_world` maps world into a camera. This module answers only
 the direction, so two owners never conflict here.
 
+The same evidence says, where the data states it, which way the camera's own axes point
+(`Extrinsic.axes`): COLMAP and BOP poses are in OpenCV axes, NeRF transforms.json's in OpenGL
+axes; a name may say it (`c2w_opengl`). Inverting a pose keeps its camera axes; permuting its
+columns or writing into it in place (`c2w[:3, 1:3] *= -1`, the usual conversion) loses them.
+
 Every question answers None when the evidence is missing or contradictory.
 """
 
@@ -31,8 +36,9 @@ import re
 from dataclasses import dataclass
 from typing import Final, TYPE_CHECKING
 
+from geolint.factbase import dataflow
 from geolint.factbase.memo import NodeMemo
-from geolint.factbase.syntax import is_full_slice, is_slice_upto, number, string
+from geolint.factbase.syntax import is_full_slice, is_slice_upto, number, string, walk_within
 from geolint.factbase.pose_parts import (
     call_name,
     int_value,
@@ -43,6 +49,7 @@ from geolint.factbase.pose_parts import (
     transposed_operand,
 )
 from geolint.factbase.reaching import Unpacked, binding_of, scope_of, statement_of, value_of
+from geolint.knowledge.markers import CameraAxes
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase, FrameFact
@@ -60,32 +67,54 @@ ORDERED_NAME: Final = "ordered-name"
 
 DIRECTION_WORDS: Final = {W2C: "world-to-camera", C2W: "camera-to-world"}
 
-# String keys of datasets and file formats that state a convention: (direction, part, where from).
-EXTRINSIC_KEYS: Final[dict[str, tuple[str, str, str]]] = {
-    "cam_R_w2c": (W2C, ROTATION, "BOP scene_camera.json"),
-    "cam_t_w2c": (W2C, TRANSLATION, "BOP scene_camera.json"),
-    "transform_matrix": (C2W, POSE, "NeRF transforms.json"),
-    "c2w": (C2W, POSE, "key"),
-    "w2c": (W2C, POSE, "key"),
-    "cam2world": (C2W, POSE, "key"),
-    "world2cam": (W2C, POSE, "key"),
-    "camera_to_world": (C2W, POSE, "key"),
-    "world_to_camera": (W2C, POSE, "key"),
-    "cam_to_world": (C2W, POSE, "key"),
-    "world_to_cam": (W2C, POSE, "key"),
+OPENCV: Final = CameraAxes.OPENCV
+OPENGL: Final = CameraAxes.OPENGL
+PYTORCH3D: Final = CameraAxes.PYTORCH3D
+AXES_WORDS: Final = {
+    OPENCV: "OpenCV axes (x right, y down, z forward)",
+    OPENGL: "OpenGL axes (x right, y up, z back)",
+    PYTORCH3D: "PyTorch3D axes (x left, y up, z forward)",
+}
+# The camera axes each data convention uses, with where that is stated:
+# COLMAP, doc/format.rst (images.txt): "the X axis points to the right, the Y axis to the bottom, and the Z
+# axis to the front as seen from the image"; BOP, docs/bop_datasets_format.md: "The camera coordinate system
+# is as in OpenCV"; nerfstudio, docs/quickstart/data_conventions.md: transforms.json cameras use "the
+# OpenGL/Blender (and original NeRF) coordinate convention [...] +X is right, +Y is up, and +Z is pointing back".
+_COLMAP_AXES: Final = OPENCV
+_BOP_AXES: Final = OPENCV
+_TRANSFORMS_JSON_AXES: Final = OPENGL
+
+# String keys of datasets and file formats that state a convention: (direction, part, where from, camera axes).
+EXTRINSIC_KEYS: Final[dict[str, tuple[str, str, str, str | None]]] = {
+    "cam_R_w2c": (W2C, ROTATION, "BOP scene_camera.json", _BOP_AXES),
+    "cam_t_w2c": (W2C, TRANSLATION, "BOP scene_camera.json", _BOP_AXES),
+    "transform_matrix": (C2W, POSE, "NeRF transforms.json", _TRANSFORMS_JSON_AXES),
+    "c2w": (C2W, POSE, "key", None),
+    "w2c": (W2C, POSE, "key", None),
+    "cam2world": (C2W, POSE, "key", None),
+    "world2cam": (W2C, POSE, "key", None),
+    "camera_to_world": (C2W, POSE, "key", None),
+    "world_to_camera": (W2C, POSE, "key", None),
+    "cam_to_world": (C2W, POSE, "key", None),
+    "world_to_cam": (W2C, POSE, "key", None),
 }
 # Attributes with a library's meaning (COLMAP's `Image` namedtuple, pycolmap's `Image`).
-EXTRINSIC_ATTRIBUTES: Final[dict[str, tuple[str, str, str]]] = {
-    "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world"),
-    "qvec": (W2C, ROTATION, "COLMAP Image.qvec"),
-    "tvec": (W2C, TRANSLATION, "COLMAP Image.tvec"),
+EXTRINSIC_ATTRIBUTES: Final[dict[str, tuple[str, str, str, str | None]]] = {
+    "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world", _COLMAP_AXES),
+    "qvec": (W2C, ROTATION, "COLMAP Image.qvec", _COLMAP_AXES),
+    "tvec": (W2C, TRANSLATION, "COLMAP Image.tvec", _COLMAP_AXES),
 }
-# Methods called without arguments: (direction, part, where from).
-EXTRINSIC_METHODS: Final[dict[str, tuple[str, str, str]]] = {
-    "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world()"),
-    "qvec2rotmat": (W2C, ROTATION, "COLMAP Image.qvec2rotmat()"),
-    "projection_center": (C2W, TRANSLATION, "pycolmap Image.projection_center()"),
+# Methods called without arguments: (direction, part, where from, camera axes).
+EXTRINSIC_METHODS: Final[dict[str, tuple[str, str, str, str | None]]] = {
+    "cam_from_world": (W2C, POSE, "pycolmap Image.cam_from_world()", _COLMAP_AXES),
+    "qvec2rotmat": (W2C, ROTATION, "COLMAP Image.qvec2rotmat()", _COLMAP_AXES),
+    "projection_center": (C2W, TRANSLATION, "pycolmap Image.projection_center()", _COLMAP_AXES),
 }
+# Camera-axes words inside names that also say their direction (`c2w_opengl`, `w2c_cv`)
+_AXES_TOKENS: Final = {
+    OPENCV: OPENCV, "cv": OPENCV, "colmap": OPENCV, OPENGL: OPENGL, "gl": OPENGL, "blender": OPENGL,
+    PYTORCH3D: PYTORCH3D, "p3d": PYTORCH3D,
+}  # fmt: skip (the conventions' own names, and their short forms)
 # Direction words inside names (`pose_c2w`, `R_w2c`) and phrases (`world_to_camera`).
 _NAME_TOKENS: Final = {
     "c2w": C2W, "w2c": W2C, "cam2world": C2W, "world2cam": W2C, "camera2world": C2W, "world2camera": W2C,
@@ -111,19 +140,38 @@ def is_camera_frame(word: str | None) -> bool:
 
 
 @dataclass(frozen=True)
+class Axes:
+    """Which way a camera's own axes point (`CameraAxes` values), where that is stated, how strongly."""
+
+    convention: str
+    source: str
+    strength: str = DATA
+
+    @property
+    def description(self) -> str:
+        return AXES_WORDS[self.convention]
+
+
+@dataclass(frozen=True)
 class Extrinsic:
-    """A value that is (part of) a camera pose: `direction` w2c or c2w, `part` pose/rotation/translation."""
+    """A value that is (part of) a camera pose: `direction` w2c or c2w, `part` pose/rotation/translation,
+    and the camera axes it is in when the evidence states them."""
 
     direction: str
     part: str
     evidence: tuple[str, ...]
     strength: str = DATA
+    axes: Axes | None = None
 
     def inverted(self, how: str) -> Extrinsic:
-        return Extrinsic(flip(self.direction), self.part, (*self.evidence, how), self.strength)
+        """The inverse pose (part): the same camera, so the same camera axes."""
+        return Extrinsic(flip(self.direction), self.part, (*self.evidence, how), self.strength, self.axes)
 
     def as_part(self, part: str, how: str = "") -> Extrinsic:
-        return Extrinsic(self.direction, part, (*self.evidence, how) if how else self.evidence, self.strength)
+        return Extrinsic(self.direction, part, (*self.evidence, how) if how else self.evidence, self.strength, self.axes)
+
+    def with_axes(self, axes: Axes | None) -> Extrinsic:
+        return Extrinsic(self.direction, self.part, self.evidence, self.strength, axes)
 
     @property
     def description(self) -> str:
@@ -164,7 +212,9 @@ def name_extrinsic(facts: FactBase, name: str) -> Extrinsic | None:
     if directions:
         if len(directions) != 1 or len(tokens) > 4:
             return None
-        return Extrinsic(directions.pop(), _part_of_tokens(tokens), (f"name `{name}`",), NAME)
+        conventions = {_AXES_TOKENS[token] for token in lowered if token in _AXES_TOKENS}
+        axes = Axes(conventions.pop(), f"name `{name}`", NAME) if len(conventions) == 1 else None
+        return Extrinsic(directions.pop(), _part_of_tokens(tokens), (f"name `{name}`",), NAME, axes)
     found: set[tuple[str, str] | None] = set()
     evidence: tuple[str, ...] = ()
     for order in facts.readings():
@@ -209,8 +259,9 @@ def key_extrinsic(key: str) -> Extrinsic | None:
     known = EXTRINSIC_KEYS.get(key)
     if known is None:
         return None
-    direction, part, source = known
-    return Extrinsic(direction, part, (f"key {key!r} ({source}: {DIRECTION_WORDS[direction]})",), DATA)
+    direction, part, source, convention = known
+    axes = Axes(convention, f"key {key!r} ({source})") if convention is not None else None
+    return Extrinsic(direction, part, (f"key {key!r} ({source}: {DIRECTION_WORDS[direction]})",), DATA, axes)
 
 
 class ExtrinsicsEvidence:
@@ -253,6 +304,22 @@ class ExtrinsicsEvidence:
         return None
 
     def _of_name(self, node: Name) -> Extrinsic | None:
+        found = self._of_value_named(node)
+        if found is not None and found.axes is not None and self._edited_in_place(node):
+            return found.with_axes(None)  # `c2w[:3, 1:3] *= -1`: the usual change of camera axes
+        return found
+
+    def _edited_in_place(self, node: Name) -> bool:
+        """Whether the function edits the array `node` names other than by writing camera-pose blocks of the
+        same axes into it (`T[:3, :3] = R_colmap`): in place anywhere, before or after `node` (an edit after
+        a use still reaches an array stored by reference)."""
+        scope = self.index.scope_of(node)
+        if dataflow.updates_in_place(self.index, scope, node.id):
+            return True
+        stores = scope.subscript_stores.get(node.id, [])
+        return any(_axes_of(self.of(value)) is None for _, value in stores) or len(self.block_parts(stores)) < len(stores)
+
+    def _of_value_named(self, node: Name) -> Extrinsic | None:
         value = value_of(self.index, node)
         if isinstance(value, ast.expr):
             found = self.of(value)
@@ -272,8 +339,9 @@ class ExtrinsicsEvidence:
             return None
         known = EXTRINSIC_ATTRIBUTES.get(node.attr)
         if known is not None:
-            direction, part, source = known
-            return Extrinsic(direction, part, (f"`.{node.attr}` ({source}: {DIRECTION_WORDS[direction]})",), DATA)
+            direction, part, source, convention = known
+            axes = Axes(convention, f"`.{node.attr}` ({source})") if convention is not None else None
+            return Extrinsic(direction, part, (f"`.{node.attr}` ({source}: {DIRECTION_WORDS[direction]})",), DATA, axes)
         if node.attr in ("rotation", "translation"):
             owner = self.of(node.value)
             if owner is not None and owner.part == POSE:
@@ -300,8 +368,10 @@ class ExtrinsicsEvidence:
             return base.as_part(ROTATION)
         if is_slice_upto(row, 3) and (int_value(column) in (3, -1) or is_column_slice_from(column, 3)):
             return base.as_part(TRANSLATION)
-        if rows_of_pose and (is_slice_upto(column, 4) or is_full_slice(column) or isinstance(column, ast.List)):
+        if rows_of_pose and (is_slice_upto(column, 4) or is_full_slice(column)):
             return base
+        if rows_of_pose and isinstance(column, ast.List):
+            return base.with_axes(None)  # `c2w[:, [1, 0, 2, 3]]`: the camera's axes permuted
         return None
 
     def _of_call(self, node: Call) -> Extrinsic | None:
@@ -310,8 +380,9 @@ class ExtrinsicsEvidence:
         if isinstance(func, Attribute) and not node.args and not node.keywords:
             known = EXTRINSIC_METHODS.get(func.attr)
             if known is not None and not self.facts.is_module_like(func.value):
-                direction, part, source = known
-                return Extrinsic(direction, part, (f"`.{func.attr}()` ({source}: {DIRECTION_WORDS[direction]})",), DATA)
+                direction, part, source, convention = known
+                axes = Axes(convention, f"`.{func.attr}()` ({source})") if convention is not None else None
+                return Extrinsic(direction, part, (f"`.{func.attr}()` ({source}: {DIRECTION_WORDS[direction]})",), DATA, axes)
             if func.attr in _PASS_ON:
                 return self.of(func.value)
         operand = transposed_operand(node)
@@ -342,7 +413,9 @@ class ExtrinsicsEvidence:
         kinds = {part.part for part in known}
         if kinds == {ROTATION, TRANSLATION} or kinds == {POSE} and len(known) == 1:
             first = known[0]
-            return Extrinsic(first.direction, POSE, tuple(e for part in known for e in part.evidence), _weakest(known))
+            return Extrinsic(
+                first.direction, POSE, tuple(e for part in known for e in part.evidence), _weakest(known), _common_axes(known)
+            )
         return None
 
     def _of_product(self, node: AST, negated: bool) -> Extrinsic | None:
@@ -370,7 +443,11 @@ class ExtrinsicsEvidence:
         else:
             return None
         return Extrinsic(
-            rotation.direction, TRANSLATION, (*translation.evidence, "inverse translation -R.T @ t"), _weakest([rotation, translation])
+            rotation.direction,
+            TRANSLATION,
+            (*translation.evidence, "inverse translation -R.T @ t"),
+            _weakest([rotation, translation]),
+            _common_axes([rotation, translation]),
         )
 
     # -- a 4x4 assembled from blocks -------------------------------------------------------------
@@ -406,7 +483,8 @@ class ExtrinsicsEvidence:
         if len(directions) != 1:
             return None
         known = [part for _, part in parts]
-        return Extrinsic(directions.pop(), POSE, tuple(e for part in known for e in part.evidence), _weakest(known))
+        axes = _common_axes(known)
+        return Extrinsic(directions.pop(), POSE, tuple(e for part in known for e in part.evidence), _weakest(known), axes)
 
     def block_parts(self, stores: list[tuple[Subscript, ast.expr]]) -> list[tuple[ast.expr, Extrinsic]]:
         """The rotation and translation blocks among `stores` whose values are known extrinsics parts."""
@@ -428,6 +506,19 @@ class ExtrinsicsEvidence:
         return found
 
 
+def _axes_of(found: Extrinsic | None) -> Axes | None:
+    return found.axes if found is not None else None
+
+
+def _common_axes(parts: list[Extrinsic]) -> Axes | None:
+    """The camera axes every part states, or None (also when one part states none)."""
+    axes = [part.axes for part in parts]
+    first = axes[0]
+    if first is None or any(other is None or other.convention != first.convention for other in axes):
+        return None
+    return first
+
+
 def _weakest(parts: list[Extrinsic]) -> str:
     order = (ORDERED_NAME, NAME, DATA)
     return min((part.strength for part in parts), key=order.index)
@@ -441,6 +532,17 @@ def is_blank_matrix(value: ast.expr) -> bool:
     if isinstance(size, (ast.Tuple, ast.List)):
         return [int_value(element) for element in size.elts] in ([4, 4], [3, 4])
     return int_value(size) == 4
+
+
+def mentions(value: ast.expr, target: ast.expr) -> bool:
+    """Whether the value reads the target (`c2w = c2w[[1, 0, 2, 3]]`, `f["m"] = inv(f["m"])`)."""
+    text = ast.unparse(target)
+    for node in walk_within(value):
+        if isinstance(node, Name) and isinstance(target, Name) and node.id == target.id:
+            return True
+        if isinstance(node, type(target)) and not isinstance(target, Name) and ast.unparse(node) == text:
+            return True
+    return False
 
 
 _CAMERA_CLOUD_MAKERS: Final = frozenset({"create_from_rgbd_image", "create_from_depth_image"})

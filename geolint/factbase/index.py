@@ -105,6 +105,8 @@ class Scope:
     # `obj.attr = value`
     attribute_stores: list[tuple[Attribute, ast.expr]] = field(default_factory=list)
     augmented: set[str] = field(default_factory=set)
+    # `buf[:3, 1:3] *= -1`: names whose items are updated in place (not block stores: no value is written)
+    item_augmented: set[str] = field(default_factory=set)
     # names used as an operand of a matrix product (`T @ x`, `x.dot(M)`)
     matmul_operands: set[str] = field(default_factory=set)
     returns: list[ast.expr] = field(default_factory=list)
@@ -275,6 +277,8 @@ class ModuleIndex:
             scope.augmented.add(node.target.id)
         elif isinstance(node.target, Attribute):
             scope.attribute_stores.append((node.target, node.value))
+        elif isinstance(node.target, Subscript) and isinstance(node.target.value, Name):
+            scope.item_augmented.add(node.target.value.id)
         return scope
 
     def _record_walrus(self, node: NamedExpr, scope: Scope) -> Scope:

@@ -303,13 +303,39 @@ def stated_poses(facts: FactBase, call: Call) -> list[tuple[ast.expr, str, tuple
     return found
 
 
-def _pose_frames(bound: Bound, argument: ast.expr) -> tuple[str, str] | None:
+def _argument_geometry(bound: Bound, argument: ast.expr) -> Geometry | None:
+    """What the overload's parameter that `argument` fills is, as its stub says."""
     name = next((name for name, given in bound.arguments.items() if given is argument), None)
     parameter = bound.signature.parameter(name) if name is not None else None
-    geometry = parameter.geometry if parameter is not None else None
+    return parameter.geometry if parameter is not None else None
+
+
+def _pose_frames(bound: Bound, argument: ast.expr) -> tuple[str, str] | None:
+    geometry = _argument_geometry(bound, argument)
     if geometry is None or geometry.kind is not Kind.TRANSFORM or len(geometry.frames) != 2 or not all(geometry.frames):
         return None
     return geometry.frames[0], geometry.frames[1]
+
+
+def stated_camera_axes(facts: FactBase, call: Call) -> list[tuple[ast.expr, str, Geometry]]:
+    """(argument, parameter, geometry) for each argument a known library call reads with stated camera axes
+    (`extrinsic: Annotated[TransformMatrix["camera", "world"], CameraAxes.OPENCV]`), when every overload the
+    call may be using states the same axes, kind and frames."""
+    bounds = library_call(facts, call)
+    found: list[tuple[ast.expr, str, Geometry]] = []
+    for name, argument in bounds[0].arguments.items() if bounds else ():
+        stated = {_axes_geometry(bound, argument) for bound in bounds}
+        geometry = stated.pop() if len(stated) == 1 else None
+        if geometry is not None:
+            found.append((argument, name, geometry))
+    return found
+
+
+def _axes_geometry(bound: Bound, argument: ast.expr) -> Geometry | None:
+    geometry = _argument_geometry(bound, argument)
+    if geometry is None or geometry.camera_axes is None:
+        return None
+    return Geometry(kind=geometry.kind, frames=geometry.frames, camera_axes=geometry.camera_axes)
 
 
 def homogenizes(facts: FactBase, call: Call) -> bool:

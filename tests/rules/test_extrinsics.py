@@ -1,6 +1,7 @@
 """Camera extrinsics conventions stated by data (geolint.factbase.extrinsics) and the rules on them
-(GEO209, GEO210): which way a pose maps is read from keys, library attributes, blocks, inverses and
-names, and a `T_a_b` name counts only in the order the project settles."""
+(GEO209, GEO210, GEO216): which way a pose maps, and which way its camera axes point, is read from keys,
+library attributes, blocks, inverses and names, and a `T_a_b` name counts only in the order the project
+settles."""
 
 from __future__ import annotations
 
@@ -11,8 +12,20 @@ from pathlib import Path
 import pytest
 
 from geolint import api
-from geolint.factbase import facts_for_module
-from geolint.factbase.extrinsics import C2W, DATA, NAME, POSE, ROTATION, TRANSLATION, W2C, ExtrinsicsEvidence, name_extrinsic
+from geolint.factbase import dataflow, facts_for_module
+from geolint.factbase.extrinsics import (
+    C2W,
+    DATA,
+    NAME,
+    OPENCV,
+    OPENGL,
+    POSE,
+    ROTATION,
+    TRANSLATION,
+    W2C,
+    ExtrinsicsEvidence,
+    name_extrinsic,
+)
 from geolint.lint_types import Config
 
 
@@ -272,3 +285,67 @@ def test_a_pyrender_camera_pose_is_camera_to_world() -> None:
         return pyrender.OffscreenRenderer(W, H).render(scene)
     """
     assert _codes(source) == {(11, "GEO209")}
+
+
+def returned_axes(code: str) -> tuple[str, str] | None:
+    """(camera axes, direction) of the value the last `return` of `code` returns."""
+    source = textwrap.dedent(code)
+    tree = ast.parse(source)
+    evidence = ExtrinsicsEvidence(facts_for_module(tree, source, "<test>", Config()))
+    found = evidence.of([node for node in ast.walk(tree) if isinstance(node, ast.Return)][-1].value)
+    return None if found is None or found.axes is None else (found.axes.convention, found.direction)
+
+
+@pytest.mark.parametrize(
+    ("code", "expected"),
+    [
+        # COLMAP data is in OpenCV axes; an inverse is the same camera, so the same axes
+        ("def f(image):\n    return image.cam_from_world.matrix()\n", (OPENCV, W2C)),
+        ("def f(image):\n    return np.linalg.inv(image.cam_from_world.matrix())\n", (OPENCV, C2W)),
+        (
+            "def f(image):\n    w2c = np.eye(4)\n    w2c[:3, :3] = image.qvec2rotmat()\n    w2c[:3, 3] = image.tvec\n"
+            "    return np.linalg.inv(w2c)\n",
+            (OPENCV, C2W),
+        ),
+        # transforms.json poses are in OpenGL axes; BOP's in OpenCV axes
+        ("def f(frame):\n    c2w = np.array(frame['transform_matrix'])\n    return c2w[:3, :3]\n", (OPENGL, C2W)),
+        ("def f(info):\n    return np.array(info['cam_R_w2c']).reshape(3, 3).T\n", (OPENCV, C2W)),
+        # a name that states its direction may state its axes
+        ("def f(c2w_opengl):\n    return c2w_opengl\n", (OPENGL, C2W)),
+        ("def f(w2c_cv):\n    return w2c_cv\n", (OPENCV, W2C)),
+    ],
+)
+def test_camera_axes_from_evidence(code: str, expected: tuple[str, str]) -> None:
+    assert returned_axes(code) == expected
+
+
+@pytest.mark.parametrize(
+    "code",
+    [
+        # converted in place, before or after the read (a stored array is a reference)
+        "def f(frame):\n    c2w = np.array(frame['transform_matrix'])\n    c2w[:3, 1:3] *= -1\n    return c2w\n",
+        "def f(frame):\n    c2w = np.array(frame['transform_matrix'])\n    c2w[:3, 1] = -c2w[:3, 1]\n    return c2w\n",
+        "def f(frame, out):\n    c2w = np.array(frame['transform_matrix'])\n    out.append(c2w)\n    c2w[:3, 1:3] *= -1\n    return c2w\n",
+        # columns permuted, or multiplied by any matrix
+        "def f(frame):\n    c2w = np.array(frame['transform_matrix'])\n    return c2w[:, [1, 0, 2, 3]]\n",
+        "def f(frame, flip):\n    return np.array(frame['transform_matrix']) @ flip\n",
+        # blocks of different or unknown axes
+        "def f(image, frame):\n    T = np.eye(4)\n    T[:3, :3] = image.qvec2rotmat()\n    T[:3, 3] = np.array(frame['transform_matrix'])[:3, 3]\n    return T\n",
+        "def f(image, R):\n    T = np.eye(4)\n    T[:3, :3] = R\n    T[:3, 3] = image.tvec\n    return T\n",
+        # a direction but no axes in the name
+        "def f(c2w):\n    return c2w\n",
+    ],
+)
+def test_no_camera_axes_without_evidence(code: str) -> None:
+    assert returned_axes(code) is None
+
+
+def test_an_item_update_is_an_in_place_write() -> None:
+    source = "def f(c2w, T):\n    c2w[:3, 1:3] *= -1\n    T[:3, 3] = 0\n"
+    tree = ast.parse(source)
+    facts = facts_for_module(tree, source, "<test>", Config())
+    scope = facts.index.scope_of([node for node in ast.walk(tree) if isinstance(node, ast.AugAssign)][0])
+    assert scope.item_augmented == {"c2w"}
+    assert "c2w" not in scope.subscript_stores  # no block is stored: GEO209's blocks stay what they were
+    assert dataflow.writes_into(facts.index, scope, "c2w") and dataflow.updates_in_place(facts.index, scope, "c2w")
+    assert dataflow.writes_into(facts.index, scope, "T") and not dataflow.updates_in_place(facts.index, scope, "T")

@@ -17,6 +17,7 @@ from geolint.factbase.extrinsics import (
     W2C,
     camera_frame_cloud,
     key_extrinsic,
+    mentions,
     name_extrinsic,
     pyrender_camera_pose,
     DIRECTION_WORDS,
@@ -229,14 +230,14 @@ class ExtrinsicsDirectionMismatch(FactRule):
         if isinstance(target, Subscript):
             key = string(target.slice)
             stated = key_extrinsic(key) if key is not None else None
-            if stated is not None and not _mentions(value, target):
+            if stated is not None and not mentions(value, target):
                 self._compare(value, stated, f"key {key!r}")
             return
         name = target.id if isinstance(target, Name) else target.attr if isinstance(target, Attribute) else None
         if name is None:
             return
         stated = name_extrinsic(self.facts, name)
-        if stated is None or _mentions(value, target):
+        if stated is None or mentions(value, target):
             return  # `c2w = np.linalg.inv(c2w)`: a name updated from itself holds both directions
         if isinstance(target, Name) and is_blank_matrix(value):
             self._blocks(statement, target, stated)
@@ -354,14 +355,3 @@ def _reshaping_use(facts: FactBase, node: Name) -> bool:
         joined = facts.parent(parent)
         return isinstance(joined, Call) and facts.is_array_call(joined.func, *_JOINS)
     return isinstance(parent, Call) and isinstance(parent.func, Name) and parent.func.id == "len"
-
-
-def _mentions(value: ast.expr, target: ast.expr) -> bool:
-    """Whether the value reads the target (`c2w = c2w[[1, 0, 2, 3]]`, `f["m"] = inv(f["m"])`)."""
-    text = ast.unparse(target)
-    for node in walk_within(value):
-        if isinstance(node, Name) and isinstance(target, Name) and node.id == target.id:
-            return True
-        if isinstance(node, type(target)) and not isinstance(target, Name) and ast.unparse(node) == text:
-            return True
-    return False

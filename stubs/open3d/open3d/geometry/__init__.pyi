@@ -1,5 +1,6 @@
 from typing import Annotated, Literal, overload
 
+from geolint.knowledge.markers import CameraAxes
 from geolint.typing import PointArray, QuaternionWXYZ, Radians, RotationMatrix, RotationVector, TransformMatrix
 
 # open3d.geometry (0.20.0), the module functions (also static methods of every geometry class).
@@ -37,7 +38,10 @@ def get_rotation_matrix_from_zyx(rotation: Radians) -> RotationMatrix:
     specified in radians"."""
 
 # An Open3D extrinsic maps world into camera: the factories invert it to place the camera
-# (`Eigen::Matrix4d camera_pose = extrinsic.inverse();`, cpp/open3d/geometry/PointCloudFactory.cpp).
+# (`Eigen::Matrix4d camera_pose = extrinsic.inverse();`, cpp/open3d/geometry/PointCloudFactory.cpp), in OpenCV camera
+# axes: a pixel (u, v) at depth z is the camera point `((u - cx) * z / fx, (v - cy) * z / fy, z)` (the same file,
+# commit 00fa180): x right, y down (the image's rows), z forward.
+_Extrinsic = Annotated[TransformMatrix[Literal["camera"], Literal["world"]], CameraAxes.OPENCV]
 
 class PointCloud:
     """Source: open3d.geometry.PointCloud (0.20.0 docs), create_from_rgbd_image(image, intrinsic, extrinsic=identity,
@@ -46,10 +50,10 @@ class PointCloud:
     at `extrinsic.inverse()`: the extrinsic is world-to-camera, and the cloud it returns holds points."""
 
     @staticmethod
-    def create_from_rgbd_image(image: object, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]] = ..., project_valid_depth_only: bool = ...) -> Annotated[PointCloud, PointArray]: ...
+    def create_from_rgbd_image(image: object, intrinsic: object, extrinsic: _Extrinsic = ..., project_valid_depth_only: bool = ...) -> Annotated[PointCloud, PointArray]: ...
     @staticmethod
     def create_from_depth_image(
-        depth: object, intrinsic: object, extrinsic: TransformMatrix[Literal["camera"], Literal["world"]] = ..., depth_scale: float = ...,
+        depth: object, intrinsic: object, extrinsic: _Extrinsic = ..., depth_scale: float = ...,
         depth_trunc: float = ..., stride: int = ..., project_valid_depth_only: bool = ...,
     ) -> Annotated[PointCloud, PointArray]: ...
 
