@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import ast
-from ast import AnnAssign, Assign, Attribute, Call, Name, Subscript
+from ast import AnnAssign, Assign, Attribute, BinOp, Call, Name, Starred, Subscript
 from typing import Final, NamedTuple
 
 from geolint.algebra import Kind
 from geolint.factbase import dataflow, library_calls
+from geolint.factbase.camera_rays import CAMERA_RAYS, ray_axes, rotated_rays
 from geolint.factbase.extrinsics import (
     C2W,
     DATA,
@@ -51,6 +52,7 @@ class _Expected(NamedTuple):
     direction: str | None
     part: str
     axes: Axes
+    verb: str = "expects"
 
 
 class CameraAxesMismatch(FactRule):
@@ -62,13 +64,18 @@ class CameraAxesMismatch(FactRule):
     `image.tvec`, `image.qvec2rotmat()`, pycolmap's `image.cam_from_world`), BOP (`"cam_R_w2c"`) and
     the extrinsics Open3D takes; OpenGL axes (x right, y up, z back) those of NeRF transforms.json's
     `"transform_matrix"` and nerfstudio's camera poses; a name that says its direction may say its
-    axes too (`c2w_opengl`, `w2c_cv`, `pose_c2w_p3d`). Values are followed as GEO209 follows them
-    (data flow, inverses, transposes, `[R | t]` joins, 4x4 blocks); an inverse keeps the camera's
+    axes too (`c2w_opengl`, `w2c_cv`, `pose_c2w_p3d`). Pixel ray directions state the axes they are
+    built in by their signs: `[(u - cx) / fx, (v - cy) / fy, 1]` OpenCV, `[(u - cx) / fx, -(v - cy) / fy,
+    -1]` OpenGL, `[-(u - cx) / fx, -(v - cy) / fy, 1]` PyTorch3D. Values are followed as GEO209 follows
+    them (data flow, inverses, transposes, `[R | t]` joins, 4x4 blocks); an inverse keeps the camera's
     axes.
 
     Flagged: a pose stored under `"transform_matrix"` (a dict literal or a subscript store) or under a
     name, keyword or library parameter that states other axes than the pose has, when at least one
-    side is data (not two names).
+    side is data (not two names); a camera-to-world rotation that rotates ray directions built in
+    other axes (`sum(dirs[..., None, :] * c2w[:3, :3], -1)`, `dirs @ R.T`, `R @ dirs`), also when the
+    rays are built and rotated in a project function (`get_rays(H, W, K, c2w)`) and the pose is
+    passed to it.
 
     ## Why is this bad?
     An OpenCV camera and an OpenGL camera at the same place differ by a half-turn about their x axis:
@@ -105,8 +112,9 @@ class CameraAxesMismatch(FactRule):
     ## Known problems
     Any in-place write into the array (`c2w[:3, 1:3] *= -1`, `c2w[:, 1] = -c2w[:, 1]`), a product with
     any matrix (`c2w @ flip`), a column permutation or a call to a project function is taken as a
-    conversion, right or wrong, so a conversion to the wrong convention passes. Ray directions built
-    from pixel coordinates (`[(u - cx) / fx, -(v - cy) / fy, -1]`) state axes too but are not read yet.
+    conversion, right or wrong, so a conversion to the wrong convention passes. Ray directions are
+    read where they are built; rays built by one helper (`get_ray_directions(H, W, focal)`) and
+    rotated by another (`get_rays(directions, c2w)`) are not followed yet.
     A project that stores OpenCV poses under `"transform_matrix"` on purpose, read only by its own
     code, is reported; say so with `# noqa: GEO216` on the store.
     """
@@ -133,6 +141,20 @@ class CameraAxesMismatch(FactRule):
         Valid("def f(image):\n    return {'transform_matrix': image.cam_from_world.matrix()}\n"),
         # two names: no data states either side
         Valid("def f(c2w_cv):\n    c2w_gl = c2w_cv\n    return c2w_gl\n"),
+        # OpenGL rays rotated by a transforms.json pose: the same axes
+        Valid(
+            "import numpy as np\ndef f(frame, i, j, focal, W, H):\n    c2w = np.array(frame['transform_matrix'])\n"
+            "    dirs = np.stack([(i - W * 0.5) / focal, -(j - H * 0.5) / focal, -np.ones_like(i)], -1)\n"
+            "    return np.sum(dirs[..., None, :] * c2w[:3, :3], -1)\n"
+        ),
+        # a helper written for OpenGL rays, given a COLMAP pose converted first
+        Valid(
+            "import numpy as np\ndef get_rays(i, j, K, c2w):\n"
+            "    dirs = np.stack([(i - K[0][2]) / K[0][0], -(j - K[1][2]) / K[1][1], -np.ones_like(i)], -1)\n"
+            "    return np.sum(dirs[..., None, :] * c2w[:3, :3], -1)\n"
+            "def f(image, i, j, K):\n    c2w = np.linalg.inv(image.cam_from_world.matrix())\n    c2w[:3, 1:3] *= -1\n"
+            "    return get_rays(i, j, K, c2w)\n"
+        ),
     ]
     INVALID = [
         Invalid(
@@ -164,12 +186,33 @@ class CameraAxesMismatch(FactRule):
             "y up, z back) (name `c2w_gl`): its y and z axes point the other way; negate them first (`c2w[:3, 1:3] *= -1`)",
             range=(2, 14, 2, 53),
         ),
+        Invalid(
+            "import numpy as np\ndef f(frame, u, v, fx, fy, cx, cy):\n    c2w = np.array(frame['transform_matrix'])\n"
+            "    dirs = np.stack([(u - cx) / fx, (v - cy) / fy, np.ones_like(u)], axis=-1)\n    return dirs @ c2w[:3, :3].T\n",
+            message="`c2w[:3, :3]` is a camera-to-world rotation in OpenGL axes (x right, y up, z back) (key 'transform_matrix' "
+            "(NeRF transforms.json)), but the ray directions it rotates are built in OpenCV axes (x right, y down, z forward) "
+            "(ray directions `np.stack([(u - cx) / fx, (v - cy) / fy, np.ones_like(u)],...`): its y and z axes point the "
+            "other way; negate them first (`c2w[:3, 1:3] *= -1`)",
+            range=(5, 19, 5, 30),
+        ),
+        Invalid(
+            "import numpy as np\ndef get_rays(i, j, K, c2w):\n"
+            "    dirs = np.stack([(i - K[0][2]) / K[0][0], -(j - K[1][2]) / K[1][1], -np.ones_like(i)], -1)\n"
+            "    return np.sum(dirs[..., None, :] * c2w[:3, :3], -1)\n"
+            "def f(image, i, j, K):\n    c2w = np.linalg.inv(image.cam_from_world.matrix())\n"
+            "    return get_rays(i, j, K, c2w)\n",
+            range=(7, 30, 7, 33),
+        ),
     ]
 
     def run(self) -> None:
         facts = self.facts
         self.evidence = ExtrinsicsEvidence(facts)
-        for node in facts.index.nodes(Assign, AnnAssign, Call, ast.Dict):
+        for node in facts.index.nodes(Assign, AnnAssign, Call, ast.Dict, BinOp):
+            if isinstance(node, (Call, BinOp)):
+                self._rays(node)
+            if isinstance(node, BinOp):
+                continue
             if isinstance(node, Assign):
                 for target in node.targets:
                     self._stored(target, node.value)
@@ -203,6 +246,7 @@ class CameraAxesMismatch(FactRule):
         self._compare(value, _Expected(stated.direction, stated.part, stated.axes), f"`{self.code_of(target)}`")
 
     def _call(self, call: Call) -> None:
+        self._project_call(call)
         for keyword in call.keywords:
             stated = name_extrinsic(self.facts, keyword.arg) if keyword.arg is not None else None
             if stated is not None and stated.axes is not None:
@@ -213,6 +257,35 @@ class CameraAxesMismatch(FactRule):
             expected = _expected_by_stub(geometry, "its stub")
             if expected is not None:
                 self._compare(argument, expected, f"the `{parameter}` of `{owner}`")
+
+    def _rays(self, node: Call | BinOp) -> None:
+        """Ray directions built in one convention, rotated by a camera-to-world rotation of another."""
+        rotated = rotated_rays(self.facts, node)
+        axes = ray_axes(self.facts, rotated[0]) if rotated is not None else None
+        if rotated is not None and axes is not None:
+            self._compare(rotated[1], _Expected(C2W, ROTATION, axes, "are built in"), "the ray directions it rotates")
+
+    def _project_call(self, call: Call) -> None:
+        """A project function that rotates rays by a parameter expects a camera-to-world pose in their axes there."""
+        if not self.facts.may_have_summary(call):
+            return
+        summary = self.facts.summary_of(call, CAMERA_RAYS)
+        if summary is None or not summary.rotates_rays:
+            return
+        for index, argument in enumerate(call.args):
+            if isinstance(argument, Starred):
+                break
+            stated = summary.rotates_rays.get(index)
+            if stated is not None:
+                part, axes = stated
+                where = f"parameter `{summary.parameters[index]}` of `{self.code_of(call.func)}`"
+                self._compare(argument, _Expected(C2W, part, axes), where)
+        for keyword in call.keywords:
+            if keyword.arg in summary.parameters:
+                stated = summary.rotates_rays.get(summary.parameters.index(keyword.arg))
+                if stated is not None:
+                    where = f"parameter `{keyword.arg}` of `{self.code_of(call.func)}`"
+                    self._compare(keyword.value, _Expected(C2W, stated[0], stated[1]), where)
 
     def _compare(self, value: ast.expr, expected: _Expected, where: str) -> None:
         actual = self.evidence.of(value)
@@ -227,7 +300,7 @@ class CameraAxesMismatch(FactRule):
         stated_source = want.source.removeprefix(f"{where} (").removesuffix(")") if want.source.startswith(f"{where} (") else want.source
         self.report(
             value,
-            f"`{self.code_of(value)}` is a {_pose_words(actual)} in {have.description} ({have.source}), but {where} expects "
+            f"`{self.code_of(value)}` is a {_pose_words(actual)} in {have.description} ({have.source}), but {where} {expected.verb} "
             f"{want.description} ({stated_source}): its {' and '.join(_AXIS_NAMES[axis] for axis in flipped)} axes point "
             f"the other way; negate them first ({_negation(value, actual, flipped)})",
             evidence=tuple(dict.fromkeys((*actual.evidence, have.source, want.source))),
@@ -255,6 +328,8 @@ def _negation(value: ast.expr, found: Extrinsic, flipped: tuple[int, int]) -> st
     its rows when it maps into it."""
     axes = _AXIS_SLICES[flipped]
     name = value.id if isinstance(value, Name) else found.direction if found.part == POSE else "R"
+    if found.part == ROTATION and isinstance(value, Subscript) and isinstance(value.value, Name):
+        name, found = value.value.id, found.as_part(POSE)  # `c2w[:3, :3]`: the pose it is the block of
     if found.direction == C2W:
         return f"`{name}[:3, {axes}] *= -1`" if found.part == POSE else f"`{name}[:, {axes}] *= -1`"
     return f"`{name}[{axes}, :] *= -1`"
