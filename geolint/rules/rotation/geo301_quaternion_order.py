@@ -336,6 +336,14 @@ class QuaternionOrder(FactRule):
         ),
     ]
     INVALID = [
+        # four arguments that are not four components: the quaternion among them is judged
+        Invalid(
+            "import numpy as np\nfrom isaacgym import torch_utils\ndef f(qw, qx, qy, qz, t1, q2, t2):\n"
+            "    q1 = np.array([qw, qx, qy, qz])\n    return torch_utils.tf_combine(q1, t1, q2, t2)\n",
+            message="`q1` is scalar-first (w, x, y, z) (from components spelled out at line 4), but `torch_utils.tf_combine` "
+            "expects scalar-last (x, y, z, w)",
+            range=(5, 35, 5, 37),
+        ),
         Invalid(
             "from transforms3d.euler import euler2quat\ndef to_ros(msg, q):\n    msg.x = q[0]\n    msg.y = q[1]\n"
             "    msg.z = q[2]\n    msg.w = q[3]\n    return msg\ndef f(msg, r, p, y):\n    return to_ros(msg, euler2quat(r, p, y))\n",
@@ -626,13 +634,15 @@ class QuaternionOrder(FactRule):
             order = named_order(positional)
             if order is not None and _names_mislabel_unpacked(facts, flow, positional):
                 return  # `w, x, y, z = as_quat()`: the names lie about the components, the positions decide
-            if order is not None and order != expected and _is_other_convention(order, expected):
-                self._report(node, node, positional, order, expected)
-            elif order is None:
-                spelled = same_base(facts, positional)  # `Quaternion(q[1], q[2], q[3], q[0])`
-                if spelled is not None and sorted(spelled[1]) == [0, 1, 2, 3] and spelled[1] != [0, 1, 2, 3]:
-                    self._check_reorder(node, node, Reorder(node, spelled[0], tuple(spelled[1]), "arguments"), expected, flow)
-            return
+            if order is not None:
+                if order != expected and _is_other_convention(order, expected):
+                    self._report(node, node, positional, order, expected)
+                return
+            spelled = same_base(facts, positional)  # `Quaternion(q[1], q[2], q[3], q[0])`
+            if spelled is not None and sorted(spelled[1]) == [0, 1, 2, 3] and spelled[1] != [0, 1, 2, 3]:
+                self._check_reorder(node, node, Reorder(node, spelled[0], tuple(spelled[1]), "arguments"), expected, flow)
+                return
+            # four arguments that are not four components (`tf_combine(q1, t1, q2, t2)`): the quaternion argument
         if positional and isinstance(positional[0], (ast.List, ast.Tuple)):
             elements = list(positional[0].elts)
             if len(elements) == 4 and not any(isinstance(element, Starred) for element in elements):

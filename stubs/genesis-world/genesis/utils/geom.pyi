@@ -9,14 +9,18 @@ from geolint.typing import Degrees, QuaternionWXYZ, Radians, RotationMatrix, Rot
 @overload
 def xyz_to_quat(xyz: Radians, rpy: bool = ..., degrees: Literal[False] = ...) -> QuaternionWXYZ: ...
 @overload
-def xyz_to_quat(xyz: Degrees, rpy: bool = ..., degrees: Literal[True] = ...) -> QuaternionWXYZ:
+def xyz_to_quat(xyz: Degrees, rpy: bool = ..., *, degrees: Literal[True]) -> QuaternionWXYZ: ...
+@overload
+def xyz_to_quat(xyz: Degrees, rpy: bool, degrees: Literal[True]) -> QuaternionWXYZ:
     """Source: genesis/utils/geom.py (0.4.5, 7bf5f6a), xyz_to_quat(xyz, rpy=False, degrees=False), line 572: `if degrees:
     xyz = np.deg2rad(xyz)` (574-579); returns (w, x, y, z)."""
 
 @overload
 def quat_to_xyz(quat: QuaternionWXYZ, rpy: bool = ..., degrees: Literal[False] = ...) -> Radians: ...
 @overload
-def quat_to_xyz(quat: QuaternionWXYZ, rpy: bool = ..., degrees: Literal[True] = ...) -> Degrees:
+def quat_to_xyz(quat: QuaternionWXYZ, rpy: bool = ..., *, degrees: Literal[True]) -> Degrees: ...
+@overload
+def quat_to_xyz(quat: QuaternionWXYZ, rpy: bool, degrees: Literal[True]) -> Degrees:
     """Source: genesis/utils/geom.py (0.4.5), quat_to_xyz(quat, rpy=False, degrees=False), line 767: radians, `np.rad2deg`
     when `degrees=True` (770-775)."""
 
