@@ -1,0 +1,97 @@
+"""The shape-family generator and scorer (benchmarks/shape_families/run.py), without running the linter:
+what it writes is valid, marked and twinned as the benchmark says, and a finding counts where it lands."""
+
+from __future__ import annotations
+
+import ast
+import importlib.util
+import sys
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+
+SCRIPT = Path(__file__).resolve().parents[2] / "benchmarks" / "shape_families" / "run.py"
+
+
+def load() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("shape_families_run", SCRIPT)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # dataclasses look their module up while the class is made
+    spec.loader.exec_module(module)
+    return module
+
+
+run = load()
+FAMILY_NAMES = sorted(run.FAMILIES)
+
+
+@pytest.fixture(scope="module")
+def generated() -> dict[str, tuple[list, list]]:
+    kb = run.knowledge.knowledge_base()
+    return {name: run.generate(run.FAMILIES[name], kb) for name in FAMILY_NAMES}
+
+
+@pytest.mark.parametrize("name", FAMILY_NAMES)
+def test_every_generated_module_parses(generated: dict[str, tuple[list, list]], name: str) -> None:
+    cases, _ = generated[name]
+    assert cases
+    for case in cases:
+        ast.parse(case.bug, f"{case.stem}__bug.py")
+        ast.parse(case.twin, f"{case.stem}__twin.py")
+
+
+@pytest.mark.parametrize("name", FAMILY_NAMES)
+def test_every_bug_has_one_marked_line_and_the_twin_differs_only_there(generated: dict[str, tuple[list, list]], name: str) -> None:
+    cases, _ = generated[name]
+    for case in cases:
+        bug, twin = case.bug.splitlines(), case.twin.splitlines()
+        marked = [number for number, line in enumerate(bug, 1) if line.rstrip().endswith(run.BUG_MARK)]
+        assert marked == [case.bug_line], case.api
+        assert run.BUG_MARK not in case.twin, case.api
+        assert len(bug) == len(twin), case.api
+        differing = [number for number, (a, b) in enumerate(zip(bug, twin), 1) if a != b]
+        assert differing == [case.bug_line], case.api
+
+
+@pytest.mark.parametrize("name", FAMILY_NAMES)
+def test_every_library_with_such_an_api_has_a_case(generated: dict[str, tuple[list, list]], name: str) -> None:
+    """Per stubs/ folder, at least one case, where the fact holds unpinned: an API stated only in
+    `@versions` overloads holds for no project that pins nothing, as the generated cases do, so a folder
+    whose every such API is versioned (kornia's) is only skipped, with that reason."""
+    family = run.FAMILIES[name]
+    cases, skipped = generated[name]
+    apis = run.targets(family, run.knowledge.knowledge_base())
+    unpinned = {
+        run.stub_folder(api)
+        for api in apis
+        if any(p.geometry is not None and family.wanted(p.geometry) is not None for s in run._unversioned(api) for p in s.parameters)
+    }
+    assert unpinned - {case.library for case in cases} == set()
+    assert {case.api for case in cases} | {item.api for item in skipped} == {api.qualified_name for api in apis}
+    assert len({case.stem for case in cases}) == len(cases)
+
+
+def test_a_finding_on_the_bug_line_is_caught_and_one_elsewhere_is_not() -> None:
+    family = run.FAMILIES["degrees-on-radian-apis"]
+
+    def case(api: str) -> object:
+        stem = f"{family.name}__{api}"
+        return run.Case(family.name, api, "lib", stem, "bug text", "twin text", bug_line=7)
+
+    cases = [case("on_line"), case("elsewhere"), case("other_code"), case("flagged_twin")]
+    findings = [
+        {"path": f"/tmp/x/{family.name}__on_line__bug.py", "line": 7, "code": family.code},
+        {"path": f"/tmp/x/{family.name}__elsewhere__bug.py", "line": 6, "code": family.code},
+        {"path": f"/tmp/x/{family.name}__other_code__bug.py", "line": 7, "code": "GEO301"},
+        {"path": f"/tmp/x/{family.name}__flagged_twin__bug.py", "line": 7, "code": family.code},
+        {"path": f"/tmp/x/{family.name}__flagged_twin__twin.py", "line": 3, "code": family.code},
+        {"path": f"/tmp/x/{family.name}__on_line__twin.py", "line": 7, "code": "GEO301"},  # another rule: no false positive
+    ]
+    skipped = [run.Skipped(family.name, "left_out", "lib", "a reason")]
+    result = run.score(family, cases, skipped, findings)
+    assert (result.cases, result.caught, result.twins_flagged, result.skipped) == (4, 2, 1, 1)
+    assert result.missed == ["elsewhere", "other_code"]
+    assert result.flagged == ["flagged_twin"]
+    assert "caught %" in run.table([result]) and "| degrees-on-radian-apis | GEO302 | 4 | 2 | 50.0 | 1 | 1 |" in run.table([result], markdown=True)
