@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import ast
 import re
-from ast import Attribute, BinOp, Call, Constant, Div, Mult, Name, Sub, Subscript, USub, UnaryOp
+from ast import Attribute, BinOp, Call, Constant, Div, FloorDiv, Mult, Name, Sub, Subscript, USub, UnaryOp
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Final
 
@@ -204,10 +204,10 @@ def _is_principal(node: ast.expr) -> bool:
         if isinstance(node.value, Subscript):  # K[0][2]
             indices = [int_value(part) for part in subscript_parts(node.value)] + indices
         return indices[-2:] in ([0, 2], [1, 2])
-    if isinstance(node, BinOp) and isinstance(node.op, (Mult, Div, ast.FloorDiv)):
-        size, factor = (node.left, node.right) if isinstance(node.op, (Div, ast.FloorDiv)) or not _is_half(node.left) else (node.right, node.left)
+    if isinstance(node, BinOp) and isinstance(node.op, (Mult, Div, FloorDiv)):
+        size, factor = (node.left, node.right) if isinstance(node.op, (Div, FloorDiv)) or not _is_half(node.left) else (node.right, node.left)
         named = size.id if isinstance(size, Name) else size.attr if isinstance(size, Attribute) else None
-        halves = factor.value == 2 if isinstance(node.op, (Div, ast.FloorDiv)) and isinstance(factor, Constant) else _is_half(factor)
+        halves = factor.value == 2 if isinstance(node.op, (Div, FloorDiv)) and isinstance(factor, Constant) else _is_half(factor)
         return bool(halves) and named is not None and _IMAGE_SIZE.fullmatch(named) is not None
     return False
 

@@ -95,3 +95,20 @@ def test_a_finding_on_the_bug_line_is_caught_and_one_elsewhere_is_not() -> None:
     assert result.missed == ["elsewhere", "other_code"]
     assert result.flagged == ["flagged_twin"]
     assert "caught %" in run.table([result]) and "| degrees-on-radian-apis | GEO302 | 4 | 2 | 50.0 | 1 | 1 |" in run.table([result], markdown=True)
+
+
+def test_the_documented_commands_run(tmp_path: Path) -> None:
+    """docs/benchmark.md's commands as written (the folder `--keep` writes to pointed here): each prints its table."""
+    import subprocess
+
+    from tests.cli.doc_snippets import block, commands_of
+
+    commands = commands_of(block("docs/benchmark.md", "Shape families: the knowledge base, API by API", 0).body)
+    assert [command.split()[:2] for command in commands] == [["python", "benchmarks/shape_families/run.py"]] * 2
+    for line in commands:
+        words = line.split("  #", 1)[0].split()
+        words = [str(tmp_path / "cases") if word == "/tmp/cases" else word for word in words]
+        done = subprocess.run([sys.executable, *words[1:]], cwd=SCRIPT.parents[2], capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr[-2000:]
+        assert "quaternion-order" in done.stdout and "caught" in done.stdout
+    assert any((tmp_path / "cases").rglob("*__bug.py"))

@@ -43,6 +43,7 @@ COVERED: dict[tuple[str, str, int], str] = {
     ("README.md", "Contributing", 0): "test_readme_test_command_is_what_ci_runs",
     ("docs/benchmark.md", "Running it", 0): "tests/benchmarks/test_real_code_docs.py::test_the_documented_commands_run",
     ("docs/benchmark.md", "Running it", 1): "tests/benchmarks/test_real_code_docs.py::test_the_documented_commands_run",
+    ("docs/benchmark.md", "Shape families: the knowledge base, API by API", 0): "tests/benchmarks/test_shape_families.py::test_the_documented_commands_run",
     ("docs/ci.md", "GitHub Actions", 0): f"{INSTALL}::test_ci_snippet_commands",
     ("docs/ci.md", "GitLab CI", 0): f"{INSTALL}::test_ci_snippet_commands",
     ("docs/ci.md", "Adopting geolint on an existing codebase", 0): "test_command_lines_run",

@@ -336,13 +336,9 @@ class QuaternionOrder(FactRule):
         ),
     ]
     INVALID = [
-        # four arguments that are not four components: the quaternion among them is judged
-        Invalid(
-            "import numpy as np\nfrom isaacgym import torch_utils\ndef f(qw, qx, qy, qz, t1, q2, t2):\n"
-            "    q1 = np.array([qw, qx, qy, qz])\n    return torch_utils.tf_combine(q1, t1, q2, t2)\n",
-            message="`q1` is scalar-first (w, x, y, z) (from components spelled out at line 4), but `torch_utils.tf_combine` "
-            "expects scalar-last (x, y, z, w)",
-            range=(5, 35, 5, 37),
+        Invalid(  # four arguments that are not four components: the quaternion among them is judged
+            "import numpy as np\nfrom isaacgym import torch_utils\ndef f(qw, qx, qy, qz, t1, q2, t2):\n    q1 = np.array([qw, qx, qy, qz])\n"
+            "    return torch_utils.tf_combine(q1, t1, q2, t2)\n", range=(5, 35, 5, 37),
         ),
         Invalid(
             "from transforms3d.euler import euler2quat\ndef to_ros(msg, q):\n    msg.x = q[0]\n    msg.y = q[1]\n"
