@@ -273,6 +273,7 @@ class ExtrinsicsEvidence:
         self.facts = facts
         self.index = facts.index
         self._facts: NodeMemo[Extrinsic] = NodeMemo(max_depth=40)
+        self._edited: dict[tuple[int, str], bool] = {}  # (scope, name) -> `_edited_in_place`, asked at every use
 
     def of(self, node: AST) -> Extrinsic | None:
         return self._facts.get(id(node), lambda: self._of(node))
@@ -314,10 +315,16 @@ class ExtrinsicsEvidence:
         same axes into it (`T[:3, :3] = R_colmap`): in place anywhere, before or after `node` (an edit after
         a use still reaches an array stored by reference)."""
         scope = self.index.scope_of(node)
-        if dataflow.updates_in_place(self.index, scope, node.id):
-            return True
-        stores = scope.subscript_stores.get(node.id, [])
-        return any(_axes_of(self.of(value)) is None for _, value in stores) or len(self.block_parts(stores)) < len(stores)
+        key = (id(scope.node), node.id)
+        edited = self._edited.get(key)
+        if edited is None:
+            stores = scope.subscript_stores.get(node.id, [])
+            edited = self._edited[key] = (
+                dataflow.updates_in_place(self.index, scope, node.id)
+                or any(_axes_of(self.of(value)) is None for _, value in stores)
+                or len(self.block_parts(stores)) < len(stores)
+            )
+        return edited
 
     def _of_value_named(self, node: Name) -> Extrinsic | None:
         value = value_of(self.index, node)

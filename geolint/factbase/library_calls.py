@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import ast
 from ast import AST, Attribute, BinOp, Call, Constant, If, Import, ImportFrom, Mult, Name
-from typing import TYPE_CHECKING, Callable, Final, Sequence
+from typing import TYPE_CHECKING, Callable, Final, Sequence, TypeVar
 
 from geolint.factbase.index import ParamBinding
 from geolint.factbase.project_files import module_path
@@ -33,6 +33,7 @@ from geolint.knowledge import (
 if TYPE_CHECKING:  # the fact base asks this module; it needs the class only for its annotations
     from geolint.factbase.model import FactBase
 
+_Answer = TypeVar("_Answer")
 _TYPE_DEPTH: Final = 8  # a library object passed through this many names and calls
 
 
@@ -293,13 +294,19 @@ def stated_poses(facts: FactBase, call: Call) -> list[tuple[ast.expr, str, tuple
     """(argument, parameter, (dst, src)) for each argument a known library call reads as a transform between
     two named frames (`extrinsic: TransformMatrix["camera", "world"]`: world-to-camera), when every overload
     the call may be using agrees."""
+    return _agreed_per_argument(facts, call, _pose_frames)
+
+
+def _agreed_per_argument(facts: FactBase, call: Call, answer: Callable[[Bound, ast.expr], _Answer | None]) -> list[tuple[ast.expr, str, _Answer]]:
+    """(argument, parameter, answer) for each argument of a known library call on which every overload the call
+    may be using gives the same answer, not None."""
     bounds = library_call(facts, call)
-    found: list[tuple[ast.expr, str, tuple[str, str]]] = []
+    found: list[tuple[ast.expr, str, _Answer]] = []
     for name, argument in bounds[0].arguments.items() if bounds else ():
-        stated = {_pose_frames(bound, argument) for bound in bounds}
-        frames = stated.pop() if len(stated) == 1 else None
-        if frames is not None:
-            found.append((argument, name, frames))
+        stated = {answer(bound, argument) for bound in bounds}
+        agreed_answer = stated.pop() if len(stated) == 1 else None
+        if agreed_answer is not None:
+            found.append((argument, name, agreed_answer))
     return found
 
 
@@ -321,14 +328,7 @@ def stated_camera_axes(facts: FactBase, call: Call) -> list[tuple[ast.expr, str,
     """(argument, parameter, geometry) for each argument a known library call reads with stated camera axes
     (`extrinsic: Annotated[TransformMatrix["camera", "world"], CameraAxes.OPENCV]`), when every overload the
     call may be using states the same axes, kind and frames."""
-    bounds = library_call(facts, call)
-    found: list[tuple[ast.expr, str, Geometry]] = []
-    for name, argument in bounds[0].arguments.items() if bounds else ():
-        stated = {_axes_geometry(bound, argument) for bound in bounds}
-        geometry = stated.pop() if len(stated) == 1 else None
-        if geometry is not None:
-            found.append((argument, name, geometry))
-    return found
+    return _agreed_per_argument(facts, call, _axes_geometry)
 
 
 def _axes_geometry(bound: Bound, argument: ast.expr) -> Geometry | None:

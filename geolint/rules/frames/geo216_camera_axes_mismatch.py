@@ -251,8 +251,9 @@ class CameraAxesMismatch(FactRule):
             stated = name_extrinsic(self.facts, keyword.arg) if keyword.arg is not None else None
             if stated is not None and stated.axes is not None:
                 self._compare(keyword.value, _Expected(stated.direction, stated.part, stated.axes), f"`{keyword.arg}=`")
-        for argument, parameter, geometry in library_calls.stated_camera_axes(self.facts, call):  # the stubs
-            called = library_calls.called_api(self.facts, call)
+        stated_by_stub = library_calls.stated_camera_axes(self.facts, call)
+        called = library_calls.called_api(self.facts, call) if stated_by_stub else None
+        for argument, parameter, geometry in stated_by_stub:
             owner = ".".join(called.qualified_name.split(".")[-2:]) if called is not None else parameter
             expected = _expected_by_stub(geometry, "its stub")
             if expected is not None:
