@@ -19,6 +19,8 @@ from geolint.factbase.syntax import (
     components_of_one_array, flat_literal, is_full_slice, is_slice_upto, is_transpose, keyword, last_name, number,
     positional_args, string, subscript_parts, transposed_value,
 )  # fmt: skip
+from geolint.knowledge import knowledge_base
+from geolint.knowledge.markers import ArrayOperation
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
@@ -77,7 +79,7 @@ def _may_build_homogeneous(facts: FactBase, node: AST) -> bool:
         qualified = facts.qualified_name(func)
         if qualified is not None:
             module, _, name = qualified.rpartition(".")
-            if name in _HOMOGENEOUS_MAKERS and module in vocab.ARRAY_MODULES:
+            if name in _HOMOGENEOUS_MAKERS and knowledge_base().is_namespace_module(module):
                 return True
     return type(func) in (Name, Attribute) and _feeds_a_product(facts, node)
 
@@ -183,13 +185,13 @@ def _padded_with_w(facts: FactBase, node: Call, positional: list[ast.expr]) -> H
         return None
     qualified = facts.qualified_name(node.func)
     widths = [number(width) for width in flat_literal(positional[1])]
-    if qualified == "torch.nn.functional.pad":  # (left, right) of the last axis first
+    operation = knowledge_base().array_operation(qualified) if qualified is not None else None
+    if operation == ArrayOperation.PAD_LAST_AXIS_FIRST:
         appends_one = len(widths) >= 2 and widths[:2] == [0, 1] and not any(widths[2:])
         mode: ast.expr | None = positional[2] if len(positional) > 2 else None
         value: ast.expr | None = positional[3] if len(positional) > 3 else None
         value_word = "value"
-    elif qualified is not None and qualified.rpartition(".")[0] in vocab.ARRAY_MODULES:
-        # numpy's per-axis pairs, the last axis last; a bare `(0, 1)` pads every axis
+    elif operation == ArrayOperation.PAD_PER_AXIS:  # a bare `(0, 1)` pads every axis
         pairs = positional[1].elts if isinstance(positional[1], (ast.Tuple, ast.List)) else []
         appends_one = len(pairs) >= 2 and all(isinstance(pair, (ast.Tuple, ast.List)) for pair in pairs) and widths == [0] * (2 * len(pairs) - 1) + [1]
         mode, value, value_word = positional[2] if len(positional) > 2 else None, None, "constant_values"

@@ -20,6 +20,8 @@ from geolint.factbase.index import Binding, LoopBinding, ParamBinding, UnpackBin
 from geolint.factbase.kind_summaries import KINDS
 from geolint.factbase.library_calls import returned_kind
 from geolint.factbase.syntax import components_of_one_array, is_scalar_annotation, last_name, number, positional_args
+from geolint.knowledge import knowledge_base
+from geolint.knowledge.markers import ArrayOperation
 from geolint.semantic.names import kind_of_name, states_geometry
 
 if TYPE_CHECKING:
@@ -233,7 +235,7 @@ def is_non_geometric(facts: FactBase, binding: Binding) -> bool:
         qualified = facts.qualified_name(binding.func) or ""
         if name in ("len", "int", "float", "str", "bool", "range", "round", "abs", "sum", "max", "min"):
             return isinstance(binding.func, Name)
-        if qualified in vocab.FEATURE_FUNCTIONS:
+        if knowledge_base().array_operation(qualified) == ArrayOperation.FEATURES:
             return True  # a feature map sampled at points, not their coordinates
         return ".random." in f".{qualified}." or qualified.startswith("random.")
     if isinstance(binding, BinOp) and isinstance(binding.op, (Div, Mult, FloorDiv, Mod, Pow)):
@@ -253,7 +255,7 @@ def _may_be_array(facts: FactBase, node: AST) -> bool:
     """Whether an expression visibly builds an array (an array call, a subscript, a product)."""
     if isinstance(node, Call):
         qualified = facts.qualified_name(node.func) or ""
-        return qualified.split(".")[0] in vocab.ARRAY_ROOTS or isinstance(node.func, Attribute)
+        return knowledge_base().in_array_library(qualified) or isinstance(node.func, Attribute)
     if isinstance(node, (Subscript, ast.List, ast.Tuple)):
         return True
     if isinstance(node, BinOp):
@@ -280,7 +282,7 @@ def _evidence(facts: FactBase, node: AST) -> bool:
         return has_geometric_evidence(facts, node.value)
     if isinstance(node, Call):
         qualified = facts.qualified_name(node.func) or ""
-        return qualified.split(".")[0] in vocab.ARRAY_ROOTS or facts.matmul(node) is not None
+        return knowledge_base().in_array_library(qualified) or facts.matmul(node) is not None
     if isinstance(node, BinOp):
         if isinstance(node.op, MatMult):
             return True

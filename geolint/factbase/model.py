@@ -58,6 +58,7 @@ from geolint.factbase.syntax import (
 from geolint.factbase.summaries import Summary, SummaryFamily
 from geolint.factbase.reaching import every_binding_reaches, reaching_bindings
 from geolint.factbase.index import Binding, ModuleIndex, OpaqueBinding
+from geolint.knowledge import knowledge_base
 from geolint.lint_types import Config
 from geolint.semantic.names import NameFrames
 
@@ -219,7 +220,7 @@ class FactBase:
         head, _, rest = dotted.partition(".")
         resolved = self.index.imports.get(head)
         if resolved is None:
-            resolved = vocab.CONVENTIONAL_ALIASES.get(head) if head not in self._local_names() else None
+            resolved = knowledge_base().conventional_array_module(head) if head not in self._local_names() else None
             if resolved is None:
                 return dotted
         return f"{resolved}.{rest}" if rest else resolved
@@ -235,7 +236,7 @@ class FactBase:
         if qualified is None:
             return False
         module, _, name = qualified.rpartition(".")
-        return name in names and module in vocab.ARRAY_MODULES
+        return name in names and knowledge_base().is_namespace_module(module)
 
     def is_module_like(self, node: AST) -> bool:
         """`np`, `np.linalg`, `scipy.spatial`: a (dotted) module name, never a value."""

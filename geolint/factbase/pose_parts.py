@@ -343,12 +343,18 @@ def peel_same_value(node: ast.expr) -> ast.expr:
     return node
 
 
+def _is_new_axis(node: AST) -> bool:
+    """`np.newaxis`: an array namespace's name for None."""
+    module, _, name = (dotted_name(node) or "").rpartition(".")
+    return name == "newaxis" and knowledge_base().is_array_namespace(module)
+
+
 def _is_broadcast_index(node: Subscript) -> bool:
     """`x[:, None]`, `x[None]`, `x[..., np.newaxis]`: only new axes and full slices."""
     indices = subscript_parts(node)
     has_new_axis = False
     for index in indices:
-        if (isinstance(index, Constant) and index.value is None) or dotted_name(index) in ("np.newaxis", "numpy.newaxis"):
+        if (isinstance(index, Constant) and index.value is None) or _is_new_axis(index):
             has_new_axis = True
         elif not is_batch_index(index):
             return False
@@ -628,8 +634,8 @@ def _square_of_maker(node: Call) -> tuple[int, bool] | None:
         shape = node.args[0]
         if isinstance(shape, (ast.Tuple, ast.List)):
             return _square_of_sizes([int_value(element) for element in shape.elts])
-        if (dotted_name(node.func) or "").split(".")[0] != "torch":
-            return None  # sizes as separate arguments: torch's signature, not numpy's
+        if not _takes_separate_sizes(node):
+            return None  # numpy's one shape argument: a bare size is a vector's
         return _square_of_sizes([int_value(argument) for argument in node.args])
     if name in ROTATION_MAKERS:
         return (3, False) if not _stacks(node) else None
@@ -642,6 +648,12 @@ def _array_module_call(node: Call) -> bool:
     """`np.eye(3)`, `torch.zeros(4, 4)`, `numpy.identity(4)`: a maker called through an array namespace's
     module (as written, or as conventionally imported), by the stubs."""
     return isinstance(node.func, Attribute) and knowledge_base().is_array_namespace(dotted_name(node.func) or "")
+
+
+def _takes_separate_sizes(node: Call) -> bool:
+    """`torch.zeros(4, 4)`: a maker whose stub takes the shape as separate sizes (`*size: int`)."""
+    api = knowledge_base().api_as_written(dotted_name(node.func) or "")
+    return api is not None and any(signature.parameters and signature.parameters[0].variadic for signature in api.signatures)
 
 
 def _square_of_sizes(sizes: list[int | None]) -> tuple[int, bool] | None:

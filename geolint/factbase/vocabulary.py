@@ -15,15 +15,12 @@ from geolint.knowledge import knowledge_base
 from geolint.semantic import names
 from geolint.semantic.names import NameFrames
 
-# Array libraries whose functions behave alike for our purposes (numpy's names).
-ARRAY_MODULES: Final = frozenset({"numpy", "np", "torch", "jax.numpy", "jnp", "cupy", "cp"})
-ARRAY_ROOTS: Final = frozenset({"numpy", "np", "torch", "jax", "jnp", "cupy", "cp"})
 # Packages that are never the project's own modules (no summary is looked for in them): these, and every
 # package of the knowledge base (`is_third_party_root`).
 _UNSTUBBED_THIRD_PARTY_ROOTS: Final = frozenset(
     {
-        "numpy", "torch", "jax", "cupy", "math", "os", "sys", "re", "json", "typing", "collections",
-        "PIL", "matplotlib", "tensorflow", "sklearn", "pandas", "yaml", "logging", "pathlib",
+        "math", "os", "sys", "re", "json", "typing", "collections",
+        "matplotlib", "sklearn", "pandas", "yaml", "logging", "pathlib",
         "functools", "itertools",
     }
 )  # fmt: skip
@@ -34,8 +31,6 @@ def is_third_party_root(top: str) -> bool:
     return top in _UNSTUBBED_THIRD_PARTY_ROOTS or knowledge_base().library_of_module(top) is not None
 
 
-# Local names that mean a module by convention even when the import is not in this file.
-CONVENTIONAL_ALIASES: Final = {"np": "numpy", "jnp": "jax.numpy", "cp": "cupy"}
 # Module names that are never geometric values themselves (`np.random.normal` is not a normal): the standard
 # library's, and the array namespaces' by their stubs (`knowledge_base().array_module_names()`).
 STDLIB_MODULE_LIKE: Final = frozenset({"math", "random", "os", "sys"})
@@ -64,18 +59,6 @@ INVERSE_FUNCTIONS: Final = frozenset({"inv", "invert_transform", "inverse_transf
 INVERSE_METHODS: Final = frozenset({"inv", "inverse", "Inverse", "inverted", "inverse_transform"})
 # Joins along the last axis that can append a w column (`torch.cat([x, ones], dim=-1)`).
 STACKING_FUNCTIONS: Final = frozenset({"hstack", "column_stack", "concatenate", "cat", "concat"})
-
-# Learned-feature operations: their results are feature maps sampled at or pooled over points,
-# never coordinates, whatever the variable is called (`tpv_pts = F.grid_sample(plane, loc)`).
-FEATURE_FUNCTIONS: Final = frozenset(
-    f"torch.nn.functional.{name}"
-    for name in (
-        "grid_sample", "interpolate", "conv1d", "conv2d", "conv3d", "conv_transpose2d", "linear", "relu",
-        "leaky_relu", "gelu", "silu", "sigmoid", "softmax", "log_softmax", "embedding", "layer_norm",
-        "batch_norm", "group_norm", "dropout", "max_pool1d", "max_pool2d", "max_pool3d", "avg_pool2d",
-        "adaptive_avg_pool2d", "adaptive_max_pool1d", "scaled_dot_product_attention",
-    )
-)  # fmt: skip
 
 # Attributes that state a convention in so many words (pycolmap, BOP, nerfstudio-style names).
 DECLARING_ATTRIBUTES: Final[dict[str, NameFrames]] = {

@@ -66,6 +66,19 @@ class KnowledgeBase:
             for executable in library.executables.values():
                 self._executables[(executable.package, executable.name)] = executable
         self._array_libraries = frozenset(self._apis[name].library for name in self._array_operations)
+        # each array library's namespace module: the shortest module holding its array functions (`numpy`,
+        # `torch`, `jax.numpy`), where numpy's function names live
+        operation_modules: dict[str, set[str]] = {}
+        for name in self._array_operations:
+            operation_modules.setdefault(self._apis[name].library, set()).add(name.rpartition(".")[0])
+        self._namespace_modules = frozenset(min(modules, key=lambda module: (module.count("."), module)) for modules in operation_modules.values())
+        # what is the array namespace's: the whole package of a library that is nothing else (numpy, torch,
+        # jax), only the namespace module of one that has other APIs beside it (scipy.linalg)
+        self._array_roots = frozenset(
+            module.partition(".")[0] if all(api.qualified_name in self._array_operations for api in self.libraries[self._apis[name].library].apis.values() if not api.is_class) else module
+            for name in self._array_operations
+            for module in [min(operation_modules[self._apis[name].library], key=lambda module: (module.count("."), module))]
+        )
         # asked per name and per file on the hot path: derived once here
         array_packages = {package for name in self._array_libraries for package in self.libraries[name].packages}
         self._array_module_names = frozenset(array_packages) | frozenset(
@@ -170,6 +183,23 @@ class KnowledgeBase:
         module = self._conventional_modules.get(head, head)
         library = self.library_of_module(module)
         return library is not None and library.name in self._array_libraries
+
+    def in_array_library(self, qualified: str) -> bool:
+        """Whether a qualified name (imports resolved) is in an array namespace's library
+        (`torch.nn.functional.pad`, `jax.random.normal`, `numpy.linalg.inv`)."""
+        parts = qualified.split(".")
+        return any(".".join(parts[:end]) in self._array_roots for end in range(1, len(parts) + 1))
+
+    def is_namespace_module(self, module: str) -> bool:
+        """Whether a module (imports resolved) is an array namespace itself, where numpy's function names
+        live (`numpy`, `torch`, `jax.numpy`, `cupy`), not one of its submodules."""
+        return module in self._namespace_modules
+
+    def conventional_array_module(self, name: str) -> str | None:
+        """The array-library module a local name conventionally means (`np` -> `numpy`, `F` ->
+        `torch.nn.functional`), for names a file uses without importing them."""
+        module = self._conventional_modules.get(name)
+        return module if module is not None and self.in_array_library(module) else None
 
     def converted_with_float(self, class_name: str) -> bool:
         """Whether numpy reads an instance of this library class as one number: its stub defines `__float__`

@@ -101,6 +101,13 @@ class ArrayOperation:
     INVERSE: Final = "inverse"  # the matrix inverse (`np.linalg.inv`, `torch.inverse`)
     MATMUL: Final = "matmul"  # the matrix product of its two arguments (`np.dot`, `torch.bmm`)
     EINSUM: Final = "einsum"  # a product spelled by subscripts (`np.einsum("ij,nj->ni", R, p)`)
+    # pads with a constant: widths as (before, after) pairs per axis, the last axis last (`np.pad`)...
+    PAD_PER_AXIS: Final = "pad_per_axis"
+    # ... or as (left, right) of the last axis first, then the one before it (`torch.nn.functional.pad`)
+    PAD_LAST_AXIS_FIRST: Final = "pad_last_axis_first"
+    # learned-feature operations: the result is a feature map sampled at or pooled over its inputs, never
+    # coordinates, whatever the variable is called (`tpv_pts = F.grid_sample(plane, loc)`)
+    FEATURES: Final = "features"
 
 
 ROW_VECTORS: Final = "row vectors"

@@ -723,6 +723,10 @@ def _uninverted(node: AST) -> AST:
     return node
 
 
+# Methods that return their array's values in its shape (copies, dtype and device moves, `.numpy()`).
+_COPY_METHODS: Final = frozenset({"copy", "clone", "float", "double", "astype", "to", "detach", "cpu", "numpy", "contiguous"})
+
+
 def _peel(node: AST) -> AST:
     """Through transposes, copies and dtype moves (`x.T`, `np.asarray(x)`, `x.float()`)."""
     for _ in range(8):
@@ -732,7 +736,7 @@ def _peel(node: AST) -> AST:
             continue
         if isinstance(node, Call):
             name = last_name(node.func)
-            if isinstance(node.func, Attribute) and name in ("copy", "clone", "float", "double", "astype", "to", "detach", "cpu", "numpy", "contiguous"):
+            if isinstance(node.func, Attribute) and name in _COPY_METHODS:
                 node = node.func.value
                 continue
             if name in ("asarray", "array", "as_tensor", "tensor", "from_numpy", "ascontiguousarray") and node.args:

@@ -18,3 +18,6 @@ def matmul(a: object, b: object, *args: object, **kwargs: object) -> Annotated[o
 
 def einsum(subscripts: str, *operands: object, **kwargs: object) -> Annotated[object, ArrayOperation.EINSUM]:
     """Source: cupy.einsum (https://docs.cupy.dev/en/stable/reference/routines.html): numpy.einsum's API."""
+
+def pad(array: object, pad_width: object, mode: str = ..., **kwargs: object) -> Annotated[object, ArrayOperation.PAD_PER_AXIS]:
+    """Source: cupy cupy.pad (13 documentation): "Pads an array with specified widths and values", pad_width "((before_1, after_1), ... (before_N, after_N))" per axis, as numpy.pad."""

@@ -21,3 +21,6 @@ def matmul(x1: object, x2: object, /, *args: object, **kwargs: object) -> Annota
 
 def einsum(subscripts: str, *operands: object, **kwargs: object) -> Annotated[object, ArrayOperation.EINSUM]:
     """Source: numpy numpy.einsum (2.4.6 documentation): "Evaluates the Einstein summation convention on the operands"."""
+
+def pad(array: object, pad_width: object, mode: str = ..., **kwargs: object) -> Annotated[object, ArrayOperation.PAD_PER_AXIS]:
+    """Source: numpy numpy.pad (2.4.6 documentation): pad_width "((before_1, after_1), ... (before_N, after_N)) unique pad widths for each axis"; `constant_values` defaults to 0 (checked: `np.pad(np.ones((2, 3)), ((0, 0), (0, 1)), constant_values=1)` appends a column of ones)."""

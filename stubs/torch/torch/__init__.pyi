@@ -24,3 +24,14 @@ def mm(input: object, mat2: object, *, out: object = ...) -> Annotated[object, A
 
 def einsum(equation: str, *operands: object) -> Annotated[object, ArrayOperation.EINSUM]:
     """Source: torch torch.einsum (PyTorch 2.x documentation): "Sums the product of the elements of the input operands along dimensions specified using a notation based on the Einstein summation convention"."""
+
+# Array makers: the shape may be given as separate sizes (`torch.zeros(4, 4)`), unlike numpy's one shape argument.
+
+def zeros(*size: int, **kwargs: object) -> object:
+    """Source: torch torch.zeros (PyTorch 2.x documentation): "size (int...) – a sequence of integers defining the shape of the output tensor. Can be a variable number of arguments or a collection like a list or tuple"."""
+
+def ones(*size: int, **kwargs: object) -> object:
+    """Source: torch torch.ones (PyTorch 2.x documentation): "size (int...) – a sequence of integers defining the shape of the output tensor. Can be a variable number of arguments or a collection like a list or tuple"."""
+
+def empty(*size: int, **kwargs: object) -> object:
+    """Source: torch torch.empty (PyTorch 2.x documentation): "size (int...) – a sequence of integers defining the shape of the output tensor. Can be a variable number of arguments or a collection like a list or tuple"."""

@@ -18,3 +18,6 @@ def matmul(a: object, b: object, *args: object, **kwargs: object) -> Annotated[o
 
 def einsum(subscripts: str, *operands: object, **kwargs: object) -> Annotated[object, ArrayOperation.EINSUM]:
     """Source: jax.numpy.einsum (https://jax.readthedocs.io/en/latest/jax.numpy.html): numpy.einsum's API."""
+
+def pad(array: object, pad_width: object, mode: str = ..., **kwargs: object) -> Annotated[object, ArrayOperation.PAD_PER_AXIS]:
+    """Source: jax jax.numpy.pad (0.4 documentation): "Add padding to an array", numpy.pad's signature: pad_width is "((before_1, after_1), ... (before_N, after_N))" per axis."""
