@@ -53,3 +53,36 @@ def test_numpy_functions_do_what_their_stubs_say() -> None:
     assert np.allclose(np.matmul(STACK, STACK), STACK @ STACK) and np.allclose(np.dot(QUARTER_TURN_Z, A_POSE[:3, :3]), QUARTER_TURN_Z @ A_POSE[:3, :3])
     assert kb.array_operation("np.einsum") == ArrayOperation.EINSUM
     assert np.allclose(np.einsum("ij,nj->ni", QUARTER_TURN_Z, np.eye(3)), np.eye(3) @ QUARTER_TURN_Z.T)
+
+
+@pytest.mark.parametrize(
+    ("written", "operation"),
+    [
+        ("np.pad", ArrayOperation.PAD_PER_AXIS), ("jnp.pad", ArrayOperation.PAD_PER_AXIS), ("cp.pad", ArrayOperation.PAD_PER_AXIS),
+        ("F.pad", ArrayOperation.PAD_LAST_AXIS_FIRST), ("torch.nn.functional.pad", ArrayOperation.PAD_LAST_AXIS_FIRST),
+        ("F.grid_sample", ArrayOperation.FEATURES), ("torch.nn.functional.interpolate", ArrayOperation.FEATURES), ("F.normalize", None),
+    ],
+)  # fmt: skip
+def test_pads_and_feature_maps_are_stub_facts(written: str, operation: str | None) -> None:
+    assert knowledge_base().array_operation(written) == operation
+
+
+def test_numpy_pads_each_axis_with_a_before_and_after_pair() -> None:
+    padded = np.pad(np.zeros((2, 3)), ((0, 0), (0, 1)), constant_values=1.0)  # the stub's pad_width: per axis, the last axis last
+    assert padded.shape == (2, 4) and np.all(padded[:, 3] == 1.0) and np.all(padded[:, :3] == 0.0)
+
+
+def test_the_array_namespaces_and_what_belongs_to_them_come_from_the_stubs() -> None:
+    base = knowledge_base()
+    assert {module for module in ("numpy", "torch", "jax.numpy", "cupy", "tensorflow") if base.is_namespace_module(module)} == {"numpy", "torch", "jax.numpy", "cupy", "tensorflow"}
+    assert not base.is_namespace_module("numpy.linalg") and not base.is_namespace_module("math")
+    # a library that is only an array namespace owns every name under it; scipy owns only scipy.linalg
+    assert base.in_array_library("jax.random.normal") and base.in_array_library("torch.nn.functional.pad") and base.in_array_library("scipy.linalg.inv")
+    assert not base.in_array_library("scipy.spatial.transform.Rotation") and not base.in_array_library("trimesh.transformations")
+    assert base.conventional_array_module("np") == "numpy" and base.conventional_array_module("F") == "torch.nn.functional"
+    assert base.conventional_array_module("R") is None  # scipy's Rotation by convention, but no array module
+
+
+def test_torch_makers_take_sizes_one_by_one() -> None:
+    zeros = knowledge_base().api_as_written("torch.zeros")
+    assert zeros is not None and zeros.signatures[0].parameters[0].variadic
