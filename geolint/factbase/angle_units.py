@@ -86,10 +86,8 @@ _RADIAN_WORDS: Final = frozenset({"rad", "rads", "radian", "radians"})
 _NOT_AN_ANGLE: Final = frozenset({"per", "to", "s", "sec", "rate", "vel", "velocity", "speed", "factor", "scale", "step", "tol", "thresh", "threshold", "eps", "err", "error", "std", "sigma", "noise"})
 _TO_DEGREES: Final = frozenset({"degrees", "rad2deg"})
 _TO_RADIANS: Final = frozenset({"radians", "deg2rad"})
+_CONVERSIONS: Final = _TO_DEGREES | _TO_RADIANS  # the names a conversion has (a cheap test before its stub is asked)
 _INVERSE_TRIG: Final = frozenset({"arctan2", "arctan", "arcsin", "arccos", "atan2", "atan", "asin", "acos"})
-_ANGLE_MODULES: Final = frozenset({"numpy", "math", "torch", "jax.numpy", "cupy"})
-# TensorFlow's `tf.acos`, `tf.math.atan2`... return radians as well (it has no degree conversions)
-_INVERSE_TRIG_MODULES = _ANGLE_MODULES | {"tensorflow", "tensorflow.math"}
 _MAX_DEPTH: Final = 10
 _TWO_PI: Final = 2 * math.pi
 # The names `radian_arguments` knows without the knowledge base (whose own names it asks for).
@@ -128,11 +126,10 @@ class AngleUnits:
     def converts(self, call: Call) -> str | None:
         """For `np.radians(x)` / `np.deg2rad(x)`, RADIANS (the unit it returns); DEGREES for
         `np.degrees` / `np.rad2deg`; None for anything else."""
-        qualified = self.facts.qualified_name(call.func) or ""
-        module, _, name = qualified.rpartition(".")
-        if module not in _ANGLE_MODULES or len(positional_args(call)) != 1:
+        if self.facts.called_name(call.func) not in _CONVERSIONS or len(positional_args(call)) != 1:
             return None
-        return RADIANS if name in _TO_RADIANS else DEGREES if name in _TO_DEGREES else None
+        api = library_calls.called_api(self.facts, call)
+        return conversion(api) if api is not None else None
 
     def unit_of(self, node: ast.expr) -> Unit | None:
         return self._units.get(id(node), lambda: self._unit(node))
@@ -232,10 +229,9 @@ class AngleUnits:
         if converted is not None:
             return Unit(converted, f"`{facts.code_of(call.func)}` returns {unit_word(converted)}", False)
         qualified = facts.qualified_name(call.func) or ""
-        module, _, name = qualified.rpartition(".")
-        if module in _INVERSE_TRIG_MODULES and name in _INVERSE_TRIG:
-            return Unit(RADIANS, f"`{facts.code_of(call.func)}` returns radians", False)
         known = _KNOWLEDGE_UNITS.get(library_calls.angle_output(facts, call) or "")
+        if known is not None and qualified.rpartition(".")[2] in _INVERSE_TRIG:  # `np.arctan2`, `math.atan2`
+            return Unit(known, f"`{facts.code_of(call.func)}` returns {unit_word(known)}", False)
         if known is not None:  # the knowledge base (stubs/)
             api = library_calls.called_api(facts, call)
             return Unit(known, f"`{api.qualified_name if api else qualified}` returns its angles in {unit_word(known)}", False)
@@ -332,8 +328,13 @@ class AngleUnits:
         return None
 
     def _is_pi(self, node: AST) -> bool:
-        qualified = self.facts.qualified_name(node) or ""
-        return qualified in ("numpy.pi", "math.pi", "torch.pi")
+        qualified = self.facts.qualified_name(node)
+        if qualified is None or qualified.rpartition(".")[2] != "pi":
+            return False
+        constant = knowledge.knowledge_base().api_as_written(qualified)  # `pi: Radians` in the stubs
+        return constant is not None and constant.is_attribute and all(
+            signature.returns is not None and signature.returns.angle_unit == knowledge.RADIANS for signature in constant.signatures
+        )
 
 
 class LibraryUnits(AngleUnits):
@@ -518,13 +519,26 @@ def is_trig_or_conversion(facts: FactBase, node: Call) -> bool:
     called = facts.called_name(func)
     if called not in TRIG_FUNCTIONS and called not in ("degrees", "rad2deg"):
         return False
-    qualified = facts.qualified_name(func) or ""
-    module, _, name = qualified.rpartition(".")
     if len(positional_args(node)) != 1:
         return False
-    if name in TRIG_FUNCTIONS:
-        return facts.is_array_call(func, *TRIG_FUNCTIONS) or module == "math"
-    return name in ("degrees", "rad2deg") and module in ("numpy", "math", "torch", "jax.numpy", "cupy")
+    api = library_calls.called_api(facts, node)  # the stubs say which modules' `sin` reads radians
+    return api is not None and bool(api.signatures) and all(
+        bool(signature.parameters) and signature.parameters[0].geometry is not None and signature.parameters[0].geometry.angle_unit == knowledge.RADIANS
+        for signature in api.signatures
+    )
+
+
+def conversion(api: knowledge.Api) -> str | None:
+    """The unit a unit conversion returns (`np.deg2rad`: RADIANS, `math.degrees`: DEGREES), by its stub: one
+    angle in one unit in, the other out; None for any other API."""
+    units = set()
+    for signature in api.signatures:
+        given = signature.parameters[0].geometry if signature.parameters else None
+        returned = signature.returns
+        if given is None or returned is None or given.angle_unit is None or returned.angle_unit in (None, given.angle_unit):
+            return None
+        units.add(returned.angle_unit)
+    return _KNOWLEDGE_UNITS.get(units.pop()) if len(units) == 1 else None
 
 
 def may_read_degrees(facts: FactBase, called: str) -> bool:
@@ -540,6 +554,9 @@ def degree_arguments(facts: FactBase, call: Call, *, whatever_the_keywords: bool
     `from_euler`'s, which `degrees=True` chose)."""
     if not may_read_degrees(facts, facts.called_name(call.func) or ""):
         return []  # the cheap test first: asked of every call
+    api = library_calls.called_api(facts, call)
+    if api is not None and conversion(api) is not None:
+        return []  # `np.radians(x)` converts what it is given (`AngleUnits.converts`): no API that needs degrees
     return library_calls.angle_arguments(facts, call, knowledge.DEGREES, whatever_the_keywords=whatever_the_keywords)
 
 

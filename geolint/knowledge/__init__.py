@@ -72,13 +72,9 @@ class KnowledgeBase:
         for name in self._array_operations:
             operation_modules.setdefault(self._apis[name].library, set()).add(name.rpartition(".")[0])
         self._namespace_modules = frozenset(min(modules, key=lambda module: (module.count("."), module)) for modules in operation_modules.values())
-        # what is the array namespace's: the whole package of a library that is nothing else (numpy, torch,
-        # jax), only the namespace module of one that has other APIs beside it (scipy.linalg)
-        self._array_roots = frozenset(
-            module.partition(".")[0] if all(api.qualified_name in self._array_operations for api in self.libraries[self._apis[name].library].apis.values() if not api.is_class) else module
-            for name in self._array_operations
-            for module in [min(operation_modules[self._apis[name].library], key=lambda module: (module.count("."), module))]
-        )
+        # what is an array library's: every name of one whose values are arrays (METADATA.toml's `array_library`:
+        # numpy, torch, jax), only the namespace module of one that has other APIs beside it (scipy.linalg)
+        self._array_roots = frozenset(package for library in libraries if library.array_library for package in library.packages) | self._namespace_modules
         # asked per name and per file on the hot path: derived once here
         array_packages = {package for name in self._array_libraries for package in self.libraries[name].packages}
         self._array_module_names = frozenset(array_packages) | frozenset(

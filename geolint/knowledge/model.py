@@ -156,5 +156,6 @@ class Library:
     conventional_modules: dict[str, str] = field(default_factory=dict)
     # its frame ids may start with a slash: it strips one itself before asking tf2 (ROS 1's tf)
     strips_leading_slash: bool = False
+    array_library: bool = False  # METADATA.toml's `array_library`: its values are arrays (numpy, torch, jax)
     # how code that imports it names frames: "monogram" (Drake's `X_WB`, `p_BQ`: the frames are in the name)
     frame_naming: str | None = None

@@ -81,6 +81,7 @@ def read_library(folder: Path) -> Library:
         ros_client=int(metadata["ros_client"]) if "ros_client" in metadata else None,
         frame_naming=_frame_naming(metadata_path, metadata.get("frame_naming")),
         strips_leading_slash=bool(metadata.get("strips_leading_slash", False)),
+        array_library=bool(metadata.get("array_library", False)),
     )
     for stub in sorted(folder.rglob("*.pyi")):
         relative = stub.relative_to(folder).with_suffix("")
@@ -158,7 +159,7 @@ class _ModuleReader:
         overloads: dict[str, list[Signature]] = {}
         sources: dict[str, str] = {}
         attributes: set[str] = set()
-        for statement in body:
+        for position, statement in enumerate(body):
             if isinstance(statement, ast.ClassDef):
                 self._read_class(statement, prefix)
             elif isinstance(statement, ast.FunctionDef):
@@ -168,11 +169,15 @@ class _ModuleReader:
                     sources[statement.name] = source
                 if in_class and any(_last(decorator) == "property" for decorator in statement.decorator_list):
                     attributes.add(statement.name)
-            elif in_class and isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name):
-                # `xquat: Annotated[QuaternionWXYZ, STACKED]`: an attribute, read like a property
+            elif isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name):
+                # `xquat: Annotated[QuaternionWXYZ, STACKED]`: an attribute, read like a property (a module's
+                # constant too: `pi: Radians`)
                 returns = self.geometry(statement.annotation)
                 overloads.setdefault(statement.target.id, []).append(Signature((), returns, None, statement.lineno))
                 attributes.add(statement.target.id)
+                after = body[position + 1] if position + 1 < len(body) else None
+                if isinstance(after, ast.Expr) and isinstance(after.value, ast.Constant) and isinstance(after.value.value, str):
+                    sources[statement.target.id] = _source_of(after.value.value)
         for name, signatures in overloads.items():
             qualified = f"{prefix}.{name}"
             source = sources.get(name) or class_source
@@ -356,9 +361,10 @@ def _with_versions(signature: Signature, versions: str) -> Signature:
     return Signature(signature.parameters, signature.returns, combined, signature.line, signature.receiver)
 
 
-def _source_of(node: ast.FunctionDef | ast.ClassDef) -> str:
-    """The docstring's `Source:` paragraph (the citation), joined into one line."""
-    doc = ast.get_docstring(node) or ""
+def _source_of(node: ast.FunctionDef | ast.ClassDef | str) -> str:
+    """The docstring's `Source:` paragraph (the citation), joined into one line (an attribute's docstring is
+    the string after it)."""
+    doc = node if isinstance(node, str) else ast.get_docstring(node) or ""
     lines = doc.splitlines()
     for index, line in enumerate(lines):
         if line.strip().startswith("Source:"):

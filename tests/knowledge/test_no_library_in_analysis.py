@@ -19,11 +19,9 @@ ANALYSIS = ("rules", "factbase", "semantic", "mypy")
 # for every library stubbed before the array namespaces)
 STILL_NAMED: dict[str, set[str]] = {}
 # The array namespaces (numpy, torch, jax, cupy, tensorflow) were stubbed after these modules named them: what they
-# still name of them, to move the same way (the transposes, inverses, products, pads, feature maps and makers already have).
+# still name of them, to move the same way (the transposes, inverses, products, pads, feature maps, makers and angle functions already have).
 STILL_NAMED_ARRAY_NAMESPACES: dict[str, set[str]] = {
-    "factbase/angle_units.py": {"cupy", "jax", "numpy", "tensorflow", "torch"},
     "mypy/fullnames.py": {"numpy"},
-    "rules/rotation/geo302_degrees_as_radians.py": {"numpy"},
 }
 
 

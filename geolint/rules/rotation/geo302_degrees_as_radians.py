@@ -33,6 +33,7 @@ from geolint.factbase.index import ParamBinding
 from geolint.factbase.project_files import is_test_module
 from geolint.factbase.model import last_name, number, positional_args, string
 from geolint import knowledge
+from geolint.knowledge import knowledge_base
 from geolint.factbase import library_calls
 from geolint.factbase.rotations import TRIG_FUNCTIONS
 from geolint.rules.fact_rule import FactRule, with_keyword
@@ -43,6 +44,7 @@ from geolint.factbase.angle_units import (
     DEGREES,
     RADIANS,
     AngleUnits,
+    conversion,
     degree_arguments,
     may_read_degrees,
     enclosing_class,
@@ -69,8 +71,6 @@ class _GateOrDivisionByPi:
 
     def search_with(self, source: str, config: object, /) -> bool:
         return GATE_TRIGGER.search_with(source, config) or _DIVIDES_BY_PI.search(source) is not None
-_RADIAN_CONVERTERS: Final = frozenset({"math.radians", "numpy.radians", "numpy.deg2rad"})
-_MATH_TRIG: Final = frozenset(f"math.{fn}" for fn in TRIG_FUNCTIONS)
 _ANGLE_NAME: Final = re.compile(r"(?i)(fov|angle|yaw|pitch|roll|heading|theta)")
 _RADIAN_NAME: Final = re.compile(r"(?i)rad")
 
@@ -351,7 +351,8 @@ class DegreesAsRadians(FactRule):
     def _converts_to_radians(self, converter: Name) -> bool:
         """`math.radians` / `np.deg2rad` themselves, or a project function of this module whose every
         `return` is in radians (not by a name alone)."""
-        if (self.facts.qualified_name(converter) or "") in _RADIAN_CONVERTERS:
+        api = knowledge_base().api_as_written(self.facts.qualified_name(converter) or "")
+        if api is not None and conversion(api) == RADIANS:  # `math.radians`, `np.deg2rad` by their stubs
             return True
         function = self.facts.index.functions.get(converter.id)
         if function is None:
@@ -672,9 +673,7 @@ class DegreesAsRadians(FactRule):
         degrees). `trig`: `is_trig_or_conversion` of the call."""
         facts = self.facts
         func = node.func
-        if last_name(func) in TRIG_FUNCTIONS and len(positional := positional_args(node)) == 1 and (
-            facts.is_array_call(func, *TRIG_FUNCTIONS) or facts.qualified_name(func) in _MATH_TRIG
-        ):
+        if trig and last_name(func) in TRIG_FUNCTIONS and len(positional := positional_args(node)) == 1:
             value = number(positional[0])
             if value is None:
                 value = self._angle_through_data(positional[0])

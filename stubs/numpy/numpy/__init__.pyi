@@ -1,6 +1,7 @@
 from typing import Annotated
 
 from geolint.knowledge.markers import ArrayOperation
+from geolint.typing import Degrees, Radians
 
 from numpy import linalg as linalg
 
@@ -24,3 +25,53 @@ def einsum(subscripts: str, *operands: object, **kwargs: object) -> Annotated[ob
 
 def pad(array: object, pad_width: object, mode: str = ..., **kwargs: object) -> Annotated[object, ArrayOperation.PAD_PER_AXIS]:
     """Source: numpy numpy.pad (2.4.6 documentation): pad_width "((before_1, after_1), ... (before_N, after_N)) unique pad widths for each axis"; `constant_values` defaults to 0 (checked: `np.pad(np.ones((2, 3)), ((0, 0), (0, 1)), constant_values=1)` appends a column of ones)."""
+
+# Angles: numpy's trigonometric functions read radians, its inverse ones return radians.
+
+def sin(x: Radians, /, *args: object, **kwargs: object) -> object:
+    """Source: numpy numpy.sin documentation (2.4.6): the argument is an angle in radians."""
+
+def cos(x: Radians, /, *args: object, **kwargs: object) -> object:
+    """Source: numpy numpy.cos documentation (2.4.6): the argument is an angle in radians."""
+
+def tan(x: Radians, /, *args: object, **kwargs: object) -> object:
+    """Source: numpy numpy.tan documentation (2.4.6): the argument is an angle in radians."""
+
+def arcsin(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.arcsin documentation (2.4.6): returns an angle in radians."""
+
+def arccos(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.arccos documentation (2.4.6): returns an angle in radians."""
+
+def arctan(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.arctan documentation (2.4.6): returns an angle in radians."""
+
+def arctan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.arctan2 documentation (2.4.6): returns an angle in radians."""
+
+def asin(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.asin documentation (2.4.6): returns an angle in radians."""
+
+def acos(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.acos documentation (2.4.6): returns an angle in radians."""
+
+def atan(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.atan documentation (2.4.6): returns an angle in radians."""
+
+def atan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.atan2 documentation (2.4.6): returns an angle in radians."""
+
+def degrees(x: Radians, /, *args: object, **kwargs: object) -> Degrees:
+    """Source: numpy numpy.degrees documentation (2.4.6): converts angles from radians to degrees."""
+
+def rad2deg(x: Radians, /, *args: object, **kwargs: object) -> Degrees:
+    """Source: numpy numpy.rad2deg documentation (2.4.6): converts angles from radians to degrees."""
+
+def radians(x: Degrees, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.radians documentation (2.4.6): converts angles from degrees to radians."""
+
+def deg2rad(x: Degrees, /, *args: object, **kwargs: object) -> Radians:
+    """Source: numpy numpy.deg2rad documentation (2.4.6): converts angles from degrees to radians."""
+
+pi: Radians
+"""Source: numpy numpy.pi documentation (2.4.6): the constant pi, a half turn in radians."""

@@ -1,6 +1,7 @@
 from typing import Annotated
 
 from geolint.knowledge.markers import ArrayOperation
+from geolint.typing import Degrees, Radians
 
 from torch import linalg as linalg
 
@@ -35,3 +36,47 @@ def ones(*size: int, **kwargs: object) -> object:
 
 def empty(*size: int, **kwargs: object) -> object:
     """Source: torch torch.empty (PyTorch 2.x documentation): "size (int...) – a sequence of integers defining the shape of the output tensor. Can be a variable number of arguments or a collection like a list or tuple"."""
+
+# Angles: torch's trigonometric functions read radians, its inverse ones return radians.
+
+def sin(x: Radians, /, *args: object, **kwargs: object) -> object:
+    """Source: torch torch.sin (PyTorch 2.x documentation) (2.5): the argument is an angle in radians."""
+
+def cos(x: Radians, /, *args: object, **kwargs: object) -> object:
+    """Source: torch torch.cos (PyTorch 2.x documentation) (2.5): the argument is an angle in radians."""
+
+def tan(x: Radians, /, *args: object, **kwargs: object) -> object:
+    """Source: torch torch.tan (PyTorch 2.x documentation) (2.5): the argument is an angle in radians."""
+
+def asin(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.asin (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def acos(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.acos (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def atan(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.atan (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def atan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.atan2 (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def arcsin(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.arcsin (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def arccos(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.arccos (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def arctan(x: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.arctan (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def arctan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.arctan2 (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+
+def rad2deg(x: Radians, /, *args: object, **kwargs: object) -> Degrees:
+    """Source: torch torch.rad2deg (PyTorch 2.x documentation) (2.5): converts angles from radians to degrees."""
+
+def deg2rad(x: Degrees, /, *args: object, **kwargs: object) -> Radians:
+    """Source: torch torch.deg2rad (PyTorch 2.x documentation) (2.5): converts angles from degrees to radians."""
+
+pi: Radians
+"""Source: torch torch.pi (PyTorch 2.x documentation) (2.5): the constant pi, a half turn in radians."""
