@@ -49,17 +49,11 @@ def arctan(x: object, /, *args: object, **kwargs: object) -> Radians:
 def arctan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
     """Source: numpy numpy.arctan2 documentation (2.4.6): returns an angle in radians."""
 
-def asin(x: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: numpy numpy.asin documentation (2.4.6): returns an angle in radians."""
-
-def acos(x: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: numpy numpy.acos documentation (2.4.6): returns an angle in radians."""
-
-def atan(x: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: numpy numpy.atan documentation (2.4.6): returns an angle in radians."""
-
-def atan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: numpy numpy.atan2 documentation (2.4.6): returns an angle in radians."""
+# numpy 2's array-API names for the same functions (numpy 2.4.6 documentation: "numpy.asin ... alias of arcsin")
+asin = arcsin
+acos = arccos
+atan = arctan
+atan2 = arctan2
 
 def degrees(x: Radians, /, *args: object, **kwargs: object) -> Degrees:
     """Source: numpy numpy.degrees documentation (2.4.6): converts angles from radians to degrees."""

@@ -60,17 +60,11 @@ def atan(x: object, /, *args: object, **kwargs: object) -> Radians:
 def atan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
     """Source: torch torch.atan2 (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
 
-def arcsin(x: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: torch torch.arcsin (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
-
-def arccos(x: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: torch torch.arccos (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
-
-def arctan(x: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: torch torch.arctan (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
-
-def arctan2(x1: object, x2: object, /, *args: object, **kwargs: object) -> Radians:
-    """Source: torch torch.arctan2 (PyTorch 2.x documentation) (2.5): returns an angle in radians."""
+# torch's numpy-style names for the same functions (PyTorch 2.x documentation: "torch.arcsin: Alias for torch.asin()")
+arcsin = asin
+arccos = acos
+arctan = atan
+arctan2 = atan2
 
 def rad2deg(x: Radians, /, *args: object, **kwargs: object) -> Degrees:
     """Source: torch torch.rad2deg (PyTorch 2.x documentation) (2.5): converts angles from radians to degrees."""
