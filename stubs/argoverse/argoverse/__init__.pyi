@@ -1,0 +1,1 @@
+from argoverse import data_loading as data_loading, utils as utils

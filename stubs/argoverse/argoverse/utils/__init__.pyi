@@ -1,0 +1,1 @@
+from argoverse.utils import se3 as se3, transform as transform

@@ -1,0 +1,1 @@
+from av2 import geometry as geometry

@@ -1,0 +1,19 @@
+from geolint.typing import PointArray, RotationMatrix, TransformMatrix, Translation
+
+class SE3:
+    """Source: av2/geometry/se3.py (0.3.6), SE3 (a dataclass): "rotation: Array of shape (3, 3)", "translation: Array of
+    shape (3,)"; transform_matrix: "4x4 homogeneous transformation matrix" ([R | t; 0 0 0 1]); transform_from and
+    transform_point_cloud: "If the transform represents dst_SE3_src, then point_cloud should consist of points in
+    frame `src`", computed `point_cloud @ self.rotation.T + self.translation` (R p + t, row-wise: points); inverse:
+    "if the current object represents target_SE3_src, we will return instead src_SE3_target"; compose(right_SE3):
+    "chained_se3 = T * right_SE3". Checked numerically (tests/knowledge/test_image_and_scene_facts.py)."""
+
+    rotation: RotationMatrix
+    translation: Translation
+    def __init__(self, rotation: RotationMatrix, translation: Translation) -> None: ...
+    @property
+    def transform_matrix(self) -> TransformMatrix: ...
+    def transform_from(self: TransformMatrix, point_cloud: PointArray) -> PointArray: ...
+    def transform_point_cloud(self: TransformMatrix, point_cloud: PointArray) -> PointArray: ...
+    def inverse(self) -> SE3: ...
+    def compose(self, right_SE3: SE3) -> SE3: ...
