@@ -54,7 +54,7 @@ from geolint.factbase.angles import (
     RADIANS,
     RETURNED_EULER_METHODS,
 )
-from geolint.factbase.classes import enclosing_class, project_class
+from geolint.factbase.classes import enclosing_class, project_class, receiver_class
 from geolint.factbase.control_flow import runs_unconditionally
 from geolint.factbase.index import ParamBinding, Scope, UnpackBinding, module_constant
 from geolint.factbase.memo import NodeMemo
@@ -441,24 +441,14 @@ def _module_constant(facts: FactBase, qualified: str) -> tuple[float, str] | Non
 
 def _class_of(facts: FactBase, owner: ast.expr) -> tuple[FactBase, ClassDef, bool] | None:
     """For `Config.TILT` the class (instance False); for `cfg.tilt` where `cfg` (a name or `self`
-    attribute) is only ever `Config(...)`, or a parameter annotated `Config`, the class (instance True). The class is a top-level class
-    of this module or of the project module it is imported from."""
-    instance = False
-    if isinstance(owner, Name):
-        bound = facts.bindings(owner) or []
-        if len(bound) == 1 and isinstance(bound[0], Call):
-            owner, instance = bound[0].func, True
-        elif len(bound) == 1 and isinstance(bound[0], ParamBinding) and isinstance(bound[0].arg.annotation, Name):
-            owner, instance = bound[0].arg.annotation, True  # `def lean(config: Configuration)`
-    elif isinstance(owner, Attribute) and isinstance(owner.value, Name) and owner.value.id == "self":
-        stores = facts.index.self_attribute_stores.get(owner.attr, [])
-        if len(stores) != 1 or not isinstance(stores[0], Call):
-            return None
-        owner, instance = stores[0].func, True
+    attribute) is an instance of a project class (`receiver_class`), the class (instance True)."""
+    found = receiver_class(facts, owner)
+    if found is not None:
+        return (*found, True)
     if not isinstance(owner, Name):
         return None
     found = project_class(facts, owner)
-    return None if found is None else (*found, instance)
+    return None if found is None else (*found, False)
 
 
 def _short_path(path: str) -> str:

@@ -4,12 +4,14 @@ aliases, relative imports, star imports and package `__init__` re-exports), and 
 
 from __future__ import annotations
 
+import ast
 from ast import AsyncFunctionDef, Attribute, Call, ClassDef, FunctionDef, Name
 import builtins
 from typing import Final, TYPE_CHECKING, TypeVar
 
 from geolint.factbase import summaries
 from geolint.factbase import vocabulary as vocab
+from geolint.factbase.classes import method_of, receiver_class
 from geolint.factbase.project_files import may_be_project_import, module_file
 from geolint.factbase.summaries import Summary, SummaryFamily
 from geolint.factbase.syntax import dotted_name
@@ -30,8 +32,10 @@ def may_have_summary(facts: FactBase, call: Call) -> bool:
     if type(func) is Name:
         if func.id in facts.index.functions:
             return True
-    elif type(func) is Attribute and type(func.value) is Name and func.value.id == "self":  # type: ignore[attr-defined]
-        return func.attr in facts.index.methods  # type: ignore[attr-defined]
+    elif type(func) is Attribute and _may_be_instance(facts, func.value):  # type: ignore[attr-defined]
+        if func.attr in facts.index.methods:  # type: ignore[attr-defined]
+            return True
+        return facts.cross_module and bound_method(facts, call) is not None
     if not facts.cross_module:
         return False
     root = func
@@ -58,11 +62,35 @@ def _summary_of_call(facts: FactBase, call: Call, tag: str) -> Summary | None:
     found = called_function(facts, call)
     if found is not None:
         return facts.project.summary(found[0], found[1], family)
-    method = own_method(facts, call)
+    method = bound_method(facts, call)
     if method is None:
         return None
-    summary = facts.project.summary(facts, method, family)
+    summary = facts.project.summary(method[0], method[1], family)
     return None if summary is None else family.bound(summary)
+
+
+def _may_be_instance(facts: FactBase, receiver: ast.expr) -> bool:
+    """`self`, `self.attr`, a name that no import binds or `Name(...)`: a receiver `receiver_class` may know."""
+    if type(receiver) is Name:
+        return receiver.id == "self" or receiver.id not in facts.index.imports  # type: ignore[attr-defined]
+    if type(receiver) is Call:
+        return type(receiver.func) in (Name, Attribute)  # type: ignore[attr-defined]
+    return type(receiver) is Attribute and type(receiver.value) is Name and receiver.value.id == "self"  # type: ignore[attr-defined]
+
+
+def bound_method(facts: FactBase, call: Call) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
+    """For `obj.method(...)`: the plain method it runs, when `obj` is known to be an instance of a
+    project class (`receiver_class`: `self`, `Cls(...)`, a parameter annotated `Cls`), defined in
+    that class or inherited from a project base; else None."""
+
+    def find() -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
+        func = call.func
+        if not isinstance(func, Attribute):
+            return None
+        found = receiver_class(facts, func.value)
+        return None if found is None else method_of(found[0], found[1], func.attr)
+
+    return facts.memoised("bound method", call, find)
 
 
 def own_method(facts: FactBase, call: Call) -> FunctionDef | AsyncFunctionDef | None:

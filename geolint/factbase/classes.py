@@ -1,12 +1,16 @@
 """The classes of a module a fact is about: the class around a node, the module's top-level classes
-by name, and the project class a called name is (of this module, or of a project module it imports)."""
+by name, the project class a called name is (of this module, or of a project module it imports), the
+project class an object is an instance of (`receiver_class`) and the method a call on it runs
+(`method_of`)."""
 
 from __future__ import annotations
 
 import ast
-from ast import AST, Attribute, ClassDef, Name
+from ast import AST, AsyncFunctionDef, Attribute, Call, ClassDef, Constant, FunctionDef, Name
 from collections import Counter
-from typing import TYPE_CHECKING
+from typing import Final, TYPE_CHECKING
+
+from geolint.factbase.index import ParamBinding
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
@@ -58,3 +62,71 @@ def project_class(facts: FactBase, func: ast.expr) -> tuple[FactBase, ClassDef] 
     other, name = found
     cls = top_level_class(other, name)
     return None if cls is None else (other, cls)
+
+
+_MAX_BASES: Final = 4  # project base classes followed up from a class to the one that defines a method
+
+
+def receiver_class(facts: FactBase, receiver: ast.expr) -> tuple[FactBase, ClassDef] | None:
+    """The project class `receiver` is an instance of, when every binding says it: `self` in a method,
+    `Cls(...)` itself, a name bound only to `Cls(...)`, a parameter annotated `Cls` (or `"Cls"`), `self.attr` stored only
+    as `Cls(...)`. The class is a top-level class of this module or of the project module it is
+    imported from; None when anything is unknown or two classes are possible."""
+    if isinstance(receiver, Name) and receiver.id == "self":
+        cls = enclosing_class(facts, receiver)
+        return None if cls is None else (facts, cls)
+    constructor: ast.expr | None = None
+    if isinstance(receiver, Call):  # `Cls(...).method()`
+        constructor = receiver.func
+    elif isinstance(receiver, Name):
+        bound = facts.bindings(receiver) or []
+        if len(bound) != 1:
+            return None
+        binding = bound[0]
+        if isinstance(binding, Call):
+            constructor = binding.func
+        elif isinstance(binding, ParamBinding):
+            annotation = binding.arg.annotation
+            if isinstance(annotation, Constant) and isinstance(annotation.value, str) and annotation.value.isidentifier():
+                return _named_class(facts, annotation.value)
+            constructor = annotation if isinstance(annotation, (Name, Attribute)) else None
+    elif isinstance(receiver, Attribute) and isinstance(receiver.value, Name) and receiver.value.id == "self":
+        stores = facts.index.self_attribute_stores.get(receiver.attr, [])
+        if len(stores) == 1 and isinstance(stores[0], Call):
+            constructor = stores[0].func
+    if constructor is None:
+        return None
+    return called_project_class(facts, constructor)
+
+
+def _named_class(facts: FactBase, name: str) -> tuple[FactBase, ClassDef] | None:
+    """The project class a string annotation names (a forward reference of this module, or an import)."""
+    local = top_level_class(facts, name)
+    if local is not None:
+        return facts, local
+    imported = facts.index.imports.get(name)
+    found = None if imported is None or not facts.cross_module else facts.defining_module(imported, facts.path)
+    if found is None:
+        return None
+    cls = top_level_class(found[0], found[1])
+    return None if cls is None else (found[0], cls)
+
+
+def method_of(facts: FactBase, cls: ClassDef, name: str) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
+    """The plain method `name` an instance of `cls` (a class of `facts`' module) runs: defined once in
+    the class, or else in the nearest project base class that defines it. None for a property, a
+    static or class method, an overloaded name, or a base the project does not hold."""
+    for _ in range(_MAX_BASES):
+        defined = [node for node in cls.body if isinstance(node, (FunctionDef, AsyncFunctionDef)) and node.name == name]
+        if defined:
+            method = defined[0]
+            if len(defined) != 1 or method.decorator_list or not (method.args.posonlyargs or method.args.args):
+                return None
+            return facts, method
+        if len(cls.bases) != 1:
+            return None  # no base, or several whose order of lookup would have to be followed
+        found = called_project_class(facts, cls.bases[0])
+        if found is None:
+            return None
+        facts, cls = found
+    return None

@@ -584,3 +584,85 @@ def test_a_helper_in_a_sibling_ros_package_is_read(tmp_path: Path) -> None:
     assert ("robot_bridge/src/robot_bridge/imu.py", 5, "GEO301") in found
     unrelated, _ = _check(_ros_workspace(tmp_path / "plain", with_manifests=False), "--no-cache")
     assert not any(path.endswith("imu.py") for path, _, _ in unrelated)
+
+
+_POSED_OBJECT = (
+    "import pybullet as p\n"
+    "import trimesh.transformations as tt\n"
+    "class Posed:\n"
+    "    def __init__(self, pose):\n"
+    "        self.pose = pose\n"
+    "    def orientation(self):\n"
+    "        return tt.quaternion_from_matrix(self.pose)\n"
+    "    def position_orientation(self):\n"
+    "        return self.pose[:3, 3], tt.quaternion_from_matrix(self.pose)\n"
+    "    @property\n"
+    "    def quat(self):\n"
+    "        return tt.quaternion_from_matrix(self.pose)\n"
+)
+
+
+def test_a_method_of_a_project_class_instance_is_read_through_the_object() -> None:
+    """`obj.method()` runs the class's method when every binding of `obj` says which class: a
+    constructor call, a parameter annotated with the class (or its name as a string), `self.attr`
+    stored once as the constructor; a tuple it returns is read element by element."""
+    source = _POSED_OBJECT + (
+        "class Other:\n"
+        "    def orientation(self):\n"
+        "        return (0.0, 0.0, 0.0, 1.0)\n"
+        "class Placer:\n"
+        "    def __init__(self, pose):\n"
+        "        self.target = Posed(pose)\n"
+        "    def place(self, body):\n"
+        "        p.resetBasePositionAndOrientation(body, (0, 0, 0), self.target.orientation())\n"
+        "def by_constructor(body, pose):\n"
+        "    posed = Posed(pose)\n"
+        "    pos, orn = posed.position_orientation()\n"
+        "    p.resetBasePositionAndOrientation(body, pos, orn)\n"
+        "def by_annotation(body, posed: Posed, later: 'Posed'):\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), posed.orientation())\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), later.orientation())\n"
+        "def unknown_class(body, posed, pose, flag):\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), posed.orientation())\n"
+        "    either = Posed(pose) if flag else Other()\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), either.orientation())\n"
+        "    other = Other()\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), other.orientation())\n"
+    )
+    assert _codes(source) == [(20, "GEO301"), (24, "GEO301"), (26, "GEO301"), (27, "GEO301")]
+
+
+def test_an_inherited_method_is_read_from_the_base_class() -> None:
+    source = _POSED_OBJECT + (
+        "class Arm(Posed):\n"
+        "    def place(self, body):\n"
+        "        p.resetBasePositionAndOrientation(body, (0, 0, 0), self.orientation())\n"
+        "class Mixed(Posed, dict):\n"
+        "    def place(self, body):\n"
+        "        p.resetBasePositionAndOrientation(body, (0, 0, 0), self.orientation())\n"
+        "def use(body, pose):\n"
+        "    arm = Arm(pose)\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), arm.orientation())\n"
+    )
+    # two bases: which one's method runs is the method resolution order's answer, not followed
+    assert _codes(source) == [(15, "GEO301"), (21, "GEO301")]
+
+
+def test_a_method_of_a_class_from_another_project_module_is_read(tmp_path: Path) -> None:
+    project = tmp_path / "sim"
+    (project / "sim").mkdir(parents=True)
+    (project / "pyproject.toml").write_text("[project]\nname = 'sim'\n")
+    (project / "sim" / "__init__.py").write_text("")
+    (project / "sim" / "objects.py").write_text(_POSED_OBJECT)
+    (project / "sim" / "scene.py").write_text(
+        "import pybullet as p\n"
+        "from sim.objects import Posed\n"
+        "def place(body, pose, placed: Posed):\n"
+        "    pos, orn = Posed(pose).position_orientation()\n"
+        "    p.resetBasePositionAndOrientation(body, pos, orn)\n"
+        "    p.resetBasePositionAndOrientation(body, pos, placed.orientation())\n"
+        "    p.resetBasePositionAndOrientation(body, pos, placed.quat)\n"
+    )
+    found, _ = _check(project, "--no-cache")
+    # a property is an attribute read, not a call: not followed
+    assert {(path, line) for path, line, code in found if code == "GEO301"} == {("sim/scene.py", 5), ("sim/scene.py", 6)}

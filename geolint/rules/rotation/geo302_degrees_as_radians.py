@@ -59,7 +59,7 @@ from geolint.rules.rotation.angle_findings import report_hand_conversion_of_conv
 _TWO_PI: Final = 2 * math.pi
 # `x * 180 / np.pi`: a hand-written conversion to degrees, which a file can hold with nothing the gate
 # reads; `radians` / `deg2rad`: a parse table's converter to radians (a module of parsers, no geometry).
-_DIVIDES_BY_PI: Final = re.compile(r"/\s*(?:np|numpy|math|torch)\.pi\b|\b(?:radians|deg2rad)\b")
+_DIVIDES_BY_PI: Final = re.compile(r"/\s*(?:\w+\.)*pi\b|\b(?:radians|deg2rad)\b")
 
 
 class _GateOrDivisionByPi:
@@ -148,9 +148,9 @@ class DegreesAsRadians(FactRule):
     and only one step (`cfg = Configuration()` or `cfg: Configuration` then `cfg.phi`; not a `cfg`
     received as an unannotated parameter). Literal angles in a test module (`test_*.py`, `*_test.py`,
     a `tests/` folder) are test data and are not judged. A constant tuned in radians that happens to exceed 2 pi (`self.k = 40` given to
-    `np.cos`) would be read as degrees. The library that reads degrees must be named in the call
-    (`cv2.getRotationMatrix2D`); PIL's `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are
-    methods of values geolint does not type and are not known. The parse table's converters must be
+    `np.cos`) would be read as degrees. A library method that reads degrees is known only on a value whose class the code shows
+    (`cv2.getRotationMatrix2D`, `Image.open(path).rotate`, `img: Image.Image`): a PIL image passed in
+    untyped, or matplotlib's `Affine2D.rotate_deg`, is not recognised. The parse table's converters must be
     `math.radians` / `np.deg2rad` or functions of the same module: one whose every `return` is in
     radians, one that is `float` / `int` or only returns `float(...)`/`int(...)` of its text. A dict key is matched by its text within one module, so two
     unrelated dicts sharing a key (`"angle"`) could be taken for one.

@@ -77,10 +77,9 @@ class RadiansAsDegrees(FactRule):
     ## Known problems
     A variable named `*_rad` that actually holds degrees (a stale name) is flagged where it is
     converted; rename it. Names alone never decide when the same name is also bound to a value
-    in degrees in the same scope. A library that reads degrees is known only when the call names
-    it (`cv2.getRotationMatrix2D`, `glRotatef` also under `from OpenGL.GL import *`): PIL's
-    `Image.rotate` and matplotlib's `Affine2D.rotate_deg` are methods of values geolint does not
-    type. A class's constructor is read only through attributes stored once, unconditionally in
+    in degrees in the same scope. A library method that reads degrees is known only on a value whose class the code shows
+    (`Image.open(path).rotate(...)`, `img: Image.Image`): a PIL image passed in untyped, or
+    matplotlib's `Affine2D.rotate_deg`, is not recognised. A class's constructor is read only through attributes stored once, unconditionally in
     `__init__`, and read by the class's own methods (not by other classes, `rotation.yaw`); a class
     whose methods read the attribute in both units says nothing, and the value's radians must show in
     the module's own code or a library call (not only in a project helper's return). A keyword named `unit` / `*_units`
@@ -91,7 +90,7 @@ class RadiansAsDegrees(FactRule):
     code = "GEO305"
     name = "radians-as-degrees"
     # a conversion from degrees, or (for a project helper that reads degrees) radians in plain sight
-    triggers = AllOf(r"deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler|euler_from|2euler|EulerFrom|units?\s*=\s*[\"\']deg")  # type: ignore[assignment]
+    triggers = AllOf(r"\bpi\b|deg2rad|radians|degrees\s*=\s*True|arctan|atan|acos|asin|arccos|arcsin|_rad|as_euler|euler_from|2euler|EulerFrom|units?\s*=\s*[\"\']deg")  # type: ignore[assignment]
 
     VALID = [
         Valid(
@@ -138,6 +137,11 @@ class RadiansAsDegrees(FactRule):
         ),
         Invalid("import numpy as np\ndef f(make_pose):\n    return make_pose(roll=np.pi / 2, yaw=-90.0, angle_units='degrees')\n"),
         Invalid("import numpy as np\nimport cv2\ndef f(img, dy, dx):\n    return cv2.getRotationMatrix2D((0, 0), np.arctan2(dy, dx), 1.0)\n"),
+        Invalid(  # nothing but `pi` says radians
+            "import numpy as np\nfrom PIL import Image\ndef f(path):\n    return Image.open(path).rotate(np.pi / 4)\n",
+            message="`Image.open(path).rotate` reads its angle in degrees, but `np.pi / 4` is in radians (`np.pi` is an angle in radians)",
+            range=(4, 36, 4, 45),
+        ),
         Invalid(
             "import numpy as np\n"
             "def wrap_degrees(angle_deg):\n"
