@@ -166,6 +166,25 @@ class KnowledgeBase:
         module = self._conventional_modules.get(head)
         return self.api(f"{module}{dot}{rest}") if module is not None else None
 
+    def api_defined_as(self, fullname: str) -> Api | None:
+        """The API a name means as a type checker spells it, after the module that defines it, which may
+        be a private module of the package that re-exports it (`numpy._core.multiarray.dot` is
+        `numpy.dot`, `numpy.linalg._linalg.inv` is `numpy.linalg.inv`): the name itself, else the same
+        last name in each public module above the first private one, nearest first."""
+        found = self.api(fullname)
+        if found is not None:
+            return found
+        module, _, name = fullname.rpartition(".")
+        parts = module.split(".")
+        private = next((index for index, part in enumerate(parts) if part.startswith("_")), None)
+        if private is None or parts[0] not in self._roots:
+            return None
+        for end in range(private, 0, -1):
+            found = self.api(".".join((*parts[:end], name)))
+            if found is not None:
+                return found
+        return None
+
     def array_operation(self, dotted: str) -> str | None:
         """What an array namespace's function does to matrices (`markers.ArrayOperation`), for a name as
         written (`np.linalg.inv`, `torch.bmm`)."""

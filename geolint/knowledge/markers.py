@@ -108,6 +108,10 @@ class ArrayOperation:
     # learned-feature operations: the result is a feature map sampled at or pooled over its inputs, never
     # coordinates, whatever the variable is called (`tpv_pts = F.grid_sample(plane, loc)`)
     FEATURES: Final = "features"
+    # its argument's values as an array, unchanged (`np.asarray(point)`: the same point)
+    AS_ARRAY: Final = "as_array"
+    # the first argument flattened with the second's values after it (`np.append(p, 1)`: p with w = 1)
+    APPEND_FLAT: Final = "append_flat"
 
 
 ROW_VECTORS: Final = "row vectors"

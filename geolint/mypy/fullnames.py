@@ -1,11 +1,16 @@
 """Every fully qualified name the plugin hooks or builds, in one place.
 
 mypy names a method call after the class of the receiver (``geolint.typing.PointArray.__add__`` even though
-the method is inherited from ``numpy.ndarray``), and a function after the module that defines it (not the one
-that re-exports it), which is why the numpy names below point at private modules.
+the method is inherited from the array class), and a function after the module that defines it (not the one
+that re-exports it): the array library's functions are found through the knowledge base
+(``KnowledgeBase.api_defined_as``), not named here.
 """
 
 from __future__ import annotations
+
+from typing import Any, cast, get_origin
+
+from geolint import typing as _typing
 
 # --- runtime kinds (geolint.runtime; helper H1's fixed module layout) ---
 FRAME = "geolint.runtime.frames.Frame"
@@ -41,15 +46,9 @@ AS_TRANSLATION = "geolint.typing.as_translation"
 # --- runtime methods ---
 COORDINATE_VALUES = (POINT, VECTOR, DIRECTION)  # batch indexing and is_close
 
-# --- numpy ---
-NDARRAY = "numpy.ndarray"
-NP_DOT = "numpy._core.multiarray.dot"
-NP_ASARRAY = "numpy._core.multiarray.asarray"
-NP_APPEND = "numpy.lib._function_base_impl.append"
-NP_LINALG_INV = "numpy.linalg._linalg.inv"
-# np.matmul is a ufunc object: the call is a method call on its class, told apart by the callee's name.
-NP_GUFUNC_CALL = "numpy._typing._ufunc._GUFunc_Nin2_Nout1.__call__"
-NP_MATMUL_NAMES = frozenset({"numpy.matmul", "numpy._core.umath.matmul"})
+# --- the array class geolint.typing's annotations subclass for the checker (what they are at runtime) ---
+_ARRAY_CLASS: Any = get_origin(cast(Any, _typing.PointArray)["F"])
+NDARRAY = f"{_ARRAY_CLASS.__module__}.{_ARRAY_CLASS.__qualname__}"
 
 # Binary operators the plugin gives frame-aware results.
 # The reflected ones matter too: when ``a.__matmul__`` reports a problem, mypy tries ``b.__rmatmul__`` and

@@ -7,6 +7,7 @@ only refines the returned ndarray into a framed one (and reports frame problems 
 
 from __future__ import annotations
 
+from functools import cache
 from typing import Callable
 
 from mypy.nodes import CallExpr, Expression, FloatExpr, IntExpr, RefExpr, SliceExpr, TupleExpr, UnaryExpr
@@ -14,6 +15,8 @@ from mypy.nodes import CallExpr, Expression, FloatExpr, IntExpr, RefExpr, SliceE
 from mypy.plugin import AttributeContext, FunctionContext, MethodContext
 from mypy.types import Type
 
+from geolint.knowledge import knowledge_base
+from geolint.knowledge.markers import ArrayOperation
 from geolint.mypy import algebra, fullnames as names, geometry
 from geolint.mypy.geometry import (
     ARRAY,
@@ -34,9 +37,31 @@ def matmul_ufunc_call(ctx: MethodContext) -> Type:
     call = ctx.context
     if not (isinstance(call, CallExpr) and isinstance(call.callee, RefExpr)):
         return ctx.default_return_type
-    if call.callee.fullname not in names.NP_MATMUL_NAMES:
+    if array_operation(call.callee.fullname) != ArrayOperation.MATMUL:
         return ctx.default_return_type
     return _matmul_call(ctx, ctx.arg_types)
+
+
+def array_operation(fullname: str) -> str | None:
+    """What a function of the array library geolint.typing builds on does to matrices, by the name mypy
+    gives it (`KnowledgeBase.api_defined_as`); None for any other library's function."""
+    base = knowledge_base()
+    api = base.api_defined_as(fullname)
+    if api is None or api.library != _array_library():
+        return None
+    return base.array_operation(api.qualified_name)
+
+
+def is_array_library_method(fullname: str) -> bool:
+    """A method of a class of that array library (`<ufunc class>.__call__`, where `np.matmul` lands)."""
+    library = knowledge_base().library_of_module(fullname.partition(".")[0])
+    return library is not None and library.name == _array_library()
+
+
+@cache
+def _array_library() -> str | None:
+    library = knowledge_base().library_of_module(names.NDARRAY.partition(".")[0])
+    return None if library is None else library.name
 
 
 def asarray(ctx: FunctionContext) -> Type:

@@ -37,6 +37,7 @@ from geolint.mypy import (
     string_frame_prepass,
     string_frames,
 )
+from geolint.knowledge.markers import ArrayOperation
 from geolint.mypy.geometry import FRAMED_CLASSES
 
 ARITY = {
@@ -49,16 +50,20 @@ ARITY = {
 }
 
 FUNCTION_HOOKS: dict[str, Callable[[FunctionContext], Type]] = {
-    names.NP_DOT: numpy_calls.dot,
-    names.NP_ASARRAY: numpy_calls.asarray,
-    names.NP_APPEND: numpy_calls.append,
-    names.NP_LINALG_INV: numpy_calls.inverse,
     names.AS_POINTS: markers.mark,
     names.AS_VECTORS: markers.mark,
     names.AS_DIRECTIONS: markers.mark,
     names.AS_ROTATION: markers.mark,
     names.AS_TRANSFORM: markers.mark,
     names.AS_TRANSLATION: markers.mark,
+}
+
+# the array library's functions, by what their stub says they do (`ArrayOperation`)
+ARRAY_OPERATION_HOOKS: dict[str, Callable[[FunctionContext], Type]] = {
+    ArrayOperation.MATMUL: numpy_calls.dot,
+    ArrayOperation.AS_ARRAY: numpy_calls.asarray,
+    ArrayOperation.APPEND_FLAT: numpy_calls.append,
+    ArrayOperation.INVERSE: numpy_calls.inverse,
 }
 
 _OPERATOR_RECEIVERS = [
@@ -92,7 +97,6 @@ METHOD_HOOKS: dict[str, Callable[[MethodContext], Type]] = {
 for _reflected in ("__rmatmul__", "__radd__", "__rsub__"):
     METHOD_HOOKS[f"{names.NDARRAY}.{_reflected}"] = operators.method_hook(_reflected)
 METHOD_HOOKS[f"{names.TRANSFORM_MATRIX}.__getitem__"] = numpy_calls.transform_matrix_item
-METHOD_HOOKS[names.NP_GUFUNC_CALL] = numpy_calls.matmul_ufunc_call
 METHOD_HOOKS[f"{names.TRANSFORM}.identity"] = markers.identity
 for _value in names.COORDINATE_VALUES:
     METHOD_HOOKS[f"{_value}.__getitem__"] = runtime_values.batch_item
@@ -149,7 +153,7 @@ class GeolintPlugin(Plugin):
         return self.type_analyze_hooks.get(fullname)
 
     def get_function_hook(self, fullname: str) -> Callable[[FunctionContext], Type] | None:
-        return FUNCTION_HOOKS.get(fullname) or knowledge_calls.hook_for(fullname)
+        return FUNCTION_HOOKS.get(fullname) or _array_function_hook(fullname) or knowledge_calls.hook_for(fullname)
 
     def get_function_signature_hook(self, fullname: str) -> Callable[[FunctionSigContext], FunctionLike] | None:
         return generic_calls.check_frames  # any function may be frame-generic; the hook returns at once if not
@@ -158,7 +162,7 @@ class GeolintPlugin(Plugin):
         return METHOD_SIGNATURE_HOOKS.get(fullname)
 
     def get_method_hook(self, fullname: str) -> Callable[[MethodContext], Type] | None:
-        return METHOD_HOOKS.get(fullname) or knowledge_calls.hook_for(fullname)
+        return METHOD_HOOKS.get(fullname) or _ufunc_call_hook(fullname) or knowledge_calls.hook_for(fullname)
 
     def get_attribute_hook(self, fullname: str) -> Callable[[AttributeContext], Type] | None:
         return ATTRIBUTE_HOOKS.get(fullname)
@@ -191,7 +195,19 @@ class GeolintPluginForMypy1(GeolintPlugin):
     half of ``T @ array``), so a plain ndarray's forward operators need the hook there too."""
 
     def get_method_hook(self, fullname: str) -> Callable[[MethodContext], Type] | None:
-        return METHOD_HOOKS.get(fullname) or LEGACY_NDARRAY_HOOKS.get(fullname) or knowledge_calls.hook_for(fullname)
+        return METHOD_HOOKS.get(fullname) or LEGACY_NDARRAY_HOOKS.get(fullname) or _ufunc_call_hook(fullname) or knowledge_calls.hook_for(fullname)
+
+
+def _array_function_hook(fullname: str) -> Callable[[FunctionContext], Type] | None:
+    operation = numpy_calls.array_operation(fullname)
+    return None if operation is None else ARRAY_OPERATION_HOOKS.get(operation)
+
+
+def _ufunc_call_hook(fullname: str) -> Callable[[MethodContext], Type] | None:
+    """`np.matmul` is a ufunc object: its call is a method call on the ufunc's class, told apart by the callee."""
+    if fullname.endswith(".__call__") and numpy_calls.is_array_library_method(fullname):
+        return numpy_calls.matmul_ufunc_call
+    return None
 
 
 LEGACY_NDARRAY_HOOKS = {

@@ -86,3 +86,41 @@ def test_the_array_namespaces_and_what_belongs_to_them_come_from_the_stubs() -> 
 def test_torch_makers_take_sizes_one_by_one() -> None:
     zeros = knowledge_base().api_as_written("torch.zeros")
     assert zeros is not None and zeros.signatures[0].parameters[0].variadic
+
+
+def test_numpy_keeps_and_appends_values_as_its_stub_says() -> None:
+    point = np.array([1.0, 2.0, 3.0])
+    assert knowledge_base().array_operation("np.asarray") == ArrayOperation.AS_ARRAY
+    assert np.asarray(point) is point
+    assert knowledge_base().array_operation("np.append") == ArrayOperation.APPEND_FLAT
+    assert np.append(point, 1.0).tolist() == [1.0, 2.0, 3.0, 1.0]
+    assert np.append(np.ones((2, 3)), 1.0).shape == (7,)  # flattened first
+
+
+@pytest.mark.parametrize(
+    ("defined_as", "public"),
+    [
+        ("numpy._core.multiarray.dot", "numpy.dot"),
+        ("numpy._core.umath.matmul", "numpy.matmul"),
+        ("numpy.linalg._linalg.inv", "numpy.linalg.inv"),
+        ("numpy.lib._function_base_impl.append", "numpy.append"),  # not numpy.lib.append
+        ("numpy.linalg.inv", "numpy.linalg.inv"),
+        ("numpy._core.multiarray.not_a_function", None),
+        ("mypackage._impl.dot", None),  # not a stubbed package
+    ],
+)
+def test_a_name_as_a_type_checker_spells_it_is_found_through_its_public_re_export(defined_as: str, public: str | None) -> None:
+    """mypy names a function after the (private) module that defines it."""
+    api = knowledge_base().api_defined_as(defined_as)
+    assert (api.qualified_name if api is not None else None) == public
+
+
+def test_the_plugin_dispatches_numpy_calls_on_their_stub_facts() -> None:
+    from geolint.mypy import numpy_calls
+    from geolint.mypy.plugin import ARRAY_OPERATION_HOOKS, _array_function_hook
+
+    assert _array_function_hook("numpy._core.multiarray.dot") is ARRAY_OPERATION_HOOKS[ArrayOperation.MATMUL]
+    assert _array_function_hook("numpy.lib._function_base_impl.append") is ARRAY_OPERATION_HOOKS[ArrayOperation.APPEND_FLAT]
+    assert _array_function_hook("numpy.linalg._linalg.pinv") is ARRAY_OPERATION_HOOKS[ArrayOperation.INVERSE]
+    assert _array_function_hook("numpy._core.fromnumeric.transpose") is None  # a transpose keeps its type
+    assert numpy_calls.array_operation("torch.bmm") is None  # geolint.typing's arrays are not tensors

@@ -15,14 +15,9 @@ from geolint.knowledge import knowledge_base
 PACKAGE = Path(geolint.__file__).parent
 ANALYSIS = ("rules", "factbase", "semantic", "mypy")
 
-# module -> stubbed packages it still names in code (not in docstrings): what is left to move to stubs/ (empty
-# for every library stubbed before the array namespaces)
+# module -> stubbed packages it still names in code (not in docstrings): what is left to move to stubs/. Empty:
+# a library stubbed from now on is moved out of the analysis in the same change.
 STILL_NAMED: dict[str, set[str]] = {}
-# The array namespaces (numpy, torch, jax, cupy, tensorflow) were stubbed after these modules named them: what they
-# still name of them, to move the same way (the transposes, inverses, products, pads, feature maps, makers and angle functions already have).
-STILL_NAMED_ARRAY_NAMESPACES: dict[str, set[str]] = {
-    "mypy/fullnames.py": {"numpy"},
-}
 
 
 def _docstrings(tree: ast.Module) -> set[int]:
@@ -67,7 +62,7 @@ def _named_packages() -> dict[str, set[str]]:
 
 
 def _still_named() -> dict[str, set[str]]:
-    return {module: STILL_NAMED.get(module, set()) | STILL_NAMED_ARRAY_NAMESPACES.get(module, set()) for module in {*STILL_NAMED, *STILL_NAMED_ARRAY_NAMESPACES}}
+    return STILL_NAMED
 
 
 def test_no_analysis_module_names_a_stubbed_library_anew() -> None:

@@ -26,6 +26,12 @@ def einsum(subscripts: str, *operands: object, **kwargs: object) -> Annotated[ob
 def pad(array: object, pad_width: object, mode: str = ..., **kwargs: object) -> Annotated[object, ArrayOperation.PAD_PER_AXIS]:
     """Source: numpy numpy.pad (2.4.6 documentation): pad_width "((before_1, after_1), ... (before_N, after_N)) unique pad widths for each axis"; `constant_values` defaults to 0 (checked: `np.pad(np.ones((2, 3)), ((0, 0), (0, 1)), constant_values=1)` appends a column of ones)."""
 
+def asarray(a: object, *args: object, **kwargs: object) -> Annotated[object, ArrayOperation.AS_ARRAY]:
+    """Source: numpy numpy.asarray (2.4.6 documentation): "Convert the input to an array"; "No copy is performed if the input is already an ndarray" (checked: `np.asarray(p) is p`)."""
+
+def append(arr: object, values: object, axis: object = ...) -> Annotated[object, ArrayOperation.APPEND_FLAT]:
+    """Source: numpy numpy.append (2.4.6 documentation): "Append values to the end of an array"; "If axis is not specified, values can be any shape and will be flattened before use" (checked: `np.append([1.0, 2.0, 3.0], 1.0)` is `[1, 2, 3, 1]`)."""
+
 # Angles: numpy's trigonometric functions read radians, its inverse ones return radians.
 
 def sin(x: Radians, /, *args: object, **kwargs: object) -> object:
