@@ -119,7 +119,8 @@ _POSE = "T_world_cam"
 def transpose_drafts(kb: KnowledgeBase) -> tuple[list[Draft], list[Dropped]]:
     """GEO204: for every array namespace, each transpose it has (its stub's `ArrayOperation.TRANSPOSE`
     functions, and the array object's spellings) of a 4x4 pose used as its inverse, applied to a
-    homogeneous point or stored under the inverse's name; the twin uses the namespace's inverse."""
+    homogeneous point or stored under the inverse's name; the twin uses the namespace's inverse. And after
+    each import of a monogram-named library, Drake's `X_BW = X_WB.T` (the twin: `X_WB.inverse()`)."""
     drafts: list[Draft] = []
     dropped: list[Dropped] = []
     for space in namespaces(kb):
@@ -133,7 +134,14 @@ def transpose_drafts(kb: KnowledgeBase) -> tuple[list[Draft], list[Dropped]]:
             twin = f"{inverse}({_POSE})"
             drafts.append(Draft(label, space.library, "applied", space.imports, (_POSE, "p_world_h"), f"return {spelled} @ p_world_h", f"return {twin} @ p_world_h"))
             drafts.append(Draft(label, space.library, "stored", space.imports, (_POSE,), f"T_cam_world = {spelled}", f"T_cam_world = {twin}", after=("return T_cam_world",)))
+    for library, statement in _monogram_imports(kb):  # Drake's poses: `X_WB.T` is no `X_BW`
+        for label, bug, twin in MONOGRAM_TRANSPOSES:
+            drafts.append(Draft(label, library, statement.removeprefix("import "), (statement,), ("X_WB", "p_WQ"), bug, twin, after=("return X_BW @ p_WQ",)))
     return drafts, dropped
+
+
+# Drake's RigidTransform used through its transpose (`.T` as numpy's; `inverse()` is Drake's)
+MONOGRAM_TRANSPOSES = (("X_BW = X_WB.T", "X_BW = X_WB.T", "X_BW = X_WB.inverse()"),)
 
 
 # Appending w to an (n, 3) array, per library: no stub states the concatenations.
@@ -157,8 +165,10 @@ def _products(space: Namespace, left: str, right: str, subscripts: str) -> list[
 
 def direction_product_drafts(kb: KnowledgeBase) -> tuple[list[Draft], list[Dropped]]:
     """GEO101: for every array namespace and each product it spells, a direction moved by a full 4x4
-    pose: rotated by its block and then translated (`R @ n + t`, the twin without `+ t`), and made
-    homogeneous with w = 1 before the product (the twin with w = 0)."""
+    pose: rotated by its block and then translated (`R @ n + t`, one direction or a batch of them with an
+    added axis; the twin without `+ t`), and made homogeneous with w = 1 before the product with the
+    pose's transpose, of one pose or of a stack (its last two axes swapped by the namespace's own
+    transpose function); the twin with w = 0."""
     drafts: list[Draft] = []
     dropped: list[Dropped] = []
     for space in namespaces(kb):
@@ -174,17 +184,32 @@ def direction_product_drafts(kb: KnowledgeBase) -> tuple[list[Draft], list[Dropp
                       f"return ({rotated})[..., 0] + T_world_obj[..., :3, 3]", f"return ({rotated})[..., 0]")
             )  # fmt: skip
         pattern = _APPEND_W.get(space.library)
-        products = _products(space, "normals_h", "T_world_obj.T", "ni,ji->nj")
+        products = _products(space, "normals_h", "T_world_obj.T", "ni,ij->nj")
         if pattern is None:
             dropped += [Dropped(label, space.library, "no concatenation known for this library") for label, _ in products]
             continue
-        for label, product in products:
-            drafts.append(
-                Draft(label, space.library, "homogeneous-w1", space.imports, ("T_world_obj", "normals"),
-                      f"normals_h = {pattern.format(ns=ns, w='one')}", f"normals_h = {pattern.format(ns=ns, w='zero')}",
-                      after=(f"return ({product})[..., :3]",))
-            )  # fmt: skip
+        swap = _matrix_transpose(space)
+        batched = _products(space, "normals_h", swap, "...ni,...ij->...nj") if swap is not None else []
+        for variant, found in (("homogeneous-w1", products), ("batched-homogeneous-w1", batched)):
+            for label, product in found:
+                drafts.append(
+                    Draft(label, space.library, variant, space.imports, ("T_world_obj", "normals"),
+                          f"normals_h = {pattern.format(ns=ns, w='one')}", f"normals_h = {pattern.format(ns=ns, w='zero')}",
+                          after=(f"return ({product})[..., :3]",))
+                )  # fmt: skip
     return drafts, dropped
+
+
+def _matrix_transpose(space: Namespace) -> str | None:
+    """The namespace's transpose of the last two axes of a stack of poses: a function named for it
+    (`matrix_transpose`, `swapaxes`), else one that takes the two axes (`torch.transpose`)."""
+    names = space.functions.get(TRANSPOSE, [])
+    for wanted in (".matrix_transpose", ".swapaxes"):
+        for name in names:
+            if name.endswith(wanted):
+                return _call(space, name, "T_world_obj")
+    taking_axes = [name for name in names if space.required.get(name, 0) == 2]
+    return _call(space, taking_axes[0], "T_world_obj") if taking_axes else None
 
 
 def _monogram_imports(kb: KnowledgeBase) -> list[tuple[str, str]]:
