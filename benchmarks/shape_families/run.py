@@ -77,6 +77,7 @@ for folder in (REPO, HERE):  # geolint, and the families in the module beside th
         sys.path.insert(0, str(folder))
 
 import spellings
+
 from geolint import knowledge
 from geolint.algebra import FREE, Kind
 from geolint.knowledge import (
@@ -563,6 +564,10 @@ def _moved_as_point(geometry: Geometry) -> str | None:
     return "point" if geometry.kind is Kind.POINT else None
 
 
+def _applies_transform(signature: Signature) -> bool:
+    return signature.applies_transform
+
+
 def _moves_as_free(signature: Signature, name: str) -> bool:
     parameter = signature.parameter(name)
     return parameter is not None and parameter.geometry is not None and parameter.geometry.kind in FREE
@@ -612,7 +617,8 @@ def _pose_direction(geometry: Geometry) -> str | None:
     """`w2c` / `c2w` for a transform the stub states between the camera and the world."""
     if geometry.kind is not Kind.TRANSFORM:
         return None
-    return {("camera", "world"): "w2c", ("world", "camera"): "c2w"}.get(geometry.frames)
+    directions: dict[tuple[str, ...], str] = {("camera", "world"): "w2c", ("world", "camera"): "c2w"}
+    return directions.get(geometry.frames)
 
 
 # Names that say a pose's direction in the word, as GEO209 reads them (its docs): the other direction's
@@ -640,8 +646,8 @@ def reach(kb: KnowledgeBase, api: Api, taken: set[str], depth: int = 0) -> tuple
     if not _private(owner_name):
         module = stub_module(owner)
         module, path = _public_spelling(kb, owner, module, owner_name[len(module) + 1 :])
-        arguments, names = _constructor(owner, taken)
-        return (f"import {module}",), (f"{SOURCE} = {module}.{path}({arguments})",), f"{SOURCE}.{attribute}", tuple(names)
+        arguments, made_from = _constructor(owner, taken)
+        return (f"import {module}",), (f"{SOURCE} = {module}.{path}({arguments})",), f"{SOURCE}.{attribute}", tuple(made_from)
     holders = [
         other
         for other in kb.apis()
@@ -740,10 +746,7 @@ FAMILIES = {
         Family("quaternion-order", "GEO301", _order, _order_slip),
         Family("transpose-as-inverse", "GEO204", drafts=spellings.transpose_drafts),
         Family("directions-through-products", "GEO101", drafts=spellings.direction_product_drafts),
-        Family(
-            "directions-through-point-apis", "GEO101", _moved_as_point, slips=_direction_slips,
-            applies=lambda signature: signature.applies_transform,
-        ),  # fmt: skip
+        Family("directions-through-point-apis", "GEO101", _moved_as_point, slips=_direction_slips, applies=_applies_transform),
         Family("extrinsics-direction", "GEO209", _pose_direction, slips=_extrinsics_slips),
         Family("camera-axes", "GEO216", _axes_of, slips=_axes_slips),
         Family("monogram-compose", "GEO202", drafts=spellings.monogram_compose_drafts),

@@ -215,7 +215,7 @@ def _matrix_transpose(space: Namespace) -> str | None:
 def _monogram_imports(kb: KnowledgeBase) -> list[tuple[str, str]]:
     """(library, import statement) for each module of each library named in monogram notation: the
     package itself and every module its stubs describe (`import pydrake`, `import pydrake.math`)."""
-    found = set()
+    found: set[tuple[str, str]] = set()
     for library in kb.libraries.values():
         if not set(library.packages) & set(kb.monogram_packages()):
             continue
