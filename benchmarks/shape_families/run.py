@@ -15,6 +15,22 @@ Families:
 - `quaternion-order` (GEO301): every API with a parameter whose quaternion order the stubs state is
   given a quaternion spelled out from named components in the other order (`np.array([qx, qy, qz,
   qw])` where w comes first); the twin spells it in the API's own order.
+- `directions-through-point-apis` (GEO101): every API the stubs state as applying a transform to a
+  parameter they type as points is given a direction by each name GEO101 reads (`normals`, `normal`,
+  `direction`); the twin moves it the way the stub states (the keyword that picks the vector overload,
+  `translate=False`, or the API beside it, `transform_normals`), or gives the API `points` where the
+  stub states no way.
+- `extrinsics-direction` (GEO209): every API with a parameter the stubs type as a transform between
+  the camera and the world is given the other direction, named by each word GEO209 reads (`c2w`,
+  `cam2world`, `Twc`, `T_world_cam`...) and read from each attribute whose stub returns that direction
+  (Blender's `scene.camera.matrix_world`); the twin is its inverse.
+- `camera-axes` (GEO216): every such parameter whose camera axes the stubs state is given a pose in
+  other axes, named so (`w2c_gl`) and read from each attribute whose stub states other axes, inverted
+  where the camera is on the other side; the twin flips the axes on the camera's side first.
+
+Four more families are about spellings, not APIs: `transpose-as-inverse` (GEO204),
+`directions-through-products` (GEO101), `monogram-compose` (GEO202) and `monogram-apply` (GEO201);
+`spellings.py` beside this file writes them and says what each generates.
 
 A call is written the way code resolved by its imports calls it: `import <module>` then
 `<module>.<function>(...)` or `<module>.<Class>.<static method>(...)`, a constructor as
@@ -55,10 +71,15 @@ from itertools import takewhile
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
-if str(REPO) not in sys.path:
-    sys.path.insert(0, str(REPO))
+HERE = Path(__file__).resolve().parent
+for folder in (REPO, HERE):  # geolint, and the families in the module beside this one
+    if str(folder) not in sys.path:
+        sys.path.insert(0, str(folder))
+
+import spellings
 
 from geolint import knowledge
+from geolint.algebra import FREE, Kind
 from geolint.knowledge import (
     RADIANS,
     SCALAR_FIRST,
@@ -73,17 +94,25 @@ from geolint.knowledge import (
 BUG_MARK = "# bug"
 SELECT = "GEO1,GEO2,GEO3"
 OBJECT = "obj"  # the instance an instance method is called on
-RESERVED = {"np", OBJECT, "case"}
+SOURCE = "source"  # the object a source attribute is read from
+RESERVED = {"np", OBJECT, SOURCE, "case", "points"}
 
 
 @dataclass(frozen=True)
 class Slip:
     """What a family passes to the chosen parameter: the wrong value, the right one, and the names
-    both read (parameters of the case function)."""
+    both read (parameters of the case function). A family with several sources of the wrong value labels
+    each (`variant`); the value may need imports and lines before the call (`setup`). The twin may call
+    another API beside the one of the bug (`twin_callee`, its last name) or add a keyword (`twin_keyword`)."""
 
     bug: str
     twin: str
     names: tuple[str, ...]
+    variant: str = ""
+    imports: tuple[str, ...] = ()
+    setup: tuple[str, ...] = ()
+    twin_callee: str | None = None
+    twin_keyword: str | None = None
 
 
 @dataclass(frozen=True)
@@ -91,8 +120,13 @@ class Family:
     name: str
     code: str  # the rule expected to catch the bug
     # the value a parameter's geometry asks for (RADIANS, an order), or None when the family skips it
-    wanted: Callable[[Geometry], str | None]
-    slip: Callable[[str], Slip]  # from what the parameter asks for
+    wanted: Callable[[Geometry], str | None] = lambda geometry: None
+    slip: Callable[[str], Slip] | None = None  # from what the parameter asks for
+    # several slips for one API: (what the parameter asks for, the knowledge base, the API) -> slips
+    slips: Callable[[str, KnowledgeBase, Api, Parameter], list[Slip]] | None = None
+    applies: Callable[[Signature], bool] = lambda signature: True  # the overloads the family is about
+    # a family about spellings rather than APIs: its cases are written by `spellings`
+    drafts: Callable[[KnowledgeBase], tuple[list[spellings.Draft], list[spellings.Dropped]]] | None = None
 
 
 def _radians(geometry: Geometry) -> str | None:
@@ -116,15 +150,6 @@ def _order_slip(order: str) -> Slip:
     return Slip(bug=_spelled(other), twin=_spelled(order), names=("qw", "qx", "qy", "qz"))
 
 
-FAMILIES = {
-    family.name: family
-    for family in (
-        Family("degrees-on-radian-apis", "GEO302", _radians, _degrees_slip),
-        Family("quaternion-order", "GEO301", _order, _order_slip),
-    )
-}
-
-
 @dataclass(frozen=True)
 class Case:
     family: str
@@ -134,6 +159,11 @@ class Case:
     bug: str  # module text
     twin: str
     bug_line: int  # 1-based: the line marked `# bug`
+    variant: str = ""  # the slip's or spelling's label, when one API gives several cases
+
+    @property
+    def label(self) -> str:
+        return f"{self.api} [{self.variant}]" if self.variant else self.api
 
 
 @dataclass(frozen=True)
@@ -142,6 +172,15 @@ class Skipped:
     api: str
     library: str
     reason: str
+    variant: str = ""
+
+    @property
+    def label(self) -> str:
+        return f"{self.api} [{self.variant}]" if self.variant else self.api
+
+
+# the binder matches the call to overloads of which only some state the fact (they differ by a type)
+AMBIGUOUS = "the binder matches overloads that do not all state it"
 
 
 class Skip(Exception):
@@ -341,73 +380,149 @@ def _constructor(owner: Api, taken: set[str]) -> tuple[str, list[str]]:
     return ", ".join(arguments), names
 
 
-def build_case(kb: KnowledgeBase, family: Family, api: Api) -> Case:
-    """The bug and twin modules of `family` for `api`, or `Skip`."""
+def _slips(kb: KnowledgeBase, family: Family, api: Api, wanted: str, target: Parameter) -> list[Slip]:
+    if family.slips is not None:
+        return family.slips(wanted, kb, api, target)
+    return [family.slip(wanted)] if family.slip is not None else []
+
+
+def build_cases(kb: KnowledgeBase, family: Family, api: Api) -> tuple[list[Case], list[Skipped]]:
+    """The bug and twin modules of `family` for `api`, one per slip the family has for it; the slips no
+    call can be written for are skipped, with the reason."""
     candidates = [
         (signature, parameter, wanted)
         for signature in _unversioned(api)
+        if family.applies(signature)
         for parameter in signature.parameters
         if parameter.geometry is not None and (wanted := family.wanted(parameter.geometry)) is not None
     ]
     if not candidates:
         raise Skip("stated only in version-pinned overloads (the cases pin no versions)")
     shape = _shape(kb, api)
-    top = shape.module.partition(".")[0]
-    reason = "no call binds to overloads that all state it"
-    for signature, target, wanted in candidates:
-        slip = family.slip(wanted)
-        taken = RESERVED | {top} | set(slip.names)
-        setup = ""
-        names: list[str] = []
-        if shape.owner is not None:  # an object made by its class's constructor
-            owner_path, _, method = shape.path.rpartition(".")
-            constructor_arguments, names = _constructor(shape.owner, taken)
-            setup = f"    {OBJECT} = {shape.module}.{owner_path}({constructor_arguments})\n"
-            callee = f"{OBJECT}.{method}"
-        elif shape.instance:  # any object: a parameter of the case function
-            names = [OBJECT]
-            callee = f"{OBJECT}.{shape.path}"
-        else:
-            callee = f"{shape.module}.{shape.path}"
-        for literals in (False, True):
-            try:
-                bug_arguments, call_names = _arguments(signature, target, slip.bug, literals, taken | set(names))
-                twin_arguments, _ = _arguments(signature, target, slip.twin, literals, taken | set(names))
-            except Skip as skipped:
-                reason = str(skipped)
-                break
-            bug_call = f"{callee}({', '.join(bug_arguments)})"
-            twin_call = f"{callee}({', '.join(twin_arguments)})"
-            ok = _binds_to(api, bug_call, target.name, slip.bug, family, wanted) and _binds_to(api, twin_call, target.name, slip.twin, family, wanted)
-            if not ok:
+    variants = [slip.variant for slip in _slips(kb, family, api, candidates[0][2], candidates[0][1])]
+    if not variants:
+        raise Skip("the knowledge base states no source of the other value")
+    cases: list[Case] = []
+    skipped: list[Skipped] = []
+    for variant in variants:
+        reason = "no call binds to overloads that all state it"
+        for signature, target, wanted in candidates:
+            slip = next((slip for slip in _slips(kb, family, api, wanted, target) if slip.variant == variant), None)
+            if slip is None:
                 continue
-            parameters = list(dict.fromkeys([*slip.names, *names, *call_names]))
-            return _case(family, api, shape.module, setup, parameters, bug_call, twin_call)
+            try:
+                cases.append(_build(kb, family, api, shape, signature, target, wanted, slip))
+                break
+            except Skip as skip:
+                reason = str(skip)
+        else:
+            skipped.append(Skipped(family.name, api.qualified_name, stub_folder(api), reason, variant))
+    return cases, skipped
+
+
+def _build(kb: KnowledgeBase, family: Family, api: Api, shape: _Shape, signature: Signature, target: Parameter, wanted: str, slip: Slip) -> Case:
+    top = shape.module.partition(".")[0]
+    taken = RESERVED | {top} | set(slip.names)
+    setup = "".join(f"    {line}\n" for line in slip.setup)
+    names: list[str] = []
+    if shape.owner is not None:  # an object made by its class's constructor
+        owner_path, _, method = shape.path.rpartition(".")
+        constructor_arguments, names = _constructor(shape.owner, taken)
+        setup += f"    {OBJECT} = {shape.module}.{owner_path}({constructor_arguments})\n"
+        callee = f"{OBJECT}.{method}"
+    elif shape.instance:  # any object: a parameter of the case function
+        names = [OBJECT]
+        callee = f"{OBJECT}.{shape.path}"
+    else:
+        callee = f"{shape.module}.{shape.path}"
+    twin_callee, twin_api = callee, api
+    if slip.twin_callee is not None:
+        twin_callee = f"{callee.rpartition('.')[0]}.{slip.twin_callee}"
+        twin_api = kb.api(f"{api.qualified_name.rpartition('.')[0]}.{slip.twin_callee}")  # type: ignore[assignment]
+        if twin_api is None:
+            raise Skip(f"`{slip.twin_callee}` is not in the knowledge base")
+    reason = "no call binds to overloads that all state it"
+    for literals in (False, True):
+        try:
+            bug_arguments, call_names = _arguments(signature, target, slip.bug, literals, taken | set(names))
+            twin_arguments, _ = _arguments(signature, target, slip.twin, literals, taken | set(names))
+        except Skip as skipped:
+            reason = str(skipped)
+            break
+        if slip.twin_keyword is not None:
+            twin_arguments = [*twin_arguments, slip.twin_keyword]
+        bug_call = f"{callee}({', '.join(bug_arguments)})"
+        twin_call = f"{twin_callee}({', '.join(twin_arguments)})"
+        if not _binds_to(api, bug_call, target.name, slip.bug, family, wanted):
+            if knowledge.bind(api, ast.parse(bug_call, mode="eval").body):  # type: ignore[arg-type]
+                reason = AMBIGUOUS
+            continue
+        if twin_api is api and slip.twin_keyword is None:
+            if not _binds_to(api, twin_call, target.name, slip.twin, family, wanted):
+                continue
+        elif not knowledge.bind(twin_api, ast.parse(twin_call, mode="eval").body):  # type: ignore[arg-type]
+            continue  # the twin's API or keyword binds, whatever it states
+        parameters = list(dict.fromkeys([*slip.names, *names, *call_names]))
+        return _case(family, api, shape.module, setup, parameters, bug_call, twin_call, slip.variant, slip.imports)
     raise Skip(reason)
 
 
-def _case(family: Family, api: Api, module: str, setup: str, parameters: list[str], bug_call: str, twin_call: str) -> Case:
+def _case(
+    family: Family, api: Api, module: str, setup: str, parameters: list[str], bug_call: str, twin_call: str,
+    variant: str = "", imports: tuple[str, ...] = (),
+) -> Case:  # fmt: skip
+    lines = list(dict.fromkeys(["import numpy as np", *imports, f"import {module}"]))
     head = (
-        f'"""Generated by benchmarks/shape_families/run.py: {family.name}, `{api.qualified_name}`."""\n\n'
-        f"import numpy as np\nimport {module}\n\n\n"
-        f"def case({', '.join(parameters)}):\n{setup}"
+        f'"""Generated by benchmarks/shape_families/run.py: {family.name}, `{api.qualified_name}`{_variant_note(variant)}."""\n\n'
+        + "\n".join(lines)
+        + f"\n\n\ndef case({', '.join(parameters)}):\n{setup}"
     )
     bug = f"{head}    return {bug_call}  {BUG_MARK}\n"
     twin = f"{head}    return {twin_call}\n"
+    return _checked(family, api.qualified_name, stub_folder(api), variant, bug, twin, head.count("\n") + 1)
+
+
+def _variant_note(variant: str) -> str:
+    return f" ({variant})" if variant else ""
+
+
+def _checked(family: Family, name: str, library: str, variant: str, bug: str, twin: str, bug_line: int) -> Case:
     for text in (bug, twin):
         ast.parse(text)  # a generated case is valid Python, or the generator is wrong
-    bug_line = head.count("\n") + 1
-    stem = f"{family.name}__{api.qualified_name.replace('.', '-')}"  # no dots: one suffix per file name
-    return Case(family.name, api.qualified_name, stub_folder(api), stem, bug, twin, bug_line)
+    label = f"{name}__{variant}" if variant else name
+    stem = f"{family.name}__{''.join(c if c.isalnum() or c == '_' else '-' for c in label)}"  # no dots: one suffix per file name
+    return Case(family.name, name, library, stem, bug, twin, bug_line, variant)
+
+
+def _drafted(family: Family, draft: spellings.Draft) -> Case:
+    """A spelling family's draft as the two modules."""
+    head = (
+        f'"""Generated by benchmarks/shape_families/run.py: {family.name}, `{draft.api}`{_variant_note(draft.variant)}."""\n\n'
+        + "\n".join(draft.imports)
+        + f"\n\n\ndef case({', '.join(draft.parameters)}):\n"
+        + "".join(f"    {line}\n" for line in draft.before)
+    )
+    tail = "".join(f"    {line}\n" for line in draft.after)
+    bug = f"{head}    {draft.bug}  {BUG_MARK}\n{tail}"
+    twin = f"{head}    {draft.twin}\n{tail}"
+    return _checked(family, draft.api, draft.library, draft.variant, bug, twin, head.count("\n") + 1)
 
 
 def targets(family: Family, kb: KnowledgeBase) -> list[Api]:
-    """The APIs with a parameter whose geometry asks for what the family gets wrong (any overload)."""
+    """The APIs with a parameter whose geometry asks for what the family gets wrong (any overload the
+    family is about); none for a spelling family."""
+    if family.drafts is not None:
+        return []
     return sorted(
         (
             api
             for api in kb.apis()
-            if any(p.geometry is not None and family.wanted(p.geometry) is not None for s in api.signatures for p in s.parameters)
+            if any(
+                p.geometry is not None and family.wanted(p.geometry) is not None
+                for s in api.signatures
+                if family.applies(s)
+                for p in s.parameters
+            )
         ),
         key=lambda api: api.qualified_name,
     )
@@ -418,18 +533,226 @@ def generate(family: Family, kb: KnowledgeBase | None = None) -> tuple[list[Case
     cases: list[Case] = []
     skipped: list[Skipped] = []
     stems: set[str] = set()
+    found: list[Case] = []
+    if family.drafts is not None:
+        drafts, dropped = family.drafts(kb)
+        found = [_drafted(family, draft) for draft in drafts]
+        skipped += [Skipped(family.name, item.api, item.library, item.reason) for item in dropped]
     for api in targets(family, kb):
         try:
-            case = build_case(kb, family, api)
+            built, left_out = build_cases(kb, family, api)
         except Skip as reason:
             skipped.append(Skipped(family.name, api.qualified_name, stub_folder(api), str(reason)))
             continue
+        found += built
+        skipped += left_out
+    for case in found:
         if case.stem in stems:
-            skipped.append(Skipped(family.name, api.qualified_name, stub_folder(api), "its file name repeats another case's"))
+            skipped.append(Skipped(family.name, case.api, case.library, "its file name repeats another case's", case.variant))
             continue
         stems.add(case.stem)
         cases.append(case)
     return cases, skipped
+
+
+# --- the families about poses and directions an API is given ------------------------------------
+
+DIRECTION_NAMES = ("normals", "normal", "direction")  # what GEO101 reads as directions by name
+
+
+def _moved_as_point(geometry: Geometry) -> str | None:
+    return "point" if geometry.kind is Kind.POINT else None
+
+
+def _applies_transform(signature: Signature) -> bool:
+    return signature.applies_transform
+
+
+def _moves_as_free(signature: Signature, name: str) -> bool:
+    parameter = signature.parameter(name)
+    return parameter is not None and parameter.geometry is not None and parameter.geometry.kind in FREE
+
+
+def _free_at(signature: Signature, position: int) -> bool:
+    return position < len(signature.parameters) and _moves_as_free(signature, signature.parameters[position].name)
+
+
+def _direction_twin(kb: KnowledgeBase, api: Api, target: Parameter) -> dict[str, str]:
+    """How the stubs say to move a direction through this API: the one literal keyword that picks an
+    overload moving the parameter as a vector (`translate=False`), or the API beside it (same owner, the
+    argument in the same place, the same parameter name if several) that moves it so (`transform_normals`);
+    {} when they state neither."""
+    for signature in _unversioned(api):
+        if not _moves_as_free(signature, target.name):
+            continue
+        choices = [p for p in signature.parameters if p.literal is not None and p.keyword]
+        if len(choices) == 1 and len(choices[0].literal or ()) == 1:
+            return {"twin_keyword": f"{choices[0].name}={choices[0].literal[0]!r}"}  # type: ignore[index]
+    owner = api.qualified_name.rpartition(".")[0]
+    position = next(
+        (s.parameters.index(target) for s in _unversioned(api) if target in s.parameters), 0
+    )  # fmt: skip
+    beside = [
+        other
+        for other in kb.apis()
+        if other is not api and other.qualified_name.rpartition(".")[0] == owner
+        and any(_free_at(signature, position) for signature in _unversioned(other))
+    ]  # fmt: skip
+    if len(beside) > 1:
+        beside = [other for other in beside if any(_moves_as_free(signature, target.name) for signature in _unversioned(other))]
+    return {"twin_callee": beside[0].qualified_name.rpartition(".")[2]} if len(beside) == 1 else {}
+
+
+def _direction_slips(_wanted: str, kb: KnowledgeBase, api: Api, target: Parameter) -> list[Slip]:
+    """A direction by each name the rule reads; the twin moves it the way the stub states (its keyword
+    or the API beside it), or, where the stub states no way, gives the API what it moves: `points`."""
+    twin = _direction_twin(kb, api, target)
+    return [
+        Slip(bug=name, twin=name if twin else "points", names=(name,) if twin else (name, "points"), variant=name, **twin)  # type: ignore[arg-type]
+        for name in DIRECTION_NAMES
+    ]
+
+
+def _pose_direction(geometry: Geometry) -> str | None:
+    """`w2c` / `c2w` for a transform the stub states between the camera and the world."""
+    if geometry.kind is not Kind.TRANSFORM:
+        return None
+    directions: dict[tuple[str, ...], str] = {("camera", "world"): "w2c", ("world", "camera"): "c2w"}
+    return directions.get(geometry.frames)
+
+
+# Names that say a pose's direction in the word, as GEO209 reads them (its docs): the other direction's
+POSE_NAMES = {
+    "c2w": ("c2w", "cam2world", "camera_to_world", "world_from_cam", "Twc", "T_world_cam"),
+    "w2c": ("w2c", "world2cam", "world_to_camera", "cam_from_world", "Tcw", "T_cam_world"),
+}
+
+
+def reach(kb: KnowledgeBase, api: Api, taken: set[str], depth: int = 0) -> tuple[tuple[str, ...], tuple[str, ...], str, tuple[str, ...]]:
+    """How code reads an attribute the stubs state: (imports, setup lines, expression, parameters).
+    A module's attribute by its name (`bpy.context`); a public class's through an object made by its
+    constructor; a private class's through the attribute of another that holds one (`bpy.context.scene.
+    camera.matrix_world`, the stubs' `type_name`)."""
+    if not api.is_attribute or depth > 6:
+        raise Skip("a source that is not an attribute")
+    owner_name, _, attribute = api.qualified_name.rpartition(".")
+    owner = kb.api(owner_name)
+    if owner is None:
+        if kb.library_of_module(owner_name) is None:
+            raise Skip(f"`{owner_name}` is neither a module nor a class of the knowledge base")
+        return (f"import {owner_name}",), (), api.qualified_name, ()
+    if not owner.is_class:
+        raise Skip(f"`{owner_name}` is no class")
+    if not _private(owner_name):
+        module = stub_module(owner)
+        module, path = _public_spelling(kb, owner, module, owner_name[len(module) + 1 :])
+        arguments, made_from = _constructor(owner, taken)
+        return (f"import {module}",), (f"{SOURCE} = {module}.{path}({arguments})",), f"{SOURCE}.{attribute}", tuple(made_from)
+    holders = [
+        other
+        for other in kb.apis()
+        if other.is_attribute and any(s.returns is not None and s.returns.type_name == owner_name for s in _unversioned(other))
+    ]
+    if len(holders) != 1:
+        raise Skip(f"the private class `{owner_name}` is held by {len(holders)} attributes")
+    imports, setup, expression, names = reach(kb, holders[0], taken, depth + 1)
+    return imports, setup, f"{expression}.{attribute}", names
+
+
+def _returned(api: Api) -> Geometry | None:
+    returns = {s.returns for s in _unversioned(api) if s.returns is not None}
+    return returns.pop() if len(returns) == 1 else None
+
+
+def _extrinsics_slips(wanted: str, kb: KnowledgeBase, api: Api, _target: Parameter) -> list[Slip]:
+    """The other direction, from each name that states it and each attribute whose stub returns it;
+    the twin is its inverse."""
+    other = "c2w" if wanted == "w2c" else "w2c"
+    slips = [Slip(bug=name, twin=f"np.linalg.inv({name})", names=(name,), variant=name) for name in POSE_NAMES[other]]
+    for source in sorted(kb.apis(), key=lambda a: a.qualified_name):
+        returned = _returned(source)
+        if returned is None or _pose_direction(returned) != other:
+            continue
+        try:
+            imports, setup, expression, names = reach(kb, source, RESERVED | set(api.qualified_name.split(".")))
+        except Skip:
+            continue
+        value = f"np.asarray({expression})"
+        slips.append(Slip(bug=value, twin=f"np.linalg.inv({value})", names=names, variant=source.qualified_name, imports=imports, setup=setup))
+    return slips
+
+
+# The camera axes that point the other way between two conventions (markers.CameraAxes: OpenCV x right,
+# y down, z forward; OpenGL x right, y up, z back; PyTorch3D x left, y up, z forward), as the diagonal
+# that flips them.
+FLIPS = {
+    frozenset({"opencv", "opengl"}): "np.diag([1, -1, -1, 1])",
+    frozenset({"opencv", "pytorch3d"}): "np.diag([-1, -1, 1, 1])",
+    frozenset({"opengl", "pytorch3d"}): "np.diag([-1, 1, -1, 1])",
+}
+
+
+# The words a name states camera axes with (GEO216's docs: `c2w_opengl`, `w2c_cv`)
+AXES_WORDS = {"opencv": ("opencv", "cv"), "opengl": ("opengl", "gl"), "pytorch3d": ("pytorch3d", "p3d")}
+
+
+def _axes_of(geometry: Geometry) -> str | None:
+    """`opencv:camera,world`: a pose's stated camera axes and frames."""
+    if geometry.kind is not Kind.TRANSFORM or geometry.camera_axes is None or "camera" not in geometry.frames:
+        return None
+    return f"{geometry.camera_axes}:{','.join(geometry.frames)}"
+
+
+def _axes_slips(wanted: str, kb: KnowledgeBase, api: Api, _target: Parameter) -> list[Slip]:
+    """A pose in other camera axes, named so (`w2c_gl`) and from each attribute whose stub states them,
+    turned to the sink's direction (inverted when the camera is on the other side); the twin flips the
+    axes on the camera's side first (`w2c_gl` -> `np.diag([1, -1, -1, 1]) @ w2c_gl`)."""
+    axes, frames = wanted.split(":")
+    camera_at = frames.split(",").index("camera")
+    slips = []
+    direction = "c2w" if camera_at == 1 else "w2c"
+    for other, words in AXES_WORDS.items():  # a name that states other axes, as GEO216 reads them
+        if other == axes:
+            continue
+        flip = FLIPS[frozenset({axes, other})]
+        for word in words:
+            name = f"{direction}_{word}"
+            twin = f"{name} @ {flip}" if camera_at == 1 else f"{flip} @ {name}"
+            slips.append(Slip(bug=name, twin=twin, names=(name,), variant=name))
+    for source in sorted(kb.apis(), key=lambda a: a.qualified_name):
+        returned = _returned(source)
+        stated = _axes_of(returned) if returned is not None else None
+        if stated is None or stated.startswith(axes + ":"):
+            continue
+        source_axes = stated.partition(":")[0]
+        flip = FLIPS[frozenset({axes, source_axes})]
+        try:
+            imports, setup, expression, names = reach(kb, source, RESERVED | set(api.qualified_name.split(".")))
+        except Skip:
+            continue
+        value = f"np.asarray({expression})"
+        flipped = f"{value} @ {flip}" if returned.frames.index("camera") == 1 else f"{flip} @ {value}"  # type: ignore[union-attr]
+        bug, twin = value, flipped
+        if returned.frames.index("camera") != camera_at:  # type: ignore[union-attr]
+            bug, twin = f"np.linalg.inv({value})", f"np.linalg.inv({flipped})"
+        slips.append(Slip(bug=bug, twin=twin, names=names, variant=source.qualified_name, imports=imports, setup=setup))
+    return slips
+
+
+FAMILIES = {
+    family.name: family
+    for family in (
+        Family("degrees-on-radian-apis", "GEO302", _radians, _degrees_slip),
+        Family("quaternion-order", "GEO301", _order, _order_slip),
+        Family("transpose-as-inverse", "GEO204", drafts=spellings.transpose_drafts),
+        Family("directions-through-products", "GEO101", drafts=spellings.direction_product_drafts),
+        Family("directions-through-point-apis", "GEO101", _moved_as_point, slips=_direction_slips, applies=_applies_transform),
+        Family("extrinsics-direction", "GEO209", _pose_direction, slips=_extrinsics_slips),
+        Family("camera-axes", "GEO216", _axes_of, slips=_axes_slips),
+        Family("monogram-compose", "GEO202", drafts=spellings.monogram_compose_drafts),
+        Family("monogram-apply", "GEO201", drafts=spellings.monogram_apply_drafts),
+    )
+}
 
 
 # --- running and scoring ----------------------------------------------------------------------
@@ -479,10 +802,10 @@ def score(family: Family, cases: list[Case], skipped: list[Skipped], findings: l
         if case.bug_line in lines.get(f"{case.stem}__bug.py", set()):
             result.caught += 1
         else:
-            result.missed.append(case.api)
+            result.missed.append(case.label)
         if lines.get(f"{case.stem}__twin.py"):
             result.twins_flagged += 1
-            result.flagged.append(case.api)
+            result.flagged.append(case.label)
     return result
 
 
@@ -543,7 +866,7 @@ def main(argv: list[str] | None = None) -> int:
             for name in result.flagged:
                 print(f"  flagged  {name}  (twin)")
             for item in generated[family.name][1]:
-                print(f"  skipped  {item.api}: {item.reason}")
+                print(f"  skipped  {item.label}: {item.reason}")
     if args.markdown:
         args.markdown.write_text(table(scores, markdown=True), encoding="utf-8")
     return 0
