@@ -17,7 +17,7 @@ from geolint.factbase.fact_types import DST_FIRST, SRC_FIRST, FrameFact
 from geolint.factbase.index import Binding, ParamBinding
 from geolint.factbase.kinds import valid_kind
 from geolint.factbase.syntax import last_name, positional_args, string
-from geolint.semantic.names import NameFrames, frames_of_name, order_dependent, same_frame
+from geolint.semantic.names import NameFrames, frames_of_name, is_monogram_name, order_dependent, same_frame
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
@@ -48,6 +48,10 @@ def name_frames(facts: FactBase, name: str, order: str) -> FrameFact | None:
         return _extrinsics_frames(facts, name)
     if "_tform_" in name:
         return bosdyn.name_fact(name, stated)  # Boston Dynamics' `odom_tform_body` states its direction
+    if facts.config.naming.monogram and is_monogram_name(name):
+        # read only in projects that use the library that defines the notation, where `X_WB` is B's
+        # pose in W by that library's documented convention: as strong as a declaration
+        return FrameFact(stated, (f"name `{name}` (monogram notation)",), True)
     if facts.order_names_mixed and order_dependent(name):
         return None
     if order == SRC_FIRST and stated.is_operator and order_dependent(name):

@@ -29,7 +29,9 @@ order is learned from the project: `from_frame=`/`to_frame=` declarations bound 
 then the consistency of its compositions; only what is wrong in every reading left open is
 reported. A table of switches turns single conventions off; Drake's monogram names (`X_WB`,
 `p_BQ`) are read only in projects that import pydrake unless `monogram = true` (elsewhere
-`X_EQ` is a state vector). `frame-aliases` declares synonyms (cam = camera).
+`X_EQ` is a state vector), and there they are evidence on their own: the notation is the
+library's documented convention, not a project's habit. `frame-aliases` declares synonyms
+(cam = camera).
 
 Names are frame evidence on their own only where the convention is **stated**: by
 `naming = "dst-first"` or `"src-first"`, or by the project's own declarations, all in one order.

@@ -300,6 +300,11 @@ def _readings(name: str, naming, known: frozenset[str] = frozenset()):  # type: 
             yield suffix
 
 
+def is_monogram_name(name: str) -> bool:
+    """Whether a name is written in monogram notation (`X_WB`, `R_WB`, `p_BQ`), however `naming` reads names."""
+    return _monogram_reading(name) is not None
+
+
 def _monogram_reading(name: str) -> NameFrames | None:
     """Drake's monogram names: `X_WB` (an operator), `p_BQ` (a value in frame B)."""
     match = _MONOGRAM_OPERATOR.match(name)

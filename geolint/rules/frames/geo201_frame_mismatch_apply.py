@@ -64,7 +64,11 @@ class FrameMismatchApply(ProductRule):
             message="`T_world_cam` maps cam into world, but `p_base` is in base",
             range=(1, 11, 1, 31),
         ),
-        Invalid("from pydrake.math import RigidTransform\np_W = X_WB @ p_CQ\n", options=STATED),
+        Invalid(  # monogram names are evidence on their own where pydrake is imported: no option needed
+            "from pydrake.math import RigidTransform\np_W = X_WB @ p_CQ\n",
+            message="`X_WB` maps b into w, but `p_CQ` is in c",
+            range=(2, 7, 2, 18),
+        ),
         Invalid("p = cam_to_world @ p_world\n", options=STATED),
         Invalid("import numpy as np\np = np.dot(world_from_cam, point_in_base)\n", options=STATED),
         Invalid("pts = pts_base @ R_world_cam.T\n", options=STATED),

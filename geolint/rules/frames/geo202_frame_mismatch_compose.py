@@ -82,7 +82,11 @@ class FrameMismatchCompose(ProductRule):
             message="`T_world_base` maps base into world, but `T_cam_tool` maps tool into cam: the inner frames base and cam differ",
             range=(1, 16, 1, 41),
         ),
-        Invalid("from pydrake.math import RigidTransform\nX_WG = X_WB @ X_CG\n", options=STATED),
+        Invalid(  # monogram names are evidence on their own where pydrake is imported: no option needed
+            "from pydrake.math import RigidTransform\nX_WG = X_WB @ X_CG\n",
+            message="`X_WB` maps b into w, but `X_CG` maps g into c: the inner frames b and c differ",
+            range=(2, 8, 2, 19),
+        ),
         Invalid("T = T_world_base @ T_base_cam @ T_tool_grip\n", options=STATED),
         Invalid("import numpy as np\nT = np.matmul(world_from_base, cam_from_tool)\n", options=STATED),
         Invalid("T = T_world_base.dot(T_cam_tool)\n", options=STATED),
