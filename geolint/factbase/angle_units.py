@@ -615,11 +615,23 @@ def _summarize_angle_units(facts: FactBase, function: Function, params: tuple[st
     returns = settled_returns(facts, scope, ANGLE_UNITS)
     if returns:
         summary.angle_unit = _returned_unit(facts, returns)
+    units = facts.shared(AngleUnits)
     for node in walk_within(function):
         if isinstance(node, Call) and node.args:
             _record_unit_reads(facts, node, positional_args(node), params, plain, summary)
+        elif isinstance(node, BinOp) and isinstance(node.op, (Mult, Div)):
+            _record_hand_conversion(facts, node, units, plain, summary)
     _add_named_units(summary)
     return summary
+
+
+def _record_hand_conversion(facts: FactBase, node: BinOp, units: AngleUnits, plain: set[str], summary: AngleSummary) -> None:
+    """`heading * 180 / np.pi` of a parameter: the function reads it in radians (and `* np.pi / 180` in
+    degrees), as `np.degrees(heading)` would."""
+    converted = units.converts_by_hand(node)
+    if converted is not None and isinstance(converted[1], Name) and converted[1].id in plain:
+        read = RADIANS if converted[0] == DEGREES else DEGREES
+        _add_unit_read(summary, summary.parameters.index(converted[1].id), read, f"a conversion written out (`{facts.code_of(node)}`)")
 
 
 def _record_unit_reads(

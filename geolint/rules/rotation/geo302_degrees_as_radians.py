@@ -91,9 +91,10 @@ class DegreesAsRadians(FactRule):
     (which is itself flagged when `x` is already in degrees), followed through local variables,
     `self` attributes, elements (`angles[2]`), negation, halving and sums of degrees; a
     parameter whose only value is a literal default above 2 pi (`fovy=30`); and such a value
-    passed to a project helper (here or in another module, through helpers that call helpers)
-    that hands the parameter unchanged to one of those APIs (or scales a rotation vector by it,
-    `quaternion.from_rotation_vector(theta * axis)`), or names it in radians (`theta_rad`)
+    passed to a project helper or method (here or in another module, through helpers that call
+    helpers, and methods of the object's class or its project base classes) that hands the parameter
+    unchanged to one of those APIs (or scales a rotation vector by it,
+    `quaternion.from_rotation_vector(theta * axis)`, or converts it by hand, `heading * 180 / np.pi`), or names it in radians (`theta_rad`)
     when the value's degrees are computed rather than only named; such a value passed to a class of
     the same module whose constructor stores the parameter as it is (`self.angle = angle`) for a method that
     hands it to one of those APIs (`np.tan(self.angle)`); and a name or `self` attribute
@@ -170,6 +171,10 @@ class DegreesAsRadians(FactRule):
     triggers = _GateOrDivisionByPi()  # type: ignore[assignment]  # the gate, widened
 
     VALID = [
+        Valid(  # the inherited method converts its parameter from radians: given radians
+            "import numpy as np\nclass Body:\n    def set_heading(self, heading):\n        self.heading_deg = heading * 180 / np.pi\n"
+            "class Car(Body):\n    def reset(self, v):\n        self.set_heading(np.arctan2(v[1], v[0]))\n"
+        ),
         Valid(  # a degree name rebound to an arc cosine (radians) before it is converted
             "import numpy as np\nimport tensorflow as tf\ndef colour(cosine):\n"
             "    degree_diff = tf.acos(cosine)\n    return degree_diff * 180 / np.pi\n"
@@ -229,6 +234,12 @@ class DegreesAsRadians(FactRule):
         ),
     ]
     INVALID = [
+        Invalid(  # ... given degrees: converted twice
+            "import numpy as np\nclass Body:\n    def set_heading(self, heading):\n        self.heading_deg = heading * 180 / np.pi\n"
+            "class Car(Body):\n    def reset(self, v):\n        self.set_heading(np.rad2deg(np.arctan2(v[1], v[0])))\n",
+            message="`self.set_heading` passes its parameter `heading` to a conversion written out (`heading * 180 / np.pi`), which reads radians, but `np.rad2deg(np.arctan2(v[1], v[0]))` is in degrees (`np.rad2deg` returns degrees)",
+            range=(7, 26, 7, 60),
+        ),
         Invalid(
             # computed degrees are degrees, whatever other names the function wraps in pi
             "import numpy as np\ndef f(h):\n    yaw_deg = np.degrees(h)\n"
