@@ -152,6 +152,10 @@ class AngleUnits:
             literal = self.bound_literal(node)
             if literal is not None:
                 return self._agree(by_name, [literal])
+            returned = facts.summary_of_property(node, ANGLE_UNITS)
+            if returned is not None and returned.angle_unit is not None:
+                unit, evidence, named = returned.angle_unit
+                return self._agree(by_name, [Unit(unit, f"the property `{facts.code_of(node)}` returns {unit_word(unit)}: {evidence}", named)])
             if isinstance(node.value, Name) and node.value.id == "self":
                 stores = facts.index.self_attribute_stores.get(node.attr, [])
                 return self._agree(by_name, [self.unit_of(store) for store in stores] if stores else [])

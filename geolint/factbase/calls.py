@@ -57,6 +57,29 @@ def summary_of(facts: FactBase, call: Call, family: SummaryFamily[_S]) -> _S | N
     return facts.cached("summary", call, _summary_of_call, family.tag)  # type: ignore[return-value]
 
 
+def summary_of_property(facts: FactBase, read: Attribute, family: SummaryFamily[_S]) -> _S | None:
+    """What reading a property of a project class returns (`robot.pose` runs the class's `@property`
+    getter), as far as `family` asks: a call of the getter with nothing but `self`."""
+    getter = property_getter(facts, read)
+    if getter is None:
+        return None
+    summary = facts.project.summary(getter[0], getter[1], family)
+    return None if summary is None else family.bound(summary)
+
+
+def property_getter(facts: FactBase, read: Attribute) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
+    """The `@property` getter `obj.attr` runs, when `obj` is known to be an instance of a project class
+    (`receiver_class`) that defines it (or inherits it from a project base); else None."""
+    if not _may_be_instance(facts, read.value) or (read.attr not in facts.index.methods and not facts.cross_module):
+        return None
+
+    def find() -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
+        found = receiver_class(facts, read.value)
+        return None if found is None else method_of(found[0], found[1], read.attr, getter=True)
+
+    return facts.memoised("property getter", read, find)
+
+
 def _summary_of_call(facts: FactBase, call: Call, tag: str) -> Summary | None:
     family = summaries.family_of(tag)
     found = called_function(facts, call)

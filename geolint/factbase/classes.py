@@ -112,15 +112,21 @@ def _named_class(facts: FactBase, name: str) -> tuple[FactBase, ClassDef] | None
     return None if cls is None else (found[0], cls)
 
 
-def method_of(facts: FactBase, cls: ClassDef, name: str) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
+_GETTERS: Final = frozenset({"property", "cached_property"})  # `@property`, `@functools.cached_property`
+
+
+def method_of(facts: FactBase, cls: ClassDef, name: str, getter: bool = False) -> tuple[FactBase, FunctionDef | AsyncFunctionDef] | None:
     """The plain method `name` an instance of `cls` (a class of `facts`' module) runs: defined once in
-    the class, or else in the nearest project base class that defines it. None for a property, a
-    static or class method, an overloaded name, or a base the project does not hold."""
+    the class, or else in the nearest project base class that defines it; with `getter`, the function
+    a read of the property `name` runs instead. None for a static or class method, an overloaded
+    name (a property with a setter included), or a base the project does not hold."""
     for _ in range(_MAX_BASES):
         defined = [node for node in cls.body if isinstance(node, (FunctionDef, AsyncFunctionDef)) and node.name == name]
         if defined:
             method = defined[0]
-            if len(defined) != 1 or method.decorator_list or not (method.args.posonlyargs or method.args.args):
+            if len(defined) != 1 or not (method.args.posonlyargs or method.args.args) or _is_getter(method) != getter:
+                return None
+            if method.decorator_list and not getter:
                 return None
             return facts, method
         if len(cls.bases) != 1:
@@ -130,3 +136,12 @@ def method_of(facts: FactBase, cls: ClassDef, name: str) -> tuple[FactBase, Func
             return None
         facts, cls = found
     return None
+
+
+def _is_getter(function: FunctionDef | AsyncFunctionDef) -> bool:
+    """Decorated with `@property` / `@cached_property` alone."""
+    if len(function.decorator_list) != 1:
+        return False
+    decorator = function.decorator_list[0]
+    name = decorator.id if isinstance(decorator, Name) else decorator.attr if isinstance(decorator, Attribute) else None
+    return name in _GETTERS

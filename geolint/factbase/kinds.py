@@ -55,6 +55,9 @@ def _kind(facts: FactBase, node: AST) -> Kind | None:
             return Kind.DIRECTION
         if attr in vocab.POINT_ATTRIBUTES:
             return Kind.POINT
+        returned = facts.summary_of_property(node, KINDS)
+        if returned is not None and returned.returns is not None:
+            return returned.returns  # `robot.pose`: a `@property` of the project's class
         if isinstance(node.value, Name) and node.value.id == "self":
             flowed = _kind_of_self_attribute(facts, attr)
             if flowed is not None:

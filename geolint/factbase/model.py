@@ -286,6 +286,10 @@ class FactBase:
         this module, or of a project module it imports. Only the families asked are computed."""
         return calls.summary_of(self, call, family)
 
+    def summary_of_property(self, read: Attribute, family: SummaryFamily[_S]) -> _S | None:
+        """What reading a property of a project class returns (its `@property` getter's summary)."""
+        return calls.summary_of_property(self, read, family)
+
     def own_method(self, call: Call) -> FunctionDef | AsyncFunctionDef | None:
         """For `self.helper(...)` inside a method: the one `helper` of the same class, when it takes `self`
         (not a static or class method); else None."""

@@ -371,6 +371,10 @@ class QuaternionFlow:
         order = held[1].quaternion_order if held is not None else None
         if held is not None and order is not None:
             return Order(order, f"from {held[0].library}'s `{attr}`", batch=held[1].stacked)
+        returned = facts.summary_of_property(node, QUATERNIONS)
+        if returned is not None and returned.quaternion_order is not None:
+            order, evidence, batch = returned.quaternion_order
+            return Order(order, f"from the property `{facts.code_of(node)}`, which returns it {evidence}", local=False, batch=batch)
         if attr in quaternion_field_names():
             cls = self.messages.class_of(node.value)
             order = field_order(cls, attr)

@@ -664,5 +664,29 @@ def test_a_method_of_a_class_from_another_project_module_is_read(tmp_path: Path)
         "    p.resetBasePositionAndOrientation(body, pos, placed.quat)\n"
     )
     found, _ = _check(project, "--no-cache")
-    # a property is an attribute read, not a call: not followed
-    assert {(path, line) for path, line, code in found if code == "GEO301"} == {("sim/scene.py", 5), ("sim/scene.py", 6)}
+    assert {(path, line) for path, line, code in found if code == "GEO301"} == {("sim/scene.py", line) for line in (5, 6, 7)}
+
+
+def test_a_property_read_returns_what_its_getter_returns() -> None:
+    """`obj.prop` runs the class's `@property` getter: its quaternion order, angle unit and kind reach
+    the read as a helper's return would; a property with a setter, or a plain attribute, says nothing."""
+    source = _POSED_OBJECT + (
+        "    @property\n"
+        "    def heading(self):\n"
+        "        import numpy as np\n"
+        "        return np.arctan2(self.pose[1, 0], self.pose[0, 0])\n"
+        "class Settable(Posed):\n"
+        "    @property\n"
+        "    def quat(self):\n"
+        "        return tt.quaternion_from_matrix(self.pose)\n"
+        "    @quat.setter\n"
+        "    def quat(self, value):\n"
+        "        self.pose = value\n"
+        "def place(body, posed: Posed, settable: Settable, pose):\n"
+        "    import math\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), posed.quat)\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), settable.quat)\n"
+        "    p.resetBasePositionAndOrientation(body, (0, 0, 0), Posed(pose).pose)\n"
+        "    return math.radians(posed.heading)\n"
+    )
+    assert _codes(source) == [(26, "GEO301"), (29, "GEO305")]
