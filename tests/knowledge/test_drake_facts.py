@@ -35,3 +35,16 @@ def test_angles_are_radians() -> None:
     assert np.allclose(drake_math.RollPitchYaw(0.0, 0.0, math.pi / 2).ToRotationMatrix().matrix(), QUARTER_TURN_Z)
     assert _stated("pydrake.math.RotationMatrix.MakeZRotation", "RotationMatrix.MakeZRotation(t)", "theta", "angle_unit") == "radians"
     assert np.allclose(drake_math.RotationMatrix.MakeZRotation(math.pi / 2).matrix(), QUARTER_TURN_Z)
+
+
+def test_a_rigid_transform_moves_points_by_rotation_and_translation() -> None:
+    from geolint.algebra import Kind
+
+    api = knowledge_base().api("pydrake.all.RigidTransform.multiply")
+    assert api is not None and all(signature.applies_transform for signature in api.signatures)
+    assert {signature.returns.kind for signature in api.signatures if signature.returns is not None} == {Kind.POINT, None}
+    pose = drake_math.RigidTransform(drake_math.RotationMatrix(QUARTER_TURN_Z), [1.0, 2.0, 3.0])
+    point = np.array([1.0, 0.0, 0.0])
+    moved = QUARTER_TURN_Z @ point + [1.0, 2.0, 3.0]
+    assert np.allclose(pose.multiply(point), moved) and np.allclose(pose @ point, moved)
+    assert np.allclose(pose.GetAsMatrix4()[:3, 3], [1.0, 2.0, 3.0])

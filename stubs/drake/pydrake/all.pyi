@@ -1,3 +1,3 @@
 # `from pydrake.all import ...`: pydrake.all re-exports the public modules
 from pydrake.common.eigen_geometry import Quaternion as Quaternion
-from pydrake.math import RollPitchYaw as RollPitchYaw, RotationMatrix as RotationMatrix
+from pydrake.math import RigidTransform as RigidTransform, RollPitchYaw as RollPitchYaw, RotationMatrix as RotationMatrix
