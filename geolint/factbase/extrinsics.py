@@ -298,14 +298,35 @@ def camera_pose_attributes(kb: KnowledgeBase) -> frozenset[str]:
     )
 
 
-class CameraPoseAttributeText:
-    """A rule's gate: text that may read a library attribute whose stub states a camera pose
-    (`.matrix_world`, `.extrinsics`), from the knowledge base."""
+@lru_cache(maxsize=4)
+def camera_pose_packages(kb: KnowledgeBase) -> frozenset[str]:
+    """The import names of the libraries whose stubs state a camera pose (part) a call takes or an attribute
+    holds: what a module must name for a library to state one."""
+    return frozenset(
+        package
+        for api in kb.apis()
+        if any(
+            stub_extrinsic(geometry, "", api.library) is not None
+            for signature in api.signatures
+            for geometry in (signature.returns, *(parameter.geometry for parameter in signature.parameters))
+            if geometry is not None
+        )
+        for package in kb.libraries[api.library].packages
+    )
 
-    pattern = r"\.\w+"  # a superset, for display: the names are the knowledge base's, read on first search
+
+class CameraPoseText:
+    """A rule's gate: text that may read a camera pose a library's stub states, an attribute that holds
+    one (`.matrix_world`, `.extrinsics`) or the name of a library whose calls take one (`open3d`,
+    `pyrender`), from the knowledge base."""
+
+    pattern = r"\w+"  # a superset, for display: the names are the knowledge base's, read on first search
 
     def search(self, source: str, /) -> bool:
-        return any(f".{name}" in source for name in camera_pose_attributes(knowledge_base()))
+        kb = knowledge_base()
+        return any(package in source for package in camera_pose_packages(kb)) or any(
+            f".{name}" in source for name in camera_pose_attributes(kb)
+        )
 
 
 def key_extrinsic(key: str) -> Extrinsic | None:
@@ -649,21 +670,3 @@ def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: AS
         if start < position < end and binding_of(index, func.value) == binding:
             return None  # moved in between: its frame is no longer the camera's for sure
     return f"`{receiver.id}` is an Open3D cloud in the camera frame (`{call_name(made)}` at line {made.lineno}, no extrinsic)"
-
-
-_PYRENDER_CAMERAS: Final = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "OrthographicCamera"})
-
-
-def pyrender_camera_pose(evidence: ExtrinsicsEvidence, call: Call) -> ast.expr | None:
-    """The `pose=` of `scene.add(camera, pose=...)` when `camera` is a pyrender camera: a scene
-    node's pose maps the node into the scene, so a camera's is camera-to-world."""
-    if call_name(call) != "add" or not call.args or not isinstance(call.func, Attribute):
-        return None
-    pose = next((keyword.value for keyword in call.keywords if keyword.arg == "pose"), None)
-    if pose is None:
-        return None
-    camera = call.args[0]
-    made = value_of(evidence.index, camera) if isinstance(camera, Name) else camera
-    if not isinstance(made, Call) or call_name(made) not in _PYRENDER_CAMERAS:
-        return None
-    return pose if (evidence.facts.qualified_name(made.func) or "").startswith("pyrender") else None

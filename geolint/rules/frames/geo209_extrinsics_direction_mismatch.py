@@ -9,9 +9,8 @@ from ast import AnnAssign, Assign, AsyncFunctionDef, Attribute, Call, FunctionDe
 
 from geolint.factbase import library_calls
 from geolint.factbase.extrinsics import (
-    C2W,
     DATA,
-    CameraPoseAttributeText,
+    CameraPoseText,
     POSE,
     Extrinsic,
     ExtrinsicsEvidence,
@@ -21,7 +20,6 @@ from geolint.factbase.extrinsics import (
     key_extrinsic,
     mentions,
     name_extrinsic,
-    pyrender_camera_pose,
     DIRECTION_WORDS,
     is_blank_matrix,
 )
@@ -63,9 +61,9 @@ class _OrbSlamPoseName:
 TRIGGER: Final = AllOf(
     AnyOf(
         r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
-        r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|pyrender|_from_world|world_from_cam",
+        r"create_from_(?:rgbd|depth)_image|_from_world|world_from_cam",
         _OrbSlamPoseName(),
-        CameraPoseAttributeText(),
+        CameraPoseText(),
     )
 )
 
@@ -105,8 +103,9 @@ class ExtrinsicsDirectionMismatch(FactRule):
     `create_from_rgbd_image` / `create_from_depth_image`'s `extrinsic`, `create_camera_visualization`),
     a world-to-camera one given to nerfstudio's `auto_orient_and_center_poses(poses)`; and an Open3D cloud in
     the camera frame (made by those two without an extrinsic) moved by a world-to-camera matrix,
-    which only a camera-to-world one can take to the world; a world-to-camera pose given to a
-    pyrender camera node (`scene.add(camera, pose=...)`, whose pose maps the camera into the scene).
+    which only a camera-to-world one can take to the world. pyrender's camera nodes are such library
+    parameters: `scene.add(camera, pose=...)` where `camera` is made by a pyrender camera class, and
+    `Node(camera=..., matrix=...)`, whose pose maps the camera into the scene (stubs/pyrender).
 
     ## Why is this bad?
     A world-to-camera pose and its camera-to-world inverse are both 4x4 rigid transforms with
@@ -154,7 +153,9 @@ class ExtrinsicsDirectionMismatch(FactRule):
     one order without saying so is not checked there. A library attribute counts only where its
     owner's class is known (made by the library's constructor, annotated, or held by another known
     attribute): a pycolmap `Image` looked up in `reconstruction.images` is read by the attribute
-    names of COLMAP and pycolmap instead (`cam_from_world`, `qvec`, `tvec`), on any object. Plain name-to-name assignments
+    names of COLMAP and pycolmap instead (`cam_from_world`, `qvec`, `tvec`), on any object.
+    A pyrender camera added to a scene counts only where its class is known (`camera =
+    pyrender.IntrinsicsCamera(...)` in the same function): a camera passed in says nothing. Plain name-to-name assignments
     (`c2w = w2c`) are GEO203's; this rule takes what GEO203 cannot see (blocks, keys, arguments,
     library data, Open3D clouds). A "world" that is another camera (a stereo pair's left camera)
     still reads as a world here.
@@ -213,6 +214,13 @@ class ExtrinsicsDirectionMismatch(FactRule):
             "import open3d as o3d\ndef f(depth, K, T_world_cam):\n"
             "    return o3d.geometry.PointCloud.create_from_depth_image(depth, K, T_world_cam)\n"
         ),
+        # a pyrender camera node given the inverse of a world-to-camera pose; a mesh's pose states no camera
+        Valid(
+            "import numpy as np\nimport pyrender\ndef f(scene, image, mesh, K):\n"
+            "    camera = pyrender.IntrinsicsCamera(fx=K[0, 0], fy=K[1, 1], cx=K[0, 2], cy=K[1, 2])\n"
+            "    scene.add(camera, pose=np.linalg.inv(image.cam_from_world.matrix()))\n"
+            "    scene.add(pyrender.Mesh.from_trimesh(mesh), pose=image.cam_from_world.matrix())\n"
+        ),
     ]
     INVALID = [
         Invalid(
@@ -270,6 +278,16 @@ class ExtrinsicsDirectionMismatch(FactRule):
             "`PointCloud.create_from_depth_image` maps world into camera (its stub)), but `T_world_cam` is a camera-to-world "
             "pose (name `T_world_cam` (dst-first)): an inverse is missing or one too many",
             range=(3, 70, 3, 81),
+        ),
+        # a pyrender camera's pose maps the camera into the scene (stubs/pyrender)
+        Invalid(
+            "import pyrender\ndef f(scene, image, K):\n"
+            "    camera = pyrender.IntrinsicsCamera(fx=K[0, 0], fy=K[1, 1], cx=K[0, 2], cy=K[1, 2])\n"
+            "    scene.add(camera, pose=image.cam_from_world.matrix())\n",
+            message="the `pose` of `Scene.add` expects a camera-to-world pose (`pose` of `Scene.add` maps camera into world "
+            "(its stub)), but `image.cam_from_world.matrix()` is a world-to-camera pose (`.cam_from_world` (pycolmap "
+            "Image.cam_from_world: world-to-camera)): an inverse is missing or one too many",
+            range=(4, 28, 4, 57),
         ),
     ]
 
@@ -356,10 +374,6 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 maps = "world into camera" if direction == W2C else "camera into world"
                 stated = Extrinsic(direction, POSE, (f"`{read_as}` of `{owner}` maps {maps} (its stub)",))
                 self._compare(argument, stated, f"the `{read_as}` of `{owner}`", names_both_sides=True)
-        camera_pose = pyrender_camera_pose(self.evidence, call)
-        if camera_pose is not None:
-            stated = Extrinsic(C2W, POSE, ("pyrender: a node's pose maps it into the scene",))
-            self._compare(camera_pose, stated, "the pose of a pyrender camera node", names_both_sides=True)
         func = call.func
         if isinstance(func, Attribute) and func.attr == "transform" and len(call.args) == 1 and not call.keywords:
             why = camera_frame_cloud(self.evidence, func.value, call)

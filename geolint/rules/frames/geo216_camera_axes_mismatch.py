@@ -19,7 +19,7 @@ from geolint.factbase.extrinsics import (
     ROTATION,
     W2C,
     Axes,
-    CameraPoseAttributeText,
+    CameraPoseText,
     Extrinsic,
     ExtrinsicsEvidence,
     frames_direction,
@@ -37,7 +37,7 @@ TRIGGER: Final = AllOf(
     AnyOf(
         r"transform_matrix|qvec|tvec|cam_from_world|cam_R_w2c|projection_center|"
         r"opencv|opengl|OpenCV|OpenGL|blender|colmap|pytorch3d|p3d|_gl|_cv|gl_|cv_",
-        CameraPoseAttributeText(),
+        CameraPoseText(),
     )
 )
 
@@ -68,8 +68,8 @@ class CameraAxesMismatch(FactRule):
     states other axes. OpenCV axes (x right, y down, z forward) are those of COLMAP (`image.qvec`,
     `image.tvec`, `image.qvec2rotmat()`, pycolmap's `image.cam_from_world`), BOP (`"cam_R_w2c"`), the
     extrinsics Open3D takes and av2's `PinholeCamera.extrinsics`; OpenGL axes (x right, y up, z back)
-    those of NeRF transforms.json's `"transform_matrix"`, nerfstudio's camera poses and Blender's
-    `scene.camera.matrix_world` (any library attribute or parameter whose stub states `CameraAxes`); a name that says its direction may say its
+    those of NeRF transforms.json's `"transform_matrix"`, nerfstudio's camera poses, pyrender's camera
+    nodes (`scene.add(camera, pose=...)`) and Blender's `scene.camera.matrix_world` (any library attribute or parameter whose stub states `CameraAxes`); a name that says its direction may say its
     axes too (`c2w_opengl`, `w2c_cv`, `pose_c2w_p3d`). Pixel ray directions state the axes they are
     built in by their signs: `[(u - cx) / fx, (v - cy) / fy, 1]` OpenCV, `[(u - cx) / fx, -(v - cy) / fy,
     -1]` OpenGL, `[-(u - cx) / fx, -(v - cy) / fy, 1]` PyTorch3D. Values are followed as GEO209 follows
