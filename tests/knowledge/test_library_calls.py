@@ -286,3 +286,20 @@ def test_the_class_of_an_argument_tells_overloads_apart() -> None:
     # an argument of another known class: the overloads that leave the parameter untyped
     node = calls["scene.add(pyrender.Node(camera=camera, matrix=pose))"]
     assert [bound.signature.parameters[0].geometry for bound in library_call(facts, node)] == [None]
+
+
+def test_a_camera_added_under_a_parent_is_posed_relative_to_it() -> None:
+    from geolint.factbase.library_calls import library_call
+
+    facts, calls = _calls(
+        """
+        import pyrender
+
+        def f(scene, pose, node):
+            camera = pyrender.PerspectiveCamera(yfov=1.0)
+            scene.add(camera, pose=pose, parent_node=node)
+        """
+    )
+    call = calls["scene.add(camera, pose=pose, parent_node=node)"]
+    assert len(library_call(facts, call)) == 1
+    assert stated_poses(facts, call) == []
