@@ -7,14 +7,18 @@ Evidence, strongest first:
 1. data conventions: string keys of datasets and file formats (BOP `"cam_R_w2c"` / `"cam_t_w2c"`,
    NeRF transforms.json `"transform_matrix"`, `meta["c2w"]`), library attributes (pycolmap
    `image.cam_from_world`, `image.projection_center()`, COLMAP `image.qvec` / `image.tvec` /
-   `image.qvec2rotmat()`), followed through local data flow (flow-sensitive: a name rebound to
+   `image.qvec2rotmat()`, by name on any object: COLMAP's own `Image` is a namedtuple of its scripts,
+   and pycolmap's images come out of dicts no type reaches), the library attributes the stubs type as
+   camera poses (`geolint.knowledge`: Blender's `scene.camera.matrix_world`, av2's `extrinsics`, with
+   their camera axes), followed through local data flow (flow-sensitive: a name rebound to
    its own inverse holds the inverse from there on), inverses, transposes of rotations, blocks
    written into a 4x4 (`T = np.eye(4); T[:3, :3] = R; T[:3, 3] = t`), `[R | t]` concatenations
    and the hand-written inverse translation `-R.T @ t`;
 2. names whose direction is in the word itself (`c2w`, `pose_w2c`, `world_to_camera`,
    `cam_from_world`, ORB-SLAM's `Tcw` / `Twc`): order-independent;
 3. `T_a_b` names with one camera frame, read in the project's naming order (`geolint.factbase.conventions`):
-   only when every open reading agrees.
+   only when every open reading agrees; explicit evidence (`Extrinsic.explicit`) only where the project
+   states its order.
 
 A pycolmap attribute's frames belong to its owner (`image1.cam_from_world` is camera 1's), but
 its direction does not: every `cam_from_world` maps world into a camera. This module answers only
@@ -33,10 +37,12 @@ from __future__ import annotations
 import ast
 from ast import AST, Attribute, BinOp, Call, Div, MatMult, Mult, Name, Slice, Starred, Subscript, USub, UnaryOp
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import lru_cache
 from typing import Final, TYPE_CHECKING
 
-from geolint.factbase import dataflow
+from geolint.algebra import Kind
+from geolint.factbase import dataflow, library_calls
 from geolint.factbase.memo import NodeMemo
 from geolint.factbase.syntax import is_full_slice, is_slice_upto, number, string, walk_within
 from geolint.factbase.pose_parts import (
@@ -49,6 +55,7 @@ from geolint.factbase.pose_parts import (
     transposed_operand,
 )
 from geolint.factbase.reaching import Unpacked, binding_of, scope_of, statement_of, value_of
+from geolint.knowledge import Geometry, KnowledgeBase, knowledge_base
 from geolint.knowledge.markers import CameraAxes
 
 if TYPE_CHECKING:
@@ -139,6 +146,14 @@ def is_camera_frame(word: str | None) -> bool:
     return word is not None and _CAMERA_FRAME.fullmatch(word.lower()) is not None
 
 
+def frames_direction(frames: tuple[str, ...]) -> str | None:
+    """The direction of a pose between a camera and one other frame (a stub's `(dst, src)`: `("camera",
+    "world")` w2c, `("world", "camera")` c2w, `("camera", "egovehicle")` w2c too); None for any other frames."""
+    if len(frames) != 2 or is_camera_frame(frames[0]) == is_camera_frame(frames[1]):
+        return None
+    return W2C if is_camera_frame(frames[0]) else C2W
+
+
 @dataclass(frozen=True)
 class Axes:
     """Which way a camera's own axes point (`CameraAxes` values), where that is stated, how strongly."""
@@ -162,16 +177,17 @@ class Extrinsic:
     evidence: tuple[str, ...]
     strength: str = DATA
     axes: Axes | None = None
+    order_stated: bool = False  # an ORDERED_NAME read in the naming order the project states
 
     def inverted(self, how: str) -> Extrinsic:
         """The inverse pose (part): the same camera, so the same camera axes."""
-        return Extrinsic(flip(self.direction), self.part, (*self.evidence, how), self.strength, self.axes)
+        return replace(self, direction=flip(self.direction), evidence=(*self.evidence, how))
 
     def as_part(self, part: str, how: str = "") -> Extrinsic:
-        return Extrinsic(self.direction, part, (*self.evidence, how) if how else self.evidence, self.strength, self.axes)
+        return replace(self, part=part, evidence=(*self.evidence, how) if how else self.evidence)
 
     def with_axes(self, axes: Axes | None) -> Extrinsic:
-        return Extrinsic(self.direction, self.part, self.evidence, self.strength, axes)
+        return replace(self, axes=axes)
 
     @property
     def description(self) -> str:
@@ -180,8 +196,9 @@ class Extrinsic:
 
     @property
     def explicit(self) -> bool:
-        """Data, or a name that says its direction in so many words (never a `T_a_b` reading)."""
-        return self.strength in (DATA, NAME)
+        """Data, a name that says its direction in so many words, or a `T_a_b` name read in the naming
+        order the project states (`naming = "dst-first"`, or its declarations in one order)."""
+        return self.strength in (DATA, NAME) or self.order_stated
 
 
 def _part_of_tokens(tokens: list[str]) -> str:
@@ -230,7 +247,7 @@ def name_extrinsic(facts: FactBase, name: str) -> Extrinsic | None:
     if len(found) != 1:
         return None
     direction, part = found.pop()  # type: ignore[misc]
-    return Extrinsic(direction, part, evidence, ORDERED_NAME)
+    return Extrinsic(direction, part, evidence, ORDERED_NAME, order_stated=facts.names_stated)
 
 
 def _camera_pose_name(facts: FactBase, name: str, order: str) -> FrameFact | None:
@@ -252,6 +269,64 @@ def _camera_pose_name(facts: FactBase, name: str, order: str) -> FrameFact | Non
     dst, src = (first, second) if order == DST_FIRST else (second, first)
     frames = NameFrames(dst=dst.lower(), src=src.lower(), operator="rotation" if tokens[0] in ROTATION_LETTERS else "transform")
     return FrameFact(frames, (f"name `{name}` ({order})",))
+
+
+_STUB_PARTS: Final = {Kind.TRANSFORM: POSE, Kind.ROTATION: ROTATION, Kind.TRANSLATION: TRANSLATION}
+
+
+def stub_extrinsic(geometry: Geometry, what: str, library: str) -> Extrinsic | None:
+    """A camera pose (part) a stub states (`TransformMatrix["camera", "world"]`, with its `CameraAxes`
+    when stated), as the data evidence of `what` (an attribute, a parameter) of `library`; None when the
+    stub states no pose between a camera and another frame."""
+    part = _STUB_PARTS.get(geometry.kind) if geometry.kind is not None else None
+    direction = frames_direction(geometry.frames)
+    if part is None or direction is None:
+        return None
+    source = f"{what} ({library} stub: {DIRECTION_WORDS[direction]})"
+    axes = Axes(geometry.camera_axes, f"{what} ({library} stub)") if geometry.camera_axes is not None else None
+    return Extrinsic(direction, part, (source,), DATA, axes)
+
+
+@lru_cache(maxsize=4)
+def camera_pose_attributes(kb: KnowledgeBase) -> frozenset[str]:
+    """The names of the library attributes whose stubs state a camera pose (part)."""
+    return frozenset(
+        api.qualified_name.rpartition(".")[2]
+        for api in kb.apis()
+        if api.is_attribute
+        and any(signature.returns is not None and stub_extrinsic(signature.returns, "", api.library) for signature in api.signatures)
+    )
+
+
+@lru_cache(maxsize=4)
+def camera_pose_packages(kb: KnowledgeBase) -> frozenset[str]:
+    """The import names of the libraries whose stubs state a camera pose (part) a call takes or an attribute
+    holds: what a module must name for a library to state one."""
+    return frozenset(
+        package
+        for api in kb.apis()
+        if any(
+            stub_extrinsic(geometry, "", api.library) is not None
+            for signature in api.signatures
+            for geometry in (signature.returns, *(parameter.geometry for parameter in signature.parameters))
+            if geometry is not None
+        )
+        for package in kb.libraries[api.library].packages
+    )
+
+
+class CameraPoseText:
+    """A rule's gate: text that may read a camera pose a library's stub states, an attribute that holds
+    one (`.matrix_world`, `.extrinsics`) or the name of a library whose calls take one (`open3d`,
+    `pyrender`), from the knowledge base."""
+
+    pattern = r"\w+"  # a superset, for display: the names are the knowledge base's, read on first search
+
+    def search(self, source: str, /) -> bool:
+        kb = knowledge_base()
+        return any(package in source for package in camera_pose_packages(kb)) or any(
+            f".{name}" in source for name in camera_pose_attributes(kb)
+        )
 
 
 def key_extrinsic(key: str) -> Extrinsic | None:
@@ -342,6 +417,9 @@ class ExtrinsicsEvidence:
     def _of_attribute(self, node: Attribute) -> Extrinsic | None:
         if node.attr in ("T", "mT"):
             return self._transposed(node.value, f"`.{node.attr}`")
+        stated = self._stub_attribute(node)  # before the module test: `bpy.context.scene.camera` reads like a module
+        if stated is not None:
+            return stated
         if self.facts.is_module_like(node.value):
             return None
         known = EXTRINSIC_ATTRIBUTES.get(node.attr)
@@ -355,6 +433,12 @@ class ExtrinsicsEvidence:
                 return owner.as_part(ROTATION if node.attr == "rotation" else TRANSLATION)
             return None
         return name_extrinsic(self.facts, node.attr)
+
+    def _stub_attribute(self, node: Attribute) -> Extrinsic | None:
+        """What a library attribute holds by its stub (`scene.camera.matrix_world`: camera-to-world in
+        OpenGL axes; av2's `camera.extrinsics`: ego-to-camera in OpenCV axes)."""
+        held = library_calls.attribute_geometry(self.facts, node)
+        return stub_extrinsic(held[1], f"`.{node.attr}`", held[0].library) if held is not None else None
 
     def _of_subscript(self, node: Subscript) -> Extrinsic | None:
         key = string(node.slice)
@@ -586,21 +670,3 @@ def camera_frame_cloud(evidence: ExtrinsicsEvidence, receiver: ast.expr, use: AS
         if start < position < end and binding_of(index, func.value) == binding:
             return None  # moved in between: its frame is no longer the camera's for sure
     return f"`{receiver.id}` is an Open3D cloud in the camera frame (`{call_name(made)}` at line {made.lineno}, no extrinsic)"
-
-
-_PYRENDER_CAMERAS: Final = frozenset({"PerspectiveCamera", "IntrinsicsCamera", "OrthographicCamera"})
-
-
-def pyrender_camera_pose(evidence: ExtrinsicsEvidence, call: Call) -> ast.expr | None:
-    """The `pose=` of `scene.add(camera, pose=...)` when `camera` is a pyrender camera: a scene
-    node's pose maps the node into the scene, so a camera's is camera-to-world."""
-    if call_name(call) != "add" or not call.args or not isinstance(call.func, Attribute):
-        return None
-    pose = next((keyword.value for keyword in call.keywords if keyword.arg == "pose"), None)
-    if pose is None:
-        return None
-    camera = call.args[0]
-    made = value_of(evidence.index, camera) if isinstance(camera, Name) else camera
-    if not isinstance(made, Call) or call_name(made) not in _PYRENDER_CAMERAS:
-        return None
-    return pose if (evidence.facts.qualified_name(made.func) or "").startswith("pyrender") else None

@@ -59,7 +59,37 @@ def _library_call(facts: FactBase, call: Call) -> list[Bound]:
         return []
     pins = pins_for(facts.path) if not facts.path.startswith("<") else Pins()
     # a fact marked `@versions(...)` counts only when the project's declared versions all satisfy it
-    return bind(api, call, lambda specifier: pins.allow_only(api.library, specifier))
+    bounds = bind(api, call, lambda specifier: pins.allow_only(api.library, specifier))
+    return _narrowed_by_class(facts, bounds) if len(bounds) > 1 else bounds
+
+
+def _narrowed_by_class(facts: FactBase, bounds: list[Bound]) -> list[Bound]:
+    """The overloads an argument's library class tells apart (pyrender's `Scene.add(obj, pose=...)`, whose
+    pose is a camera's when `obj` is one of its cameras): where overloads type the argument's parameter with
+    different classes and its class is known, those typed with its class stay, else those that leave the
+    parameter untyped. An argument of unknown class keeps every overload open."""
+    for name in bounds[0].arguments:
+        argument = bounds[0].arguments[name]
+        if not all(bound.arguments.get(name) is argument for bound in bounds):
+            continue
+        classes = [_parameter_class(bound, name) for bound in bounds]
+        if len(set(classes)) < 2:
+            continue
+        held = library_type(facts, argument)
+        if held is None:
+            continue
+        typed = [bound for bound, class_name in zip(bounds, classes) if class_name == held]
+        bounds = typed or [bound for bound, class_name in zip(bounds, classes) if class_name is None]
+        if not bounds:
+            return []
+    return bounds
+
+
+def _parameter_class(bound: Bound, name: str) -> str | None:
+    """The library class an overload types a parameter with (`obj: PerspectiveCamera`), when that is all it states."""
+    parameter = bound.signature.parameter(name)
+    geometry = parameter.geometry if parameter is not None else None
+    return geometry.type_name if geometry is not None and geometry == Geometry(type_name=geometry.type_name) else None
 
 
 def quaternion_inputs(facts: FactBase, call: Call) -> list[tuple[ast.expr, str]]:

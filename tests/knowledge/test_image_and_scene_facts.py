@@ -1,4 +1,4 @@
-"""The facts of the image and scene libraries in stubs/ (scikit-image, Pillow, mathutils, bpy, Argoverse 2,
+"""The facts of the image and scene libraries in stubs/ (scikit-image, Pillow, mathutils, bpy, pyrender, Argoverse 2,
 Argoverse 1, the Waymo Open Dataset): first what the linter now says of a small invented call of each and of its
 correct twin, then each fact checked against the library where it installs (skipped where it does not: none of them
 is a dependency of geolint's). The unit, order, frames and axes checked are read from the stubs."""
@@ -87,6 +87,26 @@ PAIRS = [
         "GEO301",
         "import bpy\nfrom scipy.spatial.transform import Rotation\ndef f():\n"
         "    return Rotation.from_quat(bpy.context.object.rotation_quaternion, scalar_first=True)\n",
+    ),
+    (
+        "pyrender camera node poses are in OpenGL camera axes",
+        "import pyrender\ndef f(cam, c2w_opencv):\n    return pyrender.Node(camera=cam, matrix=c2w_opencv)\n",
+        "GEO216",
+        "import pyrender\ndef f(cam, c2w_opengl):\n    return pyrender.Node(camera=cam, matrix=c2w_opengl)\n",
+    ),
+    (
+        "pyrender Node rotation is (x, y, z, w)",
+        "import pyrender\nfrom scipy.spatial.transform import Rotation\ndef f(mesh, R):\n"
+        "    return pyrender.Node(mesh=mesh, rotation=Rotation.from_matrix(R).as_quat(scalar_first=True))\n",
+        "GEO301",
+        "import pyrender\nfrom scipy.spatial.transform import Rotation\ndef f(mesh, R):\n"
+        "    return pyrender.Node(mesh=mesh, rotation=Rotation.from_matrix(R).as_quat())\n",
+    ),
+    (
+        "pyrender PerspectiveCamera yfov is radians",
+        "import pyrender\ndef f():\n    return pyrender.PerspectiveCamera(yfov=60.0)\n",
+        "GEO302",
+        "import numpy as np\nimport pyrender\ndef f():\n    return pyrender.PerspectiveCamera(yfov=np.pi / 3.0)\n",
     ),
     (
         "av2 quat_to_mat reads (w, x, y, z)",
@@ -290,6 +310,46 @@ def test_blender_camera_matrix_world_is_camera_to_world_in_opengl_axes() -> None
     camera_data.sensor_fit = "HORIZONTAL"
     camera_data.angle = math.pi / 2  # a quarter turn of field of view: the focal length is half the sensor width
     assert math.isclose(camera_data.lens, camera_data.sensor_width / 2, rel_tol=1e-5)
+
+
+# -- pyrender ----------------------------------------------------------------------------------------------------------
+
+
+def test_pyrender_node_rotation_is_xyzw_and_camera_poses_are_camera_to_world() -> None:
+    pyrender = pytest.importorskip("pyrender")
+    order = _stated("pyrender.Node", "Node(mesh=m, rotation=q)", "rotation")
+    assert order == SCALAR_LAST
+    assert np.allclose(pyrender.Node(rotation=np.array(_quarter_turn(order))).matrix[:3, :3], QUARTER_TURN_Z)
+    assert _stated("pyrender.Node", "Node(camera=c, matrix=pose)", "matrix", "frames") == ("world", "camera")
+    camera = pyrender.IntrinsicsCamera(fx=100.0, fy=100.0, cx=50.0, cy=40.0)
+    pose = np.eye(4)
+    pose[:3, :3] = QUARTER_TURN_Z
+    pose[:3, 3] = [1.0, 2.0, 3.0]
+    scene = pyrender.Scene()
+    node = scene.add(camera, pose=pose)
+    assert np.allclose(scene.get_pose(node), pose)
+    # what the renderer does (renderer.py, _get_camera_matrices): V = inv(pose) takes the world into the camera
+    world_to_camera = np.linalg.inv(scene.get_pose(node))
+    centre_in_camera = world_to_camera @ np.array([1.0, 2.0, 3.0, 1.0])
+    assert np.allclose(centre_in_camera[:3], 0.0)  # the pose's translation is the camera centre
+
+
+def test_pyrender_cameras_look_down_minus_z_with_y_up_and_yfov_in_radians() -> None:
+    pyrender = pytest.importorskip("pyrender")
+    assert _stated("pyrender.Node", "Node(camera=c, matrix=pose)", "matrix", "camera_axes") == "opengl"
+    width, height = 100, 80
+    camera = pyrender.IntrinsicsCamera(fx=100.0, fy=100.0, cx=50.0, cy=40.0)
+    projection = camera.get_projection_matrix(width, height)
+    clip = projection @ np.array([0.1, 0.1, -2.0, 1.0])  # right of, above and in front of (-z) the camera
+    assert clip[3] > 0 and clip[0] / clip[3] > 0 and clip[1] / clip[3] > 0
+    assert (projection @ np.array([0.0, 0.0, 2.0, 1.0]))[3] < 0  # +z is behind it
+    # the intrinsics are OpenCV's: the row of a point is cy + fy * y / z with y down, z forward
+    y_down, z_forward = 0.2, 2.0
+    clip = projection @ np.array([0.0, -y_down, -z_forward, 1.0])
+    row_from_top = (1.0 - clip[1] / clip[3]) / 2.0 * height
+    assert math.isclose(row_from_top, 40.0 + 100.0 * y_down / z_forward, rel_tol=1e-9)
+    assert _stated("pyrender.PerspectiveCamera", "PerspectiveCamera(yfov=a)", "yfov", "angle_unit") == RADIANS
+    assert math.isclose(pyrender.PerspectiveCamera(yfov=math.pi / 2).get_projection_matrix(100, 100)[1, 1], 1.0)
 
 
 # -- Argoverse ---------------------------------------------------------------------------------------------------------

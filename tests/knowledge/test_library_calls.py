@@ -257,3 +257,49 @@ def test_poses_between_named_frames_come_from_the_stubs() -> None:
     assert poses("self.volume.integrate(rgbd, K, w2c)") == [("w2c", "extrinsic", ("camera", "world"))]
     assert poses("o3d.geometry.LineSet.create_camera_visualization(640, 480, K, E1)") == [("E1", "extrinsic", ("camera", "world"))]
     assert poses("o3d.geometry.LineSet.create_camera_visualization(intrinsic, E2, 0.1)") == [("E2", "extrinsic", ("camera", "world"))]
+
+
+def test_the_class_of_an_argument_tells_overloads_apart() -> None:
+    """pyrender's `Scene.add(obj, pose=...)`: a camera's pose where `obj` is known to be a pyrender camera, else none."""
+    from geolint.factbase.library_calls import library_call, stated_camera_axes
+
+    facts, calls = _calls(
+        """
+        import pyrender
+
+        def f(scene, mesh, pose, K, obj):
+            camera = pyrender.IntrinsicsCamera(fx=K[0, 0], fy=K[1, 1], cx=K[0, 2], cy=K[1, 2])
+            scene.add(camera, pose=pose)
+            scene.add(obj, pose=pose)
+            scene.add(pyrender.Node(camera=camera, matrix=pose))
+        """
+    )
+    known = calls["scene.add(camera, pose=pose)"]
+    assert [bound.signature.parameters[0].geometry.type_name for bound in library_call(facts, known)] == [  # type: ignore[union-attr]
+        "pyrender.camera.IntrinsicsCamera"
+    ]
+    assert [(name, frames) for _, name, frames in stated_poses(facts, known)] == [("pose", ("world", "camera"))]
+    assert [(name, geometry.camera_axes) for _, name, geometry in stated_camera_axes(facts, known)] == [("pose", "opengl")]
+    unknown = calls["scene.add(obj, pose=pose)"]
+    assert len(library_call(facts, unknown)) == 4  # every overload open: they disagree on the pose
+    assert stated_poses(facts, unknown) == []
+    # an argument of another known class: the overloads that leave the parameter untyped
+    node = calls["scene.add(pyrender.Node(camera=camera, matrix=pose))"]
+    assert [bound.signature.parameters[0].geometry for bound in library_call(facts, node)] == [None]
+
+
+def test_a_camera_added_under_a_parent_is_posed_relative_to_it() -> None:
+    from geolint.factbase.library_calls import library_call
+
+    facts, calls = _calls(
+        """
+        import pyrender
+
+        def f(scene, pose, node):
+            camera = pyrender.PerspectiveCamera(yfov=1.0)
+            scene.add(camera, pose=pose, parent_node=node)
+        """
+    )
+    call = calls["scene.add(camera, pose=pose, parent_node=node)"]
+    assert len(library_call(facts, call)) == 1
+    assert stated_poses(facts, call) == []

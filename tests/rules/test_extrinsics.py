@@ -24,9 +24,12 @@ from geolint.factbase.extrinsics import (
     TRANSLATION,
     W2C,
     ExtrinsicsEvidence,
+    camera_pose_attributes,
+    frames_direction,
     name_extrinsic,
 )
-from geolint.lint_types import Config
+from geolint.knowledge import knowledge_base
+from geolint.lint_types import Config, NamingConventions
 
 
 def returned(code: str) -> tuple[str, str, str] | None:
@@ -127,6 +130,77 @@ def test_t_a_b_names_count_only_in_a_settled_order() -> None:
     assert name_extrinsic(dst_first, "H_camZ_V").direction == W2C  # maps V into camera Z
     src_first = facts_of("T_obj_world = RigidTransform(R, t, from_frame='obj', to_frame='world')\n")
     assert name_extrinsic(src_first, "T_cam_world").direction == C2W  # autolab_core: cam -> world
+
+
+def test_a_t_a_b_name_is_explicit_only_where_the_project_states_its_order() -> None:
+    source = "x = 1\n"
+    tree = ast.parse(source)
+    stated = facts_for_module(tree, source, "<test>", Config(naming=NamingConventions(order="dst-first")))
+    found = name_extrinsic(stated, "T_world_cam")
+    assert found is not None and (found.direction, found.explicit) == (C2W, True)
+    assert found.inverted("inverse").explicit  # carried through what follows the value
+    # settled by the module's own products, not stated: a reading, never evidence against a stub
+    chained = "T_cam_obj = T_cam_world @ T_world_obj\n"
+    learned = facts_for_module(ast.parse(chained), chained, "<test>", Config())
+    found = name_extrinsic(learned, "T_world_cam")
+    assert found is not None and found.direction == C2W and not found.explicit
+
+
+@pytest.mark.parametrize(
+    ("frames", "expected"),
+    [
+        (("camera", "world"), W2C),
+        (("world", "camera"), C2W),
+        (("camera", "egovehicle"), W2C),  # av2's extrinsics: ego to camera
+        (("vehicle", "camera"), C2W),  # Waymo's calibration: camera to vehicle
+        (("world", "object"), None),  # Blender's Object.matrix_world: no camera
+        (("camera", "camera"), None),
+        (("camera",), None),
+    ],
+)
+def test_the_direction_of_stub_frames(frames: tuple[str, ...], expected: str | None) -> None:
+    assert frames_direction(frames) == expected
+
+
+def returned_extrinsic(code: str) -> tuple[str, str, str | None] | None:
+    """(direction, part, camera axes) of the value the last `return` of `code` returns."""
+    source = textwrap.dedent(code)
+    tree = ast.parse(source)
+    found = ExtrinsicsEvidence(facts_for_module(tree, source, "<test>", Config())).of(
+        [node for node in ast.walk(tree) if isinstance(node, ast.Return)][-1].value
+    )
+    return None if found is None else (found.direction, found.part, found.axes.convention if found.axes else None)
+
+
+@pytest.mark.parametrize(
+    ("code", "expected"),
+    [
+        # Blender: the scene's camera object is camera-to-world in OpenGL axes (stubs/bpy)
+        ("import bpy\ndef f():\n    return bpy.context.scene.camera.matrix_world\n", (C2W, POSE, OPENGL)),
+        ("import bpy\nimport numpy as np\ndef f():\n    cam = bpy.context.scene.camera\n    return np.linalg.inv(np.array(cam.matrix_world))\n", (W2C, POSE, OPENGL)),
+        # av2: a camera's extrinsics map the ego vehicle into the camera, in OpenCV axes (stubs/av2)
+        (
+            "from av2.geometry.camera.pinhole_camera import PinholeCamera\ndef f(ego_SE3_cam, K):\n"
+            "    camera = PinholeCamera(ego_SE3_cam, K, 'ring_front_center')\n    return camera.extrinsics[:3, :3]\n",
+            (W2C, ROTATION, OPENCV),
+        ),
+        # Waymo: a camera's calibration extrinsic maps the camera into the vehicle; no camera axes stated
+        (
+            "import numpy as np\nfrom waymo_open_dataset import dataset_pb2\ndef f(calibration: dataset_pb2.CameraCalibration):\n"
+            "    return np.array(calibration.extrinsic.transform).reshape(4, 4)\n",
+            (C2W, POSE, None),
+        ),
+    ],
+)
+def test_library_attributes_state_what_their_stubs_say(code: str, expected: tuple[str, str, str | None]) -> None:
+    assert returned_extrinsic(code) == expected
+
+
+def test_a_stub_attribute_without_a_camera_states_nothing() -> None:
+    # Blender's Object.matrix_world maps any object into the world: no camera in its frames
+    assert returned_extrinsic("import bpy\ndef f(name):\n    return bpy.data.objects[name].matrix_world\n") is None
+    names = camera_pose_attributes(knowledge_base())
+    assert {"matrix_world", "extrinsics", "transform"} <= names
 
 
 BOP_PROJECT = '''

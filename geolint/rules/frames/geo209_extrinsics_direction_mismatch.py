@@ -9,22 +9,22 @@ from ast import AnnAssign, Assign, AsyncFunctionDef, Attribute, Call, FunctionDe
 
 from geolint.factbase import library_calls
 from geolint.factbase.extrinsics import (
-    C2W,
     DATA,
+    CameraPoseText,
     POSE,
     Extrinsic,
     ExtrinsicsEvidence,
     W2C,
     camera_frame_cloud,
+    frames_direction,
     key_extrinsic,
     mentions,
     name_extrinsic,
-    pyrender_camera_pose,
     DIRECTION_WORDS,
     is_blank_matrix,
 )
 from geolint.factbase.model import FactBase, string, walk_within
-from geolint.rules.fact_rule import FactRule
+from geolint.rules.fact_rule import STATED, FactRule
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.vocabulary import is_word_character
 from geolint.rules.base import Invalid, Valid
@@ -61,8 +61,9 @@ class _OrbSlamPoseName:
 TRIGGER: Final = AllOf(
     AnyOf(
         r"w2c|c2w|2world|world2|_to_world|world_to_|cam_from_world|qvec|tvec|transform_matrix|projection_center|"
-        r"create_from_(?:rgbd|depth)_image|TSDFVolume|create_camera_visualization|pyrender|_from_world|world_from_cam",
+        r"create_from_(?:rgbd|depth)_image|_from_world|world_from_cam",
         _OrbSlamPoseName(),
+        CameraPoseText(),
     )
 )
 
@@ -78,10 +79,14 @@ class ExtrinsicsDirectionMismatch(FactRule):
       transforms.json `"transform_matrix"` (camera to world), `meta["c2w"]`, `meta["w2c"]`;
     - library attributes: pycolmap `image.cam_from_world` and COLMAP `image.qvec` / `image.tvec` /
       `image.qvec2rotmat()` (world to camera), pycolmap `image.projection_center()` (the camera
-      centre, i.e. the camera-to-world translation);
+      centre, i.e. the camera-to-world translation), and every library attribute whose stub types it
+      a pose between a camera and another frame (Blender's `scene.camera.matrix_world`, camera to
+      world; av2's `PinholeCamera.extrinsics`, ego to camera; Waymo's calibration `extrinsic`);
     - names that say their direction in the word: `c2w`, `pose_w2c`, `R_c2w`, `world_to_camera`,
       `cam_from_world`, ORB-SLAM's `Tcw` / `Twc`; a `T_a_b` name with one camera frame only where
-      the project's naming order is known.
+      the project's naming order is known, and as evidence against a library parameter or another
+      name only where the project states it (`naming = "dst-first"`, or its declarations in one
+      order).
 
     Values are followed through local data flow (a name rebound to its own inverse holds the
     inverse from there on), `np.linalg.inv` / `.inverse()`, rotation transposes, `[R | t]`
@@ -92,12 +97,15 @@ class ExtrinsicsDirectionMismatch(FactRule):
     shape: world-to-camera data inverted by hand into a camera-from-world target); a value stored
     under a name, attribute or key (`frame["transform_matrix"] = ...`, `{"cam_R_w2c": ...}`) of the
     other direction; an argument passed to a parameter or keyword of the other direction
-    (`render(c2w=w2c)`); a camera-to-world pose given as an Open3D extrinsic, which is world to
-    camera (TSDF `volume.integrate(rgbd, intrinsic, extrinsic)`, `create_from_rgbd_image` /
-    `create_from_depth_image`'s `extrinsic`, `create_camera_visualization`); and an Open3D cloud in
+    (`render(c2w=w2c)`); an argument of a library parameter whose stub types it a pose between a
+    camera and another frame, in either direction: a camera-to-world pose given as an Open3D
+    extrinsic, which is world to camera (TSDF `volume.integrate(rgbd, intrinsic, extrinsic)`,
+    `create_from_rgbd_image` / `create_from_depth_image`'s `extrinsic`, `create_camera_visualization`),
+    a world-to-camera one given to nerfstudio's `auto_orient_and_center_poses(poses)`; and an Open3D cloud in
     the camera frame (made by those two without an extrinsic) moved by a world-to-camera matrix,
-    which only a camera-to-world one can take to the world; a world-to-camera pose given to a
-    pyrender camera node (`scene.add(camera, pose=...)`, whose pose maps the camera into the scene).
+    which only a camera-to-world one can take to the world. pyrender's camera nodes are such library
+    parameters: `scene.add(camera, pose=...)` where `camera` is made by a pyrender camera class, and
+    `Node(camera=..., matrix=...)`, whose pose maps the camera into the scene (stubs/pyrender).
 
     ## Why is this bad?
     A world-to-camera pose and its camera-to-world inverse are both 4x4 rigid transforms with
@@ -140,7 +148,14 @@ class ExtrinsicsDirectionMismatch(FactRule):
     swaps two poses on purpose (`invert_pose`) is still reported.
     Only conventions stated in the code are used: a pose loaded from a file without a telling key
     (`np.loadtxt(pose_path)`) has no direction. A `T_a_b` target is read in the project's naming
-    order and is skipped where the project does not settle it. Plain name-to-name assignments
+    order and is skipped where the project does not settle it; a `T_a_b` value (`T_world_cam` given
+    as an Open3D extrinsic) counts only where the order is stated, so a project that only follows
+    one order without saying so is not checked there. A library attribute counts only where its
+    owner's class is known (made by the library's constructor, annotated, or held by another known
+    attribute): a pycolmap `Image` looked up in `reconstruction.images` is read by the attribute
+    names of COLMAP and pycolmap instead (`cam_from_world`, `qvec`, `tvec`), on any object.
+    A pyrender camera added to a scene counts only where its class is known (`camera =
+    pyrender.IntrinsicsCamera(...)` in the same function): a camera passed in says nothing. Plain name-to-name assignments
     (`c2w = w2c`) are GEO203's; this rule takes what GEO203 cannot see (blocks, keys, arguments,
     library data, Open3D clouds). A "world" that is another camera (a stereo pair's left camera)
     still reads as a world here.
@@ -177,6 +192,35 @@ class ExtrinsicsDirectionMismatch(FactRule):
             "import numpy as np\ndef f(info):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
             "    H_cam_world = np.eye(4)\n    H_cam_world[:3, :3] = R.T\n    return H_cam_world\n"
         ),
+        # a camera-to-world parameter of a stub given a camera-to-world pose
+        Valid(
+            "from nerfstudio.cameras.camera_utils import auto_orient_and_center_poses\ndef f(image):\n"
+            "    return auto_orient_and_center_poses(image.cam_from_world.inverse().matrix())\n"
+        ),
+        # Blender's camera matrix_world inverted before it is an Open3D extrinsic
+        Valid(
+            "import bpy\nimport numpy as np\nimport open3d as o3d\ndef f(depth, K):\n"
+            "    w2c = np.linalg.inv(np.array(bpy.context.scene.camera.matrix_world))\n"
+            "    return o3d.geometry.PointCloud.create_from_depth_image(depth, K, w2c)\n"
+        ),
+        # a `T_a_b` name in a project that states its naming order, read in it
+        Valid(
+            "import open3d as o3d\ndef f(depth, K, T_cam_world):\n"
+            "    return o3d.geometry.PointCloud.create_from_depth_image(depth, K, T_cam_world)\n",
+            options=STATED,
+        ),
+        # ... and where nothing states the order, no claim
+        Valid(
+            "import open3d as o3d\ndef f(depth, K, T_world_cam):\n"
+            "    return o3d.geometry.PointCloud.create_from_depth_image(depth, K, T_world_cam)\n"
+        ),
+        # a pyrender camera node given the inverse of a world-to-camera pose; a mesh's pose states no camera
+        Valid(
+            "import numpy as np\nimport pyrender\ndef f(scene, image, mesh, K):\n"
+            "    camera = pyrender.IntrinsicsCamera(fx=K[0, 0], fy=K[1, 1], cx=K[0, 2], cy=K[1, 2])\n"
+            "    scene.add(camera, pose=np.linalg.inv(image.cam_from_world.matrix()))\n"
+            "    scene.add(pyrender.Mesh.from_trimesh(mesh), pose=image.cam_from_world.matrix())\n"
+        ),
     ]
     INVALID = [
         Invalid(
@@ -204,6 +248,46 @@ class ExtrinsicsDirectionMismatch(FactRule):
             "import numpy as np\ndef f(info, H_world_obj):\n    R = np.array(info['cam_R_w2c']).reshape(3, 3)\n"
             "    t = np.array(info['cam_t_w2c'])\n    H_cam_world = np.eye(4)\n    H_cam_world[:3, :3] = R.T\n"
             "    H_cam_world[:3, 3] = -R.T @ t\n    return H_cam_world @ H_world_obj\n"
+        ),
+        # a stub parameter typed camera-to-world (nerfstudio's poses) given a world-to-camera pose
+        Invalid(
+            "from nerfstudio.cameras.camera_utils import auto_orient_and_center_poses\ndef f(image):\n"
+            "    return auto_orient_and_center_poses(image.cam_from_world.matrix())\n",
+            message="the `poses` of `camera_utils.auto_orient_and_center_poses` expects a camera-to-world pose (`poses` of "
+            "`camera_utils.auto_orient_and_center_poses` maps camera into world (its stub)), but "
+            "`image.cam_from_world.matrix()` is a world-to-camera pose (`.cam_from_world` (pycolmap Image.cam_from_world: "
+            "world-to-camera)): an inverse is missing or one too many",
+            range=(3, 41, 3, 70),
+        ),
+        # a library attribute its stub types camera-to-world (Blender's camera) given as an Open3D extrinsic
+        Invalid(
+            "import bpy\nimport numpy as np\nimport open3d as o3d\ndef f(depth, K):\n"
+            "    c2w = np.array(bpy.context.scene.camera.matrix_world)\n"
+            "    return o3d.geometry.PointCloud.create_from_depth_image(depth, K, c2w)\n",
+            message="the `extrinsic` of `PointCloud.create_from_depth_image` expects a world-to-camera pose (`extrinsic` of "
+            "`PointCloud.create_from_depth_image` maps world into camera (its stub)), but `c2w` is a camera-to-world pose "
+            "(`.matrix_world` (bpy stub: camera-to-world)): an inverse is missing or one too many",
+            range=(6, 70, 6, 73),
+        ),
+        # a `T_a_b` name read in the naming order the project states (`naming = "dst-first"`)
+        Invalid(
+            "import open3d as o3d\ndef f(depth, K, T_world_cam):\n"
+            "    return o3d.geometry.PointCloud.create_from_depth_image(depth, K, T_world_cam)\n",
+            options=STATED,
+            message="the `extrinsic` of `PointCloud.create_from_depth_image` expects a world-to-camera pose (`extrinsic` of "
+            "`PointCloud.create_from_depth_image` maps world into camera (its stub)), but `T_world_cam` is a camera-to-world "
+            "pose (name `T_world_cam` (dst-first)): an inverse is missing or one too many",
+            range=(3, 70, 3, 81),
+        ),
+        # a pyrender camera's pose maps the camera into the scene (stubs/pyrender)
+        Invalid(
+            "import pyrender\ndef f(scene, image, K):\n"
+            "    camera = pyrender.IntrinsicsCamera(fx=K[0, 0], fy=K[1, 1], cx=K[0, 2], cy=K[1, 2])\n"
+            "    scene.add(camera, pose=image.cam_from_world.matrix())\n",
+            message="the `pose` of `Scene.add` expects a camera-to-world pose (`pose` of `Scene.add` maps camera into world "
+            "(its stub)), but `image.cam_from_world.matrix()` is a world-to-camera pose (`.cam_from_world` (pycolmap "
+            "Image.cam_from_world: world-to-camera)): an inverse is missing or one too many",
+            range=(4, 28, 4, 57),
         ),
     ]
 
@@ -283,15 +367,13 @@ class ExtrinsicsDirectionMismatch(FactRule):
                 if stated is not None and not _only_reshaped(defining, function, parameter.arg):
                     self._compare(argument, stated, f"parameter `{parameter.arg}` of `{function.name}`", names_both_sides=True)
         for argument, read_as, frames in library_calls.stated_poses(self.facts, call):  # the knowledge base (stubs/)
-            if frames == ("camera", "world"):
+            direction = frames_direction(frames)
+            if direction is not None:
                 called = library_calls.called_api(self.facts, call)
                 owner = ".".join(called.qualified_name.split(".")[-2:]) if called is not None else read_as
-                stated = Extrinsic(W2C, POSE, (f"`{read_as}` of `{owner}` maps world into camera (its stub)",))
+                maps = "world into camera" if direction == W2C else "camera into world"
+                stated = Extrinsic(direction, POSE, (f"`{read_as}` of `{owner}` maps {maps} (its stub)",))
                 self._compare(argument, stated, f"the `{read_as}` of `{owner}`", names_both_sides=True)
-        camera_pose = pyrender_camera_pose(self.evidence, call)
-        if camera_pose is not None:
-            stated = Extrinsic(C2W, POSE, ("pyrender: a node's pose maps it into the scene",))
-            self._compare(camera_pose, stated, "the pose of a pyrender camera node", names_both_sides=True)
         func = call.func
         if isinstance(func, Attribute) and func.attr == "transform" and len(call.args) == 1 and not call.keywords:
             why = camera_frame_cloud(self.evidence, func.value, call)

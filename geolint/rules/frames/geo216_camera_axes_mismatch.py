@@ -19,8 +19,10 @@ from geolint.factbase.extrinsics import (
     ROTATION,
     W2C,
     Axes,
+    CameraPoseText,
     Extrinsic,
     ExtrinsicsEvidence,
+    frames_direction,
     key_extrinsic,
     mentions,
     name_extrinsic,
@@ -29,11 +31,14 @@ from geolint.factbase.model import string
 from geolint.knowledge import Geometry
 from geolint.rules.base import Invalid, Valid
 from geolint.rules.fact_rule import FactRule
-from geolint.rules.triggers import AllOf
+from geolint.rules.triggers import AllOf, AnyOf
 
 TRIGGER: Final = AllOf(
-    r"transform_matrix|qvec|tvec|cam_from_world|cam_R_w2c|projection_center|"
-    r"opencv|opengl|OpenCV|OpenGL|blender|colmap|pytorch3d|p3d|_gl|_cv|gl_|cv_"
+    AnyOf(
+        r"transform_matrix|qvec|tvec|cam_from_world|cam_R_w2c|projection_center|"
+        r"opencv|opengl|OpenCV|OpenGL|blender|colmap|pytorch3d|p3d|_gl|_cv|gl_|cv_",
+        CameraPoseText(),
+    )
 )
 
 # The camera axes (0 x, 1 y, 2 z) that point the other way between two conventions.
@@ -61,9 +66,10 @@ class CameraAxesMismatch(FactRule):
     ## What it does
     Follows camera poses whose camera axes the data states and flags where one meets a place that
     states other axes. OpenCV axes (x right, y down, z forward) are those of COLMAP (`image.qvec`,
-    `image.tvec`, `image.qvec2rotmat()`, pycolmap's `image.cam_from_world`), BOP (`"cam_R_w2c"`) and
-    the extrinsics Open3D takes; OpenGL axes (x right, y up, z back) those of NeRF transforms.json's
-    `"transform_matrix"` and nerfstudio's camera poses; a name that says its direction may say its
+    `image.tvec`, `image.qvec2rotmat()`, pycolmap's `image.cam_from_world`), BOP (`"cam_R_w2c"`), the
+    extrinsics Open3D takes and av2's `PinholeCamera.extrinsics`; OpenGL axes (x right, y up, z back)
+    those of NeRF transforms.json's `"transform_matrix"`, nerfstudio's camera poses, pyrender's camera
+    nodes (`scene.add(camera, pose=...)`) and Blender's `scene.camera.matrix_world` (any library attribute or parameter whose stub states `CameraAxes`); a name that says its direction may say its
     axes too (`c2w_opengl`, `w2c_cv`, `pose_c2w_p3d`). Pixel ray directions state the axes they are
     built in by their signs: `[(u - cx) / fx, (v - cy) / fy, 1]` OpenCV, `[(u - cx) / fx, -(v - cy) / fy,
     -1]` OpenGL, `[-(u - cx) / fx, -(v - cy) / fy, 1]` PyTorch3D. Values are followed as GEO209 follows
@@ -116,7 +122,9 @@ class CameraAxesMismatch(FactRule):
     read where they are built; rays built by one helper (`get_ray_directions(H, W, focal)`) and
     rotated by another (`get_rays(directions, c2w)`) are not followed yet.
     A project that stores OpenCV poses under `"transform_matrix"` on purpose, read only by its own
-    code, is reported; say so with `# noqa: GEO216` on the store.
+    code, is reported; say so with `# noqa: GEO216` on the store. A library attribute states its axes
+    only where its owner's class is known (made by its constructor, annotated, or held by another
+    known attribute, as `bpy.context.scene.camera`).
     """
 
     code = "GEO216"
@@ -154,6 +162,13 @@ class CameraAxesMismatch(FactRule):
             "    return np.sum(dirs[..., None, :] * c2w[:3, :3], -1)\n"
             "def f(image, i, j, K):\n    c2w = np.linalg.inv(image.cam_from_world.matrix())\n    c2w[:3, 1:3] *= -1\n"
             "    return get_rays(i, j, K, c2w)\n"
+        ),
+        # a library attribute in OpenCV axes (av2's camera extrinsics), converted before a stub that takes OpenGL axes
+        Valid(
+            "import numpy as np\nfrom av2.geometry.camera.pinhole_camera import PinholeCamera\n"
+            "from nerfstudio.cameras.camera_utils import auto_orient_and_center_poses\n"
+            "def f(ego_SE3_cam, intrinsics):\n    camera = PinholeCamera(ego_SE3_cam, intrinsics, 'ring_front_center')\n"
+            "    c2w = np.linalg.inv(camera.extrinsics) @ np.diag([1, -1, -1, 1])\n    return auto_orient_and_center_poses(c2w)\n"
         ),
     ]
     INVALID = [
@@ -202,6 +217,24 @@ class CameraAxesMismatch(FactRule):
             "def f(image, i, j, K):\n    c2w = np.linalg.inv(image.cam_from_world.matrix())\n"
             "    return get_rays(i, j, K, c2w)\n",
             range=(7, 30, 7, 33),
+        ),
+        # the same, unconverted: av2's extrinsics are in OpenCV axes by its stub, nerfstudio's poses in OpenGL's
+        Invalid(
+            "import numpy as np\nfrom av2.geometry.camera.pinhole_camera import PinholeCamera\n"
+            "from nerfstudio.cameras.camera_utils import auto_orient_and_center_poses\n"
+            "def f(ego_SE3_cam, intrinsics):\n    camera = PinholeCamera(ego_SE3_cam, intrinsics, 'ring_front_center')\n"
+            "    c2w = np.linalg.inv(camera.extrinsics)\n    return auto_orient_and_center_poses(c2w)\n",
+            message="`c2w` is a camera-to-world pose in OpenCV axes (x right, y down, z forward) (`.extrinsics` (av2 stub)), "
+            "but the `poses` of `camera_utils.auto_orient_and_center_poses` expects OpenGL axes (x right, y up, z back) "
+            "(its stub): its y and z axes point the other way; negate them first (`c2w[:3, 1:3] *= -1`)",
+            range=(7, 41, 7, 44),
+        ),
+        # Blender's camera (OpenGL axes by its stub) inverted into an Open3D extrinsic (OpenCV axes)
+        Invalid(
+            "import bpy\nimport numpy as np\nimport open3d as o3d\ndef f(rgbd, K, volume):\n"
+            "    w2c = np.linalg.inv(np.array(bpy.context.scene.camera.matrix_world))\n"
+            "    fused = o3d.pipelines.integration.ScalableTSDFVolume(voxel_length=0.01, sdf_trunc=0.04)\n"
+            "    fused.integrate(rgbd, K, w2c)\n"
         ),
     ]
 
@@ -313,11 +346,7 @@ def _expected_by_stub(geometry: Geometry, source: str) -> _Expected | None:
     part = POSE if geometry.kind is Kind.TRANSFORM else ROTATION if geometry.kind is Kind.ROTATION else None
     if part is None or geometry.camera_axes is None:
         return None
-    frames = geometry.frames
-    direction = None
-    if len(frames) == 2 and set(frames) == {"camera", "world"}:
-        direction = W2C if frames[0] == "camera" else C2W
-    return _Expected(direction, part, Axes(geometry.camera_axes, source))
+    return _Expected(frames_direction(geometry.frames), part, Axes(geometry.camera_axes, source))
 
 
 def _pose_words(found: Extrinsic) -> str:
