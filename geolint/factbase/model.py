@@ -30,7 +30,7 @@ from typing import Callable, Final, Sequence, TypeVar
 
 from geolint import algebra
 from geolint.algebra import Kind
-from geolint.factbase import calls, frames, homogeneous_forms, kinds, library_calls, products, summaries, transform_blocks
+from geolint.factbase import calls, frames, homogeneous_forms, kinds, library_calls, pose_parts, products, summaries, transform_blocks
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.declarations import declared_call_frames
 from geolint.factbase.frames import EXTRINSICS_EVIDENCE
@@ -266,6 +266,11 @@ class FactBase:
     def matmul(self, node: AST) -> MatMul | None:
         """`a @ b`, `a.dot(b)`, `np.dot(a, b)`, `np.matmul(a, b)`, `torch.matmul/bmm(a, b)`."""
         return products.matmul(self, node)
+
+    def transposed(self, node: AST) -> ast.expr | None:
+        """For a swap of the last two axes (`x.T`, `x.mT`, `x.t()`, `x.transpose(-1, -2)`, `x.permute(1, 0)`,
+        `np.transpose(x)`, `torch.swapaxes(x, -2, -1)`, `tf.linalg.matrix_transpose(x)`), x; else None."""
+        return pose_parts.transpose_of(node) if isinstance(node, ast.expr) else None
 
     # -- kind --------------------------------------------------------------------------------
     def kind_of(self, node: AST) -> Kind | None:
