@@ -322,7 +322,7 @@ class FactBase:
         return transform_blocks.rotation_block_of(self, node)
 
     def translation_of(self, node: AST) -> ast.expr | None:
-        """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`), the matrix M; else None."""
+        """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`, `M[..., :3, 3:]`), the matrix M; else None."""
         return transform_blocks.translation_of(self, node)
 
     def is_translation_like(self, node: AST) -> bool:
