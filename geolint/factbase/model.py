@@ -30,7 +30,7 @@ from typing import Callable, Final, Sequence, TypeVar
 
 from geolint import algebra
 from geolint.algebra import Kind
-from geolint.factbase import calls, frames, homogeneous_forms, kinds, library_calls, products, summaries, transform_blocks
+from geolint.factbase import calls, frames, homogeneous_forms, kinds, library_calls, pose_parts, products, summaries, transform_blocks
 from geolint.factbase import vocabulary as vocab
 from geolint.factbase.declarations import declared_call_frames
 from geolint.factbase.frames import EXTRINSICS_EVIDENCE
@@ -267,6 +267,11 @@ class FactBase:
         """`a @ b`, `a.dot(b)`, `np.dot(a, b)`, `np.matmul(a, b)`, `torch.matmul/bmm(a, b)`."""
         return products.matmul(self, node)
 
+    def transposed(self, node: AST) -> ast.expr | None:
+        """For a swap of the last two axes (`x.T`, `x.mT`, `x.t()`, `x.transpose(-1, -2)`, `x.permute(1, 0)`,
+        `np.transpose(x)`, `torch.swapaxes(x, -2, -1)`, `tf.linalg.matrix_transpose(x)`), x; else None."""
+        return pose_parts.transpose_of(node) if isinstance(node, ast.expr) else None
+
     # -- kind --------------------------------------------------------------------------------
     def kind_of(self, node: AST) -> Kind | None:
         """The geometric kind of an expression, or None."""
@@ -321,7 +326,7 @@ class FactBase:
         return transform_blocks.rotation_block_of(self, node)
 
     def translation_of(self, node: AST) -> ast.expr | None:
-        """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`), the matrix M; else None."""
+        """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`, `M[..., :3, 3:]`), the matrix M; else None."""
         return transform_blocks.translation_of(self, node)
 
     def is_translation_like(self, node: AST) -> bool:

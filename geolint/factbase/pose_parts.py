@@ -11,7 +11,7 @@ function (no names needed):
 - `matrix_shape` / `square_shape`: whether an array is known to be a 3x3 rotation or a 4x4 pose
   (or a stack of them) from what made it;
 - the expression shapes beneath them: `matrix_indices` (`[batch..., row, column]`),
-  `transposed_operand`, `matmul_operands`, `peel_same_value`, `int_value`, `call_name`.
+  `transposed_operand` / `transpose_of`, `matmul_operands`, `peel_same_value`, `int_value`, `call_name`.
 
 A local name holds what the one definition reaching it gave it (`geolint.factbase.reaching`:
 the fact base's flow analysis, on the module's index); when several can reach it, nothing is known.
@@ -364,30 +364,43 @@ def _is_broadcast_index(node: Subscript) -> bool:
 def transposed_operand(node: ast.expr) -> ast.expr | None:
     """The matrix a transpose (or inverse) is taken of: `R.T`, `R.mT`, `R.t()`, `R.transpose(1, 2)`,
     `R.permute(0, 2, 1)`, `np.transpose(R)`, `torch.transpose(R, -1, -2)`, `np.linalg.inv(R)`."""
+    transposed = transpose_of(node)
+    if transposed is not None:
+        return transposed
+    if not isinstance(node, Call) or node.keywords:
+        return None
+    func = node.func
+    if isinstance(func, Attribute) and call_name(node) == "inverse" and not node.args:
+        return func.value
+    if _array_operation(func) == ArrayOperation.INVERSE and len(node.args) == 1:
+        return node.args[0]
+    return None
+
+
+def transpose_of(node: ast.expr) -> ast.expr | None:
+    """The matrix whose last two axes `node` swaps: `R.T`, `R.mT`, `R.t()`, `R.transpose()`,
+    `R.transpose(-1, -2)`, `R.swapaxes(-2, -1)`, `R.permute(0, 2, 1)`, and the functions the stubs
+    mark as transposes (`np.transpose(R)`, `torch.transpose(R, -1, -2)`, `tf.linalg.matrix_transpose(R)`).
+    Any other permutation (`image.transpose(2, 0, 1)`, `x.permute(2, 0, 1)`) is None."""
     if isinstance(node, Attribute) and node.attr in ("T", "mT"):
         return node.value
     if not isinstance(node, Call) or node.keywords:
         return None
     func = node.func
     name = call_name(node)
-    if isinstance(func, Attribute) and name in ("t", "transpose", "permute", "swapaxes", "inverse"):
+    if isinstance(func, Attribute) and name in ("t", "transpose", "permute", "swapaxes"):
         axes = [int_value(argument) for argument in node.args]
-        if name == "inverse" and not axes:
-            return func.value
         if name in ("t", "transpose") and not axes:
             return func.value
         if name in ("transpose", "swapaxes") and len(axes) == 2 and _swaps_last_two(axes):
             return func.value
         if name == "permute" and len(axes) >= 2 and _permutes_last_two(axes):
             return func.value
-    operation = _array_operation(func)
-    if operation == ArrayOperation.TRANSPOSE and node.args and not isinstance(node.args[0], Starred):
+    if _array_operation(func) == ArrayOperation.TRANSPOSE and node.args and not isinstance(node.args[0], Starred):
         # np.transpose(R) / torch.transpose(R, 1, 2) called through an array namespace
         rest = [int_value(argument) for argument in node.args[1:]]
         if not rest or _swaps_last_two(rest):
             return node.args[0]
-    if operation == ArrayOperation.INVERSE and len(node.args) == 1:
-        return node.args[0]
     return None
 
 

@@ -7,7 +7,7 @@ import ast
 from ast import AST, Attribute, Constant, Name, Subscript
 from typing import TYPE_CHECKING
 
-from geolint.factbase.syntax import is_full_slice, is_index, is_slice_upto, last_name, subscript_parts
+from geolint.factbase.syntax import is_full_slice, is_index, is_slice_upto, last_name, number, subscript_parts
 
 if TYPE_CHECKING:
     from geolint.factbase.model import FactBase
@@ -23,12 +23,21 @@ def rotation_block_of(facts: FactBase, node: AST) -> ast.expr | None:
 
 
 def translation_of(facts: FactBase, node: AST) -> ast.expr | None:
-    """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`), the matrix M; else None."""
+    """For `M[:3, 3]` (or `M[:3, -1]`, `M[0:3, 3]`, `M[..., :3, 3]`, `M[:, :3, 3]`, `M[..., :3, 3:]`), the
+    matrix M; else None."""
     if isinstance(node, Subscript):
         parts = _drop_batch(subscript_parts(node))
-        if len(parts) == 2 and is_slice_upto(parts[0], 3) and is_index(parts[1], 3, -1):
+        if len(parts) == 2 and is_slice_upto(parts[0], 3) and (is_index(parts[1], 3, -1) or _is_last_column(parts[1])):
             return node.value
     return None
+
+
+def _is_last_column(part: AST) -> bool:
+    """`3:`, `3:4`, `-1:`: the translation column kept as a column (`M[..., :3, 3:]`)."""
+    if not isinstance(part, ast.Slice) or part.step is not None or part.lower is None:
+        return False
+    lower, upper = number(part.lower), None if part.upper is None else number(part.upper)
+    return (lower == 3 and (part.upper is None or upper == 4)) or (lower == -1 and part.upper is None)
 
 
 def is_translation_like(facts: FactBase, node: AST) -> bool:

@@ -12,6 +12,7 @@ from functools import lru_cache
 from typing import Callable, Final, Iterable
 
 from geolint.knowledge import knowledge_base
+from geolint.knowledge.markers import ArrayOperation
 from geolint.semantic import names
 from geolint.semantic.names import NameFrames
 
@@ -270,8 +271,11 @@ def gate_matches(source: str) -> bool:
 def _knowledge_words() -> WordSet:
     """The names of the knowledge base's APIs (`getRotationMatrix2D`, `rpyToMatrix`...): a call to one
     is something the rules reason about (an API that states only the class it returns, `concatenate`, is
-    not: what a rule reads is called on its result). Built on first use, from stubs/."""
-    return WordSet(sorted({api.qualified_name.rpartition(".")[2] for api in knowledge_base().apis() if api.states_geometry}))
+    not: what a rule reads is called on its result), and of the functions the stubs mark as matrix products
+    (`torch.bmm`, `x.mm`), which the text tests above do not all catch. Built on first use, from stubs/."""
+    kb = knowledge_base()
+    geometric = {api.qualified_name.rpartition(".")[2] for api in kb.apis() if api.states_geometry}
+    return WordSet(sorted(geometric | kb.array_operation_names(ArrayOperation.MATMUL, ArrayOperation.EINSUM)))
 
 
 def _knowledge_call_named(source: str) -> bool:

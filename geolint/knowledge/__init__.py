@@ -191,6 +191,11 @@ class KnowledgeBase:
         api = self.api_as_written(dotted)
         return self._array_operations.get(api.qualified_name) if api is not None else None
 
+    def array_operation_names(self, *operations: str) -> frozenset[str]:
+        """The last names of the array functions doing one of `operations` (`matmul`, `mm`, `bmm`...): a
+        cheap first test on a call before its name is resolved."""
+        return frozenset(name.rpartition(".")[2] for name, operation in self._array_operations.items() if operation in operations)
+
     def is_array_namespace(self, dotted: str) -> bool:
         """Whether a module name as written (`np`, `torch`, `jnp`) is an array namespace's: a library with
         array operations in its stub."""

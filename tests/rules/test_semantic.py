@@ -308,6 +308,53 @@ def test_einsum_as_a_matrix_product(product: str, acting: tuple[str, str] | None
     assert (None if found is None else (ast.unparse(found.left), ast.unparse(found.right))) == acting
 
 
+@pytest.mark.parametrize(
+    ("product", "operands"),
+    [
+        ("torch.mm(R, x)", ("R", "x")), ("torch.linalg.matmul(R, x)", ("R", "x")), ("np.linalg.matmul(R, x)", ("R", "x")),
+        ("tf.linalg.matmul(R, x)", ("R", "x")), ("torch.bmm(R, x)", ("R", "x")), ("R.mm(x)", ("R", "x")), ("R.bmm(x)", ("R", "x")),
+        ("mm(R, x)", None),  # a project's function of that name: not an array namespace's
+        ("np.mm(R, x)", None),  # numpy has no `mm`
+        ("torch.add(R, x)", None),
+    ],
+)
+def test_a_product_in_any_spelling_the_stubs_state(product: str, operands: tuple[str, str] | None) -> None:
+    model, module = model_of(f"import numpy as np\nimport torch\nimport tensorflow as tf\n{product}\n")
+    found = model.matmul(last_value(module))
+    assert (None if found is None else (ast.unparse(found.left), ast.unparse(found.right))) == operands
+
+
+@pytest.mark.parametrize(
+    ("expression", "matrix"),
+    [("T[:3, 3]", "T"), ("T[:, :3, 3]", "T"), ("T[..., :3, 3:]", "T"), ("T[:3, 3:4]", "T"), ("T[:3, -1:]", "T"), ("T[:3, 2:]", None), ("T[:3, :3]", None)],
+)
+def test_the_translation_column_of_a_transform(expression: str, matrix: str | None) -> None:
+    model, module = model_of(f"{expression}\n")
+    found = model.translation_of(last_value(module))
+    assert (None if found is None else ast.unparse(found)) == matrix
+
+
+@pytest.mark.parametrize(
+    ("expression", "matrix"),
+    [
+        ("T.T", "T"), ("T.mT", "T"), ("T.t()", "T"), ("T.transpose()", "T"), ("T.transpose(-2, -1)", "T"),
+        ("T.transpose(0, 1)", "T"), ("T.swapaxes(-1, -2)", "T"), ("T.permute(1, 0)", "T"), ("T.permute(0, 2, 1)", "T"),
+        ("np.transpose(T)", "T"), ("np.swapaxes(T, -1, -2)", "T"), ("np.matrix_transpose(T)", "T"),
+        ("torch.transpose(T, -1, -2)", "T"), ("torch.swapaxes(T, -2, -1)", "T"), ("tf.linalg.matrix_transpose(T)", "T"),
+        ("image.transpose(2, 0, 1)", None),  # channels first: not a matrix transpose
+        ("x.permute(2, 0, 1)", None),
+        ("np.transpose(x, (2, 0, 1))", None),
+        ("torch.transpose(x, 0, 2)", None),
+        ("np.linalg.inv(T)", None),  # an inverse, not a transpose
+        ("T.inverse()", None),
+    ],
+)
+def test_a_transpose_in_any_spelling(expression: str, matrix: str | None) -> None:
+    model, module = model_of(f"import numpy as np\nimport torch\nimport tensorflow as tf\n{expression}\n")
+    found = model.transposed(last_value(module))
+    assert (None if found is None else ast.unparse(found)) == matrix
+
+
 def test_concatenation_along_the_first_axis_is_not_homogeneous() -> None:
     model, module = model_of("import numpy as np\nh = np.concatenate([x, np.ones((1, 3))], axis=0)\n")
     assert model.homogeneous(module.body[-1].value) is None  # type: ignore[attr-defined]

@@ -18,6 +18,7 @@ from geolint.factbase.model import (
     subscript_parts, transposed_value,
 )  # fmt: skip
 from geolint.factbase.kind_summaries import TRANSLATION, TranslationSummary
+from geolint.factbase.pose_parts import is_batch_index
 from geolint.rules.fact_rule import FactRule, with_keyword
 from geolint.semantic.names import kind_of_name
 
@@ -30,7 +31,10 @@ class DirectionTranslated(FactRule):
     w = 1 built from it (`np.append(normal, 1)`, `np.hstack([normals, np.ones((n, 1))])`,
     `F.pad(normals, (0, 1), value=1.0)`, a `np.ones(4)` buffer filled with it), a rotation
     followed by `+ t` (`R @ n + t`, `n @ R.T + t`, `T[:3, :3] @ n + T[:3, 3]`,
-    `np.einsum("ij,nj->ni", R, normals) + t`), or a library call that translates
+    `np.einsum("ij,nj->ni", R, normals) + t`, a batch rotated as columns: `(R @ normals[..., None])[..., 0]
+    + t`, `torch.bmm(R, n.unsqueeze(-1)).squeeze(-1) + t`, with the translation column `T[..., :3, 3]` or
+    `T[..., :3, 3:]`; the product in any spelling the stubs mark as one: `torch.mm`, `np.linalg.matmul`,
+    `tf.linalg.matmul`, and the array methods `.dot`, `.matmul`, `.mm`, `.bmm`), or a library call that translates
     (an argument its stub in `stubs/` types as points next to a transform, on a transform, or made
     homogeneous: `trimesh.transform_points(normals, T)` without `translate=False`, pytransform3d
     `vector_to_point(direction)`, PyTorch3D `t.transform_points(normals)`), Blender
@@ -73,7 +77,9 @@ class DirectionTranslated(FactRule):
     reached by no matrix and is not reported either (a subclass elsewhere calling it is missed).
     A public function's parameter may be given any matrix, so it is reported. A method called on an
     object of no library the stubs know (`pose.transform_points(normals)` on a project's own class)
-    is not reported.
+    is not reported. A rotated batch is read through a trailing axis of one added to the direction
+    (`n[..., None]`, `n.unsqueeze(-1)`, `np.expand_dims(n, -1)`) and dropped again (`[..., 0]`,
+    `.squeeze(-1)`); another reshape to columns (`n.reshape(-1, 3, 1)`, `n.view(*shape, 3, 1)`) is not read.
     """
 
     code = "GEO101"
@@ -113,6 +119,12 @@ class DirectionTranslated(FactRule):
         # the only matrix the w = 1 normals meet is a literal identity: nothing is translated
         Valid("import torch\nT = torch.eye(4)[:3, :4]\nn_h = torch.cat((normals, torch.ones_like(normals[..., :1])), -1) @ T.T\n"),
         Valid("import numpy as np\nnormals_h = np.hstack([normals, np.ones((len(normals), 1))])\nout = normals_h @ np.eye(4).T\n"),
+        Valid("import torch\nn_world = torch.mm(T[:3, :3], normals)\n"),
+        Valid("import tensorflow as tf\np_world = tf.linalg.matmul(R, points) + t\n"),
+        Valid("n_world = (T[..., :3, :3] @ normals[..., None])[..., 0]\n"),
+        Valid("import torch\nn_world = torch.bmm(T[:, :3, :3], normals.unsqueeze(-1)).squeeze(-1)\n"),
+        Valid("p_world = (T[..., :3, :3] @ points[..., None])[..., 0] + T[..., :3, 3]\n"),
+        Valid("x_shifted = (normals @ R.T)[..., 0] + t\n"),  # the x coordinate of each rotated row, not a rotated direction
     ]
     INVALID = [
         Invalid(
@@ -184,6 +196,25 @@ class DirectionTranslated(FactRule):
             "import pybullet as p\ndef to_body(pos, orn, lin_acc):\n    inv_pos, inv_orn = p.invertTransform(pos, orn)\n"
             "    return p.multiplyTransforms(inv_pos, inv_orn, lin_acc, [0, 0, 0, 1])[0]\n"
         ),
+        Invalid(
+            "import torch\nn_world = torch.mm(T[:3, :3], normals) + T[:3, 3:]\n",
+            expected_fix="import torch\nn_world = torch.mm(T[:3, :3], normals)\n",
+            message="direction `normals` is rotated and then translated by `T[:3, 3:]`; a direction only rotates",
+            range=(2, 11, 2, 51),
+        ),
+        Invalid("import tensorflow as tf\nn_world = tf.linalg.matmul(R, normals) + t\n"),
+        Invalid(
+            "n_world = (T[..., :3, :3] @ normals[..., None])[..., 0] + T[..., :3, 3]\n",
+            expected_fix="n_world = (T[..., :3, :3] @ normals[..., None])[..., 0]\n",
+            message="direction `normals` is rotated and then translated by `T[..., :3, 3]`; a direction only rotates",
+            range=(1, 11, 1, 72),
+        ),
+        Invalid(
+            "import torch\nn_world = torch.bmm(T[:, :3, :3], normals.unsqueeze(-1)).squeeze(-1) + T[:, :3, 3]\n",
+            expected_fix="import torch\nn_world = torch.bmm(T[:, :3, :3], normals.unsqueeze(-1)).squeeze(-1)\n",
+        ),
+        Invalid("n_world = (R @ normals[..., :, None])[..., :, 0] + t\n"),
+        Invalid("n_world = R @ normals[..., None] + T[..., :3, 3:]\n"),
     ]
 
     # homogeneous w = 1 -----------------------------------------------------------------
@@ -399,18 +430,26 @@ class DirectionTranslated(FactRule):
         return False
 
     def _rotated_direction(self, node: ast.expr) -> ast.expr | None:
-        """For `R @ n`, `n @ R.T`, `(R @ n.T).T` with n a direction, the direction n."""
+        """For `R @ n`, `n @ R.T`, `(R @ n.T).T` with n a direction, the direction n; also for a batch
+        rotated as columns: `(R @ n[..., None])[..., 0]`, `torch.bmm(R, n.unsqueeze(-1)).squeeze(-1)`."""
         facts = self.facts
+        dropped = _column_dropped(node)
+        if dropped is not None:
+            node = dropped
         inner = transposed_value(node)
         if inner is not None:
             node = inner
         product = facts.matmul(node)
         if product is None:
             return None
-        left, right = facts.kind_of(product.left), facts.kind_of(product.right)
-        if right in FREE and left not in GEOMETRIC:
-            return product.right
-        if left in FREE and right not in GEOMETRIC:
+        column = _column_added(product.right)
+        if dropped is not None and column is None:
+            return None  # `(n @ R.T)[..., 0]`: one coordinate of each rotated row, not the rotated direction
+        right = product.right if column is None else column
+        left, right_kind = facts.kind_of(product.left), facts.kind_of(right)
+        if right_kind in FREE and left not in GEOMETRIC:
+            return right
+        if column is None and left in FREE and right_kind not in GEOMETRIC:
             return product.left
         return None
 
@@ -462,6 +501,39 @@ class DirectionTranslated(FactRule):
             f"`{self.code_of(positional[2])}` is a direction; rotate it with a zero position "
             "(`multiplyTransforms([0, 0, 0], orn, v, [0, 0, 0, 1])`) or `rotateVector`",
         )
+
+
+def _column_added(node: ast.expr) -> ast.expr | None:
+    """For `x[..., None]`, `x[:, :, None]`, `x.unsqueeze(-1)`, `np.expand_dims(x, -1)` (a trailing axis
+    of one, so that a stack of matrices acts on x's rows as columns), x; else None."""
+    if isinstance(node, Subscript):
+        parts = subscript_parts(node)
+        last = parts[-1]
+        if len(parts) >= 2 and isinstance(last, ast.Constant) and last.value is None and all(is_batch_index(part) for part in parts[:-1]):
+            return node.value
+        return None
+    if isinstance(node, Call) and number(node.args[-1] if node.args else None) == -1 and not node.keywords:
+        if isinstance(node.func, Attribute) and node.func.attr == "unsqueeze" and len(node.args) == 1:
+            return node.func.value
+        if last_name(node.func) == "expand_dims" and len(node.args) == 2:
+            return node.args[0]
+    return None
+
+
+def _column_dropped(node: ast.expr) -> ast.expr | None:
+    """For `y[..., 0]`, `y[..., :, 0]`, `y[:, :, 0]`, `y.squeeze(-1)`, `np.squeeze(y, -1)` (the trailing axis
+    of one dropped again), y; else None."""
+    if isinstance(node, Subscript):
+        parts = subscript_parts(node)
+        if len(parts) >= 2 and number(parts[-1]) == 0 and all(is_batch_index(part) for part in parts[:-1]):
+            return node.value
+        return None
+    if isinstance(node, Call) and number(node.args[-1] if node.args else None) == -1 and not node.keywords:
+        if isinstance(node.func, Attribute) and node.func.attr == "squeeze" and len(node.args) == 1:
+            return node.func.value
+        if last_name(node.func) == "squeeze" and len(node.args) == 2:
+            return node.args[0]
+    return None
 
 
 def _untranslated_element(facts: FactBase, call: Call, position: int | None) -> bool:
