@@ -320,7 +320,12 @@ class CameraPoseText:
     one (`.matrix_world`, `.extrinsics`) or the name of a library whose calls take one (`open3d`,
     `pyrender`), from the knowledge base."""
 
-    pattern = r"\w+"  # a superset, for display: the names are the knowledge base's, read on first search
+    @property
+    def pattern(self) -> str:
+        """The same test as one regex (for display and for the prefilter's tests), read from the knowledge base."""
+        kb = knowledge_base()
+        words = [re.escape(package) for package in camera_pose_packages(kb)] + [re.escape(f".{name}") for name in camera_pose_attributes(kb)]
+        return "|".join(sorted(words))
 
     def search(self, source: str, /) -> bool:
         kb = knowledge_base()

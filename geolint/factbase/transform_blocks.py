@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import ast
-from ast import AST, Attribute, Constant, Name, Subscript
+from ast import AST, Attribute, Constant, Name, Slice, Subscript
 from typing import TYPE_CHECKING
 
 from geolint.factbase.syntax import is_full_slice, is_index, is_slice_upto, last_name, number, subscript_parts
@@ -34,7 +34,7 @@ def translation_of(facts: FactBase, node: AST) -> ast.expr | None:
 
 def _is_last_column(part: AST) -> bool:
     """`3:`, `3:4`, `-1:`: the translation column kept as a column (`M[..., :3, 3:]`)."""
-    if not isinstance(part, ast.Slice) or part.step is not None or part.lower is None:
+    if not isinstance(part, Slice) or part.step is not None or part.lower is None:
         return False
     lower, upper = number(part.lower), None if part.upper is None else number(part.upper)
     return (lower == 3 and (part.upper is None or upper == 4)) or (lower == -1 and part.upper is None)

@@ -39,7 +39,10 @@ class AnyOf:
 
     def __init__(self, *tests: str | TextTest) -> None:
         self.tests = tuple(_text_test(test) for test in tests)
-        self.pattern = "|".join(f"(?:{test.pattern})" for test in self.tests)
+
+    @property
+    def pattern(self) -> str:  # on demand: a test's pattern may be read from the knowledge base
+        return "|".join(f"(?:{test.pattern})" for test in self.tests)
 
     def search(self, source: str, /) -> bool:
         return any(test.search(source) for test in self.tests)
@@ -55,7 +58,8 @@ class _MatrixProductText:
 
 
 class TextTest(Protocol):
-    pattern: str
+    @property
+    def pattern(self) -> str: ...
 
     def search(self, source: str, /) -> object: ...
 

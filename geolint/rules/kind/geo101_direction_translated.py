@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import ast
 from ast import (
-    AST, Add, Assign, AsyncFunctionDef, Attribute, BinOp, Call, FunctionDef, Load, MatMult, Mult, Name, Slice,
+    AST, Add, Assign, AsyncFunctionDef, Attribute, BinOp, Call, Constant, FunctionDef, Load, MatMult, Mult, Name, Slice,
     Starred, Subscript,
 )
 
@@ -509,7 +509,7 @@ def _column_added(node: ast.expr) -> ast.expr | None:
     if isinstance(node, Subscript):
         parts = subscript_parts(node)
         last = parts[-1]
-        if len(parts) >= 2 and isinstance(last, ast.Constant) and last.value is None and all(is_batch_index(part) for part in parts[:-1]):
+        if len(parts) >= 2 and isinstance(last, Constant) and last.value is None and all(is_batch_index(part) for part in parts[:-1]):
             return node.value
         return None
     if isinstance(node, Call) and number(node.args[-1] if node.args else None) == -1 and not node.keywords:

@@ -147,9 +147,7 @@ class QuaternionOrder(FactRule):
       `tf.transformations`, Isaac Gym `quat_from_euler_xyz`: scalar-last), a spelled-out
       `np.array([o.w, o.x, o.y, o.z])`, or a name that states it (`quat_wxyz`), followed through
       project helpers' returns (here or in another module; a tuple `return pos, quat` unpacked or
-      indexed by the caller, when every `return` agrees on that position), the methods and
-      `@property` getters of a project class called on an object whose class the code shows
-      (`robot = Robot(...)`, `robot: Robot`, `self`), local variables, `self` attributes, and record fields filled by keyword in the same module
+      indexed by the caller, when every `return` agrees on that position), project classes' methods and `@property` getters (`robot = Robot(...)`, `robot: Robot`, `self`), local variables, `self` attributes, and record fields filled by keyword in the same module
       (`Label(quaternion=q)` read back as `label.quaternion` from a parameter annotated `Label`);
     - `np.roll(quats, -1)` / `torch.roll(quats, 1)` without an axis on a stack of quaternions
       (a plural name: `quats`, `quaternions`, `orientations`; mujoco's per-body arrays), which rolls
