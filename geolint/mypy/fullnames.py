@@ -47,7 +47,21 @@ AS_TRANSLATION = "geolint.typing.as_translation"
 COORDINATE_VALUES = (POINT, VECTOR, DIRECTION)  # batch indexing and is_close
 
 # --- the array class geolint.typing's annotations subclass for the checker (what they are at runtime) ---
-_ARRAY_CLASS: Any = get_origin(cast(Any, _typing.PointArray)["F"])
+def _class_of(annotation: Any) -> Any:
+    """The class an annotation stands for, through generic aliases and `type` aliases (numpy defines
+    `NDArray` as one on Python 3.12 and later)."""
+    for _ in range(8):
+        origin = get_origin(annotation)
+        if origin is not None:
+            annotation = origin
+        elif isinstance(annotation, type):
+            return annotation
+        else:
+            annotation = annotation.__value__
+    raise TypeError(f"no class behind {annotation!r}")
+
+
+_ARRAY_CLASS: Any = _class_of(cast(Any, _typing.PointArray)["F"])
 NDARRAY = f"{_ARRAY_CLASS.__module__}.{_ARRAY_CLASS.__qualname__}"
 
 # Binary operators the plugin gives frame-aware results.
